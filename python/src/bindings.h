@@ -1,0 +1,15 @@
+#pragma once
+// One function per library layer registers its classes in the module;
+// each lives in bind_<layer>.cpp.
+#include <pybind11/pybind11.h>
+
+namespace sillage::python {
+namespace py = pybind11;
+void init_errors(py::module_& m);
+void init_interval(py::module_& m);
+void init_expr(py::module_& m);
+void init_ctc(py::module_& m);
+void init_cn(py::module_& m);
+void init_paving(py::module_& m);
+void init_figures(py::module_& m);
+}  // namespace sillage::python

@@ -1,0 +1,15 @@
+// The _sillage extension module: one init function per library layer.
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+
+PYBIND11_MODULE(_sillage, m) {
+  m.doc() = "sillage: guaranteed state estimation by constraint programming over intervals and tubes";
+  sillage::python::init_errors(m);
+  sillage::python::init_interval(m);
+  sillage::python::init_expr(m);
+  sillage::python::init_ctc(m);
+  sillage::python::init_cn(m);
+  sillage::python::init_paving(m);
+  sillage::python::init_figures(m);
+}

@@ -1,0 +1,209 @@
+#include "sillage/interval/interval.h"
+
+#include <ostream>
+#include <sstream>
+
+namespace sillage {
+
+using rounding::kInf;
+using rounding::kMax;
+
+namespace {
+
+std::string bound_text(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+Interval::Interval(double x) : lo_(x), hi_(x) {
+  if (!std::isfinite(x)) {
+    throw Error("Interval(x): x must be a finite number, got " + bound_text(x));
+  }
+}
+
+Interval::Interval(double lb, double ub) : lo_(lb), hi_(ub) {
+  if (lb != lb || ub != ub) {
+    throw Error("Interval(lb, ub): NaN bound in [" + bound_text(lb) + ", " + bound_text(ub) + "]");
+  }
+  if (lb > ub) {
+    throw Error("Interval(lb, ub): inverted bounds, lb = " + bound_text(lb) + " > ub = " + bound_text(ub) +
+                " (use Interval::empty() for the empty set)");
+  }
+  if (lb == kInf || ub == -kInf) {
+    throw Error("Interval(lb, ub): [" + bound_text(lb) + ", " + bound_text(ub) +
+                "] contains no real number; infinite bounds are limits, not members");
+  }
+  if (lb == 0) lo_ = 0.0;  // one zero: [-0, x] and [+0, x] are the same set
+  if (ub == 0) hi_ = 0.0;
+}
+
+// pi = 3.14159265358979323846..., between two consecutive doubles.
+Interval Interval::pi() { return {0x1.921fb54442d18p+1, 0x1.921fb54442d19p+1, Unchecked{}}; }
+Interval Interval::half_pi() { return {0x1.921fb54442d18p+0, 0x1.921fb54442d19p+0, Unchecked{}}; }
+Interval Interval::two_pi() { return {0x1.921fb54442d18p+2, 0x1.921fb54442d19p+2, Unchecked{}}; }
+
+bool Interval::is_interior_subset(const Interval& y) const {
+  if (is_empty()) return true;
+  if (y.is_empty()) return false;
+  const bool left = y.lo_ < lo_ || (y.lo_ == -kInf && lo_ == -kInf);
+  const bool right = hi_ < y.hi_ || (y.hi_ == kInf && hi_ == kInf);
+  return left && right;
+}
+
+double Interval::mid() const {
+  if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
+  if (lo_ == -kInf) return hi_ == kInf ? 0.0 : -kMax;
+  if (hi_ == kInf) return kMax;
+  // (lo + hi) / 2 rounds once: the sum is exact whenever halving could round.
+  const double m = (std::fabs(lo_) <= 0x1p1022 && std::fabs(hi_) <= 0x1p1022) ? (lo_ + hi_) * 0.5
+                                                                               : lo_ * 0.5 + hi_ * 0.5;
+  return std::clamp(m, lo_, hi_) + 0.0;  // + 0.0 turns -0 into +0
+}
+
+double Interval::diam() const {
+  if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
+  return rounding::sub_up(hi_, lo_);
+}
+
+double Interval::rad() const {
+  if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
+  if (is_unbounded()) return kInf;
+  const double m = mid();
+  return std::max(rounding::sub_up(m, lo_), rounding::sub_up(hi_, m));
+}
+
+double Interval::mag() const {
+  if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
+  return std::max(std::fabs(lo_), std::fabs(hi_));
+}
+
+double Interval::mig() const {
+  if (is_empty()) return std::numeric_limits<double>::quiet_NaN();
+  if (lo_ <= 0 && hi_ >= 0) return 0.0;
+  return std::min(std::fabs(lo_), std::fabs(hi_));
+}
+
+Interval Interval::operator&(const Interval& y) const {
+  const double l = std::max(lo_, y.lo_), u = std::min(hi_, y.hi_);
+  if (!(l <= u)) return empty();
+  return {l, u, Unchecked{}};
+}
+
+Interval Interval::operator|(const Interval& y) const {
+  if (is_empty()) return y;
+  if (y.is_empty()) return *this;
+  return {std::min(lo_, y.lo_), std::max(hi_, y.hi_), Unchecked{}};
+}
+
+std::pair<Interval, Interval> Interval::bisect(double ratio) const {
+  if (!(ratio > 0 && ratio < 1)) {
+    throw Error("Interval::bisect: ratio must lie in (0, 1), got " + bound_text(ratio));
+  }
+  if (is_empty()) throw Error("Interval::bisect: cannot bisect the empty interval");
+  if (is_degenerate()) throw Error("Interval::bisect: cannot bisect the degenerate interval " + str());
+  double p;
+  if (lo_ == -kInf && hi_ == kInf) {
+    p = 0.0;
+  } else if (hi_ == kInf) {
+    p = lo_ < 0 ? 0.0 : (lo_ < 1 ? 1.0 : std::min(kMax, lo_ * 2));
+  } else if (lo_ == -kInf) {
+    p = hi_ > 0 ? 0.0 : (hi_ > -1 ? -1.0 : std::max(-kMax, hi_ * 2));
+  } else {
+    p = lo_ * (1 - ratio) + hi_ * ratio;  // no overflow even for [-max, max]
+    if (!(p > lo_ && p < hi_)) p = mid();
+  }
+  p = std::clamp(p, lo_, hi_);
+  return {Interval(lo_, p, Unchecked{}), Interval(p, hi_, Unchecked{})};
+}
+
+Interval Interval::inflate(double r) const {
+  if (!(r >= 0)) throw Error("Interval::inflate: radius must be >= 0, got " + bound_text(r));
+  if (is_empty()) return empty();
+  return {rounding::sub_down(lo_, r), rounding::add_up(hi_, r), Unchecked{}};
+}
+
+Interval operator/(const Interval& x, const Interval& y) {
+  using rounding::div_down, rounding::div_up;
+  if (x.is_empty() || y.is_empty()) return Interval::empty();
+  const double a = x.lo_, b = x.hi_, c = y.lo_, d = y.hi_;
+  const Interval::Unchecked u{};
+  if (c == 0 && d == 0) return Interval::empty();
+  if (c > 0) {                        // y > 0
+    if (a >= 0) return {div_down(a, d), div_up(b, c), u};
+    if (b <= 0) return {div_down(a, c), div_up(b, d), u};
+    return {div_down(a, c), div_up(b, c), u};
+  }
+  if (d < 0) {                        // y < 0
+    if (a >= 0) return {div_down(b, d), div_up(a, c), u};
+    if (b <= 0) return {div_down(b, c), div_up(a, d), u};
+    return {div_down(b, d), div_up(a, d), u};
+  }
+  // 0 in y: the hull of the quotient set (2.19); 0 / y = 0 counts.
+  if (a == 0 && b == 0) return {0.0, 0.0, u};
+  if (c == 0) {                       // y = [0, d], d > 0
+    if (a >= 0) return {div_down(a, d), kInf, u};
+    if (b <= 0) return {-kInf, div_up(b, d), u};
+    return Interval::all_reals();
+  }
+  if (d == 0) {                       // y = [c, 0], c < 0
+    if (a >= 0) return {-kInf, div_up(a, c), u};
+    if (b <= 0) return {div_down(b, c), kInf, u};
+    return Interval::all_reals();
+  }
+  return Interval::all_reals();
+}
+
+Interval sqr(const Interval& x) {
+  using rounding::mul_down, rounding::mul_up;
+  if (x.is_empty()) return Interval::empty();
+  const double a = x.lo_, b = x.hi_;
+  const Interval::Unchecked u{};
+  if (a >= 0) return {mul_down(a, a), mul_up(b, b), u};
+  if (b <= 0) return {mul_down(b, b), mul_up(a, a), u};
+  return {0.0, std::max(mul_up(a, a), mul_up(b, b)), u};
+}
+
+Interval sqrt(const Interval& x) {
+  const Interval y = x & Interval::pos_reals();
+  if (y.is_empty()) return Interval::empty();
+  return {rounding::sqrt_down(y.lo_), rounding::sqrt_up(y.hi_), Interval::Unchecked{}};
+}
+
+Interval abs(const Interval& x) {
+  if (x.is_empty()) return Interval::empty();
+  if (x.lb() >= 0) return x;
+  if (x.ub() <= 0) return -x;
+  return Interval::from_bounds_unchecked(0.0, std::max(-x.lb(), x.ub()));
+}
+
+Interval min(const Interval& x, const Interval& y) {
+  if (x.is_empty() || y.is_empty()) return Interval::empty();
+  return Interval::from_bounds_unchecked(std::min(x.lb(), y.lb()), std::min(x.ub(), y.ub()));
+}
+
+Interval max(const Interval& x, const Interval& y) {
+  if (x.is_empty() || y.is_empty()) return Interval::empty();
+  return Interval::from_bounds_unchecked(std::max(x.lb(), y.lb()), std::max(x.ub(), y.ub()));
+}
+
+Interval sign(const Interval& x) {
+  if (x.is_empty()) return Interval::empty();
+  auto s = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
+  return Interval::from_bounds_unchecked(s(x.lb()), s(x.ub()));
+}
+
+std::string Interval::str() const {
+  if (is_empty()) return "[ empty ]";
+  std::ostringstream os;
+  os.precision(17);
+  os << "[" << lo_ << ", " << hi_ << "]";
+  return os.str();
+}
+
+std::ostream& operator<<(std::ostream& os, const Interval& x) { return os << x.str(); }
+
+}  // namespace sillage
