@@ -1,0 +1,24 @@
+#pragma once
+// Ctc: a contractor on boxes (thesis Def. 2.1). contract(x) replaces [x] by a
+// sub-box C([x]) that keeps every vector of [x] consistent with the constraint
+// (contraction and consistency). contract is const: contractors are
+// stateless, so one contractor can serve several threads (parallel SIVIA).
+#include <cstddef>
+
+#include "sillage/interval/interval_vector.h"
+
+namespace sillage {
+
+class Ctc {
+ public:
+  explicit Ctc(std::size_t nb_vars) : nb_vars_(nb_vars) {}
+  virtual ~Ctc() = default;
+  // Contracts x in place; x.size() must equal nb_vars() (else DimensionError).
+  virtual void contract(IntervalVector& x) const = 0;
+  std::size_t nb_vars() const { return nb_vars_; }
+
+ private:
+  std::size_t nb_vars_;
+};
+
+}  // namespace sillage

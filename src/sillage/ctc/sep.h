@@ -1,0 +1,24 @@
+#pragma once
+// Sep: a separator, a pair of complementary contractors. separate(x_in, x_out)
+// contracts x_in so that the removed part lies inside the set X (inner
+// contractor: what it removes is proven in X) and x_out so that the removed
+// part lies outside X (outer contractor: what it removes is proven out of X).
+// Both start as copies of the same box. Used by SIVIA for inner approximations.
+#include <cstddef>
+
+#include "sillage/interval/interval_vector.h"
+
+namespace sillage {
+
+class Sep {
+ public:
+  explicit Sep(std::size_t nb_vars) : nb_vars_(nb_vars) {}
+  virtual ~Sep() = default;
+  virtual void separate(IntervalVector& x_in, IntervalVector& x_out) const = 0;
+  std::size_t nb_vars() const { return nb_vars_; }
+
+ private:
+  std::size_t nb_vars_;
+};
+
+}  // namespace sillage

@@ -1,0 +1,28 @@
+#pragma once
+// Elementary functions on intervals, set-based (IEEE 1788): each returns an
+// interval containing the exact image of the part of x inside the function's
+// domain (empty if none). Bounds come from libm results widened by a proven
+// error bound; monotone pieces are evaluated at the right end points and the
+// periodic functions use a rigorous enclosure of pi.
+#include "sillage/interval/interval.h"
+
+namespace sillage {
+
+Interval exp(const Interval& x);
+Interval log(const Interval& x);          // natural logarithm on (0, inf)
+Interval pow(const Interval& x, int n);   // x^n, n any integer (x^0 = [1,1])
+Interval pow(const Interval& x, const Interval& y);  // exp(y log x), x > 0 (and 0^y = 0 for y > 0)
+Interval pow(const Interval& x, double y);           // interval exponent [y, y]
+Interval root(const Interval& x, int n);  // the real n-th root (odd n: all reals)
+Interval sin(const Interval& x);
+Interval cos(const Interval& x);
+Interval tan(const Interval& x);
+Interval asin(const Interval& x);
+Interval acos(const Interval& x);
+Interval atan(const Interval& x);
+Interval atan2(const Interval& y, const Interval& x);  // y first; range [-pi, pi]
+Interval sinh(const Interval& x);
+Interval cosh(const Interval& x);
+Interval tanh(const Interval& x);
+
+}  // namespace sillage
