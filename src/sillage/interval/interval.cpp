@@ -19,7 +19,7 @@ std::string bound_text(double v) {
 
 }  // namespace
 
-Interval::Interval(double x) : lo_(x), hi_(x) {
+Interval::Interval(double x) : lo_(x + 0.0), hi_(x + 0.0) {  // + 0.0: no -0 bound
   if (!std::isfinite(x)) {
     throw Error("Interval(x): x must be a finite number, got " + bound_text(x));
   }
@@ -155,6 +155,27 @@ Interval operator/(const Interval& x, const Interval& y) {
     return Interval::all_reals();
   }
   return Interval::all_reals();
+}
+
+std::pair<Interval, Interval> div2(const Interval& c, const Interval& b) {
+  using rounding::div_down, rounding::div_up;
+  const Interval e = Interval::empty();
+  // + 0.0 turns a -0 bound (c / inf) into +0.
+  auto make = [](double lo, double hi) { return Interval::from_bounds_unchecked(lo + 0.0, hi + 0.0); };
+  if (c.is_empty() || b.is_empty()) return {e, e};
+  const double b1 = b.lb(), b2 = b.ub(), c1 = c.lb(), c2 = c.ub();
+  if (b1 > 0 || b2 < 0) return {c / b, e};
+  if (c1 <= 0 && c2 >= 0) return {Interval::all_reals(), e};
+  if (b1 == 0 && b2 == 0) return {e, e};
+  if (c1 > 0) {  // z * b' = c' > 0: z has the sign of b'
+    if (b1 == 0) return {make(div_down(c1, b2), kInf), e};
+    if (b2 == 0) return {make(-kInf, div_up(c1, b1)), e};
+    return {make(-kInf, div_up(c1, b1)), make(div_down(c1, b2), kInf)};
+  }
+  // c2 < 0: z has the sign opposite to b'
+  if (b1 == 0) return {make(-kInf, div_up(c2, b2)), e};
+  if (b2 == 0) return {make(div_down(c2, b1), kInf), e};
+  return {make(-kInf, div_up(c2, b2)), make(div_down(c2, b1), kInf)};
 }
 
 Interval sqr(const Interval& x) {

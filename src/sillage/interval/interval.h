@@ -84,7 +84,7 @@ class Interval {
   void set_empty() { *this = empty(); }
 
   // ---- arithmetic ----
-  Interval operator-() const { return {-hi_, -lo_, Unchecked{}}; }
+  Interval operator-() const { return {0.0 - hi_, 0.0 - lo_, Unchecked{}}; }  // 0 - x: no -0 bound
   Interval operator+() const { return *this; }
   Interval& operator+=(const Interval& y);
   Interval& operator-=(const Interval& y);
@@ -145,6 +145,13 @@ inline Interval& Interval::operator/=(const Interval& y) { return *this = *this 
 
 // Division: the hull of the real quotient set, (2.19)-(2.20).
 Interval operator/(const Interval& x, const Interval& y);
+
+// Relational (extended) division: the set {z : z * b in [c] for some b in [b]}
+// as up to two disjoint intervals, lower piece first (the second is empty when
+// one suffices; IEEE 1788 mulRevToPair). Unlike operator/ it keeps both pieces:
+// div2([1,2], [-1,1]) = ([-inf,-1], [1,inf]); and 0 in [c] and in [b] gives
+// the whole line (z * 0 = 0 for every z).
+std::pair<Interval, Interval> div2(const Interval& c, const Interval& b);
 
 Interval sqr(const Interval& x);
 Interval sqrt(const Interval& x);

@@ -47,8 +47,11 @@ inline int mul_error_sign(double a, double b, double p) {
 // Sign of the exact value a/b - q, for the round-to-nearest q of a/b (b != 0).
 inline int div_error_sign(double a, double b, double q) {
   const int sb = b > 0 ? 1 : -1;
-  if (std::fabs(q) >= 0x1p-968 && std::fabs(b) >= 0x1p-968 && std::fabs(q) <= 0x1p1000 &&
-      std::fabs(b) <= 0x1p1000) {
+  // The remainder a - q*b is a multiple of ulp(q) ulp(b) >= 2^-1073 when
+  // |a| >= 2^-968, so the fma cannot round a nonzero remainder to zero. (A
+  // tiny a with a normal q, e.g. subnormal / 2^-500, needs the rescaling.)
+  if (std::fabs(a) >= 0x1p-968 && std::fabs(q) >= 0x1p-968 && std::fabs(b) >= 0x1p-968 &&
+      std::fabs(q) <= 0x1p1000 && std::fabs(b) <= 0x1p1000) {
     const double r = std::fma(-q, b, a);  // a - q*b, exact sign
     return ((r > 0) - (r < 0)) * sb;
   }

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "sillage/interval/interval.h"
 #include "sillage/interval/interval_vector.h"
 
@@ -68,4 +71,101 @@ TEST(IntervalVector, BasicsAndErrors) {
   EXPECT_EQ(r[1], Interval(3, 4));
   EXPECT_THROW(x & IntervalVector(3), DimensionError);
   EXPECT_TRUE(x.contains({0.5, 3}));
+}
+
+TEST(Interval, NumericFunctionsAndSpecialCases) {
+  EXPECT_EQ(Interval(-1, 3).mid(), 1.0);
+  EXPECT_EQ(Interval::all_reals().mid(), 0.0);
+  EXPECT_EQ(Interval(1, INFINITY).mid(), std::numeric_limits<double>::max());
+  EXPECT_EQ(Interval(-INFINITY, 1).mid(), -std::numeric_limits<double>::max());
+  EXPECT_TRUE(std::isnan(Interval::empty().mid()));
+  EXPECT_EQ(Interval(-1, 3).rad(), 2.0);
+  EXPECT_EQ(Interval(-5, 3).mag(), 5.0);
+  EXPECT_EQ(Interval(-5, 3).mig(), 0.0);
+  EXPECT_EQ(Interval(2, 3).mig(), 2.0);
+  EXPECT_EQ(Interval(0, INFINITY).diam(), INFINITY);
+  EXPECT_EQ(Interval::empty().volume(), 0.0);
+  // No -0 bound: printing and equality behave.
+  EXPECT_EQ(Interval(-0.0).str(), "[0, 0]");
+  EXPECT_EQ((-Interval(0, 1)).str(), "[-1, 0]");
+  EXPECT_EQ(Interval(1, 2).str(), "[1, 2]");
+  EXPECT_EQ(Interval::empty().str(), "[ empty ]");
+}
+
+TEST(Interval, PredicatesFollowIeee1788) {
+  const Interval x(0, 2), e = Interval::empty();
+  EXPECT_TRUE(e.is_subset(x));
+  EXPECT_TRUE(e.is_interior_subset(e));
+  EXPECT_TRUE(Interval::all_reals().is_interior_subset(Interval::all_reals()));
+  EXPECT_FALSE(Interval(0, 1).is_interior_subset(x));
+  EXPECT_TRUE(Interval(0.5, 1).is_interior_subset(x));
+  EXPECT_TRUE(x.is_disjoint(e));
+  EXPECT_TRUE(x.intersects(Interval(2, 3)));
+  EXPECT_FALSE(x.contains(INFINITY));
+  EXPECT_FALSE(Interval::all_reals().contains(-INFINITY));
+  EXPECT_TRUE(Interval(1, 2).is_strict_subset(x));
+  EXPECT_FALSE(x.is_strict_subset(x));
+}
+
+TEST(Interval, BisectAndInflate) {
+  auto [a, b] = Interval(0, 4).bisect(0.25);
+  EXPECT_EQ(a, Interval(0, 1));
+  EXPECT_EQ(b, Interval(1, 4));
+  auto [c, d] = Interval::all_reals().bisect();
+  EXPECT_EQ(c, Interval(-INFINITY, 0));
+  EXPECT_EQ(d, Interval(0, INFINITY));
+  auto [f, g] = Interval(5, INFINITY).bisect();
+  EXPECT_TRUE(f.is_bounded() && g.is_unbounded() && f.ub() == g.lb());
+  EXPECT_EQ(Interval(1, 2).inflate(0.5), Interval(0.5, 2.5));
+  const Interval t = Interval(0.1).inflate(0.1);  // rounded outward
+  EXPECT_TRUE(t.lb() <= 0 && t.ub() >= 0.2);
+}
+
+TEST(Interval, Div2IsTheRelationalQuotient) {
+  auto [lo, hi] = div2(Interval(1, 2), Interval(-1, 1));
+  EXPECT_EQ(lo, Interval(-INFINITY, -1));
+  EXPECT_EQ(hi, Interval(1, INFINITY));
+  // 0 * z = 0 for every z: unlike operator/, the whole line.
+  EXPECT_TRUE(div2(Interval(0), Interval(0, 1)).first.is_all_reals());
+  EXPECT_EQ(Interval(0) / Interval(0, 1), Interval(0));
+}
+
+TEST(IntervalVector, MoreOperations) {
+  IntervalVector x = IntervalVector::from_bounds({{0, 1}, {-2, 4}, {3, 3}});
+  EXPECT_EQ(x.size(), 3u);
+  EXPECT_EQ(x.lb(), (Vector{0, -2, 3}));
+  EXPECT_EQ(x.ub(), (Vector{1, 4, 3}));
+  EXPECT_EQ(x.mid(), (Vector{0.5, 1, 3}));
+  EXPECT_EQ(x.diam(), (Vector{1, 6, 0}));
+  EXPECT_EQ(x.mag(), (Vector{1, 4, 3}));
+  EXPECT_EQ(x.mig(), (Vector{0, 0, 3}));
+  EXPECT_EQ(x.extr_diam_index(), 1u);
+  EXPECT_EQ(x.extr_diam_index(false), 2u);
+  EXPECT_EQ(x.min_diam(), 0.0);
+  EXPECT_EQ(x.volume(), 0.0);
+  EXPECT_EQ(x.subvector(1, 2), (IntervalVector{{-2, 4}, 3}));
+  EXPECT_THROW(x.subvector(2, 3), DimensionError);
+  x.put(0, IntervalVector{5, 6});
+  EXPECT_EQ(x, (IntervalVector{5, 6, 3}));
+  EXPECT_THROW(x.put(2, IntervalVector{5, 6}), DimensionError);
+  EXPECT_TRUE(x.is_degenerate());
+  EXPECT_EQ(IntervalVector::from_point({1, 2}), (IntervalVector{1, 2}));
+  const IntervalVector a{{0, 1}, {0, 1}}, b{{2, 3}, {0, 1}};
+  EXPECT_EQ(hull(a, b), (IntervalVector{{0, 3}, {0, 1}}));
+  EXPECT_TRUE((a & b).is_empty());
+  EXPECT_TRUE((a & b)[1].is_empty());  // a box with an empty component is emptied entirely
+  EXPECT_EQ(a | IntervalVector::empty(2), a);
+  EXPECT_EQ(a + b, (IntervalVector{{2, 4}, {0, 2}}));
+  EXPECT_EQ(b - a, (IntervalVector{{1, 3}, {-1, 1}}));
+  EXPECT_EQ(Interval(2) * a, (IntervalVector{{0, 2}, {0, 2}}));
+  EXPECT_EQ(dot(a, b), Interval(0, 4));
+  EXPECT_EQ(norm(IntervalVector{3, 4}), Interval(5));
+  EXPECT_EQ(abs(IntervalVector{{-2, 1}}), (IntervalVector{{0, 2}}));
+  EXPECT_TRUE((IntervalVector{{0.2, 0.8}, {0.2, 0.8}}).is_interior_subset(a));
+  EXPECT_FALSE(a.is_interior_subset(a));
+  EXPECT_TRUE(a.intersects(IntervalVector{{1, 2}, {1, 2}}));
+  EXPECT_EQ(a.inflate(1), (IntervalVector{{-1, 2}, {-1, 2}}));
+  EXPECT_THROW(a.contains({1}), DimensionError);
+  EXPECT_THROW(a.bisect(2, 0.5), DimensionError);
+  EXPECT_EQ(a.str(), "([0, 1] ; [0, 1])");
 }
