@@ -1,0 +1,160 @@
+// Time per interval operation, sillage side by side with Boost.Interval (its
+// rigorous policy: the rounding mode is switched and restored around every
+// operation, transcendental functions from libm under directed rounding) and
+// MPFI (MPFR-based, 53-bit precision). Same pre-generated random inputs for
+// the three; every result goes through benchmark::DoNotOptimize.
+// Run: bench_interval --benchmark_counters_tabular=true ; the per_op column is
+// the time of one operation.
+#include <benchmark/benchmark.h>
+
+#include <boost/numeric/interval.hpp>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "sillage/interval/elementary.h"
+#include "sillage/interval/interval.h"
+
+#ifdef SILLAGE_BENCH_MPFI
+#include <mpfi.h>
+#endif
+
+namespace {
+
+using sillage::Interval;
+namespace bi = boost::numeric::interval_lib;
+using BoostInterval =
+    boost::numeric::interval<double, bi::policies<bi::save_state<bi::rounded_transc_std<double>>,
+                                                  bi::checking_base<double>>>;
+
+constexpr std::size_t kN = 1024;
+
+struct Bounds {
+  std::vector<double> lo, hi;
+};
+
+// kN random intervals with lower bounds in [a, b) and widths in [0, w).
+Bounds bounds(double a, double b, double w, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> pos(a, b), width(0, w);
+  Bounds r;
+  for (std::size_t i = 0; i < kN; ++i) {
+    const double lo = pos(rng);
+    r.lo.push_back(lo);
+    r.hi.push_back(lo + width(rng));
+  }
+  return r;
+}
+
+// Operand sets: x for every operation, y the second operand (kept away from 0
+// for the division), p positive (sqrt, log), s small arguments for exp and sin.
+const Bounds& xs() { static const Bounds b = bounds(-10, 10, 1, 1); return b; }
+const Bounds& ys() { static const Bounds b = bounds(0.5, 10, 1, 2); return b; }
+const Bounds& ps() { static const Bounds b = bounds(0.01, 100, 1, 3); return b; }
+const Bounds& ss() { static const Bounds b = bounds(-10, 10, 0.1, 4); return b; }
+
+void report(benchmark::State& state) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kN));
+  state.counters["per_op"] =
+      benchmark::Counter(static_cast<double>(kN), benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+}
+
+// ---- sillage and Boost: value types, one template ----
+
+template <class I>
+std::vector<I> make(const Bounds& b) {
+  std::vector<I> v;
+  for (std::size_t i = 0; i < kN; ++i) v.push_back(I(b.lo[i], b.hi[i]));
+  return v;
+}
+
+template <class I, class F>
+void unary(benchmark::State& state, const Bounds& bx, F f) {
+  const std::vector<I> x = make<I>(bx);
+  for (auto _ : state)
+    for (std::size_t i = 0; i < kN; ++i) benchmark::DoNotOptimize(f(x[i]));
+  report(state);
+}
+
+template <class I, class F>
+void binary(benchmark::State& state, const Bounds& bx, const Bounds& by, F f) {
+  const std::vector<I> x = make<I>(bx), y = make<I>(by);
+  for (auto _ : state)
+    for (std::size_t i = 0; i < kN; ++i) benchmark::DoNotOptimize(f(x[i], y[i]));
+  report(state);
+}
+
+#define SILLAGE_BENCH_BOTH(name, call)                                                                \
+  void BM_##name##_sillage(benchmark::State& s) { call(Interval, sillage::); }                        \
+  void BM_##name##_boost(benchmark::State& s) { call(BoostInterval, boost::numeric::); }              \
+  BENCHMARK(BM_##name##_sillage);                                                                     \
+  BENCHMARK(BM_##name##_boost);
+
+#define ADD(I, ns) binary<I>(s, xs(), ys(), [](const I& a, const I& b) { return a + b; })
+#define MUL(I, ns) binary<I>(s, xs(), ys(), [](const I& a, const I& b) { return a * b; })
+#define DIV(I, ns) binary<I>(s, xs(), ys(), [](const I& a, const I& b) { return a / b; })
+#define SQRT(I, ns) unary<I>(s, ps(), [](const I& a) { return ns sqrt(a); })
+#define EXP(I, ns) unary<I>(s, ss(), [](const I& a) { return ns exp(a); })
+#define LOG(I, ns) unary<I>(s, ps(), [](const I& a) { return ns log(a); })
+#define SIN(I, ns) unary<I>(s, ss(), [](const I& a) { return ns sin(a); })
+
+SILLAGE_BENCH_BOTH(add, ADD)
+SILLAGE_BENCH_BOTH(mul, MUL)
+SILLAGE_BENCH_BOTH(div, DIV)
+SILLAGE_BENCH_BOTH(sqrt, SQRT)
+SILLAGE_BENCH_BOTH(exp, EXP)
+SILLAGE_BENCH_BOTH(log, LOG)
+SILLAGE_BENCH_BOTH(sin, SIN)
+
+#ifdef SILLAGE_BENCH_MPFI
+// ---- MPFI: C structs, results into one preallocated interval ----
+
+struct MpfiArray {
+  explicit MpfiArray(const Bounds& b) : v(kN) {
+    for (std::size_t i = 0; i < kN; ++i) {
+      mpfi_init2(&v[i], 53);
+      mpfi_interv_d(&v[i], b.lo[i], b.hi[i]);
+    }
+  }
+  ~MpfiArray() {
+    for (auto& x : v) mpfi_clear(&x);
+  }
+  MpfiArray(const MpfiArray&) = delete;
+  MpfiArray& operator=(const MpfiArray&) = delete;
+  std::vector<__mpfi_struct> v;
+};
+
+template <class F>
+void mpfi_run(benchmark::State& state, const Bounds& bx, const Bounds& by, F f) {
+  MpfiArray x(bx), y(by);
+  mpfi_t r;
+  mpfi_init2(r, 53);
+  for (auto _ : state)
+    for (std::size_t i = 0; i < kN; ++i) {
+      f(r, &x.v[i], &y.v[i]);
+      benchmark::DoNotOptimize(r);
+    }
+  mpfi_clear(r);
+  report(state);
+}
+
+void BM_add_mpfi(benchmark::State& s) { mpfi_run(s, xs(), ys(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) { mpfi_add(r, a, b); }); }
+void BM_mul_mpfi(benchmark::State& s) { mpfi_run(s, xs(), ys(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) { mpfi_mul(r, a, b); }); }
+void BM_div_mpfi(benchmark::State& s) { mpfi_run(s, xs(), ys(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr b) { mpfi_div(r, a, b); }); }
+void BM_sqrt_mpfi(benchmark::State& s) { mpfi_run(s, ps(), ps(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr) { mpfi_sqrt(r, a); }); }
+void BM_exp_mpfi(benchmark::State& s) { mpfi_run(s, ss(), ss(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr) { mpfi_exp(r, a); }); }
+void BM_log_mpfi(benchmark::State& s) { mpfi_run(s, ps(), ps(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr) { mpfi_log(r, a); }); }
+void BM_sin_mpfi(benchmark::State& s) { mpfi_run(s, ss(), ss(), [](mpfi_ptr r, mpfi_srcptr a, mpfi_srcptr) { mpfi_sin(r, a); }); }
+BENCHMARK(BM_add_mpfi);
+BENCHMARK(BM_mul_mpfi);
+BENCHMARK(BM_div_mpfi);
+BENCHMARK(BM_sqrt_mpfi);
+BENCHMARK(BM_exp_mpfi);
+BENCHMARK(BM_log_mpfi);
+BENCHMARK(BM_sin_mpfi);
+#endif
+
+}  // namespace
+
+BENCHMARK_MAIN();
