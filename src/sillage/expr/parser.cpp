@@ -1,0 +1,342 @@
+// Recursive-descent parser of expressions (grammar in parser.h).
+#include "sillage/expr/parser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "sillage/error.h"
+#include "sillage/expr/literal.h"
+
+namespace sillage {
+namespace {
+
+struct FunctionSpec {
+  int arity;
+  Expr (*unary)(const Expr&);
+  Expr (*binary)(const Expr&, const Expr&);
+};
+
+Expr pow_xy(const Expr& x, const Expr& y) { return pow(x, y); }
+
+const std::unordered_map<std::string, FunctionSpec>& functions() {
+  static const std::unordered_map<std::string, FunctionSpec> table = {
+      {"sqr", {1, sqr, nullptr}},     {"sqrt", {1, sqrt, nullptr}},   {"exp", {1, exp, nullptr}},
+      {"log", {1, log, nullptr}},     {"sin", {1, sin, nullptr}},     {"cos", {1, cos, nullptr}},
+      {"tan", {1, tan, nullptr}},     {"asin", {1, asin, nullptr}},   {"acos", {1, acos, nullptr}},
+      {"atan", {1, atan, nullptr}},   {"sinh", {1, sinh, nullptr}},   {"cosh", {1, cosh, nullptr}},
+      {"tanh", {1, tanh, nullptr}},   {"abs", {1, abs, nullptr}},     {"sign", {1, sign, nullptr}},
+      {"atan2", {2, nullptr, atan2}}, {"min", {2, nullptr, min}},     {"max", {2, nullptr, max}},
+      {"pow", {2, nullptr, pow_xy}},  {"root", {2, nullptr, nullptr}},
+  };
+  return table;
+}
+
+enum class Tok { Number, Ident, LParen, RParen, LBracket, RBracket, Comma, Plus, Minus, Star, Slash, Caret, End };
+
+struct Token {
+  Tok kind;
+  std::string text;
+  std::size_t col;  // 1-based
+};
+
+const char* tok_name(Tok k) {
+  switch (k) {
+    case Tok::Number: return "a number";
+    case Tok::Ident: return "a name";
+    case Tok::LParen: return "'('";
+    case Tok::RParen: return "')'";
+    case Tok::LBracket: return "'['";
+    case Tok::RBracket: return "']'";
+    case Tok::Comma: return "','";
+    case Tok::Plus: return "'+'";
+    case Tok::Minus: return "'-'";
+    case Tok::Star: return "'*'";
+    case Tok::Slash: return "'/'";
+    case Tok::Caret: return "'^'";
+    case Tok::End: return "the end";
+  }
+  return "?";
+}
+
+// A parsed item: one expression, or the elements of a parenthesized vector.
+struct Item {
+  std::vector<Expr> exprs;
+  std::size_t col;
+};
+
+class Parser {
+ public:
+  Parser(const std::vector<std::string>& vars, const std::string& text) : text_(text) {
+    for (const std::string& v : vars) vars_.emplace(v, ExprVar(v));
+    tokenize();
+  }
+
+  std::vector<Expr> parse_all() {
+    Item it = parse_sum();
+    if (peek().kind != Tok::End) fail("expected an operator or the end", peek().col);
+    return it.exprs;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what, std::size_t col) const {
+    throw ParseError(what + " at column " + std::to_string(col) + " in \"" + text_ + "\"");
+  }
+
+  void tokenize() {
+    std::size_t i = 0;
+    const std::string& s = text_;
+    while (i < s.size()) {
+      const char c = s[i];
+      const std::size_t col = i + 1;
+      if (std::isspace(static_cast<unsigned char>(c))) {
+        ++i;
+      } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < s.size() &&
+                                                                 std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
+        std::size_t j = i;
+        while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.')) ++j;
+        if (j < s.size() && (s[j] == 'e' || s[j] == 'E')) {
+          std::size_t k = j + 1;
+          if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+          if (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) {
+            j = k;
+            while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
+          } else {
+            fail("expected digits of the exponent", k + 1);
+          }
+        }
+        toks_.push_back({Tok::Number, s.substr(i, j - i), col});
+        i = j;
+      } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        std::size_t j = i;
+        while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+        toks_.push_back({Tok::Ident, s.substr(i, j - i), col});
+        i = j;
+      } else {
+        Tok k;
+        switch (c) {
+          case '(': k = Tok::LParen; break;
+          case ')': k = Tok::RParen; break;
+          case '[': k = Tok::LBracket; break;
+          case ']': k = Tok::RBracket; break;
+          case ',': k = Tok::Comma; break;
+          case '+': k = Tok::Plus; break;
+          case '-': k = Tok::Minus; break;
+          case '*': k = Tok::Star; break;
+          case '/': k = Tok::Slash; break;
+          case '^': k = Tok::Caret; break;
+          default: fail(std::string("unexpected character '") + c + "'", col);
+        }
+        toks_.push_back({k, std::string(1, c), col});
+        ++i;
+      }
+    }
+    toks_.push_back({Tok::End, "", s.size() + 1});
+  }
+
+  const Token& peek() const { return toks_[pos_]; }
+  const Token& next() { return toks_[pos_ < toks_.size() - 1 ? pos_++ : pos_]; }
+  const Token& expect(Tok k) {
+    if (peek().kind != k) fail(std::string("expected ") + tok_name(k), peek().col);
+    return next();
+  }
+
+  // The single expression of an item used as an operand.
+  Expr scalar(const Item& it) const {
+    if (it.exprs.size() != 1) fail("a vector (e1, e2, ...) can only be the whole expression", it.col);
+    return it.exprs[0];
+  }
+
+  // Bounds the recursion: a pathological text must raise, not overflow the stack.
+  struct DepthGuard {
+    Parser& p;
+    explicit DepthGuard(Parser& parser) : p(parser) {
+      if (++p.depth_ > kMaxDepth) p.fail("expression nested too deeply (more than 500 levels)", p.peek().col);
+    }
+    ~DepthGuard() { --p.depth_; }
+  };
+  static constexpr int kMaxDepth = 500;
+
+  Item parse_sum() {
+    DepthGuard guard(*this);
+    Item left = parse_product();
+    while (peek().kind == Tok::Plus || peek().kind == Tok::Minus) {
+      const bool plus = next().kind == Tok::Plus;
+      Expr a = scalar(left);
+      Expr b = scalar(parse_product());
+      left = {{plus ? a + b : a - b}, left.col};
+    }
+    return left;
+  }
+
+  Item parse_product() {
+    Item left = parse_unary();
+    while (peek().kind == Tok::Star || peek().kind == Tok::Slash) {
+      const bool times = next().kind == Tok::Star;
+      Expr a = scalar(left);
+      Expr b = scalar(parse_unary());
+      left = {{times ? a * b : a / b}, left.col};
+    }
+    return left;
+  }
+
+  Item parse_unary() {
+    DepthGuard guard(*this);
+    if (peek().kind == Tok::Minus || peek().kind == Tok::Plus) {
+      const Token& t = next();
+      const bool minus = t.kind == Tok::Minus;
+      const std::size_t col = t.col;
+      Expr a = scalar(parse_unary());
+      return {{minus ? -a : a}, col};
+    }
+    return parse_power();
+  }
+
+  Item parse_power() {
+    Item base = parse_primary();
+    if (peek().kind != Tok::Caret) return base;
+    next();
+    Expr b = scalar(base);
+    Expr e = scalar(parse_unary());  // right-associative: x^y^z = x^(y^z)
+    return {{pow(b, e)}, base.col};
+  }
+
+  // Enclosure of a signed interval bound: number, inf or oo.
+  Interval parse_bound() {
+    bool neg = false;
+    if (peek().kind == Tok::Minus || peek().kind == Tok::Plus) neg = next().kind == Tok::Minus;
+    const Token& t = next();
+    Interval v;
+    if (t.kind == Tok::Number) {
+      v = number(t);
+    } else if (t.kind == Tok::Ident && (t.text == "inf" || t.text == "oo")) {
+      v = Interval::from_bounds_unchecked(rounding::kInf, rounding::kInf);
+    } else if (t.kind == Tok::Ident && is_nan_name(t.text)) {
+      fail("NaN is not a valid bound", t.col);
+    } else {
+      fail("expected a number, inf or oo as interval bound", t.col);
+    }
+    return neg ? Interval::from_bounds_unchecked(-v.ub(), -v.lb()) : v;
+  }
+
+  Interval number(const Token& t) const {
+    try {
+      return detail::decimal_enclosure(t.text);
+    } catch (const ParseError&) {
+      fail("invalid number literal '" + t.text + "'", t.col);
+    }
+  }
+
+  static bool is_nan_name(const std::string& s) {
+    std::string l = s;
+    std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return std::tolower(c); });
+    return l == "nan";
+  }
+
+  Item parse_interval(std::size_t col) {
+    if (peek().kind == Tok::Ident && peek().text == "empty") {
+      next();
+      expect(Tok::RBracket);
+      return {{Expr(Interval::empty())}, col};
+    }
+    const Interval a = parse_bound();
+    expect(Tok::Comma);
+    const Interval b = parse_bound();
+    expect(Tok::RBracket);
+    if (a.lb() > b.ub()) fail("invalid interval literal: lower bound above upper bound", col);
+    if (a.lb() == rounding::kInf || b.ub() == -rounding::kInf)
+      fail("invalid interval literal: it contains no real number", col);
+    return {{Expr(Interval(a.lb(), b.ub()))}, col};
+  }
+
+  Item parse_call(const Token& name) {
+    const auto it = functions().find(name.text);
+    expect(Tok::LParen);
+    std::vector<Expr> args{scalar(parse_sum())};
+    while (peek().kind == Tok::Comma) {
+      next();
+      args.push_back(scalar(parse_sum()));
+    }
+    expect(Tok::RParen);
+    const FunctionSpec& f = it->second;
+    if (static_cast<int>(args.size()) != f.arity)
+      fail("function '" + name.text + "' takes " + std::to_string(f.arity) + " argument" +
+               (f.arity > 1 ? "s" : "") + ", got " + std::to_string(args.size()),
+           name.col);
+    if (name.text == "root") {
+      const Expr& n = args[1];
+      const bool ok = n.is_const() && n.node().value.is_degenerate() && n.node().value.lb() >= 1 &&
+                      n.node().value.lb() <= 1e6 && n.node().value.lb() == std::floor(n.node().value.lb());
+      if (!ok) fail("root(x, n): n must be an integer constant >= 1", name.col);
+      return {{root(args[0], static_cast<int>(n.node().value.lb()))}, name.col};
+    }
+    return {{f.arity == 1 ? f.unary(args[0]) : f.binary(args[0], args[1])}, name.col};
+  }
+
+  Item parse_primary() {
+    const Token& t = next();
+    switch (t.kind) {
+      case Tok::Number: return {{Expr(number(t))}, t.col};
+      case Tok::LBracket: return parse_interval(t.col);
+      case Tok::LParen: {
+        Item it{{scalar(parse_sum())}, t.col};
+        while (peek().kind == Tok::Comma) {
+          next();
+          it.exprs.push_back(scalar(parse_sum()));
+        }
+        expect(Tok::RParen);
+        return it;
+      }
+      case Tok::Ident: {
+        if (functions().count(t.text)) return parse_call(t);
+        if (auto v = vars_.find(t.text); v != vars_.end()) return {{v->second}, t.col};
+        if (t.text == "pi") return {{expr_pi()}, t.col};
+        if (is_nan_name(t.text)) fail("NaN is not a valid number", t.col);
+        fail("unknown identifier '" + t.text + "'", t.col);
+      }
+      case Tok::End: fail("expected an operand", t.col);
+      default: fail("expected an operand, got " + std::string(tok_name(t.kind)), t.col);
+    }
+  }
+
+  std::string text_;
+  std::unordered_map<std::string, Expr> vars_;
+  std::vector<Token> toks_;
+  std::size_t pos_ = 0;
+  int depth_ = 0;
+};
+
+void check_var_names(const std::vector<std::string>& vars) {
+  std::unordered_set<std::string> seen;
+  for (const std::string& v : vars) {
+    ExprVar check(v);  // throws on an invalid identifier
+    if (is_reserved_name(v)) throw Error("Function: \"" + v + "\" is a reserved name, not a variable name");
+    if (!seen.insert(v).second) throw Error("Function: variable \"" + v + "\" declared twice");
+  }
+}
+
+}  // namespace
+
+bool is_reserved_name(const std::string& name) {
+  std::string l = name;
+  std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return std::tolower(c); });
+  return name == "pi" || name == "inf" || name == "oo" || name == "empty" || l == "nan" ||
+         functions().count(name) > 0;
+}
+
+std::vector<Expr> parse_exprs(const std::vector<std::string>& vars, const std::string& text) {
+  check_var_names(vars);
+  return Parser(vars, text).parse_all();
+}
+
+Expr parse_expr(const std::vector<std::string>& vars, const std::string& text) {
+  std::vector<Expr> es = parse_exprs(vars, text);
+  if (es.size() != 1)
+    throw ParseError("expected a scalar expression, got a vector of size " + std::to_string(es.size()) + " in \"" +
+                     text + "\"");
+  return es[0];
+}
+
+}  // namespace sillage
