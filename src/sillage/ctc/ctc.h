@@ -4,7 +4,9 @@
 // (contraction and consistency). contract is const: contractors are
 // stateless, so one contractor can serve several threads (parallel SIVIA).
 #include <cstddef>
+#include <string>
 
+#include "sillage/error.h"
 #include "sillage/interval/interval_vector.h"
 
 namespace sillage {
@@ -16,6 +18,17 @@ class Ctc {
   // Contracts x in place; x.size() must equal nb_vars() (else DimensionError).
   virtual void contract(IntervalVector& x) const = 0;
   std::size_t nb_vars() const { return nb_vars_; }
+  // A short human-readable name, used in error messages ("CtcFunction", ...).
+  virtual std::string name() const { return "Ctc"; }
+
+ protected:
+  // Throws DimensionError naming this contractor when x.size() != nb_vars().
+  void check_dim(const IntervalVector& x) const {
+    if (x.size() != nb_vars_) {
+      throw DimensionError(name() + "::contract: box of size " + std::to_string(x.size()) +
+                           ", expected " + std::to_string(nb_vars_));
+    }
+  }
 
  private:
   std::size_t nb_vars_;

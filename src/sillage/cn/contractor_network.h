@@ -1,0 +1,85 @@
+#pragma once
+// ContractorNetwork (thesis 2.3.1): variables (domains) linked by contractors,
+// propagated to a fixed point.
+//
+//   ContractorNetwork cn;
+//   auto x = cn.create_dom(IntervalVector(2));
+//   auto rho = cn.create_dom(Interval(3.63, 4.43));
+//   cn.add(ctc, {x, rho});            // ctc acts on (x1, x2, rho)
+//   ContractStats s = cn.contract();  // x and rho are contracted in place
+//
+// Domains are the user's own objects, shared: std::shared_ptr<Interval>,
+// std::shared_ptr<IntervalVector>, or a part of a box (DomainRef::component /
+// subvector). Their identity is the shared heap object, so moving or copying
+// the containers of the shared_ptrs changes nothing. The domains of one add()
+// are concatenated into the box given to the contractor; their sizes must add
+// up to its nb_vars() (DimensionError naming it otherwise).
+//
+// Propagation: a queue of contractors, processed in rounds. Round 1 runs every
+// contractor once, in the order of add(); each atom (scalar component) that a
+// contractor shrank by more than ratio() (shrink.h; default 0.01) wakes the
+// other contractors acting on it, which run in the next round (each contractor
+// at most once per round; one already waiting in the current round is not
+// queued again). The propagation stops when a round wakes nobody, or at once
+// when a domain becomes empty (that domain is set empty, the others keep their
+// last values, which remain valid enclosures; ContractStats::empty tells).
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "sillage/cn/cn_node.h"
+#include "sillage/cn/domain_ref.h"
+
+namespace sillage {
+
+struct ContractStats {
+  // Rounds of the queue (see above). The thesis counts sweeps over all the
+  // contractors up to a sweep that changes nothing; rounds run only the woken
+  // contractors, and no idle round is counted.
+  std::size_t iterations = 0;
+  std::size_t contractor_calls = 0;  // calls of Ctc::contract (node runs)
+  double time = 0.0;                 // wall-clock seconds of this contract()
+  bool empty = false;                // a domain became (or was) empty: no solution
+  std::string empty_domain;          // which one, e.g. "domain 2 (Interval)"
+};
+
+class ContractorNetwork {
+ public:
+  ContractorNetwork() = default;
+  ContractorNetwork(const ContractorNetwork&) = delete;
+  ContractorNetwork& operator=(const ContractorNetwork&) = delete;
+
+  // New shared domains owned together by the caller and the network.
+  std::shared_ptr<Interval> create_dom(const Interval& x);
+  std::shared_ptr<IntervalVector> create_dom(const IntervalVector& x);
+
+  // Binds ctc to the concatenation of the domains (registered on first use).
+  void add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains);
+  // Any kind of node (extension point for tube contractors).
+  void add_node(std::shared_ptr<const CnNode> node);
+  // Registers a domain (idempotent); returns its index in the network.
+  std::size_t add_domain(const std::shared_ptr<Domain>& domain);
+
+  // Propagates to the fixed point; see the header comment.
+  ContractStats contract();
+
+  std::size_t nb_ctc() const { return nodes_.size(); }
+  std::size_t nb_dom() const { return domains_.size(); }
+  double ratio() const { return ratio_; }
+  // 0 <= ratio < 1 (else Error).
+  void set_ratio(double ratio);
+
+ private:
+  std::string label(std::size_t d) const;
+
+  std::vector<std::shared_ptr<Domain>> domains_;
+  std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
+  // watchers_[d][a]: the nodes acting on atom a of domain d.
+  std::vector<std::vector<std::vector<std::size_t>>> watchers_;
+  std::vector<std::shared_ptr<const CnNode>> nodes_;
+  double ratio_ = 0.01;
+};
+
+}  // namespace sillage

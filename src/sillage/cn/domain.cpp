@@ -1,0 +1,32 @@
+#include "sillage/cn/domain.h"
+
+#include "sillage/error.h"
+
+namespace sillage {
+
+IntervalDomain::IntervalDomain(std::shared_ptr<Interval> x) : x_(std::move(x)) {
+  if (!x_) throw Error("ContractorNetwork: null Interval domain");
+}
+
+BoxDomain::BoxDomain(std::shared_ptr<IntervalVector> x) : x_(std::move(x)), size_(x_ ? x_->size() : 0) {
+  if (!x_) throw Error("ContractorNetwork: null IntervalVector domain");
+}
+
+void BoxDomain::set_atom(std::size_t i, const Interval& x) {
+  if (x.is_empty()) {
+    x_->set_empty();
+  } else {
+    (*x_)[i] = x;
+  }
+}
+
+std::string BoxDomain::kind() const { return "IntervalVector(" + std::to_string(size_) + ")"; }
+
+void BoxDomain::check_layout(const std::string& label) const {
+  if (x_->size() != size_) {
+    throw DimensionError("ContractorNetwork: " + label + " was registered with size " + std::to_string(size_) +
+                         " but now has size " + std::to_string(x_->size()));
+  }
+}
+
+}  // namespace sillage

@@ -1,0 +1,69 @@
+#pragma once
+// Domain: a variable of a contractor network, seen as a flat array of scalar
+// "atoms" (intervals) that contractors read and contract. An Interval is one
+// atom, a box of size n is n atoms; a tube will be its slices (and gates), so
+// that a pointwise constraint can be bound slice by slice and the network can
+// track changes, and wake contractors, atom by atom.
+//
+// A domain wraps a user object held by std::shared_ptr: its identity (key()) is
+// that heap object, which the network keeps alive, so it never moves, whatever
+// happens to the containers of the user's shared_ptrs.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "sillage/interval/interval_vector.h"
+
+namespace sillage {
+
+class Domain {
+ public:
+  virtual ~Domain() = default;
+  virtual std::size_t nb_atoms() const = 0;
+  virtual Interval atom(std::size_t i) const = 0;
+  // Replaces atom i (the network only ever narrows it).
+  virtual void set_atom(std::size_t i, const Interval& x) = 0;
+  virtual bool is_empty() const = 0;
+  // The wrapped object: two domains with the same key are the same variable.
+  virtual const void* key() const = 0;
+  // "Interval", "IntervalVector(3)", ...
+  virtual std::string kind() const = 0;
+  // Throws DimensionError (naming `label`) when the object no longer has the
+  // layout it had when registered (a box resized behind the network's back).
+  virtual void check_layout(const std::string& label) const { (void)label; }
+};
+
+class IntervalDomain : public Domain {
+ public:
+  explicit IntervalDomain(std::shared_ptr<Interval> x);
+  std::size_t nb_atoms() const override { return 1; }
+  Interval atom(std::size_t) const override { return *x_; }
+  void set_atom(std::size_t, const Interval& x) override { *x_ = x; }
+  bool is_empty() const override { return x_->is_empty(); }
+  const void* key() const override { return x_.get(); }
+  std::string kind() const override { return "Interval"; }
+  const std::shared_ptr<Interval>& object() const { return x_; }
+
+ private:
+  std::shared_ptr<Interval> x_;
+};
+
+class BoxDomain : public Domain {
+ public:
+  explicit BoxDomain(std::shared_ptr<IntervalVector> x);
+  std::size_t nb_atoms() const override { return size_; }
+  Interval atom(std::size_t i) const override { return (*x_)[i]; }
+  // An empty component empties the whole box (the IntervalVector convention).
+  void set_atom(std::size_t i, const Interval& x) override;
+  bool is_empty() const override { return x_->is_empty(); }
+  const void* key() const override { return x_.get(); }
+  std::string kind() const override;
+  void check_layout(const std::string& label) const override;
+  const std::shared_ptr<IntervalVector>& object() const { return x_; }
+
+ private:
+  std::shared_ptr<IntervalVector> x_;
+  std::size_t size_;
+};
+
+}  // namespace sillage
