@@ -1,5 +1,196 @@
+// Contractors and separators. Ctc and Sep can be subclassed in Python
+// (override contract(self, x) / separate(self, x_in, x_out)). contract and
+// separate act in place on the IntervalVector objects given, and return them.
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
 #include "bindings.h"
+#include "sillage/ctc/ctc_algebra.h"
+#include "sillage/ctc/ctc_binary.h"
+#include "sillage/ctc/ctc_box.h"
+#include "sillage/ctc/ctc_function.h"
+#include "sillage/ctc/ctc_unary.h"
+#include "sillage/ctc/sep_algebra.h"
+#include "sillage/ctc/sep_ctc_pair.h"
+#include "sillage/ctc/sep_function.h"
 
 namespace sillage::python {
-void init_ctc(py::module_& /*m*/) {}
+
+namespace {
+
+// Python subclasses of Ctc. The override gets a fresh IntervalVector (so a
+// Python reference kept to it can never dangle), contracts it in place or
+// returns a box; the result is intersected with x (contraction guaranteed).
+class PyCtc : public Ctc {
+ public:
+  using Ctc::Ctc;
+  void contract(IntervalVector& x) const override {
+    py::gil_scoped_acquire gil;
+    const py::function f = py::get_override(static_cast<const Ctc*>(this), "contract");
+    if (!f) throw Error(name() + ".contract is not implemented");
+    const auto box = std::make_shared<IntervalVector>(x);
+    const py::object r = f(box);
+    const IntervalVector res = r.is_none() ? *box : r.cast<IntervalVector>();
+    if (res.size() != x.size()) {
+      throw DimensionError(name() + ".contract returned a box of size " + std::to_string(res.size()) +
+                           ", expected " + std::to_string(x.size()));
+    }
+    x &= res;
+  }
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    const py::function f = py::get_override(static_cast<const Ctc*>(this), "name");
+    if (f) return f().cast<std::string>();
+    return py::str(py::type::handle_of(py::cast(this, py::return_value_policy::reference)).attr("__name__"));
+  }
+};
+
+class PySep : public Sep {
+ public:
+  using Sep::Sep;
+  void separate(IntervalVector& x_in, IntervalVector& x_out) const override {
+    py::gil_scoped_acquire gil;
+    const py::function f = py::get_override(static_cast<const Sep*>(this), "separate");
+    if (!f) throw Error(name() + ".separate is not implemented");
+    const auto in = std::make_shared<IntervalVector>(x_in), out = std::make_shared<IntervalVector>(x_out);
+    f(in, out);  // in place
+    if (in->size() != x_in.size() || out->size() != x_out.size()) {
+      throw DimensionError(name() + ".separate resized its boxes");
+    }
+    x_in &= *in;
+    x_out &= *out;
+  }
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    return py::str(py::type::handle_of(py::cast(this, py::return_value_policy::reference)).attr("__name__"));
+  }
+};
+
+// A shared pointer that also keeps the Python object alive: a Python subclass
+// must outlive every C++ holder, or its overrides would vanish.
+template <class T>
+std::shared_ptr<const T> hold(const py::handle& h, const char* what) {
+  if (h.is_none()) throw Error(std::string(what) + " is None");
+  const auto p = h.cast<std::shared_ptr<T>>();
+  auto* keep = new py::object(py::reinterpret_borrow<py::object>(h));
+  return std::shared_ptr<const T>(p.get(), [keep](const T*) {
+    py::gil_scoped_acquire gil;
+    delete keep;
+  });
+}
+
+template <class T>
+std::vector<std::shared_ptr<const T>> hold_list(const py::iterable& list, const char* what) {
+  std::vector<std::shared_ptr<const T>> v;
+  for (const auto& h : list) v.push_back(hold<T>(h, what));
+  return v;
+}
+
+}  // namespace
+
+// Also used by bind_cn.cpp.
+std::shared_ptr<const Ctc> hold_ctc(const py::handle& h) { return hold<Ctc>(h, "contractor"); }
+
+void init_ctc(py::module_& m) {
+  py::class_<Ctc, PyCtc, std::shared_ptr<Ctc>>(m, "Ctc",
+                                               "A contractor on boxes; subclass it and override contract(self, x).")
+      .def(py::init<std::size_t>(), py::arg("nb_vars"))
+      .def(
+          "contract",
+          [](const Ctc& c, const std::shared_ptr<IntervalVector>& x) {
+            if (!x) throw Error("contract: the box is None");
+            c.contract(*x);
+            return x;
+          },
+          py::arg("x"), "Contracts x in place and returns it.")
+      .def("nb_vars", &Ctc::nb_vars)
+      .def("name", &Ctc::name)
+      .def("__and__", [](const py::object& a, const py::object& b) {
+        return std::make_shared<CtcInter>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
+      })
+      .def("__or__", [](const py::object& a, const py::object& b) {
+        return std::make_shared<CtcUnion>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
+      })
+      .def("__repr__", [](const Ctc& c) { return "<" + c.name() + " on " + std::to_string(c.nb_vars()) + " variables>"; });
+
+  py::class_<CtcBox, Ctc, std::shared_ptr<CtcBox>>(m, "CtcBox")
+      .def(py::init<const IntervalVector&>(), py::arg("box"))
+      .def("box", &CtcBox::box);
+  py::class_<CtcBinary, Ctc, std::shared_ptr<CtcBinary>>(m, "CtcBinary")
+      .def(py::init<const std::string&>(), py::arg("op"));
+  py::class_<CtcAdd, CtcBinary, std::shared_ptr<CtcAdd>>(m, "CtcAdd").def(py::init<>());
+  py::class_<CtcSub, CtcBinary, std::shared_ptr<CtcSub>>(m, "CtcSub").def(py::init<>());
+  py::class_<CtcMul, CtcBinary, std::shared_ptr<CtcMul>>(m, "CtcMul").def(py::init<>());
+  py::class_<CtcDiv, CtcBinary, std::shared_ptr<CtcDiv>>(m, "CtcDiv").def(py::init<>());
+  py::class_<CtcUnary, Ctc, std::shared_ptr<CtcUnary>>(m, "CtcUnary")
+      .def(py::init<const std::string&, int>(), py::arg("op"), py::arg("n") = 0);
+  py::class_<CtcFunction, Ctc, std::shared_ptr<CtcFunction>>(m, "CtcFunction")
+      .def(py::init<const Function&, const IntervalVector&>(), py::arg("f"), py::arg("y"))
+      .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("y"))
+      .def(py::init<const Function&>(), py::arg("f"), "f(x) = 0")
+      .def("function", &CtcFunction::function)
+      .def("image", &CtcFunction::image);
+
+  const auto list_ctor = [](auto tag) {
+    using T = typename decltype(tag)::type;
+    return py::init([](const py::iterable& list) { return std::make_shared<T>(hold_list<Ctc>(list, "contractor")); });
+  };
+  py::class_<CtcInter, Ctc, std::shared_ptr<CtcInter>>(m, "CtcInter")
+      .def(list_ctor(std::type_identity<CtcInter>{}), py::arg("list"));
+  py::class_<CtcUnion, Ctc, std::shared_ptr<CtcUnion>>(m, "CtcUnion")
+      .def(list_ctor(std::type_identity<CtcUnion>{}), py::arg("list"));
+  py::class_<CtcCompo, Ctc, std::shared_ptr<CtcCompo>>(m, "CtcCompo",
+                                                       "Applies the contractors of the list in order, first to last.")
+      .def(list_ctor(std::type_identity<CtcCompo>{}), py::arg("list"));
+  py::class_<CtcFixPoint, Ctc, std::shared_ptr<CtcFixPoint>>(m, "CtcFixPoint")
+      .def(py::init([](const py::object& c, double ratio) { return std::make_shared<CtcFixPoint>(hold_ctc(c), ratio); }),
+           py::arg("ctc"), py::arg("ratio") = 0.01)
+      .def("ratio", &CtcFixPoint::ratio);
+
+  // ---- separators ----
+  py::class_<Sep, PySep, std::shared_ptr<Sep>>(
+      m, "Sep", "A separator; subclass it and override separate(self, x_in, x_out) (in place).")
+      .def(py::init<std::size_t>(), py::arg("nb_vars"))
+      .def(
+          "separate",
+          [](const Sep& s, const std::shared_ptr<IntervalVector>& x_in, const std::shared_ptr<IntervalVector>& x_out) {
+            if (!x_in || !x_out) throw Error("separate: a box is None");
+            s.separate(*x_in, *x_out);
+            return py::make_tuple(x_in, x_out);
+          },
+          py::arg("x_in"), py::arg("x_out"), "Contracts x_in (inner) and x_out (outer) in place; returns both.")
+      .def("nb_vars", &Sep::nb_vars)
+      .def("name", &Sep::name)
+      .def("__and__", [](const py::object& a, const py::object& b) {
+        return std::make_shared<SepInter>(std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
+      })
+      .def("__or__", [](const py::object& a, const py::object& b) {
+        return std::make_shared<SepUnion>(std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
+      })
+      .def("__invert__", [](const py::object& a) { return std::make_shared<SepNot>(hold<Sep>(a, "separator")); })
+      .def("__repr__", [](const Sep& s) { return "<" + s.name() + " on " + std::to_string(s.nb_vars()) + " variables>"; });
+
+  py::class_<SepCtcPair, Sep, std::shared_ptr<SepCtcPair>>(m, "SepCtcPair")
+      .def(py::init([](const py::object& in, const py::object& out) {
+             return std::make_shared<SepCtcPair>(hold_ctc(in), hold_ctc(out));
+           }),
+           py::arg("ctc_in"), py::arg("ctc_out"));
+  py::class_<SepFunction, Sep, std::shared_ptr<SepFunction>>(m, "SepFunction")
+      .def(py::init<const Function&, const IntervalVector&>(), py::arg("f"), py::arg("y"))
+      .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("y"));
+  py::class_<SepInter, Sep, std::shared_ptr<SepInter>>(m, "SepInter")
+      .def(py::init([](const py::iterable& l) { return std::make_shared<SepInter>(hold_list<Sep>(l, "separator")); }),
+           py::arg("list"));
+  py::class_<SepUnion, Sep, std::shared_ptr<SepUnion>>(m, "SepUnion")
+      .def(py::init([](const py::iterable& l) { return std::make_shared<SepUnion>(hold_list<Sep>(l, "separator")); }),
+           py::arg("list"));
+  py::class_<SepNot, Sep, std::shared_ptr<SepNot>>(m, "SepNot")
+      .def(py::init([](const py::object& s) { return std::make_shared<SepNot>(hold<Sep>(s, "separator")); }),
+           py::arg("sep"));
+}
+
 }  // namespace sillage::python

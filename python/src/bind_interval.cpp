@@ -1,32 +1,535 @@
+// Interval, IntervalVector, IntervalMatrix, the elementary functions and the
+// backward projections.
+//
+// The classes are held by std::shared_ptr: a ContractorNetwork keeps the very
+// Python objects it is given and contracts them in place, so in-place operators
+// (&=, |=, +=, ...) modify the object itself. Indexing returns copies
+// (v[i] &= y still works: Python writes the result back with __setitem__).
+// The empty interval is stored as the bound pair (inf, -inf), which is also
+// what to_numpy() gives and what the constructors accept back.
+#include <pybind11/numpy.h>
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "bindings.h"
+#include "sillage/interval/backward.h"
+#include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
+#include "sillage/interval/interval_matrix.h"
+#include "sillage/interval/interval_vector.h"
 
 namespace sillage::python {
-void init_interval(py::module_& m) {
-  py::class_<Interval>(m, "Interval")
-      .def(py::init<>())
-      .def(py::init<double>())
-      .def(py::init<double, double>())
-      .def_static("empty", &Interval::empty)
-      .def_static("all_reals", &Interval::all_reals)
-      .def("lb", &Interval::lb)
-      .def("ub", &Interval::ub)
-      .def("mid", &Interval::mid)
-      .def("diam", &Interval::diam)
-      .def("rad", &Interval::rad)
-      .def("is_empty", &Interval::is_empty)
-      .def("contains", &Interval::contains)
-      .def("is_subset", &Interval::is_subset)
+
+namespace {
+
+constexpr double kInf = rounding::kInf;
+using FloatArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::string type_name(const py::handle& h) { return py::str(py::type::handle_of(h).attr("__name__")); }
+
+double as_double(const py::handle& h, const std::string& where) {
+  const double v = PyFloat_AsDouble(h.ptr());
+  if (v == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw Error(where + ": expected a number, got " + type_name(h));
+  }
+  return v;
+}
+
+// [lb, ub], the pair (inf, -inf) standing for the empty set.
+Interval from_bounds(double lb, double ub) {
+  if (lb == kInf && ub == -kInf) return Interval::empty();
+  return Interval(lb, ub);
+}
+
+// Runs f, prefixing the message of a sillage::Error with `where`.
+template <class F>
+auto located(const std::string& where, F f) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    throw Error(where + ": " + e.what());
+  }
+}
+
+// An Interval, a number (degenerate interval) or a pair [lb, ub].
+Interval to_interval(const py::handle& h, const std::string& where) {
+  if (py::isinstance<Interval>(h)) return h.cast<Interval>();
+  if (!py::isinstance<py::str>(h) && !py::isinstance<py::bytes>(h)) {
+    if (PyNumber_Check(h.ptr()) && !PySequence_Check(h.ptr())) {
+      const double v = as_double(h, where);
+      return located(where, [v] { return Interval(v); });
+    }
+    if (PySequence_Check(h.ptr())) {
+      const auto s = py::reinterpret_borrow<py::sequence>(h);
+      if (s.size() == 2) {
+        const double lb = as_double(s[0], where), ub = as_double(s[1], where);
+        return located(where, [=] { return from_bounds(lb, ub); });
+      }
+      throw DimensionError(where + ": a pair [lb, ub] has 2 bounds, got " + std::to_string(s.size()));
+    }
+  }
+  throw Error(where + ": expected an Interval, a number or a pair [lb, ub], got " + type_name(h));
+}
+
+IntervalVector vector_from(const py::handle& obj) {
+  if (py::isinstance<IntervalVector>(obj)) return obj.cast<IntervalVector>();
+  if (py::isinstance<py::int_>(obj)) {
+    const long long n = obj.cast<long long>();
+    if (n < 0) throw DimensionError("IntervalVector(n): n must be >= 0, got " + std::to_string(n));
+    return IntervalVector(static_cast<std::size_t>(n));
+  }
+  if (py::isinstance<py::array>(obj)) {
+    const auto a = FloatArray::ensure(obj);
+    if (!a) throw Error("IntervalVector: the array must hold numbers");
+    if (a.ndim() == 1) {  // points
+      IntervalVector v(static_cast<std::size_t>(a.shape(0)));
+      for (py::ssize_t i = 0; i < a.shape(0); ++i)
+        v[i] = located("IntervalVector: component " + std::to_string(i), [&] { return Interval(a.at(i)); });
+      return v;
+    }
+    if (a.ndim() != 2 || a.shape(1) != 2) {
+      throw DimensionError("IntervalVector: expected an (n, 2) array of bounds, got " + std::to_string(a.ndim()) +
+                           " dimensions");
+    }
+    IntervalVector v(static_cast<std::size_t>(a.shape(0)));
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+      v[i] = located("IntervalVector: component " + std::to_string(i),
+                     [&] { return from_bounds(a.at(i, 0), a.at(i, 1)); });
+    return v;
+  }
+  if (!py::isinstance<py::iterable>(obj) || py::isinstance<py::str>(obj)) {
+    throw Error("IntervalVector: expected a size, a list of intervals or an (n, 2) array, got " + type_name(obj));
+  }
+  std::vector<Interval> xs;
+  for (const auto& item : obj) xs.push_back(to_interval(item, "IntervalVector: component " + std::to_string(xs.size())));
+  return IntervalVector(std::move(xs));
+}
+
+IntervalMatrix matrix_from(const py::handle& obj) {
+  if (py::isinstance<IntervalMatrix>(obj)) return obj.cast<IntervalMatrix>();
+  if (py::isinstance<py::array>(obj)) {
+    const auto a = FloatArray::ensure(obj);
+    if (!a) throw Error("IntervalMatrix: the array must hold numbers");
+    if (a.ndim() != 2 && !(a.ndim() == 3 && a.shape(2) == 2)) {
+      throw DimensionError("IntervalMatrix: expected an (n, m, 2) array of bounds or an (n, m) array of points");
+    }
+    IntervalMatrix m(static_cast<std::size_t>(a.shape(0)), static_cast<std::size_t>(a.shape(1)));
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+      for (py::ssize_t j = 0; j < a.shape(1); ++j)
+        m(i, j) = located("IntervalMatrix: entry (" + std::to_string(i) + ", " + std::to_string(j) + ")", [&] {
+          return a.ndim() == 2 ? Interval(a.at(i, j)) : from_bounds(a.at(i, j, 0), a.at(i, j, 1));
+        });
+    return m;
+  }
+  if (!py::isinstance<py::iterable>(obj) || py::isinstance<py::str>(obj)) {
+    throw Error("IntervalMatrix: expected a list of rows or an (n, m, 2) array, got " + type_name(obj));
+  }
+  std::vector<IntervalVector> rows;
+  for (const auto& r : obj)
+    rows.push_back(located("IntervalMatrix: row " + std::to_string(rows.size()), [&] { return vector_from(r); }));
+  return IntervalMatrix(rows);
+}
+
+py::array_t<double> vector_to_numpy(const IntervalVector& v) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{2}});
+  auto r = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    r(i, 0) = v[i].lb();
+    r(i, 1) = v[i].ub();
+  }
+  return a;
+}
+
+py::array_t<double> matrix_to_numpy(const IntervalMatrix& m) {
+  py::array_t<double> a({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols()), py::ssize_t{2}});
+  auto r = a.mutable_unchecked<3>();
+  for (std::size_t i = 0; i < m.rows(); ++i)
+    for (std::size_t j = 0; j < m.cols(); ++j) {
+      r(i, j, 0) = m(i, j).lb();
+      r(i, j, 1) = m(i, j).ub();
+    }
+  return a;
+}
+
+py::object as_array(const py::array& a, const py::object& dtype) {
+  return dtype.is_none() ? py::object(a) : a.attr("astype")(dtype);
+}
+
+std::size_t check_index(long long i, std::size_t n) {
+  if (i < 0) i += static_cast<long long>(n);
+  if (i < 0 || i >= static_cast<long long>(n)) throw py::index_error("index out of range");
+  return static_cast<std::size_t>(i);
+}
+
+py::tuple bounds_state(const Interval& x) { return py::make_tuple(x.lb(), x.ub()); }
+
+void init_interval_class(py::module_& m) {
+  using I = Interval;
+  py::class_<I, std::shared_ptr<I>> c(m, "Interval",
+                                      "A closed interval [lb, ub] of reals, possibly empty or unbounded. "
+                                      "Operations round outward: the exact result is always enclosed.");
+  c.def(py::init<>(), "The whole real line.")
+      .def(py::init<double>(), py::arg("x"), "The degenerate interval [x, x].")
+      .def(py::init<double, double>(), py::arg("lb"), py::arg("ub"))
+      .def(py::init<const I&>(), py::arg("x"), "A copy.")
+      .def_static("empty", &I::empty)
+      .def_static("all_reals", &I::all_reals)
+      .def_static("pos_reals", &I::pos_reals)
+      .def_static("neg_reals", &I::neg_reals)
+      .def_static("pi", &I::pi, "A tight enclosure of pi.")
+      .def_static("half_pi", &I::half_pi)
+      .def_static("two_pi", &I::two_pi)
+      .def("lb", &I::lb)
+      .def("ub", &I::ub)
+      .def("mid", &I::mid)
+      .def("diam", &I::diam)
+      .def("width", &I::width)
+      .def("rad", &I::rad)
+      .def("mag", &I::mag)
+      .def("mig", &I::mig)
+      .def("volume", &I::volume)
+      .def("is_empty", &I::is_empty)
+      .def("is_degenerate", &I::is_degenerate)
+      .def("is_unbounded", &I::is_unbounded)
+      .def("is_bounded", &I::is_bounded)
+      .def("is_all_reals", &I::is_all_reals)
+      .def("contains", &I::contains, py::arg("x"))
+      .def("interior_contains", &I::interior_contains, py::arg("x"))
+      .def("is_subset", &I::is_subset, py::arg("y"))
+      .def("is_strict_subset", &I::is_strict_subset, py::arg("y"))
+      .def("is_interior_subset", &I::is_interior_subset, py::arg("y"))
+      .def("is_superset", &I::is_superset, py::arg("y"))
+      .def("intersects", &I::intersects, py::arg("y"))
+      .def("is_disjoint", &I::is_disjoint, py::arg("y"))
+      .def("bisect", &I::bisect, py::arg("ratio") = 0.5, "Two halves split at lb + ratio * diam.")
+      .def("inflate", &I::inflate, py::arg("r"))
+      .def("set_empty", &I::set_empty)
+      .def("copy", [](const I& x) { return x; })
+      .def("__copy__", [](const I& x) { return x; })
+      .def("__deepcopy__", [](const I& x, py::dict) { return x; })
+      .def("__contains__", &I::contains)
+      .def(py::pickle([](const I& x) { return bounds_state(x); },
+                      [](const py::tuple& t) {
+                        return from_bounds(as_double(t[0], "Interval"), as_double(t[1], "Interval"));
+                      }))
+      .def("__repr__", &I::str)
+      .def("__str__", &I::str)
+      .def(py::self == py::self)
+      .def(py::self != py::self)
+      .def("__eq__", [](const I& a, double b) { return std::isfinite(b) && a == I(b); }, py::is_operator())
+      .def("__ne__", [](const I& a, double b) { return !(std::isfinite(b) && a == I(b)); }, py::is_operator())
+      .def(-py::self)
+      .def(+py::self)
+      .def("__abs__", [](const I& x) { return abs(x); });
+  c.attr("__hash__") = py::none();  // mutable
+  c.attr("__array_ufunc__") = py::none();  // numpy defers to our reflected operators
+
+  // Binary operators with an Interval or a float on either side; in-place forms modify self.
+#define SILLAGE_BIN(name, rname, iname, op)                                                              \
+  c.def(name, [](const I& a, const I& b) { return a op b; }, py::is_operator())                         \
+      .def(name, [](const I& a, double b) { return a op I(b); }, py::is_operator())                     \
+      .def(rname, [](const I& a, double b) { return I(b) op a; }, py::is_operator())                    \
+      .def(iname, [](I& a, const I& b) -> I& { return a = a op b; }, py::is_operator(),                 \
+           py::return_value_policy::reference)                                                          \
+      .def(iname, [](I& a, double b) -> I& { return a = a op I(b); }, py::is_operator(),                \
+           py::return_value_policy::reference);
+  SILLAGE_BIN("__add__", "__radd__", "__iadd__", +)
+  SILLAGE_BIN("__sub__", "__rsub__", "__isub__", -)
+  SILLAGE_BIN("__mul__", "__rmul__", "__imul__", *)
+  SILLAGE_BIN("__truediv__", "__rtruediv__", "__itruediv__", /)
+  SILLAGE_BIN("__and__", "__rand__", "__iand__", &)
+  SILLAGE_BIN("__or__", "__ror__", "__ior__", |)
+#undef SILLAGE_BIN
+  c.def("__pow__", [](const I& x, int n) { return pow(x, n); }, py::is_operator())
+      .def("__pow__", [](const I& x, double p) { return pow(x, p); }, py::is_operator())
+      .def("__pow__", [](const I& x, const I& p) { return pow(x, p); }, py::is_operator());
+}
+
+void init_vector_class(py::module_& m) {
+  using V = IntervalVector;
+  py::class_<V, std::shared_ptr<V>> c(m, "IntervalVector",
+                                      "A box: a vector of intervals. Empty as soon as one component is.");
+  c.def(py::init([](const py::object& obj) { return vector_from(obj); }), py::arg("x"),
+        "IntervalVector(n) (n copies of the real line), or from a list of intervals / numbers / "
+        "pairs [lb, ub], or from an (n, 2) array of bounds.")
+      .def(py::init([](std::size_t n, const py::object& x) { return V(n, to_interval(x, "IntervalVector(n, x)")); }),
+           py::arg("n"), py::arg("x"))
+      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"))
+      .def_static("empty", &V::empty, py::arg("n"))
+      .def("size", &V::size)
+      .def("__len__", &V::size)
+      .def("__getitem__", [](const V& v, long long i) { return v[check_index(i, v.size())]; })
+      .def("__getitem__",
+           [](const V& v, const py::slice& s) {
+             std::size_t start = 0, stop = 0, step = 0, n = 0;
+             if (!s.compute(v.size(), &start, &stop, &step, &n)) throw py::error_already_set();
+             std::vector<Interval> xs;
+             for (std::size_t k = 0; k < n; ++k, start += step) xs.push_back(v[start]);
+             return V(std::move(xs));
+           })
+      .def("__setitem__",
+           [](V& v, long long i, const py::object& x) {
+             const std::size_t k = check_index(i, v.size());
+             v[k] = to_interval(x, "IntervalVector[" + std::to_string(k) + "]");
+           })
+      .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
+      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i to j inclusive.")
+      .def("put", &V::put, py::arg("start"), py::arg("x"))
+      .def("lb", &V::lb)
+      .def("ub", &V::ub)
+      .def("mid", &V::mid)
+      .def("diam", &V::diam)
+      .def("rad", &V::rad)
+      .def("mag", &V::mag)
+      .def("mig", &V::mig)
+      .def("volume", &V::volume)
+      .def("max_diam", &V::max_diam)
+      .def("min_diam", &V::min_diam)
+      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true)
+      .def("is_empty", &V::is_empty)
+      .def("is_unbounded", &V::is_unbounded)
+      .def("is_degenerate", &V::is_degenerate)
+      .def("contains", &V::contains, py::arg("p"))
+      .def("is_subset", &V::is_subset, py::arg("y"))
+      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"))
+      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"))
+      .def("intersects", &V::intersects, py::arg("y"))
+      .def("bisect", py::overload_cast<double>(&V::bisect, py::const_), py::arg("ratio") = 0.5,
+           "Splits the largest component at lb + ratio * diam.")
+      .def("bisect", py::overload_cast<std::size_t, double>(&V::bisect, py::const_), py::arg("i"),
+           py::arg("ratio") = 0.5)
+      .def("inflate", &V::inflate, py::arg("r"))
+      .def("set_empty", &V::set_empty)
+      .def("copy", [](const V& v) { return v; })
+      .def("__copy__", [](const V& v) { return v; })
+      .def("__deepcopy__", [](const V& v, py::dict) { return v; })
+      .def("to_numpy", &vector_to_numpy, "An (n, 2) array of bounds (an empty component gives inf, -inf).")
+      .def("__array__", [](const V& v, const py::object& dtype, const py::object&) {
+             return as_array(vector_to_numpy(v), dtype);
+           }, py::arg("dtype") = py::none(), py::arg("copy") = py::none())
+      .def(py::pickle([](const V& v) { return py::object(vector_to_numpy(v)); },
+                      [](const py::object& a) { return vector_from(a); }))
+      .def("__repr__", &V::str)
+      .def(py::self == py::self)
+      .def(py::self != py::self)
+      .def(-py::self)
+      .def("__abs__", [](const V& v) { return abs(v); })
       .def(py::self + py::self)
       .def(py::self - py::self)
-      .def(py::self * py::self)
-      .def(py::self / py::self)
       .def(py::self & py::self)
       .def(py::self | py::self)
-      .def(py::self == py::self)
-      .def("__repr__", &Interval::str);
+      .def("__iadd__", [](V& a, const V& b) -> V& { return a += b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__isub__", [](V& a, const V& b) -> V& { return a -= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__ior__", [](V& a, const V& b) -> V& { return a |= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__mul__", [](const V& v, const Interval& s) { return v * s; }, py::is_operator())
+      .def("__rmul__", [](const V& v, const Interval& s) { return s * v; }, py::is_operator())
+      .def("__imul__", [](V& v, const Interval& s) -> V& { return v = s * v; }, py::is_operator(),
+           py::return_value_policy::reference);
+  c.attr("__hash__") = py::none();
+  c.attr("__array_ufunc__") = py::none();
 }
+
+void init_matrix_class(py::module_& m) {
+  using M = IntervalMatrix;
+  py::class_<M, std::shared_ptr<M>> c(m, "IntervalMatrix", "A matrix of intervals (a box of real matrices).");
+  c.def(py::init([](std::size_t r, std::size_t k, const py::object& x) {
+          return M(r, k, x.is_none() ? Interval() : to_interval(x, "IntervalMatrix(rows, cols, x)"));
+        }),
+        py::arg("rows"), py::arg("cols"), py::arg("x") = py::none())
+      .def(py::init([](const py::object& obj) { return matrix_from(obj); }), py::arg("x"),
+           "From a list of rows (each a list of intervals / numbers / pairs, or an IntervalVector), "
+           "an (n, m, 2) array of bounds or an (n, m) array of points.")
+      .def_static("identity", &M::identity, py::arg("n"))
+      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"))
+      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"))
+      .def("rows", &M::rows)
+      .def("cols", &M::cols)
+      .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); })
+      .def("__len__", &M::rows)
+      .def("__getitem__", [](const M& a, std::pair<long long, long long> ij) {
+             return a(check_index(ij.first, a.rows()), check_index(ij.second, a.cols()));
+           })
+      .def("__getitem__", [](const M& a, long long i) { return a.row(check_index(i, a.rows())); })
+      .def("__setitem__", [](M& a, std::pair<long long, long long> ij, const py::object& x) {
+             const std::size_t i = check_index(ij.first, a.rows()), j = check_index(ij.second, a.cols());
+             a(i, j) = to_interval(x, "IntervalMatrix[" + std::to_string(i) + ", " + std::to_string(j) + "]");
+           })
+      .def("__setitem__", [](M& a, long long i, const py::object& r) {
+             a.set_row(check_index(i, a.rows()), vector_from(r));
+           })
+      .def("row", &M::row, py::arg("i"))
+      .def("col", &M::col, py::arg("j"))
+      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"))
+      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"))
+      .def("transpose", &M::transpose)
+      .def_property_readonly("T", &M::transpose)
+      .def("lb", &M::lb)
+      .def("ub", &M::ub)
+      .def("mid", &M::mid)
+      .def("diam", &M::diam)
+      .def("max_diam", &M::max_diam)
+      .def("is_empty", &M::is_empty)
+      .def("is_unbounded", &M::is_unbounded)
+      .def("is_degenerate", &M::is_degenerate)
+      .def("contains", &M::contains, py::arg("p"))
+      .def("is_subset", &M::is_subset, py::arg("y"))
+      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"))
+      .def("intersects", &M::intersects, py::arg("y"))
+      .def("inflate", &M::inflate, py::arg("r"))
+      .def("set_empty", &M::set_empty)
+      .def("copy", [](const M& a) { return a; })
+      .def("__copy__", [](const M& a) { return a; })
+      .def("__deepcopy__", [](const M& a, py::dict) { return a; })
+      .def("to_numpy", &matrix_to_numpy, "An (n, m, 2) array of bounds.")
+      .def("__array__", [](const M& a, const py::object& dtype, const py::object&) {
+             return as_array(matrix_to_numpy(a), dtype);
+           }, py::arg("dtype") = py::none(), py::arg("copy") = py::none())
+      .def(py::pickle([](const M& a) { return py::object(matrix_to_numpy(a)); },
+                      [](const py::object& a) { return matrix_from(a); }))
+      .def("__repr__", &M::str)
+      .def(py::self == py::self)
+      .def(py::self != py::self)
+      .def(-py::self)
+      .def("__abs__", [](const M& a) { return abs(a); })
+      .def(py::self + py::self)
+      .def(py::self - py::self)
+      .def(py::self & py::self)
+      .def(py::self | py::self)
+      .def("__iadd__", [](M& a, const M& b) -> M& { return a += b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__isub__", [](M& a, const M& b) -> M& { return a -= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__iand__", [](M& a, const M& b) -> M& { return a &= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__ior__", [](M& a, const M& b) -> M& { return a |= b; }, py::is_operator(),
+           py::return_value_policy::reference)
+      .def("__mul__", [](const M& a, const M& b) { return a * b; }, py::is_operator())
+      .def("__mul__", [](const M& a, const IntervalVector& x) { return a * x; }, py::is_operator())
+      .def("__mul__", [](const M& a, const Interval& s) { return a * s; }, py::is_operator())
+      .def("__rmul__", [](const M& a, const Interval& s) { return s * a; }, py::is_operator())
+      .def("__matmul__", [](const M& a, const M& b) { return a * b; }, py::is_operator())
+      .def("__matmul__", [](const M& a, const IntervalVector& x) { return a * x; }, py::is_operator())
+      .def("__imul__", [](M& a, const Interval& s) -> M& { return a *= s; }, py::is_operator(),
+           py::return_value_policy::reference);
+  c.attr("__hash__") = py::none();
+  c.attr("__array_ufunc__") = py::none();
+}
+
+void init_functions(py::module_& m) {
+  using I = Interval;
+  using F1 = I (*)(const I&);
+  using F2 = I (*)(const I&, const I&);
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"));
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"));
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"));
+  m.def("log", static_cast<F1>(&log), py::arg("x"), "Natural logarithm (on the part of x above 0).");
+  m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"));
+  m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"));
+  m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"));
+  m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"));
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"));
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"));
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"));
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"));
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"));
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"));
+  m.def("atan2", static_cast<F2>(&atan2), py::arg("y"), py::arg("x"), "atan2(y, x), y first; range [-pi, pi].");
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"));
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"));
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"));
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"));
+  m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"));
+  m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"));
+  m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"));
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"));
+  m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"));
+  m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
+        py::arg("y"));
+  m.def("dot", &dot, py::arg("x"), py::arg("y"));
+  m.def("norm", &norm, py::arg("x"), "Euclidean norm of a box.");
+  m.def("div2", &div2, py::arg("c"), py::arg("b"),
+        "Relational division {z : z * b' in c for some b' in b} as two intervals, lower piece first.");
+
+  // Backward projections: Python intervals are values, so each returns the
+  // contracted arguments as a tuple (a 1-tuple for one argument); an argument
+  // with no solution comes back empty, and then all of them do.
+  const char* doc1 = "Contracts x for y = f(x); returns the tuple (x,).";
+  const char* doc2 = "Contracts x1, x2 for y = f(x1, x2); returns the tuple (x1, x2).";
+#define SILLAGE_BWD1(name)                                                            \
+  m.def(#name, [](const I& y, I x) {                                                  \
+    name(y, x);                                                                       \
+    return py::make_tuple(x);                                                         \
+  }, py::arg("y"), py::arg("x"), doc1);
+#define SILLAGE_BWD2(name)                                                            \
+  m.def(#name, [](const I& y, I x1, I x2) {                                           \
+    name(y, x1, x2);                                                                  \
+    return py::make_tuple(x1, x2);                                                    \
+  }, py::arg("y"), py::arg("x1"), py::arg("x2"), doc2);
+  SILLAGE_BWD2(bwd_add)
+  SILLAGE_BWD2(bwd_sub)
+  SILLAGE_BWD2(bwd_mul)
+  SILLAGE_BWD2(bwd_div)
+  SILLAGE_BWD2(bwd_min)
+  SILLAGE_BWD2(bwd_max)
+  SILLAGE_BWD1(bwd_neg)
+  SILLAGE_BWD1(bwd_sqr)
+  SILLAGE_BWD1(bwd_sqrt)
+  SILLAGE_BWD1(bwd_exp)
+  SILLAGE_BWD1(bwd_log)
+  SILLAGE_BWD1(bwd_sin)
+  SILLAGE_BWD1(bwd_cos)
+  SILLAGE_BWD1(bwd_tan)
+  SILLAGE_BWD1(bwd_asin)
+  SILLAGE_BWD1(bwd_acos)
+  SILLAGE_BWD1(bwd_atan)
+  SILLAGE_BWD1(bwd_sinh)
+  SILLAGE_BWD1(bwd_cosh)
+  SILLAGE_BWD1(bwd_tanh)
+  SILLAGE_BWD1(bwd_abs)
+  SILLAGE_BWD1(bwd_sign)
+#undef SILLAGE_BWD1
+#undef SILLAGE_BWD2
+  m.def("bwd_pow", [](const I& y, I x, int n) {
+    bwd_pow(y, x, n);
+    return py::make_tuple(x);
+  }, py::arg("y"), py::arg("x"), py::arg("n"), "Contracts x for y = x^n (integer n); returns (x,).");
+  m.def("bwd_pow", [](const I& y, I x, I p) {
+    bwd_pow(y, x, p);
+    return py::make_tuple(x, p);
+  }, py::arg("y"), py::arg("x"), py::arg("p"), "Contracts x and p for y = x^p (real p); returns (x, p).");
+  m.def("bwd_root", [](const I& y, I x, int n) {
+    bwd_root(y, x, n);
+    return py::make_tuple(x);
+  }, py::arg("y"), py::arg("x"), py::arg("n"), "Contracts x for y = root(x, n); returns (x,).");
+  m.def("bwd_atan2", [](const I& theta, I y, I x) {
+    bwd_atan2(theta, y, x);
+    return py::make_tuple(y, x);
+  }, py::arg("theta"), py::arg("y"), py::arg("x"), "Contracts y and x for theta = atan2(y, x); returns (y, x).");
+}
+
+}  // namespace
+
+void init_interval(py::module_& m) {
+  init_interval_class(m);
+  init_vector_class(m);
+  init_matrix_class(m);
+  init_functions(m);
+  // Numbers where an Interval is expected, lists / arrays where a box is.
+  py::implicitly_convertible<py::float_, Interval>();
+  py::implicitly_convertible<py::int_, Interval>();
+  py::implicitly_convertible<py::list, IntervalVector>();
+  py::implicitly_convertible<py::tuple, IntervalVector>();
+  py::implicitly_convertible<py::array, IntervalVector>();
+}
+
 }  // namespace sillage::python

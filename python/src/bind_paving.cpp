@@ -1,5 +1,207 @@
+// Set inversion: Paving, PavingTag, components and contours, sivia and
+// kernel_sivia. Calls with C++ functions, contractors and separators release
+// the GIL and run in parallel (Python subclasses of Ctc/Sep take the GIL in
+// their overrides); Python callables run on the calling thread.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+
 #include "bindings.h"
+#include "sillage/paving/sivia_function.h"
 
 namespace sillage::python {
-void init_paving(py::module_& /*m*/) {}
+
+namespace {
+
+py::tuple point(const Point2& p) { return py::make_tuple(p.x, p.y); }
+
+// [f]([x]) from a Python callable returning an IntervalVector or an Interval.
+IntervalVector call_box_function(const py::function& f, const IntervalVector& x) {
+  const py::object r = f(x);
+  if (py::isinstance<Interval>(r)) return IntervalVector{r.cast<Interval>()};
+  return r.cast<IntervalVector>();
+}
+
+// Leaves of a tag as a float array (k, dim, 2) of [lb, ub] rows: fast plotting.
+py::array_t<double> boxes_array(const Paving& p, PavingTag tag) {
+  const auto leaves = p.leaf_indices(tag);
+  py::array_t<double> a({leaves.size(), p.dim(), std::size_t{2}});
+  auto r = a.mutable_unchecked<3>();
+  for (std::size_t k = 0; k < leaves.size(); ++k) {
+    const IntervalVector b = p.node_box(leaves[k]);
+    for (std::size_t d = 0; d < p.dim(); ++d) {
+      r(k, d, 0) = b[d].lb();
+      r(k, d, 1) = b[d].ub();
+    }
+  }
+  return a;
+}
+
+const SiviaOptions kSequential{false};
+
+}  // namespace
+
+void init_paving(py::module_& m) {
+  py::enum_<PavingTag>(m, "PavingTag", "What is known about a leaf of a paving (thesis Fig. 2.11).")
+      .value("Inner", PavingTag::Inner, "proven inside X (green)")
+      .value("Boundary", PavingTag::Boundary, "undetermined at the precision eps (yellow)")
+      .value("Outside", PavingTag::Outside, "proven outside X (blue)");
+
+  py::class_<ContourEdge>(m, "ContourEdge", "An oriented edge from a to b; the region lies on its left.")
+      .def_property_readonly("a", [](const ContourEdge& e) { return point(e.a); })
+      .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); })
+      .def("box", &ContourEdge::box, "The edge as a degenerate box [b].")
+      .def("length", &ContourEdge::length)
+      .def("__repr__", [](const ContourEdge& e) {
+        return "<ContourEdge " + py::repr(point(e.a)).cast<std::string>() + " -> " +
+               py::repr(point(e.b)).cast<std::string>() + ">";
+      });
+
+  py::class_<ContourLoop>(m, "ContourLoop",
+                          "A closed loop of the boundary: counter-clockwise (outer) or clockwise (hole).")
+      .def_readonly("edges", &ContourLoop::edges)
+      .def_readonly("is_hole", &ContourLoop::is_hole)
+      .def("vertices",
+           [](const ContourLoop& l) {
+             py::list r;
+             for (const auto& v : l.vertices()) r.append(point(v));
+             return r;
+           })
+      .def("length", &ContourLoop::length)
+      .def("__len__", [](const ContourLoop& l) { return l.edges.size(); })
+      .def("__repr__", [](const ContourLoop& l) { return "<ContourLoop " + l.str() + ">"; });
+
+  py::class_<Component>(m, "Component", "A connected component of the outer approximation (corners connect).")
+      .def_readonly("boxes", &Component::boxes)
+      .def_readonly("tags", &Component::tags)
+      .def_readonly("hull", &Component::hull)
+      .def_readonly("volume", &Component::volume)
+      .def("size", &Component::size)
+      .def("__len__", &Component::size)
+      .def("count", &Component::count, py::arg("tag"))
+      .def("contour", &Component::contour, "Oriented boundary loops (2-D components).")
+      .def("__repr__", [](const Component& c) {
+        return "<Component of " + std::to_string(c.size()) + " boxes, hull " + c.hull.str() + ">";
+      });
+
+  m.def("contour", &contour, py::arg("boxes"), "Oriented boundary loops of a 2-D union of boxes.");
+  m.def("connected_components", &connected_components, py::arg("boxes"),
+        py::arg("tags") = std::vector<PavingTag>{}, "Connected components of a list of boxes.");
+
+  py::class_<Paving>(m, "Paving", "Result of a set inversion: a binary tree of boxes whose leaves are tagged.")
+      .def("dim", &Paving::dim)
+      .def("is_empty", &Paving::is_empty)
+      .def("domain", &Paving::domain, "The initial box.")
+      .def("boxes", &Paving::boxes, py::arg("tag"))
+      .def("inner", &Paving::inner, "Boxes proven in X (the inner approximation).")
+      .def("boundary", &Paving::boundary, "Undetermined boxes.")
+      .def("outer", &Paving::outer, "The outer approximation: inner and boundary boxes.")
+      .def("outside", &Paving::outside, "Boxes proven outside X.")
+      .def("boxes_array", &boxes_array, py::arg("tag"), "Leaves of a tag as a numpy array (k, dim, 2).")
+      .def("nb_nodes", &Paving::nb_nodes)
+      .def("nb_leaves", &Paving::nb_leaves)
+      .def("count", &Paving::count, py::arg("tag"))
+      .def("volume", &Paving::volume, py::arg("tag"))
+      .def("outer_volume", &Paving::outer_volume)
+      .def("hull", &Paving::hull, "Hull of the outer approximation.")
+      .def("tag_at", &Paving::tag_at, py::arg("point"), "Tag at a point, None outside the initial box.")
+      .def("components", &Paving::components)
+      .def("node_box", &Paving::node_box, py::arg("i"))
+      .def("is_leaf", &Paving::is_leaf, py::arg("i"))
+      .def("left", &Paving::left, py::arg("i"))
+      .def("right", &Paving::right, py::arg("i"))
+      .def("tag", &Paving::tag, py::arg("i"))
+      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"))
+      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"))
+      .def("__eq__", &Paving::operator==)
+      .def("__ne__", &Paving::operator!=)
+      .def("__repr__", &Paving::str);
+
+  // ---- sivia: Function first, so that a Function never goes to the callable overload ----
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, f, y, eps);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"),
+      "SIVIA (thesis Alg. 1): paving of x0 for X = f^-1(Y).");
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Function& f, const Interval& y, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, f, y, eps);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"));
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, f, y, ctc, eps);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"),
+      "SIVIA coupled with a contractor (thesis Fig. 2.13): undetermined boxes are contracted before bisection.");
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, f, IntervalVector{y}, ctc, eps);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"));
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps) {
+        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"),
+      "SIVIA with a Python inclusion function f(box) -> box (or Interval).");
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps) {
+        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"));
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Sep& sep, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, sep, eps);
+      },
+      py::arg("x0"), py::arg("sep"), py::arg("eps"),
+      "SIVIA with a separator (thesis 2.4.3): removed parts tagged Inner/Outside.");
+  m.def(
+      "sivia",
+      [](const IntervalVector& x0, const Ctc& ctc, double eps) {
+        py::gil_scoped_release release;
+        return sivia(x0, ctc, eps);
+      },
+      py::arg("x0"), py::arg("ctc"), py::arg("eps"), "SIVIA with a contractor: an outer approximation.");
+
+  m.def(
+      "kernel_sivia",
+      [](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps) {
+        py::gil_scoped_release release;
+        return kernel_sivia(x0, f_lo, f_hi, eps);
+      },
+      py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"),
+      "Kernel SIVIA (thesis Alg. 2) of [f](x) = [f_lo(x), f_hi(x)].");
+  m.def(
+      "kernel_sivia",
+      [](const IntervalVector& x0, const py::function& f, double eps) {
+        auto bounds = [&f](const IntervalVector& x) {
+          const py::object r = f(x);
+          const auto t = r.cast<py::sequence>();
+          if (t.size() != 2) throw Error("kernel_sivia: f must return a pair ([f-]([x]), [f+]([x]))");
+          auto as_box = [](const py::handle& h) {
+            return py::isinstance<Interval>(h) ? IntervalVector{h.cast<Interval>()} : h.cast<IntervalVector>();
+          };
+          return std::pair{as_box(t[0]), as_box(t[1])};
+        };
+        return kernel_sivia(x0, bounds, eps, kSequential);
+      },
+      py::arg("x0"), py::arg("f"), py::arg("eps"),
+      "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions.");
+}
+
 }  // namespace sillage::python
