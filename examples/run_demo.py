@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Runs every sillage example (C++ and Python), gathers their figures into
+OUT/index.html and prints a summary table (example, result, check, time).
+
+Each example takes `--out DIR`, writes its figures there and ends its output
+with one line `RESULT {"name": ..., "result": ..., "check": true/false,
+"figures": [[file, caption], ...]}`.
+"""
+import argparse
+import html
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+# (label, kind, program) in the order of the thesis.
+EXAMPLES = [
+    ("rump", "cpp", "example_rump"),
+    ("rump", "py", "rump.py"),
+    ("beacons_static", "cpp", "example_beacons_static"),
+    ("beacons_static", "py", "beacons_static.py"),
+    ("sivia_two_beacons", "cpp", "example_sivia_two_beacons"),
+    ("sivia_two_beacons", "py", "sivia_two_beacons.py"),
+]
+
+
+def run_one(kind, program, build, out):
+    if kind == "cpp":
+        cmd = [str(build / "examples" / program), "--out", str(out)]
+    else:
+        cmd = [sys.executable, str(HERE / "python" / program), "--out", str(out)]
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    elapsed = time.perf_counter() - t0
+    result = None
+    for line in proc.stdout.splitlines():
+        if line.startswith("RESULT "):
+            result = json.loads(line[len("RESULT "):])
+    if proc.returncode != 0 or result is None:
+        result = {"name": program, "result": f"FAILED (exit {proc.returncode})", "check": False, "figures": []}
+        sys.stderr.write(proc.stdout + proc.stderr)
+    result["time"] = elapsed
+    result["kind"] = kind
+    result["log"] = proc.stdout
+    return result
+
+
+def write_index(results, out):
+    parts = ["<!doctype html><html><head><meta charset='utf-8'><title>sillage demo</title>",
+             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
+             "figure{display:inline-block;margin:8px;vertical-align:top}"
+             "img{max-width:520px;border:1px solid #ccc}td,th{padding:2px 10px}"
+             "pre{background:#f4f4f4;padding:6px;font-size:12px}</style></head><body>",
+             "<h1>sillage demo</h1><table><tr><th>example</th><th>lang</th><th>result</th>"
+             "<th>check</th><th>time (s)</th></tr>"]
+    for r in results:
+        parts.append(f"<tr><td>{html.escape(r['name'])}</td><td>{r['kind']}</td>"
+                     f"<td>{html.escape(str(r['result']))}</td><td>{'ok' if r['check'] else 'FAILED'}</td>"
+                     f"<td>{r['time']:.3f}</td></tr>")
+    parts.append("</table>")
+    for r in results:
+        parts.append(f"<h2>{html.escape(r['name'])} ({r['kind']})</h2><pre>{html.escape(r['log'])}</pre>")
+        for fig, caption in r.get("figures", []):
+            parts.append(f"<figure><img src='{html.escape(fig)}'><figcaption>{html.escape(caption)}"
+                         "</figcaption></figure>")
+    parts.append("</body></html>")
+    (out / "index.html").write_text("\n".join(parts))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--out", default="out")
+    args = ap.parse_args()
+    build, out = Path(args.build).resolve(), Path(args.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    env_path = str(build / "python")
+    os.environ["PYTHONPATH"] = env_path + os.pathsep + os.environ.get("PYTHONPATH", "")
+    os.environ.setdefault("MPLBACKEND", "Agg")
+
+    results = [run_one(kind, prog, build, out) for _, kind, prog in EXAMPLES]
+    write_index(results, out)
+
+    w = max(len(r["name"]) for r in results)
+    print(f"\n{'example':<{w}}  lang  {'check':<6} {'time':>8}  result")
+    print("-" * (w + 60))
+    for r in results:
+        print(f"{r['name']:<{w}}  {r['kind']:<4}  {'ok' if r['check'] else 'FAILED':<6} {r['time']:>7.3f}s  "
+              f"{r['result']}")
+    print(f"\nfigures: {out / 'index.html'}")
+    return 0 if all(r["check"] for r in results) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

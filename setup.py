@@ -1,0 +1,42 @@
+"""pip packaging: the extension module is built by the project's CMake build.
+
+Works offline: `pip install --no-build-isolation .` (setuptools, CMake, a C++20
+compiler, pybind11 and oneTBB come from Debian packages; see scripts/setup.sh).
+"""
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = Path(__file__).resolve().parent
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        build_dir = Path(self.build_temp).resolve() / "cmake"
+        build_dir.mkdir(parents=True, exist_ok=True)
+        subprocess.check_call([
+            "cmake", "-S", str(ROOT), "-B", str(build_dir),
+            "-DCMAKE_BUILD_TYPE=Release",
+            "-DSILLAGE_BUILD_TESTS=OFF", "-DSILLAGE_BUILD_BENCH=OFF", "-DSILLAGE_BUILD_EXAMPLES=OFF",
+            f"-DPython3_EXECUTABLE={sys.executable}",
+        ])
+        jobs = str(os.cpu_count() or 2)
+        subprocess.check_call(["cmake", "--build", str(build_dir), "--target", "_sillage", "-j", jobs])
+        built = next((build_dir / "python" / "sillage").glob("_sillage*.so"))
+        target = Path(self.get_ext_fullpath(ext.name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built, target)
+
+
+setup(
+    packages=["sillage"],
+    package_dir={"sillage": "python/sillage"},
+    ext_modules=[Extension("sillage._sillage", sources=[])],
+    cmdclass={"build_ext": CMakeBuild},
+    zip_safe=False,
+)
