@@ -1,0 +1,36 @@
+#pragma once
+// sillage: guaranteed state estimation by constraint programming over
+// intervals and tubes. This header brings in the whole public API.
+
+#include "sillage/error.h"
+
+#include "sillage/interval/backward.h"
+#include "sillage/interval/elementary.h"
+#include "sillage/interval/interval.h"
+#include "sillage/interval/interval_matrix.h"
+#include "sillage/interval/interval_vector.h"
+
+#include "sillage/expr/expr.h"
+#include "sillage/expr/function.h"
+
+#include "sillage/ctc/ctc.h"
+#include "sillage/ctc/ctc_algebra.h"
+#include "sillage/ctc/ctc_binary.h"
+#include "sillage/ctc/ctc_box.h"
+#include "sillage/ctc/ctc_function.h"
+#include "sillage/ctc/ctc_unary.h"
+#include "sillage/ctc/sep.h"
+#include "sillage/ctc/sep_algebra.h"
+#include "sillage/ctc/sep_ctc_pair.h"
+#include "sillage/ctc/sep_function.h"
+
+#include "sillage/cn/contractor_network.h"
+
+#include "sillage/paving/component.h"
+#include "sillage/paving/contour.h"
+#include "sillage/paving/paving.h"
+#include "sillage/paving/sivia.h"
+#include "sillage/paving/sivia_function.h"
+
+#include "sillage/figures/figure.h"
+#include "sillage/figures/html.h"
