@@ -84,9 +84,10 @@ inline double add_down(double a, double b) {
   return add_error_sign(a, b, s) < 0 ? next_down(s) : s;
 }
 
-inline double add_up(double a, double b) { return -add_down(-a, -b); }
+// "+ 0.0" turns an exact zero into +0 (-(+0) would be -0).
+inline double add_up(double a, double b) { return -add_down(-a, -b) + 0.0; }
 inline double sub_down(double a, double b) { return add_down(a, -b); }
-inline double sub_up(double a, double b) { return -add_down(-a, b); }
+inline double sub_up(double a, double b) { return -add_down(-a, b) + 0.0; }
 
 // ---- multiplication -------------------------------------------------------------
 // A zero factor gives 0 even against an infinity: bounds of intervals are
