@@ -169,3 +169,9 @@ TEST(IntervalVector, MoreOperations) {
   EXPECT_THROW(a.bisect(2, 0.5), DimensionError);
   EXPECT_EQ(a.str(), "([0, 1] ; [0, 1])");
 }
+
+TEST(Interval, ExactZeroBoundsArePositiveZero) {
+  EXPECT_FALSE(std::signbit(Interval(1).diam()));
+  EXPECT_FALSE(std::signbit((Interval(-1) + Interval(1)).ub()));
+  EXPECT_FALSE(std::signbit((Interval(2) - Interval(2)).ub()));
+}
