@@ -14,6 +14,7 @@
 #include "sillage/ctc/ctc_box.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/ctc/ctc_unary.h"
+#include "sillage/ctc/definition_check.h"
 #include "sillage/ctc/sep_algebra.h"
 #include "sillage/ctc/sep_ctc_pair.h"
 #include "sillage/ctc/sep_function.h"
@@ -134,6 +135,16 @@ void init_ctc(py::module_& m) {
       .def(py::init<const Function&>(), py::arg("f"), "f(x) = 0")
       .def("function", &CtcFunction::function)
       .def("image", &CtcFunction::image);
+
+  py::class_<DefinitionCheck>(m, "DefinitionCheck", R"doc(
+Proves that a Function is defined at every point of a box (set-based evaluation
+silently ignores points where sqrt, log, /, ... are undefined).)doc")
+      .def(py::init<const Function&>(), py::arg("f"))
+      .def("defined_on", &DefinitionCheck::defined_on, py::arg("x"),
+           "True when every operation of f is proven defined on the whole box x (an empty box is trivially "
+           "fine); False means \"not proven\".")
+      .def("is_total", &DefinitionCheck::is_total,
+           "True when f uses no partial operation (then defined_on is always True).");
 
   const auto list_ctor = [](auto tag) {
     using T = typename decltype(tag)::type;

@@ -1,11 +1,16 @@
-// Function: parse, evaluate (natural, centered, batch over numpy arrays),
-// differentiate, and contract with HC4-revise (in place on the given box).
+// The expression builder (Expr, ExprVar, operators and elementary functions
+// on expressions) and Function: parse or build, evaluate (natural, centered,
+// batch over numpy arrays), differentiate, and contract with HC4-revise (in
+// place on the given box).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "bindings.h"
 #include "sillage/error.h"
@@ -56,18 +61,140 @@ IntervalVector box_arg(const py::handle& x) {
   return py::type::of<IntervalVector>()(x).cast<IntervalVector>();
 }
 
+// The builder: Expr, ExprVar (alias Variable), Op, the operators and the
+// elementary functions on expressions. The functions are added as overloads of
+// the Interval ones of the same name (bound earlier by init_interval): m.def
+// chains a new overload onto an existing function of the module (sibling), so
+// sillage.sqrt(Interval) keeps working and sillage.sqrt(Expr) builds a node.
+void init_builder(py::module_& m) {
+  py::enum_<Op>(m, "Op", "The operation of an expression node.")
+      .value("Const", Op::Const)
+      .value("Var", Op::Var)
+      .value("Add", Op::Add)
+      .value("Sub", Op::Sub)
+      .value("Mul", Op::Mul)
+      .value("Div", Op::Div)
+      .value("Neg", Op::Neg)
+      .value("Sqr", Op::Sqr)
+      .value("Sqrt", Op::Sqrt)
+      .value("PowInt", Op::PowInt)
+      .value("Pow", Op::Pow)
+      .value("Root", Op::Root)
+      .value("Exp", Op::Exp)
+      .value("Log", Op::Log)
+      .value("Sin", Op::Sin)
+      .value("Cos", Op::Cos)
+      .value("Tan", Op::Tan)
+      .value("Asin", Op::Asin)
+      .value("Acos", Op::Acos)
+      .value("Atan", Op::Atan)
+      .value("Atan2", Op::Atan2)
+      .value("Sinh", Op::Sinh)
+      .value("Cosh", Op::Cosh)
+      .value("Tanh", Op::Tanh)
+      .value("Abs", Op::Abs)
+      .value("Min", Op::Min)
+      .value("Max", Op::Max)
+      .value("Sign", Op::Sign);
+
+  py::class_<Expr> e(m, "Expr", R"doc(
+An expression of the C++ builder: an immutable, hash-consed node of the
+expression DAG (building the same sub-expression twice gives the same node).
+Expr(c) is the constant c (a number or an Interval; a float is the degenerate
+interval [c, c]). Build with ExprVar, the operators + - * / ** (unary -) with
+numbers and Intervals on either side, and sillage.sqr, sqrt, pow, root, exp, log,
+sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
+  e.def(py::init<double>(), py::arg("c"))
+      .def(py::init<const Interval&>(), py::arg("c"))
+      .def("op", &Expr::op, "The operation of the root node.")
+      .def("is_const", &Expr::is_const)
+      .def("__str__", &Expr::str)
+      .def("__repr__", [](const Expr& x) { return "Expr(" + x.str() + ")"; })
+      // Node identity, which hash-consing makes structural equality (C++ operator==).
+      .def("__eq__", [](const Expr& a, const Expr& b) { return a == b; }, py::is_operator())
+      .def("__ne__", [](const Expr& a, const Expr& b) { return a != b; }, py::is_operator())
+      .def("__hash__", [](const Expr& x) { return std::hash<const ExprNode*>{}(x.get()); })
+      .def("__neg__", [](const Expr& x) { return -x; })
+      .def("__pos__", [](const Expr& x) { return x; })
+      .def("__abs__", [](const Expr& x) { return abs(x); });
+  // Binary operators with an Expr, a number or an Interval on either side (numbers
+  // and Intervals become constants; x += y rebinds x, as the C++ x += y does).
+#define SILLAGE_EXPR_BIN(name, rname, op)                                                 \
+  e.def(name, [](const Expr& a, const Expr& b) { return a op b; }, py::is_operator())     \
+      .def(name, [](const Expr& a, double b) { return a op Expr(b); }, py::is_operator()) \
+      .def(name, [](const Expr& a, const Interval& b) { return a op Expr(b); }, py::is_operator()) \
+      .def(rname, [](const Expr& a, double b) { return Expr(b) op a; }, py::is_operator())        \
+      .def(rname, [](const Expr& a, const Interval& b) { return Expr(b) op a; }, py::is_operator());
+  SILLAGE_EXPR_BIN("__add__", "__radd__", +)
+  SILLAGE_EXPR_BIN("__sub__", "__rsub__", -)
+  SILLAGE_EXPR_BIN("__mul__", "__rmul__", *)
+  SILLAGE_EXPR_BIN("__truediv__", "__rtruediv__", /)
+#undef SILLAGE_EXPR_BIN
+  // x ** n: an int gives the integer power pow(x, n) (defined for x < 0), a float or
+  // an Expr the real power (an integer-valued constant again gives pow(x, n)).
+  e.def("__pow__", [](const Expr& x, int n) { return pow(x, n); }, py::is_operator())
+      .def("__pow__", [](const Expr& x, double p) { return pow(x, p); }, py::is_operator())
+      .def("__pow__", [](const Expr& x, const Expr& p) { return pow(x, p); }, py::is_operator())
+      .def("__rpow__", [](const Expr& p, double x) { return pow(Expr(x), p); }, py::is_operator())
+      .def("__rpow__", [](const Expr& p, const Interval& x) { return pow(Expr(x), p); }, py::is_operator());
+
+  py::class_<ExprVar, Expr>(m, "ExprVar", "A scalar variable of the builder, known by its name: ExprVar(\"x1\").")
+      .def(py::init<const std::string&>(), py::arg("name"))
+      .def("name", &ExprVar::name)
+      .def("__repr__", [](const ExprVar& v) { return "ExprVar(" + py::repr(py::str(v.name())).cast<std::string>() + ")"; });
+  m.attr("Variable") = m.attr("ExprVar");  // C++: using Variable = ExprVar
+
+  // Numbers and Intervals wherever an Expr is expected (sillage.atan2(x2, 1), Function([x], 2)).
+  py::implicitly_convertible<py::float_, Expr>();
+  py::implicitly_convertible<py::int_, Expr>();
+  py::implicitly_convertible<Interval, Expr>();
+
+  m.def("expr_pi", &expr_pi, "A rigorous enclosure of pi, as a constant expression.");
+  using E1 = Expr (*)(const Expr&);
+  using E2 = Expr (*)(const Expr&, const Expr&);
+  m.def("sqr", static_cast<E1>(&sqr), py::arg("x"));
+  m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"));
+  m.def("exp", static_cast<E1>(&exp), py::arg("x"));
+  m.def("log", static_cast<E1>(&log), py::arg("x"));
+  m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"));
+  m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"));
+  m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"));
+  m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"));
+  m.def("sin", static_cast<E1>(&sin), py::arg("x"));
+  m.def("cos", static_cast<E1>(&cos), py::arg("x"));
+  m.def("tan", static_cast<E1>(&tan), py::arg("x"));
+  m.def("asin", static_cast<E1>(&asin), py::arg("x"));
+  m.def("acos", static_cast<E1>(&acos), py::arg("x"));
+  m.def("atan", static_cast<E1>(&atan), py::arg("x"));
+  m.def("atan2", static_cast<E2>(&atan2), py::arg("y"), py::arg("x"));
+  m.def("sinh", static_cast<E1>(&sinh), py::arg("x"));
+  m.def("cosh", static_cast<E1>(&cosh), py::arg("x"));
+  m.def("tanh", static_cast<E1>(&tanh), py::arg("x"));
+  m.def("abs", static_cast<E1>(&abs), py::arg("x"));
+  m.def("min", static_cast<E2>(&min), py::arg("x"), py::arg("y"));
+  m.def("max", static_cast<E2>(&max), py::arg("x"), py::arg("y"));
+  m.def("sign", static_cast<E1>(&sign), py::arg("x"));
+}
+
 }  // namespace
 
 void init_expr(py::module_& m) {
+  init_builder(m);
   py::class_<Function>(m, "Function", R"doc(
 A real function f: R^n -> R^m given by variable names and an expression text,
 e.g. Function(["x1", "x2"], "sqrt((x1-1)^2 + (x2-2)^2)"); a vector function is
-written "(e1, e2, ...)". Every evaluation encloses the exact real result
-(decimal constants such as 0.1 are enclosed rigorously).)doc")
+written "(e1, e2, ...)". Or from the builder: Function([x1, x2], expr) or
+Function([x1, x2], [e1, e2]) with x1 = ExprVar("x1"), ... Every evaluation
+encloses the exact real result (decimal constants such as 0.1 in a text are
+enclosed rigorously; a float in the builder is the degenerate interval).)doc")
       .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"))
+      .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"))
+      .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"))
       .def("nb_vars", &Function::nb_vars, "Input dimension n.")
       .def("image_dim", &Function::image_dim, "Output dimension m (1 for a scalar function).")
       .def("var_names", &Function::var_names)
+      .def("exprs", &Function::exprs, "The m output expressions (Expr).")
+      .def("tape_size", &Function::tape_size, "Number of distinct nodes in the DAG.")
       .def(
           "eval",
           [](const Function& f, const py::object& x) -> py::object {
@@ -88,6 +215,9 @@ written "(e1, e2, ...)". Every evaluation encloses the exact real result
       .def(
           "jacobian", [](const Function& f, const py::object& x) { return f.jacobian(box_arg(x)); }, py::arg("x"),
           "Jacobian enclosure on the box, an m x n IntervalMatrix.")
+      .def(
+          "jacobian_vector", [](const Function& f, const py::object& x) { return f.jacobian_vector(box_arg(x)); },
+          py::arg("x"), "Jacobian enclosure on the box, row-major, as an IntervalVector of size m*n.")
       .def(
           "hc4_revise",
           [](const Function& f, IntervalVector& x, const py::object& y) {

@@ -1,11 +1,13 @@
-// Set inversion: Paving, PavingTag, components and contours, sivia and
-// kernel_sivia. Calls with C++ functions, contractors and separators release
-// the GIL and run in parallel (Python subclasses of Ctc/Sep take the GIL in
-// their overrides); Python callables run on the calling thread.
+// Set inversion: Paving, PavingTag, components and contours, SiviaOptions,
+// sivia and kernel_sivia. Calls with C++ functions, contractors and separators
+// release the GIL and run in parallel unless options.parallel is False (Python
+// subclasses of Ctc/Sep take the GIL in their overrides); Python callables run
+// on the calling thread.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <string>
 
 #include "bindings.h"
 #include "sillage/paving/sivia_function.h"
@@ -118,77 +120,90 @@ void init_paving(py::module_& m) {
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
 
+  py::class_<SiviaOptions>(m, "SiviaOptions", "Options of sivia and kernel_sivia.")
+      .def(py::init([](bool parallel) { return SiviaOptions{parallel}; }), py::arg("parallel") = true)
+      .def_readwrite("parallel", &SiviaOptions::parallel,
+                     "Grow subtrees as oneTBB tasks (default True). The paving does not depend on it.")
+      .def("__repr__", [](const SiviaOptions& o) {
+        return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") + ")";
+      });
+  // Every overload takes options=SiviaOptions() last, as in C++. Calls with a
+  // Python callable always run sequentially (they need the GIL), whatever the options.
+  const auto opts = [] { return py::arg("options") = SiviaOptions{}; };
+
   // ---- sivia: Function first, so that a Function never goes to the callable overload ----
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps) {
+      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, f, y, eps);
+        return sivia(x0, f, y, eps, o);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
       "SIVIA (thesis Alg. 1): paving of x0 for X = f^-1(Y).");
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Function& f, const Interval& y, double eps) {
+      [](const IntervalVector& x0, const Function& f, const Interval& y, double eps, const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, f, y, eps);
+        return sivia(x0, f, y, eps, o);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"));
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps) {
+      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
+         const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, f, y, ctc, eps);
+        return sivia(x0, f, y, ctc, eps, o);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
       "SIVIA coupled with a contractor (thesis Fig. 2.13): undetermined boxes are contracted before bisection.");
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps) {
+      [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps,
+         const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, f, IntervalVector{y}, ctc, eps);
+        return sivia(x0, f, IntervalVector{y}, ctc, eps, o);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"));
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts());
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps) {
+      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions&) {
         return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"),
-      "SIVIA with a Python inclusion function f(box) -> box (or Interval).");
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
+      "SIVIA with a Python inclusion function f(box) -> box (or Interval); always sequential.");
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps) {
+      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions&) {
         return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"));
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Sep& sep, double eps) {
+      [](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, sep, eps);
+        return sivia(x0, sep, eps, o);
       },
-      py::arg("x0"), py::arg("sep"), py::arg("eps"),
+      py::arg("x0"), py::arg("sep"), py::arg("eps"), opts(),
       "SIVIA with a separator (thesis 2.4.3): removed parts tagged Inner/Outside.");
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const Ctc& ctc, double eps) {
+      [](const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return sivia(x0, ctc, eps);
+        return sivia(x0, ctc, eps, o);
       },
-      py::arg("x0"), py::arg("ctc"), py::arg("eps"), "SIVIA with a contractor: an outer approximation.");
+      py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts(), "SIVIA with a contractor: an outer approximation.");
 
   m.def(
       "kernel_sivia",
-      [](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps) {
+      [](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps, const SiviaOptions& o) {
         py::gil_scoped_release release;
-        return kernel_sivia(x0, f_lo, f_hi, eps);
+        return kernel_sivia(x0, f_lo, f_hi, eps, o);
       },
-      py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"),
+      py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"), opts(),
       "Kernel SIVIA (thesis Alg. 2) of [f](x) = [f_lo(x), f_hi(x)].");
   m.def(
       "kernel_sivia",
-      [](const IntervalVector& x0, const py::function& f, double eps) {
+      [](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions&) {
         auto bounds = [&f](const IntervalVector& x) {
           const py::object r = f(x);
           const auto t = r.cast<py::sequence>();
@@ -200,8 +215,8 @@ void init_paving(py::module_& m) {
         };
         return kernel_sivia(x0, bounds, eps, kSequential);
       },
-      py::arg("x0"), py::arg("f"), py::arg("eps"),
-      "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions.");
+      py::arg("x0"), py::arg("f"), py::arg("eps"), opts(),
+      "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions; always sequential.");
 }
 
 }  // namespace sillage::python

@@ -182,3 +182,23 @@ def test_separator_laws_on_samples():
                 removed_in += 1
                 assert m != -1, (p, bounds(x_in))
     assert removed_in > 500 and removed_out > 500
+
+
+def test_definition_check():
+    d = sillage.DefinitionCheck(Function(["x"], "sqrt(x)"))
+    assert not d.is_total()
+    assert d.defined_on(box((1, 2))) is True
+    assert d.defined_on(box((-1, 2))) is False
+    assert d.defined_on(box((0, 2))) is True
+    assert d.defined_on([[4, 9]]) is True  # any IntervalVector(...) argument
+    assert d.defined_on(IntervalVector([Interval.empty()])) is True
+    total = sillage.DefinitionCheck(Function(["x", "y"], "x^2 + sin(y) * exp(x)"))
+    assert total.is_total() and total.defined_on(box((-1e300, 1e300), (-5, 5)))
+    x, y = sillage.ExprVar("x"), sillage.ExprVar("y")
+    d2 = sillage.DefinitionCheck(Function([x, y], sillage.log(x) + 1 / y))
+    assert not d2.is_total()
+    assert d2.defined_on(box((1, 2), (1, 2)))
+    assert not d2.defined_on(box((1, 2), (-1, 2)))
+    assert not d2.defined_on(box((0, 2), (1, 2)))
+    with pytest.raises(sillage.Error):
+        d.defined_on(box((1, 2), (1, 2)))

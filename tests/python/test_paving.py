@@ -153,3 +153,31 @@ def test_invalid_input_raises():
         sillage.sivia(box(0, 1, 0, 1), lambda x: 1 / 0, Interval(0, 1), 0.1)
     with pytest.raises(sillage.Error):
         sillage.kernel_sivia(box(0, 1, 0, 1), lambda x: (x,), 0.1)
+
+
+def test_sivia_options_sequential_gives_the_same_paving():
+    opts = sillage.SiviaOptions()
+    assert opts.parallel is True and repr(opts) == "SiviaOptions(parallel=True)"
+    seq = sillage.SiviaOptions(parallel=False)
+    assert seq.parallel is False
+    opts.parallel = False
+    assert not opts.parallel
+    f, y, x0 = two_beacons()
+    p = sillage.sivia(x0, f, y, 0.05)
+    assert sillage.sivia(x0, f, y, 0.05, seq) == p
+    assert sillage.sivia(x0, f, y, 0.05, options=seq) == p
+    assert sillage.sivia(x0, f, y, 0.05, sillage.SiviaOptions(True)) == p
+    ctc = sillage.CtcFunction(f, y)
+    assert sillage.sivia(x0, f, y, ctc, 0.05, options=seq) == sillage.sivia(x0, f, y, ctc, 0.05)
+    sep = sillage.SepFunction(f, y)
+    assert sillage.sivia(x0, sep, 0.05, options=seq) == sillage.sivia(x0, sep, 0.05)
+    assert sillage.sivia(x0, ctc, 0.05, options=seq) == sillage.sivia(x0, ctc, 0.05)
+    g = sillage.Function(["x"], "x^2 - 2")
+    x1 = IntervalVector([Interval(-3, 3)])
+    assert sillage.sivia(x1, g, Interval(0, 1), 0.01, seq) == sillage.sivia(x1, g, Interval(0, 1), 0.01)
+    lo, hi = sillage.Function(["x"], "x^2 - 1.1"), sillage.Function(["x"], "x^2 - 0.9")
+    assert sillage.kernel_sivia(x1, lo, hi, 0.001, seq) == sillage.kernel_sivia(x1, lo, hi, 0.001)
+    # Python callables always run sequentially; the options are accepted for uniformity.
+    assert sillage.sivia(x0, lambda b: f.eval_vector(b), y, 0.05, options=sillage.SiviaOptions(True)) == p
+    q = sillage.kernel_sivia(x1, lambda b: (lo.eval_vector(b), hi.eval_vector(b)), 0.001, seq)
+    assert q == sillage.kernel_sivia(x1, lo, hi, 0.001)
