@@ -8,7 +8,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libmpfr-dev libgmp-dev libmpfi-dev libboost-dev
   libtbb-dev
-  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest python3-venv python3-pip
+  pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
+  python3-venv python3-pip python3-setuptools python3-wheel git
 )
 
 missing=()
