@@ -13,5 +13,7 @@ void init_cn(py::module_& m);
 void init_paving(py::module_& m);
 void init_tube(py::module_& m);
 void init_tube_analysis(py::module_& m);
+void init_tube_ctc(py::module_& m);
+void init_tube_figures(py::module_& m);
 void init_figures(py::module_& m);
 }  // namespace sillage::python

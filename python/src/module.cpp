@@ -13,5 +13,7 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_paving(m);
   sillage::python::init_tube(m);
   sillage::python::init_tube_analysis(m);
+  sillage::python::init_tube_ctc(m);
   sillage::python::init_figures(m);
+  sillage::python::init_tube_figures(m);
 }
