@@ -2,6 +2,11 @@
 #include "sillage/error.h"
 
 namespace sillage::python {
-// sillage::Error (and its subclasses) become sillage.Error, a subclass of ValueError.
-void init_errors(py::module_& m) { py::register_exception<sillage::Error>(m, "Error", PyExc_ValueError); }
+// sillage::Error becomes sillage.Error (a ValueError); its subclasses become
+// subclasses of it. Registered base first: pybind11 tries the newest first.
+void init_errors(py::module_& m) {
+  const auto& error = py::register_exception<sillage::Error>(m, "Error", PyExc_ValueError);
+  py::register_exception<DimensionError>(m, "DimensionError", error.ptr());
+  py::register_exception<ParseError>(m, "ParseError", error.ptr());
+}
 }  // namespace sillage::python

@@ -23,4 +23,7 @@ class ParseError : public Error {
   using Error::Error;
 };
 
+// A double in full precision (17 significant digits), for error messages.
+std::string number_text(double x);
+
 }  // namespace sillage

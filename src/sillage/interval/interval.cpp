@@ -1,3 +1,4 @@
+#include "sillage/error.h"
 #include "sillage/interval/interval.h"
 
 #include <ostream>
@@ -8,33 +9,22 @@ namespace sillage {
 using rounding::kInf;
 using rounding::kMax;
 
-namespace {
-
-std::string bound_text(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
-}  // namespace
-
 Interval::Interval(double x) : lo_(x + 0.0), hi_(x + 0.0) {  // + 0.0: no -0 bound
   if (!std::isfinite(x)) {
-    throw Error("Interval(x): x must be a finite number, got " + bound_text(x));
+    throw Error("Interval(x): x must be a finite number, got " + number_text(x));
   }
 }
 
 Interval::Interval(double lb, double ub) : lo_(lb), hi_(ub) {
   if (lb != lb || ub != ub) {
-    throw Error("Interval(lb, ub): NaN bound in [" + bound_text(lb) + ", " + bound_text(ub) + "]");
+    throw Error("Interval(lb, ub): NaN bound in [" + number_text(lb) + ", " + number_text(ub) + "]");
   }
   if (lb > ub) {
-    throw Error("Interval(lb, ub): inverted bounds, lb = " + bound_text(lb) + " > ub = " + bound_text(ub) +
+    throw Error("Interval(lb, ub): inverted bounds, lb = " + number_text(lb) + " > ub = " + number_text(ub) +
                 " (use Interval::empty() for the empty set)");
   }
   if (lb == kInf || ub == -kInf) {
-    throw Error("Interval(lb, ub): [" + bound_text(lb) + ", " + bound_text(ub) +
+    throw Error("Interval(lb, ub): [" + number_text(lb) + ", " + number_text(ub) +
                 "] contains no real number; infinite bounds are limits, not members");
   }
   if (lb == 0) lo_ = 0.0;  // one zero: [-0, x] and [+0, x] are the same set
@@ -101,7 +91,7 @@ Interval Interval::operator|(const Interval& y) const {
 
 std::pair<Interval, Interval> Interval::bisect(double ratio) const {
   if (!(ratio > 0 && ratio < 1)) {
-    throw Error("Interval::bisect: ratio must lie in (0, 1), got " + bound_text(ratio));
+    throw Error("Interval::bisect: ratio must lie in (0, 1), got " + number_text(ratio));
   }
   if (is_empty()) throw Error("Interval::bisect: cannot bisect the empty interval");
   if (is_degenerate()) throw Error("Interval::bisect: cannot bisect the degenerate interval " + str());
@@ -121,7 +111,7 @@ std::pair<Interval, Interval> Interval::bisect(double ratio) const {
 }
 
 Interval Interval::inflate(double r) const {
-  if (!(r >= 0)) throw Error("Interval::inflate: radius must be >= 0, got " + bound_text(r));
+  if (!(r >= 0)) throw Error("Interval::inflate: radius must be >= 0, got " + number_text(r));
   if (is_empty()) return empty();
   return {rounding::sub_down(lo_, r), rounding::add_up(hi_, r), Unchecked{}};
 }

@@ -1,3 +1,4 @@
+#include "sillage/error.h"
 #include "sillage/paving/contour.h"
 
 #include <algorithm>
@@ -22,13 +23,6 @@ struct Side {
   double line, lo, hi;
   bool plus;
 };
-
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
 
 RawEdge make_edge(bool vertical, double line, double lo, double hi, bool plus) {
   // The region must lie on the left of the edge: a vertical side with the
@@ -68,7 +62,7 @@ void boundary_pieces(std::vector<Side>& sides, bool vertical, std::vector<RawEdg
       for (; k < events.size() && events[k].at == at; ++k) cover[events[k].plus ? 1 : 0] += events[k].delta;
       if (cover[0] > 1 || cover[1] > 1) {
         throw Error("contour: overlapping boxes on the line " + std::string(vertical ? "x = " : "y = ") +
-                    num(sides[g].line) + " near " + num(at));
+                    number_text(sides[g].line) + " near " + number_text(at));
       }
       const bool is_boundary = (cover[0] > 0) != (cover[1] > 0);
       const bool plus = cover[1] > 0;
@@ -115,7 +109,7 @@ double ContourLoop::length() const {
 std::string ContourLoop::str() const {
   std::ostringstream os;
   os << (is_hole ? "hole" : "outer") << ":";
-  for (const auto& e : edges) os << " (" << num(e.a.x) << "," << num(e.a.y) << ")";
+  for (const auto& e : edges) os << " (" << number_text(e.a.x) << "," << number_text(e.a.y) << ")";
   return os.str();
 }
 
@@ -160,7 +154,7 @@ std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
       }
     }
     if (best == m || best_rank == 3) {
-      throw Error("contour: open boundary at (" + num(edges[e].b.x) + ", " + num(edges[e].b.y) +
+      throw Error("contour: open boundary at (" + number_text(edges[e].b.x) + ", " + number_text(edges[e].b.y) +
                   "); are the boxes a valid subpaving?");
     }
     next[e] = best;
@@ -168,7 +162,7 @@ std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
   }
   for (std::size_t e = 0; e < m; ++e) {
     if (prev_count[e] != 1) {
-      throw Error("contour: inconsistent boundary at (" + num(edges[e].a.x) + ", " + num(edges[e].a.y) + ")");
+      throw Error("contour: inconsistent boundary at (" + number_text(edges[e].a.x) + ", " + number_text(edges[e].a.y) + ")");
     }
   }
 

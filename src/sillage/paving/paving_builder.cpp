@@ -1,3 +1,4 @@
+#include "sillage/error.h"
 #include "sillage/paving/paving_builder.h"
 
 #include <tbb/parallel_invoke.h>
@@ -164,17 +165,10 @@ void flatten(const Chunk& c, std::vector<Paving::Node>& nodes, std::vector<Inter
   }
 }
 
-std::string text(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
 }  // namespace
 
 void check_sivia_input(const IntervalVector& x0, double eps, const char* where) {
-  if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + text(eps));
+  if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + number_text(eps));
   if (x0.size() == 0) throw DimensionError(std::string(where) + ": the initial box has dimension 0");
   if (x0.is_unbounded()) {
     throw Error(std::string(where) + ": the initial box " + x0.str() + " must be bounded");
