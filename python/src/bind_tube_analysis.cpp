@@ -1,5 +1,72 @@
+// Integrals of tubes (3.7)-(3.9), the primitive tube, and TubeAnalysis (the
+// synthesis tree kept for repeated O(log N) queries). The methods
+// Tube.integral / Tube.partial_integral / Tube.primitive are added to the
+// Tube class registered by init_tube (module.cpp calls init_tube first); each
+// call builds the tree, O(N): use TubeAnalysis for many queries on one tube.
+#include <utility>
+
 #include "bindings.h"
+#include "sillage/tube/tube_integral.h"
 
 namespace sillage::python {
-void init_tube_analysis(py::module_& /*m*/) {}
+
+namespace {
+
+const char* const kIntegralDoc =
+    "integral(t) = ∫_{t0}^{t} x (t a float or an Interval: the hull over t);\n"
+    "integral(t1, t2) = the hull of ∫_{t1}^{t2} x over t1 ∈ [t1], t2 ∈ [t2] (3.9).\n"
+    "Guaranteed (outward rounding). Empty tube -> empty; t outside the domain -> sillage.Error.";
+const char* const kPartialDoc =
+    "partial_integral(t1, t2) -> (range of ∫_{t1}^{t2} x^-, range of ∫_{t1}^{t2} x^+) over t1 ∈ [t1],\n"
+    "t2 ∈ [t2]: the lower- and upper-bound integrals of (3.9).";
+const char* const kPrimitiveDoc =
+    "primitive(x0=0) -> Tube p with p(t0) = x0 and p' ∈ this tube: gates p(t_{k+1}) = p(t_k) + δ_k [x](k),\n"
+    "slices p(t_k) + [0, δ_k]·[x](k).";
+
+// Adds `f` as a method `name` of the Python class `cls`.
+void add_method(py::object& cls, const char* name, py::cpp_function f) { py::setattr(cls, name, f); }
+
+}  // namespace
+
+void init_tube_analysis(py::module_& m) {
+  py::class_<TubeAnalysis>(m, "TubeAnalysis",
+                           "Holds the synthesis tree of a tube (thesis 3.3.1) for repeated O(log N) queries;\n"
+                           "rebuilt automatically when the tube changes. Keeps the tube alive.")
+      .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>())
+      .def(
+          "eval", [](const TubeAnalysis& a, const Interval& t) { return a.eval(t); }, py::arg("t"),
+          "[x]([t]), as Tube.__call__.")
+      .def(
+          "integral",
+          [](const TubeAnalysis& a, const Interval& t1, const py::object& t2) {
+            return t2.is_none() ? a.integral(t1) : a.integral(t1, t2.cast<Interval>());
+          },
+          py::arg("t1"), py::arg("t2") = py::none(), kIntegralDoc)
+      .def(
+          "partial_integral", [](const TubeAnalysis& a, const Interval& t1, const Interval& t2) {
+            return a.partial_integral(t1, t2);
+          },
+          py::arg("t1"), py::arg("t2"), kPartialDoc)
+      .def("nb_slices", [](const TubeAnalysis& a) { return a.tree()->nb_slices(); });
+
+  if (!py::hasattr(m, "Tube")) return;  // the tube layer is not bound (yet)
+  py::object cls = m.attr("Tube");
+  add_method(cls, "integral",
+             py::cpp_function(
+                 [](const Tube& x, const Interval& t1, const py::object& t2) {
+                   return t2.is_none() ? integral(x, t1) : integral(x, t1, t2.cast<Interval>());
+                 },
+                 py::name("integral"), py::is_method(cls), py::arg("t1"), py::arg("t2") = py::none(),
+                 kIntegralDoc));
+  add_method(cls, "partial_integral",
+             py::cpp_function([](const Tube& x, const Interval& t1,
+                                 const Interval& t2) { return partial_integral(x, t1, t2); },
+                              py::name("partial_integral"), py::is_method(cls), py::arg("t1"), py::arg("t2"),
+                              kPartialDoc));
+  add_method(cls, "primitive",
+             py::cpp_function([](const Tube& x, const Interval& x0) { return primitive(x, x0); },
+                              py::name("primitive"), py::is_method(cls), py::arg("x0") = Interval(0.0),
+                              kPrimitiveDoc));
+}
+
 }  // namespace sillage::python

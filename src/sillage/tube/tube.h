@@ -1,0 +1,126 @@
+#pragma once
+// Tube: a sliced enclosure [x](.) of scalar trajectories x : [t_0, t_N] -> IR
+// (thesis 3.2-3.3). Over a TDomain of N slices it stores N slice codomains
+// [x](k) ⊇ x([t_k, t_{k+1}]) and N+1 gates [x](t_k) ∋ x(t_k), each array
+// contiguous (32 bytes per slice). A trajectory x belongs to the tube when
+// x(t) ∈ [x](k) for every t in slice k and x(t_k) ∈ [x](t_k) for every k.
+//
+// Value semantics: copying a tube copies its data and attaches the copy to
+// the same TDomain. Every result is guaranteed (outward rounding included).
+#include <cstddef>
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sillage/interval/interval.h"
+#include "sillage/tube/tdomain.h"
+
+namespace sillage {
+
+class Function;
+class Trajectory;
+
+class Tube {
+ public:
+  // Every slice and gate = x (the whole line by default).
+  explicit Tube(std::shared_ptr<TDomain> td, const Interval& x = Interval());
+  // Slice codomains given (size N, DimensionError otherwise); gate k is the
+  // intersection of the two slices around t_k, the end gates the end slices.
+  Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices);
+  // Slices (size N) and gates (size N+1) given.
+  Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices,
+       const std::vector<Interval>& gates);
+  // From an expression of the single variable t, e.g.
+  // "-9/20*cos(t/5) + [-0.001,0.001]": slice k = [f]([t_k, t_{k+1}]),
+  // gate k = [f]([t_k, t_k]); one batch evaluation (one DAG walk).
+  Tube(std::shared_ptr<TDomain> td, const std::string& expr_of_t);
+  // Same from a scalar Function of one variable (DimensionError otherwise).
+  Tube(std::shared_ptr<TDomain> td, const Function& f);
+
+  Tube(const Tube& x);
+  Tube(Tube&& x) noexcept = default;  // x is left unusable (no data)
+  Tube& operator=(const Tube& x);  // becomes a copy of x, attached to x's TDomain
+  Tube& operator=(Tube&& x) noexcept = default;
+  ~Tube() = default;
+
+  const std::shared_ptr<TDomain>& tdomain() const { return td_; }
+  std::size_t nb_slices() const { return data_->slices.size(); }
+  const Interval& slice(std::size_t k) const;  // [x](k), Error if k >= N
+  const Interval& gate(std::size_t k) const;   // [x](t_k), Error if k > N
+  std::span<const Interval> slices() const { return data_->slices; }
+  std::span<const Interval> gates() const { return data_->gates; }
+  // Increases at every modification of this tube (including TDomain::sample).
+  std::uint64_t version() const { return data_->version; }
+
+  // [x](t): the gate when t is a time point, else the slice codomain.
+  // Error if t is NaN or outside [t_0, t_N].
+  Interval operator()(double t) const;
+  // [x]([t]) (3.3): hull of the slices meeting the interior of [t] and of the
+  // gates inside [t]; a degenerate [t] gives operator()(t); an empty [t]
+  // gives the empty set. Error if [t] is not inside [t_0, t_N].
+  Interval operator()(const Interval& t) const;
+
+  // Slice k := y and its two gates := y ∩ the neighbouring slice (an end
+  // gate := y).
+  void set(const Interval& y, std::size_t k);
+  void set_gate(std::size_t k, const Interval& y);
+  void set(const Interval& y);  // every slice and gate := y
+
+  Interval codomain() const;  // hull of all slices and gates
+  // Sum over slices of width(t slice) * width(codomain), rounded up:
+  // a rigorous upper bound of the area. Infinite if a slice is unbounded.
+  double volume() const;
+  double thickness(std::size_t k) const;  // diameter of slice k (0 if empty)
+  double max_thickness() const;
+
+  // True if some slice or gate is empty (no trajectory belongs to the tube).
+  bool is_empty() const;
+  // Slice- and gate-wise inclusion; DimensionError if TDomains differ.
+  bool is_subset(const Tube& y) const;
+  // Rigorous: the trajectory's enclosure over each slice and at each gate
+  // lies inside; Error if the trajectory's domain does not cover [t_0, t_N].
+  bool contains(const Trajectory& x) const;
+  bool operator==(const Tube& y) const;  // same TDomain, same slices and gates
+  bool operator!=(const Tube& y) const { return !(*this == y); }
+
+  // Slice- and gate-wise intersection / hull; DimensionError if TDomains differ.
+  Tube& operator&=(const Tube& y);
+  Tube& operator|=(const Tube& y);
+
+  // In-place arithmetic, slice- and gate-wise, rigorous (3.5)-(3.6);
+  // defined in tube_arithmetic.cpp. DimensionError if TDomains differ.
+  Tube& operator+=(const Tube& y);
+  Tube& operator-=(const Tube& y);
+  Tube& operator*=(const Tube& y);
+  Tube& operator/=(const Tube& y);
+  Tube& operator+=(const Interval& y);
+  Tube& operator-=(const Interval& y);
+  Tube& operator*=(const Interval& y);
+  Tube& operator/=(const Interval& y);
+
+  // Inversion (3.4): hull of the times t where [x](t) meets y (slices
+  // contribute their whole domain, gates their time point). Empty if none.
+  Interval inverse(const Interval& y) const;
+  // Same; `components` receives the connected subsets: the maximal runs of
+  // consecutive slices/gates meeting y, in increasing time order.
+  Interval inverse(const Interval& y, std::vector<Interval>& components) const;
+
+  // Low-level access for algorithms of this layer (contractors, arithmetic).
+  // Callers that modify must keep sizes and call touch().
+  TubeData& data() { return *data_; }
+  const TubeData& data() const { return *data_; }
+  void touch() { data_->touch(); }
+
+ private:
+  void check_same_tdomain(const Tube& y, const char* where) const;
+
+  std::shared_ptr<TDomain> td_;
+  std::shared_ptr<TubeData> data_;
+};
+
+std::ostream& operator<<(std::ostream& os, const Tube& x);
+
+}  // namespace sillage

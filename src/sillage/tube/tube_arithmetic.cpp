@@ -1,0 +1,131 @@
+#include "sillage/tube/tube_arithmetic.h"
+
+#include <string>
+
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+// x := f(x) slice- and gate-wise.
+template <class F>
+Tube& unary_inplace(Tube& x, F f) {
+  TubeData& d = x.data();
+  for (auto& y : d.slices) y = f(y);
+  for (auto& y : d.gates) y = f(y);
+  x.touch();
+  return x;
+}
+
+template <class F>
+Tube unary(const Tube& x, F f) {
+  Tube z(x);
+  unary_inplace(z, f);
+  return z;
+}
+
+// x := f(x, y) slice- and gate-wise, same TDomain.
+template <class F>
+void binary_inplace(Tube& x, const Tube& y, F f, const char* where) {
+  if (x.tdomain() != y.tdomain()) {
+    throw DimensionError(std::string(where) + ": the two tubes are not on the same TDomain");
+  }
+  TubeData& d = x.data();
+  const TubeData& e = y.data();
+  for (std::size_t k = 0; k < d.slices.size(); ++k) d.slices[k] = f(d.slices[k], e.slices[k]);
+  for (std::size_t k = 0; k < d.gates.size(); ++k) d.gates[k] = f(d.gates[k], e.gates[k]);
+  x.touch();
+}
+
+template <class F>
+Tube binary(const Tube& x, const Tube& y, F f, const char* where) {
+  if (x.tdomain() != y.tdomain()) {
+    throw DimensionError(std::string(where) + ": the two tubes are not on the same TDomain");
+  }
+  Tube z(x);
+  binary_inplace(z, y, f, where);
+  return z;
+}
+
+const auto kAdd = [](const Interval& a, const Interval& b) { return a + b; };
+const auto kSub = [](const Interval& a, const Interval& b) { return a - b; };
+const auto kMul = [](const Interval& a, const Interval& b) { return a * b; };
+const auto kDiv = [](const Interval& a, const Interval& b) { return a / b; };
+
+}  // namespace
+
+Tube& Tube::operator+=(const Tube& y) { binary_inplace(*this, y, kAdd, "Tube::operator+="); return *this; }
+Tube& Tube::operator-=(const Tube& y) { binary_inplace(*this, y, kSub, "Tube::operator-="); return *this; }
+Tube& Tube::operator*=(const Tube& y) { binary_inplace(*this, y, kMul, "Tube::operator*="); return *this; }
+Tube& Tube::operator/=(const Tube& y) { binary_inplace(*this, y, kDiv, "Tube::operator/="); return *this; }
+
+Tube& Tube::operator+=(const Interval& y) { return unary_inplace(*this, [&](const Interval& a) { return a + y; }); }
+Tube& Tube::operator-=(const Interval& y) { return unary_inplace(*this, [&](const Interval& a) { return a - y; }); }
+Tube& Tube::operator*=(const Interval& y) { return unary_inplace(*this, [&](const Interval& a) { return a * y; }); }
+Tube& Tube::operator/=(const Interval& y) { return unary_inplace(*this, [&](const Interval& a) { return a / y; }); }
+
+Tube operator-(const Tube& x) { return unary(x, [](const Interval& a) { return -a; }); }
+
+Tube operator+(const Tube& x, const Tube& y) { return binary(x, y, kAdd, "operator+(Tube, Tube)"); }
+Tube operator-(const Tube& x, const Tube& y) { return binary(x, y, kSub, "operator-(Tube, Tube)"); }
+Tube operator*(const Tube& x, const Tube& y) { return binary(x, y, kMul, "operator*(Tube, Tube)"); }
+Tube operator/(const Tube& x, const Tube& y) { return binary(x, y, kDiv, "operator/(Tube, Tube)"); }
+
+Tube operator+(const Tube& x, const Interval& y) { return unary(x, [&](const Interval& a) { return a + y; }); }
+Tube operator-(const Tube& x, const Interval& y) { return unary(x, [&](const Interval& a) { return a - y; }); }
+Tube operator*(const Tube& x, const Interval& y) { return unary(x, [&](const Interval& a) { return a * y; }); }
+Tube operator/(const Tube& x, const Interval& y) { return unary(x, [&](const Interval& a) { return a / y; }); }
+
+Tube operator+(const Interval& x, const Tube& y) { return unary(y, [&](const Interval& b) { return x + b; }); }
+Tube operator-(const Interval& x, const Tube& y) { return unary(y, [&](const Interval& b) { return x - b; }); }
+Tube operator*(const Interval& x, const Tube& y) { return unary(y, [&](const Interval& b) { return x * b; }); }
+Tube operator/(const Interval& x, const Tube& y) { return unary(y, [&](const Interval& b) { return x / b; }); }
+
+Tube operator&(const Tube& x, const Tube& y) { Tube z(x); z &= y; return z; }
+Tube operator|(const Tube& x, const Tube& y) { Tube z(x); z |= y; return z; }
+
+#define SILLAGE_TUBE_UNARY(name) \
+  Tube name(const Tube& x) { return unary(x, [](const Interval& a) { return name(a); }); }
+SILLAGE_TUBE_UNARY(sqr)
+SILLAGE_TUBE_UNARY(sqrt)
+SILLAGE_TUBE_UNARY(abs)
+SILLAGE_TUBE_UNARY(sign)
+SILLAGE_TUBE_UNARY(exp)
+SILLAGE_TUBE_UNARY(log)
+SILLAGE_TUBE_UNARY(sin)
+SILLAGE_TUBE_UNARY(cos)
+SILLAGE_TUBE_UNARY(tan)
+SILLAGE_TUBE_UNARY(asin)
+SILLAGE_TUBE_UNARY(acos)
+SILLAGE_TUBE_UNARY(atan)
+SILLAGE_TUBE_UNARY(sinh)
+SILLAGE_TUBE_UNARY(cosh)
+SILLAGE_TUBE_UNARY(tanh)
+#undef SILLAGE_TUBE_UNARY
+
+Tube pow(const Tube& x, int n) { return unary(x, [n](const Interval& a) { return pow(a, n); }); }
+Tube pow(const Tube& x, double p) { return unary(x, [p](const Interval& a) { return pow(a, p); }); }
+Tube pow(const Tube& x, const Interval& p) { return unary(x, [&p](const Interval& a) { return pow(a, p); }); }
+Tube pow(const Tube& x, const Tube& p) {
+  return binary(x, p, [](const Interval& a, const Interval& b) { return pow(a, b); }, "pow(Tube, Tube)");
+}
+Tube root(const Tube& x, int n) { return unary(x, [n](const Interval& a) { return root(a, n); }); }
+
+Tube atan2(const Tube& y, const Tube& x) {
+  return binary(y, x, [](const Interval& a, const Interval& b) { return atan2(a, b); }, "atan2(Tube, Tube)");
+}
+Tube atan2(const Tube& y, const Interval& x) {
+  return unary(y, [&x](const Interval& a) { return atan2(a, x); });
+}
+Tube atan2(const Interval& y, const Tube& x) {
+  return unary(x, [&y](const Interval& b) { return atan2(y, b); });
+}
+Tube min(const Tube& x, const Tube& y) {
+  return binary(x, y, [](const Interval& a, const Interval& b) { return min(a, b); }, "min(Tube, Tube)");
+}
+Tube max(const Tube& x, const Tube& y) {
+  return binary(x, y, [](const Interval& a, const Interval& b) { return max(a, b); }, "max(Tube, Tube)");
+}
+
+}  // namespace sillage

@@ -1,0 +1,36 @@
+#pragma once
+// Binary serialization of tubes and tube vectors.
+//
+// Format (little endian): magic "SLGTUBE\0" (8 bytes), format version
+// (uint32, currently 1), kind (uint32: 1 = Tube, 2 = TubeVector), number of
+// time points N+1 (uint64) and the time points (float64), number of
+// components n (uint64), then for each component its N slices and N+1 gates
+// as (lb, ub) float64 pairs (the empty set is (+inf, -inf)).
+//
+// Loading checks everything: magic, version, kind, sizes, time points, bound
+// pairs; a truncated or foreign file throws Error saying what and at which
+// byte offset. When a TDomain is passed, the stored time points must equal
+// its own (DimensionError otherwise) and the result is attached to it;
+// otherwise a new TDomain is created.
+#include <iosfwd>
+#include <memory>
+#include <string>
+
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+inline constexpr std::uint32_t kTubeFileVersion = 1;
+
+void save(const Tube& x, std::ostream& os);
+void save(const TubeVector& x, std::ostream& os);
+void save(const Tube& x, const std::string& path);
+void save(const TubeVector& x, const std::string& path);
+
+Tube load_tube(std::istream& is, std::shared_ptr<TDomain> td = nullptr);
+TubeVector load_tube_vector(std::istream& is, std::shared_ptr<TDomain> td = nullptr);
+Tube load_tube(const std::string& path, std::shared_ptr<TDomain> td = nullptr);
+TubeVector load_tube_vector(const std::string& path, std::shared_ptr<TDomain> td = nullptr);
+
+}  // namespace sillage

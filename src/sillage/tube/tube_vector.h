@@ -1,0 +1,70 @@
+#pragma once
+// TubeVector: n scalar tubes on one TDomain, an enclosure of vector
+// trajectories x : [t_0, t_N] -> IR^n (thesis 3.2.2). Component i is a Tube,
+// returned by reference (operator[]) so that it can be read and contracted in
+// place. Value semantics like Tube.
+#include <cstddef>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/interval/interval_vector.h"
+#include "sillage/tube/trajectory.h"
+#include "sillage/tube/tube.h"
+
+namespace sillage {
+
+class TubeVector {
+ public:
+  // n components, each slice and gate = x. Error if n == 0.
+  TubeVector(std::shared_ptr<TDomain> td, std::size_t n, const Interval& x = Interval());
+  // Component i = the box's component i (constant in time).
+  TubeVector(std::shared_ptr<TDomain> td, const IntervalVector& x);
+  // From a vector expression of t, "(e1, e2, ...)" (or a scalar one): one
+  // batch evaluation for all components.
+  TubeVector(std::shared_ptr<TDomain> td, const std::string& expr_of_t);
+  TubeVector(std::shared_ptr<TDomain> td, const Function& f);  // f of one variable t
+  // From tubes (at least one, all on the same TDomain; DimensionError otherwise).
+  explicit TubeVector(std::vector<Tube> components);
+
+  std::size_t size() const { return x_.size(); }
+  const std::shared_ptr<TDomain>& tdomain() const { return x_.front().tdomain(); }
+  std::size_t nb_slices() const { return x_.front().nb_slices(); }
+
+  // Component i, a live reference (Error if i >= size()).
+  Tube& operator[](std::size_t i);
+  const Tube& operator[](std::size_t i) const;
+  // Components i..j (inclusive, like IntervalVector::subvector), copied.
+  TubeVector subvector(std::size_t i, std::size_t j) const;
+
+  IntervalVector slice(std::size_t k) const;
+  IntervalVector gate(std::size_t k) const;
+  IntervalVector operator()(double t) const;          // component-wise Tube::operator()(t)
+  IntervalVector operator()(const Interval& t) const;  // component-wise [x]([t])
+  IntervalVector codomain() const;
+
+  // Sum over slices of width(t slice) * volume of the slice box, rounded up.
+  double volume() const;
+  double max_thickness() const;  // max over components
+  bool is_empty() const;         // some component is empty
+  bool is_subset(const TubeVector& y) const;
+  // One trajectory per component (DimensionError if the counts differ).
+  bool contains(const std::vector<Trajectory>& x) const;
+  bool operator==(const TubeVector& y) const;
+  bool operator!=(const TubeVector& y) const { return !(*this == y); }
+  TubeVector& operator&=(const TubeVector& y);
+  TubeVector& operator|=(const TubeVector& y);
+
+  void set(const IntervalVector& y);                  // every slice and gate
+  void set(const IntervalVector& y, std::size_t k);   // slice k (see Tube::set)
+  void set_gate(std::size_t k, const IntervalVector& y);
+
+ private:
+  void check_size(std::size_t n, const char* where) const;
+  std::vector<Tube> x_;
+};
+
+std::ostream& operator<<(std::ostream& os, const TubeVector& x);
+
+}  // namespace sillage

@@ -1,0 +1,87 @@
+// Binary serialization: round trips, and every kind of bad file rejected.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <sstream>
+
+#include "sillage/error.h"
+#include "sillage/tube/tube_io.h"
+
+using namespace sillage;
+
+namespace {
+
+Tube sample_tube() {
+  auto td = TDomain::create(std::vector<double>{0.0, 0.1, 0.5, 2.0});
+  return Tube(td, {Interval(0, 1), Interval::empty(), Interval(-1, rounding::kInf)},
+              {Interval(0.1, 0.2), Interval(0.3), Interval::all_reals(), Interval(-1e300, 5)});
+}
+
+std::string bytes_of(const Tube& x) {
+  std::ostringstream os;
+  save(x, os);
+  return os.str();
+}
+
+}  // namespace
+
+TEST(TubeIo, RoundTripTube) {
+  const Tube x = sample_tube();
+  const std::string s = bytes_of(x);
+  EXPECT_EQ(s.size(), 8 + 4 + 4 + 8 + 4 * 8 + 8 + 7 * 16u);
+  std::istringstream is(s);
+  Tube y = load_tube(is);
+  EXPECT_NE(y.tdomain(), x.tdomain());
+  EXPECT_EQ(std::vector<double>(y.tdomain()->times().begin(), y.tdomain()->times().end()),
+            std::vector<double>(x.tdomain()->times().begin(), x.tdomain()->times().end()));
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(y.slice(k), x.slice(k));
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(y.gate(k), x.gate(k));
+  std::istringstream is2(s);
+  Tube z = load_tube(is2, x.tdomain());  // attached to the given domain
+  EXPECT_EQ(z, x);
+}
+
+TEST(TubeIo, RoundTripTubeVectorAndFile) {
+  auto td = TDomain::create(0.0, 1.0, 0.25);
+  TubeVector x(td, "(t, [1,2]*t)");
+  const std::string path = testing::TempDir() + "/sillage_tube_io_test.bin";
+  save(x, path);
+  TubeVector y = load_tube_vector(path, td);
+  EXPECT_EQ(y, x);
+  EXPECT_THROW(load_tube(path), Error);  // a TubeVector, not a Tube
+  EXPECT_THROW(load_tube("/nonexistent/dir/file.bin"), Error);
+}
+
+TEST(TubeIo, RejectsForeignAndTruncatedFiles) {
+  const std::string s = bytes_of(sample_tube());
+  {
+    std::istringstream is("hello, this is not a tube file at all");
+    EXPECT_THROW(load_tube(is), Error);
+  }
+  for (std::size_t cut : {0u, 5u, 8u, 14u, 20u, 30u, 70u, 100u}) {
+    std::istringstream is(s.substr(0, std::min<std::size_t>(cut, s.size() - 1)));
+    try {
+      load_tube(is);
+      FAIL() << "accepted a file truncated at " << cut;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+  }
+  std::istringstream last(s.substr(0, s.size() - 1));
+  EXPECT_THROW(load_tube(last), Error);
+  std::string bad_version = s;
+  bad_version[8] = 9;
+  std::istringstream v(bad_version);
+  EXPECT_THROW(load_tube(v), Error);
+  std::string bad_bounds = s;  // slice 0 lb := +1e308 > ub
+  const double big = 1e308;
+  std::memcpy(&bad_bounds[8 + 4 + 4 + 8 + 4 * 8 + 8], &big, 8);
+  std::istringstream b(bad_bounds);
+  EXPECT_THROW(load_tube(b), Error);
+  std::string bad_times = s;  // t_1 := t_0
+  std::memset(&bad_times[8 + 4 + 4 + 8 + 8], 0, 8);
+  std::istringstream t(bad_times);
+  EXPECT_THROW(load_tube(t), Error);
+  std::istringstream other(s);
+  EXPECT_THROW(load_tube(other, TDomain::create(0.0, 2.0, 0.5)), DimensionError);
+}
