@@ -110,3 +110,7 @@ def plot_contour(ax, loops, color="black", linewidth=1.5, arrows=False, **kwargs
                 ax.annotate("", xy=((a + c) / 2 + (c - a) * 0.05, (b + d) / 2 + (d - b) * 0.05),
                             xytext=((a + c) / 2, (b + d) / 2), arrowprops=dict(arrowstyle="->", color=color))
     return lines
+
+
+# Tube helpers (plot_tube, plot_tube_vector_2d, plot_thickness), also here for convenience.
+from .plot_tube import *  # noqa: E402,F401,F403

@@ -1,0 +1,68 @@
+#pragma once
+// SVG figures of tubes (thesis Figs. 3.4-3.12), drawn with Figure:
+//  - a scalar tube over time: one rectangle [t_k, t_{k+1}] x [x](k) per slice,
+//    optional gates, optional true trajectory;
+//  - the 2-D projection [x_i](.) x [x_j](.) of a tube vector: one box per
+//    slice, the initial and final gates highlighted, optional true path.
+// Slices smaller than a pixel are aggregated into their hull (consecutive
+// slices, as long as the hull stays within `merge_px` pixels of each slice of
+// the group), so 10^5 slices give a few hundred shapes. The drawn shapes
+// always cover every slice: the display is rigorous, only coarser.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sillage/figures/figure.h"
+#include "sillage/figures/thickness_figure.h"
+#include "sillage/tube/trajectory.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+struct TubeStyle {
+  Style slices{"#a9cdf2", "#2a6aa8", 0.4, 1.0, "slice"};
+  Style gates{"#1f3f66", "none", 0.0, 1.0, "gate"};
+  Style truth{"none", "#d62728", 1.5, 1.0, "truth"};
+  Style initial{"#f4a6a6", "#c62828", 1.0, 0.8, "initial"};  // gate 0 (2-D figures)
+  Style final{"#a5d6a7", "#2e7d32", 1.0, 0.8, "final"};     // gate N (2-D figures)
+  // Scalar figures: gates as 1-px vertical bars (only if slices are at least
+  // 4 px wide on average; else they would just paint the tube).
+  bool show_gates = false;
+  // Overdraw allowed by the aggregation, in pixels (>= 0; 0 merges only
+  // consecutive slices that are identical or share a pixel column).
+  double merge_px = 1.0;
+};
+
+// Draws the tube in the (t, x) plane of the figure (default projection).
+// `truth`, if given, is drawn as a polyline sampled at the pixel resolution
+// over its domain within [t_0, t_N]. Returns the number of slice rectangles.
+std::size_t draw_tube(Figure& fig, const Tube& x, const TubeStyle& style = {}, const Trajectory* truth = nullptr);
+
+// Draws [x_i](k) x [x_j](k) for every slice as 2-D boxes (x_i horizontally),
+// so the figure must keep its default projection (0, 1). Gates 0 and N are
+// highlighted (drawn at least 3 px wide so that a point is visible). The true
+// path (truth_i(t), truth_j(t)) is drawn if both trajectories are given.
+// Returns the number of slice boxes drawn. Error if i or j is out of range or i == j.
+std::size_t draw_tube_vector_2d(Figure& fig, const TubeVector& x, std::size_t i, std::size_t j,
+                                const TubeStyle& style = {}, const Trajectory* truth_i = nullptr,
+                                const Trajectory* truth_j = nullptr);
+
+// A figure over [t_0, t_N] x the tube's codomain (with a margin), the tube
+// drawn. An unbounded codomain is clipped to a finite window around the
+// bounded bounds, and the title says so.
+Figure tube_figure(const Tube& x, const std::string& title = "", const TubeStyle& style = {},
+                   const Trajectory* truth = nullptr, double width_px = 600, double height_px = 300);
+
+// A figure over the codomain of x_i x x_j (clipped like tube_figure, aspect
+// ratio kept), the projection drawn by draw_tube_vector_2d.
+Figure tube_vector_figure(const TubeVector& x, std::size_t i = 0, std::size_t j = 1, const std::string& title = "",
+                          const TubeStyle& style = {}, const Trajectory* truth_i = nullptr,
+                          const Trajectory* truth_j = nullptr, double width_px = 600);
+
+// A finite window containing every finite bound of `xs` with a 5 % margin
+// (non-degenerate; [-1, 1] if no bound is finite). `clipped` is set when some
+// interval is unbounded.
+Interval finite_window(const std::vector<Interval>& xs, bool& clipped);
+
+}  // namespace sillage
