@@ -25,6 +25,8 @@ EXAMPLES = [
     ("beacons_static", "py", "beacons_static.py"),
     ("sivia_two_beacons", "cpp", "example_sivia_two_beacons"),
     ("sivia_two_beacons", "py", "sivia_two_beacons.py"),
+    ("dead_reckoning", "cpp", "example_dead_reckoning"),
+    ("dead_reckoning", "py", "dead_reckoning.py"),
 ]
 
 

@@ -32,5 +32,18 @@
 #include "sillage/paving/sivia.h"
 #include "sillage/paving/sivia_function.h"
 
+#include "sillage/tube/synthesis_tree.h"
+#include "sillage/tube/tdomain.h"
+#include "sillage/tube/trajectory.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_arithmetic.h"
+#include "sillage/tube/tube_builders.h"
+#include "sillage/tube/tube_ctc.h"
+#include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_io.h"
+#include "sillage/tube/tube_vector.h"
+
 #include "sillage/figures/figure.h"
 #include "sillage/figures/html.h"
+#include "sillage/figures/thickness_figure.h"
+#include "sillage/figures/tube_figure.h"

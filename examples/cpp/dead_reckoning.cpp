@@ -1,0 +1,356 @@
+// Dead reckoning of a mobile robot (thesis 3.4, (3.14)-(3.20)).
+//
+// State x = (x1, x2, psi, theta), x' = (x4 cos x3, x4 sin x3, u1, u2), inputs
+// (3.16) known within 1/1000, x0 within the box (3.17), t in [0, 64]. Four
+// resolutions, every one guaranteed (outward rounding included):
+//  1. plain:  x3, x4 = primitives of [u]; v = x4 cos x3 by tube arithmetic;
+//             x1, x2 = primitives of [v] (slice-wise, thesis (3.8));
+//  2. cn:     CN (3.18) with [v] unbounded and the pointwise contractor of
+//             v - x4 cos x3 = 0 (tube_ctc.h) on every slice and gate, then
+//             the primitives intersected, 3 iterations: same as plain, since
+//             nothing flows back from x to x3, x4;
+//  3. taylor: gates integrated with a first-order Taylor form per slice,
+//             ∫_slice v ∈ δ v(t_k) + δ²/2 [v'](k), v(t_k) from the GATES of
+//             x3, x4 and [v'] = u2 cos x3 - x4 sin x3 u1 (the input noise is
+//             integrated apart: it is not differentiable);
+//  4. linear: beyond chapter 3, the correlation over time: x = nominal + e,
+//             the first-order part of e(T) is a linear function of the
+//             initial error and of the input noise, whose exact range is
+//             0.01 (|A(0)| + |B(0)|) + 0.001 ∫ (|A| + |B|), with A, B the
+//             adjoint integrals; the second-order remainder is bounded with
+//             |e3|, |e4| <= 0.01 + 0.001 t. Computed at checkpoints, then
+//             propagated by (3) in between and intersected with (3).
+// The nominal and extreme trajectories (RK4, fine step) are checked inside.
+#include <algorithm>
+#include <array>
+#include <ctime>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "example_args.h"
+#include "sillage/figures/thickness_figure.h"
+#include "sillage/figures/tube_figure.h"
+#include "sillage/interval/elementary.h"
+#include "sillage/tube/tube_arithmetic.h"
+#include "sillage/tube/tube_ctc.h"
+#include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_vector.h"
+
+using namespace sillage;
+
+namespace {
+
+const Interval kNoise = Interval(-1, 1) / Interval(1000);  // (3.16), rigorous 1/1000
+
+IntervalVector initial_box() {  // (3.17)
+  const Interval c = Interval(-1, 1) / Interval(100);
+  return {Interval(-1, 1), Interval(-1, 1), Interval::half_pi() + c, c};
+}
+
+// Process CPU time: the wall clock of a loaded machine says little.
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+struct Problem {
+  std::shared_ptr<TDomain> td;
+  Tube u1, u2;      // (3.16)
+  Tube u1n, u2n;    // nominal inputs (no noise)
+  Tube du1n, du2n;  // their derivatives
+  explicit Problem(double dt)
+      : td(TDomain::create(0.0, 64.0, dt)),
+        u1(td, "-9/20*cos(t/5) + [-0.001,0.001]"),
+        u2(td, "1/10 + sin(t/4) + [-0.001,0.001]"),
+        u1n(td, "-9/20*cos(t/5)"),
+        u2n(td, "1/10 + sin(t/4)"),
+        du1n(td, "9/100*sin(t/5)"),
+        du2n(td, "cos(t/4)/4") {}
+};
+
+// ---- 1. plain ----
+TubeVector solve_plain(const Problem& p) {
+  const IntervalVector x0 = initial_box();
+  Tube x3 = primitive(p.u1, x0[2]), x4 = primitive(p.u2, x0[3]);
+  Tube x1 = primitive(x4 * cos(x3), x0[0]), x2 = primitive(x4 * sin(x3), x0[1]);
+  return TubeVector({x1, x2, x3, x4});
+}
+
+// ---- 2. the contractor network (3.18) ----
+TubeVector solve_cn(const Problem& p) {
+  const IntervalVector x0 = initial_box();
+  TubeVector x(p.td, 4), v(p.td, 4);
+  const CtcFunction c1(Function({"x3", "x4", "v"}, "x4*cos(x3) - v"));
+  const CtcFunction c2(Function({"x3", "x4", "v"}, "x4*sin(x3) - v"));
+  for (int it = 0; it < 3; ++it) {  // the thesis runs 3 iterations; stop earlier at the fixed point
+    const TubeVector before = x;
+    v[2] &= p.u1;  // v3 = u1, v4 = u2: nothing flows back to the inputs
+    v[3] &= p.u2;
+    for (std::size_t i = 2; i < 4; ++i) x[i] &= primitive(v[i], x0[i]);
+    contract(c1, {&x[2], &x[3], &v[0]});
+    contract(c2, {&x[2], &x[3], &v[1]});
+    for (std::size_t i = 0; i < 2; ++i) x[i] &= primitive(v[i], x0[i]);
+    if (x == before) break;
+  }
+  return x;
+}
+
+// Increments of x over each slice, for x' = w + e: w absolutely continuous
+// with w' ∈ dw(k) on slice k (first-order Taylor from the gates of w), e(t) ∈
+// noise; intersected with the plain δ_k [v](k), v ⊇ w + e.
+std::vector<Interval> taylor_increments(const Tube& w, const Tube& dw, const Interval& noise, const Tube& v) {
+  const TDomain& td = *v.tdomain();
+  std::vector<Interval> inc(td.nb_slices());
+  for (std::size_t k = 0; k < inc.size(); ++k) {
+    const Interval d = td.slice_width(k);
+    inc[k] = (d * (w.gate(k) + noise) + sqr(d) / Interval(2) * dw.slice(k)) & (d * v.slice(k));
+  }
+  return inc;
+}
+
+// The tube x with x' ∈ v, x(t_{k+1}) - x(t_k) ∈ inc[k] and x(t_k) ∈ g[k]:
+// forward and backward passes on the gates, then slices
+// x(t) ∈ (x(t_k) + [0,δ] v(k)) ∩ (x(t_{k+1}) - [0,δ] v(k)).
+Tube integrate(const Tube& v, const std::vector<Interval>& inc, std::vector<Interval> g) {
+  const TDomain& td = *v.tdomain();
+  const std::size_t n = td.nb_slices();
+  for (std::size_t k = 0; k < n; ++k) g[k + 1] &= g[k] + inc[k];
+  for (std::size_t k = n; k-- > 0;) g[k] &= g[k + 1] - inc[k];
+  std::vector<Interval> s(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Interval span = Interval(0, td.slice_width(k).ub()) * v.slice(k);
+    s[k] = (g[k] + span) & (g[k + 1] - span);
+  }
+  for (std::size_t k = 0; k <= n; ++k) g[k] &= s[k < n ? k : n - 1];
+  return Tube(v.tdomain(), s, g);
+}
+
+std::vector<Interval> initial_gates(const TDomain& td, const Interval& x0) {
+  std::vector<Interval> g(td.nb_slices() + 1);  // the whole line
+  g[0] = x0;
+  return g;
+}
+
+Tube integrate_taylor(const Tube& w, const Tube& dw, const Interval& noise, const Tube& v, const Interval& x0) {
+  return integrate(v, taylor_increments(w, dw, noise, v), initial_gates(*v.tdomain(), x0));
+}
+
+// ---- 3. Taylor on the gates ----
+struct TaylorSolution {
+  TubeVector x;
+  Tube v1, v2;
+  std::vector<Interval> inc1, inc2;
+};
+
+TaylorSolution solve_taylor(const Problem& p) {
+  const IntervalVector x0 = initial_box();
+  Tube x3 = integrate_taylor(p.u1n, p.du1n, kNoise, p.u1, x0[2]);
+  Tube x4 = integrate_taylor(p.u2n, p.du2n, kNoise, p.u2, x0[3]);
+  const Tube c = cos(x3), s = sin(x3);
+  Tube v1 = x4 * c, v2 = x4 * s;
+  const Tube dv1 = p.u2 * c - x4 * s * p.u1, dv2 = p.u2 * s + x4 * c * p.u1;
+  auto inc1 = taylor_increments(v1, dv1, Interval(0), v1), inc2 = taylor_increments(v2, dv2, Interval(0), v2);
+  Tube x1 = integrate(v1, inc1, initial_gates(*p.td, x0[0]));
+  Tube x2 = integrate(v2, inc2, initial_gates(*p.td, x0[1]));
+  return {TubeVector({x1, x2, x3, x4}), std::move(v1), std::move(v2), std::move(inc1), std::move(inc2)};
+}
+
+// ---- 4. linearisation around the nominal, guaranteed remainder ----
+// Nominal (real, exact): x3n = pi/2 - 9/4 sin(t/5), x4n = t/10 + 4 - 4 cos(t/4),
+// so cos x3n = sin(9/4 sin(t/5)) =: a and sin x3n = cos(9/4 sin(t/5)) =: s.
+// e3 = x3 - x3n = e30 + ∫ε1, e4 = e40 + ∫ε2, |e_0| <= 1/100, |ε| <= 1/1000.
+//   x4 cos x3 = x4n a + a e4 - x4n s e3 + R1,
+//   x4 sin x3 = x4n s + s e4 + x4n a e3 + R2,
+//   |R| <= |x4n| E²/2 + E (E + E²/2), E(t) = 1/100 + t/1000 >= |e3|, |e4|
+// (second-order Taylor of cos / sin around x3n). For ∫_0^T (α e4 + β e3):
+//   = e40 A(0) + e30 B(0) + ∫_0^T (ε2 A + ε1 B),  A(s) = ∫_s^T α, B(s) = ∫_s^T β,
+// whose range is ±[(|A(0)| + |B(0)|)/100 + ∫_0^T (|A| + |B|)/1000] (attained).
+
+// Upper bound of that half-width at gate K; pa, pb: primitives of α, β.
+double linear_radius(const Tube& pa, const Tube& pb, std::size_t K) {
+  const TDomain& td = *pa.tdomain();
+  const Interval aT = pa.gate(K), bT = pb.gate(K);
+  Interval sum(0);
+  for (std::size_t k = 0; k < K; ++k) {
+    // A(s) over slice k lies in P(T) - [P](k); mag of an outward interval bounds |A| above.
+    sum += td.slice_width(k) * (Interval((aT - pa.slice(k)).mag()) + Interval((bT - pb.slice(k)).mag()));
+  }
+  const Interval r = (Interval((aT - pa.gate(0)).mag()) + Interval((bT - pb.gate(0)).mag())) / Interval(100) +
+                     sum / Interval(1000);
+  return r.ub();
+}
+
+TubeVector solve_linear(const Problem& p, const TaylorSolution& ty, std::size_t nb_checkpoints) {
+  const auto& td = p.td;
+  const IntervalVector x0 = initial_box();
+  const Tube a(td, "sin(9/4*sin(t/5))"), s(td, "cos(9/4*sin(t/5))"), x4n(td, "t/10 + 4 - 4*cos(t/4)");
+  const Tube E(td, "1/100 + t/1000");
+  const Tube da(td, "cos(9/4*sin(t/5))*9/20*cos(t/5)");   // (cos x3n)' = -sin(x3n) x3n'
+  const Tube ds(td, "-sin(9/4*sin(t/5))*9/20*cos(t/5)");  // (sin x3n)' = cos(x3n) x3n'
+  const Tube pa = primitive(a), ps = primitive(s);
+  const Tube pb1 = primitive(-(x4n * s)), pb2 = primitive(x4n * a);
+  const Tube rem = primitive(abs(x4n) * sqr(E) / Interval(2) + E * (E + sqr(E) / Interval(2)));
+  const Tube v1n = x4n * a, v2n = x4n * s;
+  const Tube n1 = integrate_taylor(v1n, p.u2n * a + x4n * da, Interval(0), v1n, Interval(0));
+  const Tube n2 = integrate_taylor(v2n, p.u2n * s + x4n * ds, Interval(0), v2n, Interval(0));
+
+  const std::size_t N = td->nb_slices();
+  std::vector<Interval> g1(ty.x[0].gates().begin(), ty.x[0].gates().end());
+  std::vector<Interval> g2(ty.x[1].gates().begin(), ty.x[1].gates().end());
+  const std::size_t step = std::max<std::size_t>(1, N / nb_checkpoints);
+  for (std::size_t K = step;; K = std::min(N, K + step)) {
+    const double r = rem.gate(K).ub();
+    g1[K] &= x0[0] + n1.gate(K) + Interval(-1, 1) * (Interval(linear_radius(pa, pb1, K)) + r);
+    g2[K] &= x0[1] + n2.gate(K) + Interval(-1, 1) * (Interval(linear_radius(ps, pb2, K)) + r);
+    if (K == N) break;
+  }
+  TubeVector x = ty.x;
+  x[0] = integrate(ty.v1, ty.inc1, std::move(g1));
+  x[1] = integrate(ty.v2, ty.inc2, std::move(g2));
+  return x;
+}
+
+// ---- checks: RK4 trajectories (fine step δ/4) sampled at the gates and inside slices ----
+struct Check {
+  std::size_t misses = 0, borderline = 0;  // excess > 1e-9, excess in (0, 1e-9]
+  double max_excess = 0;
+};
+
+double excess(const Interval& x, double v) {
+  if (x.is_empty()) return INFINITY;
+  return std::max({0.0, x.lb() - v, v - x.ub()});
+}
+
+struct Path {
+  std::vector<double> t;
+  std::vector<std::array<double, 4>> x;
+};
+
+Path rk4(const std::array<double, 4>& x0, double c1, double c2, double h, double tf) {
+  auto f = [&](double t, const std::array<double, 4>& x) {
+    return std::array<double, 4>{x[3] * std::cos(x[2]), x[3] * std::sin(x[2]), -9.0 / 20 * std::cos(t / 5) + c1,
+                                 0.1 + std::sin(t / 4) + c2};
+  };
+  Path p;
+  const std::size_t n = static_cast<std::size_t>(std::llround(tf / h));
+  std::array<double, 4> x = x0;
+  p.t.push_back(0), p.x.push_back(x);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double t = j * h;
+    auto add = [](const std::array<double, 4>& a, const std::array<double, 4>& b, double s) {
+      return std::array<double, 4>{a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2], a[3] + s * b[3]};
+    };
+    const auto k1 = f(t, x), k2 = f(t + h / 2, add(x, k1, h / 2)), k3 = f(t + h / 2, add(x, k2, h / 2)),
+               k4 = f(t + h, add(x, k3, h));
+    for (int i = 0; i < 4; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    p.t.push_back((j + 1) * h), p.x.push_back(x);
+  }
+  return p;
+}
+
+// Paths computed with h = δ/4: sample j*h is gate j/4 when j % 4 == 0, else inside slice j/4.
+void check(const TubeVector& x, const Path& path, Check& c) {
+  for (std::size_t j = 0; j < path.t.size(); ++j) {
+    const std::size_t k = j / 4;
+    for (std::size_t i = 0; i < 4; ++i) {
+      double e = 0;
+      if (j % 4 == 0) {
+        e = excess(x[i].gate(k), path.x[j][i]);
+        if (k > 0) e = std::max(e, excess(x[i].slice(k - 1), path.x[j][i]));
+        if (k < x.nb_slices()) e = std::max(e, excess(x[i].slice(k), path.x[j][i]));
+      } else {
+        e = excess(x[i].slice(k), path.x[j][i]);
+      }
+      if (e > 1e-9) ++c.misses;
+      else if (e > 0) ++c.borderline;
+      c.max_excess = std::max(c.max_excess, e);
+    }
+  }
+}
+
+std::vector<Path> reference_paths(double dt) {
+  std::vector<Path> paths;
+  const double h = dt / 4, pi2 = std::acos(0.0);
+  paths.push_back(rk4({0, 0, pi2, 0}, 0, 0, h, 64));  // nominal first
+  for (int e = 0; e < 16; ++e) {                      // corners of x0 (3, 4) x input errors
+    const double s3 = e & 1 ? 1 : -1, s4 = e & 2 ? 1 : -1, c1 = e & 4 ? 1e-3 : -1e-3, c2 = e & 8 ? 1e-3 : -1e-3;
+    paths.push_back(rk4({e & 1 ? 1.0 : -1.0, e & 2 ? -1.0 : 1.0, pi2 + 0.01 * s3, 0.01 * s4}, c1, c2, h, 64));
+  }
+  return paths;
+}
+
+std::string box_str(const Interval& a, const Interval& b) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "[%.2f, %.2f] x [%.2f, %.2f]", a.lb(), a.ub(), b.lb(), b.ub());
+  return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const auto out = example::out_dir(argc, argv);
+  bool all_inside = true;
+  std::string summary;
+  std::vector<std::pair<std::string, std::string>> figures;
+  for (double dt : {0.05, 0.01, 0.005, 0.001}) {
+    Problem p(dt);
+    const std::size_t N = p.td->nb_slices();
+    std::vector<std::pair<std::string, TubeVector>> results;
+    std::vector<double> times;
+    auto run = [&](const char* name, const std::function<TubeVector()>& solve) {
+      const double t0 = cpu_seconds();
+      results.emplace_back(name, solve());
+      times.push_back(cpu_seconds() - t0);
+    };
+    const double t_start = cpu_seconds();
+    run("plain", [&] { return solve_plain(p); });
+    run("cn", [&] { return solve_cn(p); });
+    TaylorSolution ty{TubeVector(p.td, 4), Tube(p.td), Tube(p.td), {}, {}};
+    run("taylor", [&] {
+      ty = solve_taylor(p);
+      return ty.x;
+    });
+    run("linear", [&] { return solve_linear(p, ty, 64); });
+    const double t_total = cpu_seconds() - t_start;
+
+    const std::vector<Path> paths = reference_paths(dt);
+    std::printf("delta = %g (%zu slices), all four resolutions %.3f s CPU\n", dt, N, t_total);
+    for (std::size_t m = 0; m < results.size(); ++m) {
+      const TubeVector& x = results[m].second;
+      Check c;
+      for (const Path& path : paths) check(x, path, c);
+      all_inside = all_inside && c.misses == 0;
+      std::printf("  %-7s p(tf) in %s  (%.3f s CPU)  max thickness %.3f; 17 RK4 paths: %zu misses, %zu borderline, "
+                  "max excess %.1e\n",
+                  results[m].first.c_str(), box_str(x[0].gate(N), x[1].gate(N)).c_str(), times[m],
+                  x.subvector(0, 1).max_thickness(), c.misses, c.borderline, c.max_excess);
+    }
+    const Path& nom = paths.front();
+    std::printf("  nominal RK4 p(tf) = (%.4f, %.4f)\n", nom.x.back()[0], nom.x.back()[1]);
+    if (dt == 0.005) {
+      summary = "delta=0.005: p(64) in " + box_str(results[0].second[0].gate(N), results[0].second[1].gate(N)) +
+                " (plain), " + box_str(results[2].second[0].gate(N), results[2].second[1].gate(N)) + " (taylor), " +
+                box_str(results[3].second[0].gate(N), results[3].second[1].gate(N)) + " (linear)";
+      std::vector<double> ts, x1, x2;
+      for (std::size_t j = 0; j < nom.t.size(); j += 4) ts.push_back(nom.t[j]), x1.push_back(nom.x[j][0]),
+                                                        x2.push_back(nom.x[j][1]);
+      const Trajectory tr1(ts, x1), tr2(ts, x2);
+      const char* names[] = {"plain", "cn", "taylor", "linear"};
+      for (std::size_t m : {std::size_t(0), std::size_t(3)}) {
+        const std::string f = std::string("dead_reckoning_") + names[m] + ".svg";
+        tube_vector_figure(results[m].second, 0, 1,
+                           std::string("[x1] x [x2], ") + names[m] + ", delta = 0.005", {}, &tr1, &tr2)
+            .save((out / f).string());
+        figures.emplace_back(f, std::string("Dead reckoning (3.18): [x1](.) x [x2](.), ") + names[m] +
+                                    " resolution, nominal path in red");
+        const std::string g = std::string("dead_reckoning_thickness_") + names[m] + ".svg";
+        thickness_figure(results[m].second.subvector(0, 1), ThicknessMeasure::Diagonal,
+                         std::string("Thickness of [x1] x [x2], ") + names[m])
+            .save((out / g).string());
+        figures.emplace_back(g, std::string("Thickness d(t) of [x1](.) x [x2](.), ") + names[m]);
+      }
+    }
+  }
+  example::print_result("dead_reckoning", summary, all_inside, figures);
+  return 0;
+}

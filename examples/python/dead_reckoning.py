@@ -1,0 +1,147 @@
+"""Dead reckoning of a mobile robot (thesis 3.4, (3.14)-(3.20)): inputs (3.16)
+as tubes, x0 in the box (3.17), t in [0, 64]. Two guaranteed resolutions:
+plain (primitives of [u], v = x4 cos x3 by tube arithmetic, primitives of [v])
+and the contractor network (3.18) where v1 = x4 cos x3, v2 = x4 sin x3 are
+pointwise tube contractors (CtcFunction.contract on tubes). The nominal and
+extreme trajectories (RK4, step delta/4) are checked inside the tubes.
+The C++ example adds the Taylor-on-gates and linearised resolutions."""
+import time
+
+import numpy as np
+
+import sillage  # noqa: F401
+from example_args import out_dir, print_result
+from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
+
+TF = 64.0
+
+
+def initial_box():
+    c = Interval(-1, 1) / Interval(100)
+    return IntervalVector([Interval(-1, 1), Interval(-1, 1), Interval.half_pi() + c, c])
+
+
+def inputs(td):
+    return (Tube(td, "-9/20*cos(t/5) + [-0.001,0.001]"), Tube(td, "1/10 + sin(t/4) + [-0.001,0.001]"))
+
+
+def solve_plain(td):
+    x0 = initial_box()
+    u1, u2 = inputs(td)
+    x3, x4 = u1.primitive(x0[2]), u2.primitive(x0[3])
+    x1 = (x4 * sillage.cos(x3)).primitive(x0[0])
+    x2 = (x4 * sillage.sin(x3)).primitive(x0[1])
+    return TubeVector([x1, x2, x3, x4])
+
+
+def solve_cn(td, iterations=3):
+    """CN (3.18): x and v start unbounded; v3 = u1, v4 = u2; x = x0 + integral of v;
+    v1 - x4 cos x3 = 0 and v2 - x4 sin x3 = 0 contracted on every slice and gate."""
+    x0 = initial_box()
+    u1, u2 = inputs(td)
+    x, v = TubeVector(td, 4), TubeVector(td, 4)
+    c1 = CtcFunction(Function(["x3", "x4", "v"], "x4*cos(x3) - v"))
+    c2 = CtcFunction(Function(["x3", "x4", "v"], "x4*sin(x3) - v"))
+    for _ in range(iterations):
+        v[2] &= u1
+        v[3] &= u2
+        for i in (2, 3):
+            x[i] &= v[i].primitive(x0[i])
+        c1.contract(x[2], x[3], v[0])
+        c2.contract(x[2], x[3], v[1])
+        for i in (0, 1):
+            x[i] &= v[i].primitive(x0[i])
+    return x
+
+
+def rk4_paths(dt):
+    """Nominal path first, then the corners of x0 (x3, x4) x constant input errors
+    +-0.001 (x1, x2 at corners too); states sampled every h = dt/4: shape (steps+1, paths, 4)."""
+    starts, errs = [[0.0, 0.0, np.pi / 2, 0.0]], [[0.0, 0.0]]
+    for e in range(16):
+        s3, s4 = (1 if e & 1 else -1), (1 if e & 2 else -1)
+        starts.append([1.0 if e & 1 else -1.0, -1.0 if e & 2 else 1.0, np.pi / 2 + 0.01 * s3, 0.01 * s4])
+        errs.append([1e-3 if e & 4 else -1e-3, 1e-3 if e & 8 else -1e-3])
+    x, c = np.array(starts), np.array(errs)
+    h = dt / 4
+    n = int(round(TF / h))
+
+    def f(t, x):
+        return np.stack([x[:, 3] * np.cos(x[:, 2]), x[:, 3] * np.sin(x[:, 2]),
+                         -9 / 20 * np.cos(t / 5) + c[:, 0], 0.1 + np.sin(t / 4) + c[:, 1]], axis=1)
+
+    out = np.empty((n + 1,) + x.shape)
+    out[0] = x
+    for j in range(n):
+        t = j * h
+        k1 = f(t, x)
+        k2 = f(t + h / 2, x + h / 2 * k1)
+        k3 = f(t + h / 2, x + h / 2 * k2)
+        k4 = f(t + h, x + h * k3)
+        x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out[j + 1] = x
+    return out
+
+
+def check(x, paths):
+    """(misses beyond 1e-9, borderline misses in (0, 1e-9], max excess) over every sample."""
+    misses = borderline = 0
+    worst = 0.0
+    for i in range(4):
+        s, g = x[i].slices_array(), x[i].gates_array()
+        vals = paths[:, :, i]                      # (4N+1, paths)
+        gate_vals = vals[0::4]                     # at t_k
+        ex = np.maximum(g[:, :1] - gate_vals, gate_vals - g[:, 1:])
+        inner = vals[1:].reshape(len(s), 4, -1)[:, :3, :]  # samples strictly inside slice k
+        ex_s = np.maximum(s[:, None, :1] - inner, inner - s[:, None, 1:])
+        # a gate time also lies in both neighbouring slices
+        ex_l = np.maximum(s[:, :1] - gate_vals[1:], gate_vals[1:] - s[:, 1:])
+        ex_r = np.maximum(s[:, :1] - gate_vals[:-1], gate_vals[:-1] - s[:, 1:])
+        all_ex = np.concatenate([ex.ravel(), ex_s.ravel(), ex_l.ravel(), ex_r.ravel()])
+        misses += int(np.sum(all_ex > 1e-9))
+        borderline += int(np.sum((all_ex > 0) & (all_ex <= 1e-9)))
+        worst = max(worst, float(all_ex.max()))
+    return misses, borderline, worst
+
+
+def box_str(a, b):
+    return f"[{a.lb():.2f}, {a.ub():.2f}] x [{b.lb():.2f}, {b.ub():.2f}]"
+
+
+def main():
+    out = out_dir(__doc__)
+    ok, summary, figures = True, "", []
+    for dt in (0.05, 0.01, 0.005):
+        td = TDomain(0.0, TF, dt)
+        n = td.nb_slices()
+        paths = rk4_paths(dt)
+        print(f"delta = {dt} ({n} slices)")
+        results = {}
+        for name, solve in (("plain", solve_plain), ("cn", solve_cn)):
+            t0 = time.perf_counter()
+            x = solve(td)
+            elapsed = time.perf_counter() - t0
+            misses, border, worst = check(x, paths)
+            ok = ok and misses == 0
+            results[name] = x
+            print(f"  {name:6s} p(tf) in {box_str(x[0].gate(n), x[1].gate(n))}  ({elapsed:.3f} s); "
+                  f"{paths.shape[1]} RK4 paths: {misses} misses, {border} borderline, max excess {worst:.1e}")
+        same = results["plain"][0] == results["cn"][0] and results["plain"][1] == results["cn"][1]
+        print(f"  cn == plain on x1, x2: {same}; nominal RK4 p(tf) = ({paths[-1, 0, 0]:.4f}, {paths[-1, 0, 1]:.4f})")
+        if dt == 0.005:
+            summary = f"delta=0.005: p(64) in {box_str(results['plain'][0].gate(n), results['plain'][1].gate(n))}"
+            try:
+                fig = sillage.tube_vector_figure(results["plain"], 0, 1, "[x1] x [x2], delta = 0.005")
+                fig.save(str(out / "dead_reckoning_py.svg"))
+                figures.append(("dead_reckoning_py.svg", "Dead reckoning (3.18): [x1](.) x [x2](.), Python"))
+                th = sillage.thickness_figure(results["plain"].subvector(0, 1), sillage.ThicknessMeasure.Diagonal,
+                                              "Thickness of [x1] x [x2]")
+                th.save(str(out / "dead_reckoning_thickness_py.svg"))
+                figures.append(("dead_reckoning_thickness_py.svg", "Thickness d(t) of [x1](.) x [x2](.)"))
+            except AttributeError:  # the tube figures are not bound
+                pass
+    print_result("dead_reckoning", summary, ok, figures)
+
+
+if __name__ == "__main__":
+    main()

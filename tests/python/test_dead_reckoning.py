@@ -1,0 +1,30 @@
+"""The dead-reckoning example (thesis 3.4) on a coarse slicing: the plain and
+CN resolutions agree, contain the nominal and extreme RK4 paths, and the
+delta = 0.005 figure of the plain resolution is reproduced."""
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples" / "python"))
+dr = pytest.importorskip("dead_reckoning")
+from sillage import TDomain  # noqa: E402
+
+
+def test_plain_and_cn_coarse():
+    td = TDomain(0.0, 64.0, 0.05)
+    plain, cn = dr.solve_plain(td), dr.solve_cn(td)
+    assert plain[0] == cn[0] and plain[1] == cn[1]
+    misses, _, _ = dr.check(plain, dr.rk4_paths(0.05))
+    assert misses == 0
+
+
+def test_plain_figure_of_the_brief():
+    td = TDomain(0.0, 64.0, 0.005)
+    x = dr.solve_plain(td)
+    n = td.nb_slices()
+    p1, p2 = x[0].gate(n), x[1].gate(n)
+    assert abs(p1.lb() - 21.23) < 0.01 and abs(p1.ub() - 55.61) < 0.01
+    assert abs(p2.lb() - 31.61) < 0.01 and abs(p2.ub() - 74.23) < 0.01
+    # the nominal final position (RK4)
+    assert p1.contains(38.3299) and p2.contains(53.0694)
