@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 if [ "${SANITIZE:-0}" = "1" ]; then
   export BUILD_DIR=build-asan BUILD_TYPE=RelWithDebInfo
-  bash scripts/build.sh -DSILLAGE_SANITIZE=ON -DSILLAGE_BUILD_BENCH=OFF
+  bash scripts/build.sh -DSILLAGE_SANITIZE=ON -DSILLAGE_BUILD_BENCH=OFF -DSILLAGE_BUILD_PYTHON=OFF
   export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else
   export BUILD_DIR=build
