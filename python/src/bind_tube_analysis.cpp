@@ -2,7 +2,7 @@
 // synthesis tree kept for repeated O(log N) queries). The methods
 // Tube.integral / Tube.partial_integral / Tube.primitive are added to the
 // Tube class registered by init_tube (module.cpp calls init_tube first); each
-// call builds the tree, O(N): use TubeAnalysis for many queries on one tube.
+// call uses the tube's cached synthesis tree (rebuilt after a modification).
 #include <utility>
 
 #include "bindings.h"

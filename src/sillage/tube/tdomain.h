@@ -22,10 +22,29 @@ namespace sillage {
 // contiguous. Shared between a Tube and (weakly) its TDomain. `version`
 // increases at every modification, so caches (e.g. a synthesis tree) can tell
 // when to rebuild.
+class SynthesisTree;
+
+// The synthesis tree of a tube's data, built on demand and kept while the
+// data does not change (see Tube::synthesis_tree). A copy starts empty: the
+// copied data gets a tree of its own.
+struct TreeCache {
+  TreeCache() = default;
+  TreeCache(const TreeCache&) {}
+  TreeCache& operator=(const TreeCache&) {
+    std::lock_guard<std::mutex> lock(mutex);
+    tree.reset();
+    return *this;
+  }
+  std::mutex mutex;
+  std::shared_ptr<const SynthesisTree> tree;
+  std::uint64_t version = 0;  // the data version the tree was built from
+};
+
 struct TubeData {
   std::vector<Interval> slices;  // [x](k) over [t_k, t_{k+1}], size N
   std::vector<Interval> gates;   // [x](t_k), size N+1
   std::uint64_t version = 0;
+  TreeCache tree_cache;
 
   void touch() { ++version; }
   // Splits slice k in two: both halves and the new gate copy the codomain.

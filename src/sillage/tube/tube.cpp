@@ -1,4 +1,5 @@
 #include "sillage/tube/tube.h"
+#include "sillage/tube/synthesis_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,9 @@
 #include "sillage/tube/trajectory.h"
 
 namespace sillage {
+
+// Up to this many slices a linear scan beats building the synthesis tree.
+constexpr std::size_t kScanLimit = 256;
 
 namespace {
 
@@ -144,6 +148,7 @@ Interval Tube::operator()(const Interval& t) const {
   // Slices k with t_k < b and t_{k+1} > a meet the interior (a, b).
   const auto k_lo = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), a) - ts.begin()) - 1;
   const auto k_end = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), b) - ts.begin());
+  if (k_end - k_lo > kScanLimit) return synthesis_tree()->eval(t);
   Interval r = Interval::empty();
   for (std::size_t k = k_lo; k < k_end; ++k) r |= data_->slices[k];
   // Gates with a <= t_k <= b.
@@ -151,6 +156,16 @@ Interval Tube::operator()(const Interval& t) const {
   const auto g_end = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), b) - ts.begin());
   for (std::size_t k = g_lo; k < g_end; ++k) r |= data_->gates[k];
   return r;
+}
+
+std::shared_ptr<const SynthesisTree> Tube::synthesis_tree() const {
+  TreeCache& c = data_->tree_cache;
+  std::lock_guard<std::mutex> lock(c.mutex);
+  if (!c.tree || c.version != data_->version) {
+    c.tree = std::make_shared<const SynthesisTree>(td_->times(), slices(), gates());
+    c.version = data_->version;
+  }
+  return c.tree;
 }
 
 void Tube::set(const Interval& y, std::size_t k) {

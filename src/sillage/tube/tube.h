@@ -21,6 +21,7 @@
 namespace sillage {
 
 class Function;
+class SynthesisTree;
 class Trajectory;
 
 class Tube {
@@ -54,13 +55,17 @@ class Tube {
   std::span<const Interval> gates() const { return data_->gates; }
   // Increases at every modification of this tube (including TDomain::sample).
   std::uint64_t version() const { return data_->version; }
+  // The synthesis tree of the current slices and gates (thesis Fig. 3.9),
+  // built on the first query after a modification and cached; thread-safe.
+  std::shared_ptr<const SynthesisTree> synthesis_tree() const;
 
   // [x](t): the gate when t is a time point, else the slice codomain.
   // Error if t is NaN or outside [t_0, t_N].
   Interval operator()(double t) const;
   // [x]([t]) (3.3): hull of the slices meeting the interior of [t] and of the
   // gates inside [t]; a degenerate [t] gives operator()(t); an empty [t]
-  // gives the empty set. Error if [t] is not inside [t_0, t_N].
+  // gives the empty set. Error if [t] is not inside [t_0, t_N]. Long
+  // ranges are answered by the synthesis tree, O(log N).
   Interval operator()(const Interval& t) const;
 
   // Slice k := y and its two gates := y ∩ the neighbouring slice (an end

@@ -57,7 +57,6 @@ Interval checked_point(const SynthesisTree& x, double t, const char* what, const
   return Interval(t);
 }
 
-SynthesisTree tree_of(const Tube& x) { return SynthesisTree(x.tdomain()->times(), x.slices(), x.gates()); }
 
 }  // namespace
 
@@ -97,12 +96,14 @@ Interval integral(const SynthesisTree& x, const Interval& t) {
 
 // ---- over a tube ----
 
-Interval integral(const Tube& x, double t) { return integral(tree_of(x), t); }
-Interval integral(const Tube& x, const Interval& t) { return integral(tree_of(x), t); }
-Interval integral(const Tube& x, double t1, double t2) { return integral(tree_of(x), t1, t2); }
-Interval integral(const Tube& x, const Interval& t1, const Interval& t2) { return integral(tree_of(x), t1, t2); }
+Interval integral(const Tube& x, double t) { return integral(*x.synthesis_tree(), t); }
+Interval integral(const Tube& x, const Interval& t) { return integral(*x.synthesis_tree(), t); }
+Interval integral(const Tube& x, double t1, double t2) { return integral(*x.synthesis_tree(), t1, t2); }
+Interval integral(const Tube& x, const Interval& t1, const Interval& t2) {
+  return integral(*x.synthesis_tree(), t1, t2);
+}
 std::pair<Interval, Interval> partial_integral(const Tube& x, const Interval& t1, const Interval& t2) {
-  return partial_integral(tree_of(x), t1, t2);
+  return partial_integral(*x.synthesis_tree(), t1, t2);
 }
 
 Tube primitive(const Tube& x, const Interval& x0) {
@@ -126,17 +127,6 @@ Tube primitive(const Tube& x, const Interval& x0) {
 
 // ---- TubeAnalysis ----
 
-std::shared_ptr<const SynthesisTree> TubeAnalysis::tree() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const void* data = &x_->data();
-  // Storage identity + version: a copy-assignment from a tube on another
-  // TDomain swaps the storage, every modification bumps the version.
-  if (!tree_ || data != data_ || x_->version() != version_ || tree_->nb_slices() != x_->nb_slices()) {
-    tree_ = std::make_shared<const SynthesisTree>(tree_of(*x_));
-    data_ = data;
-    version_ = x_->version();
-  }
-  return tree_;
-}
+std::shared_ptr<const SynthesisTree> TubeAnalysis::tree() const { return x_->synthesis_tree(); }
 
 }  // namespace sillage

@@ -29,9 +29,7 @@
 // holds the tree and rebuilds it only when the tube changed (Tube::version()).
 // (Tube has no slot for a cached tree, so the free functions cannot cache one
 // without risking a stale tree after the tube's storage is freed and reused.)
-#include <cstdint>
 #include <memory>
-#include <mutex>
 #include <utility>
 
 #include "sillage/interval/interval.h"
@@ -47,7 +45,7 @@ Interval integral(const SynthesisTree& x, double t1, double t2);
 Interval integral(const SynthesisTree& x, const Interval& t1, const Interval& t2);
 std::pair<Interval, Interval> partial_integral(const SynthesisTree& x, const Interval& t1, const Interval& t2);
 
-// ---- over a tube (builds the tree: O(N) per call) ----
+// ---- over a tube (through its cached synthesis tree: O(log N) once built) ----
 Interval integral(const Tube& x, double t);
 Interval integral(const Tube& x, const Interval& t);
 Interval integral(const Tube& x, double t1, double t2);
@@ -63,10 +61,9 @@ std::pair<Interval, Interval> partial_integral(const Tube& x, const Interval& t1
 // empty x0 or slice gives the empty tube.
 Tube primitive(const Tube& x, const Interval& x0 = Interval(0.0));
 
-// Holds the synthesis tree of one tube for repeated O(log N) queries. The
-// tree is built on first use and rebuilt whenever the tube's storage or
-// version changed. The Tube must outlive the analysis (it is referenced, not
-// copied). Thread-safe: the tree is swapped under a lock and shared.
+// The O(log N) queries of one tube through its cached synthesis tree
+// (Tube::synthesis_tree: built on first use, rebuilt after a modification).
+// The Tube must outlive the analysis (it is referenced, not copied).
 class TubeAnalysis {
  public:
   explicit TubeAnalysis(const Tube& x) : x_(&x) {}
@@ -86,10 +83,6 @@ class TubeAnalysis {
 
  private:
   const Tube* x_;
-  mutable std::mutex mutex_;
-  mutable std::shared_ptr<const SynthesisTree> tree_;
-  mutable const void* data_ = nullptr;  // identity of the storage the tree was built from
-  mutable std::uint64_t version_ = 0;
 };
 
 }  // namespace sillage

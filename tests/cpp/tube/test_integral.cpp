@@ -309,5 +309,35 @@ TEST(TubeIntegral, PrimitiveOfKnownDerivativeContainsTheExactPrimitive) {
   for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(r.gate(k), integral(x, static_cast<double>(k)));
 }
 
+// The cached tree answers long x([t]) queries and follows every modification.
+TEST(TubeTreeCache, LongQueriesMatchTheScanAndFollowChanges) {
+  auto td = std::make_shared<TDomain>(0.0, 10.0, 0.01);
+  Tube x(td, "sin(t) + [-0.1, 0.1]");
+  auto scan = [&](const Interval& t) {
+    Interval r = Interval::empty();
+    for (std::size_t k = 0; k < x.nb_slices(); ++k) {
+      if (td->t(k) < t.ub() && td->t(k + 1) > t.lb()) r |= x.slice(k);
+    }
+    for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
+      if (t.contains(td->t(k))) r |= x.gate(k);
+    }
+    return r;
+  };
+  const Interval t(0.5, 9.5);
+  EXPECT_EQ(x(t), scan(t));
+  const auto first = x.synthesis_tree();
+  EXPECT_EQ(x.synthesis_tree(), first);  // cached
+  x.set(Interval(5, 6), 500);
+  EXPECT_NE(x.synthesis_tree(), first);  // rebuilt after the change
+  EXPECT_EQ(x(t), scan(t));
+  EXPECT_EQ(x(t).ub(), 6);
+  Tube y(x);  // a copy has a tree of its own
+  y.set(Interval(7, 8), 100);
+  EXPECT_EQ(x(t).ub(), 6);
+  EXPECT_EQ(y(t).ub(), 8);
+  td->sample(5.005);
+  EXPECT_EQ(x(t), scan(t));
+}
+
 }  // namespace
 }  // namespace sillage
