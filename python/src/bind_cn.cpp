@@ -1,5 +1,5 @@
-// ContractorNetwork. Domains are the user's own Interval / IntervalVector
-// objects (shared with C++ through their std::shared_ptr holders), contracted
+// ContractorNetwork. Domains are the user's own Interval / IntervalVector /
+// Tube / TubeVector objects (shared with C++ through their std::shared_ptr holders), contracted
 // in place; DomainRef.component(x, i) / DomainRef.subvector(x, i, j) bind parts
 // of a box.
 #include <pybind11/stl.h>
@@ -20,17 +20,26 @@ namespace {
 DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
   if (py::isinstance<Interval>(h)) return DomainRef(h.cast<std::shared_ptr<Interval>>());
   if (py::isinstance<IntervalVector>(h)) return DomainRef(h.cast<std::shared_ptr<IntervalVector>>());
+  if (py::isinstance<Tube>(h)) return DomainRef(h.cast<std::shared_ptr<Tube>>());
+  if (py::isinstance<TubeVector>(h)) return DomainRef(h.cast<std::shared_ptr<TubeVector>>());
   if (py::isinstance<DomainRef>(h)) return h.cast<DomainRef>();
   throw Error("ContractorNetwork.add: domain " + std::to_string(index) + " is a " +
               std::string(py::str(py::type::handle_of(h).attr("__name__"))) +
-              ", expected Interval, IntervalVector or DomainRef");
+              ", expected Interval, IntervalVector, Tube, TubeVector or DomainRef");
 }
 
 }  // namespace
 
 void init_cn(py::module_& m) {
+  py::class_<NetworkCtc, std::shared_ptr<NetworkCtc>>(
+      m, "NetworkCtc", "A contractor on whole tubes that a ContractorNetwork binds (CtcDeriv, CtcEval).")
+      .def("name", &NetworkCtc::name);
+
   py::class_<DomainRef>(m, "DomainRef", "A part of a box given to ContractorNetwork.add.")
-      .def_static("component", &DomainRef::component, py::arg("x"), py::arg("i"))
+      .def_static("component", py::overload_cast<std::shared_ptr<IntervalVector>, std::size_t>(&DomainRef::component),
+                  py::arg("x"), py::arg("i"))
+      .def_static("component", py::overload_cast<std::shared_ptr<TubeVector>, std::size_t>(&DomainRef::component),
+                  py::arg("x"), py::arg("i"), "Component i of a tube vector, live.")
       .def_static("subvector", &DomainRef::subvector, py::arg("x"), py::arg("i"), py::arg("j"))
       .def("first", &DomainRef::first)
       .def("count", &DomainRef::count);
@@ -56,7 +65,11 @@ void init_cn(py::module_& m) {
           [](ContractorNetwork& cn, const py::object& ctc, const py::iterable& domains) {
             std::vector<DomainRef> refs;
             for (const auto& h : domains) refs.push_back(to_domain_ref(h, refs.size()));
-            cn.add(hold_ctc(ctc), refs);
+            if (py::isinstance<NetworkCtc>(ctc)) {
+              cn.add(std::shared_ptr<const NetworkCtc>(ctc.cast<std::shared_ptr<NetworkCtc>>()), refs);
+            } else {
+              cn.add(hold_ctc(ctc), refs);
+            }
           },
           py::arg("ctc"), py::arg("domains"))
       .def("contract", &ContractorNetwork::contract,

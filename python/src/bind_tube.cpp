@@ -225,8 +225,13 @@ void init_tube_vector(py::module_& m) {
       .def("__len__", &V::size)
       .def("tdomain", &V::tdomain)
       .def("nb_slices", &V::nb_slices)
-      .def("__getitem__", [](V& v, long long i) -> Tube& { return v[py_index(i, v.size())]; },
-           py::return_value_policy::reference_internal, py::arg("i"))
+      // An aliasing pointer: the component, keeping its vector alive (a live
+      // reference that ContractorNetwork can hold).
+      .def("__getitem__",
+           [](const std::shared_ptr<V>& v, long long i) {
+             return std::shared_ptr<Tube>(v, &(*v)[py_index(i, v->size())]);
+           },
+           py::arg("i"))
       .def("__setitem__",
            [](V& v, long long i, const Tube& x) {
              Tube& xi = v[py_index(i, v.size())];

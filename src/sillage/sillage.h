@@ -25,6 +25,9 @@
 #include "sillage/ctc/sep_function.h"
 
 #include "sillage/cn/contractor_network.h"
+#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_ctc_node.h"
+#include "sillage/cn/tube_domain.h"
 
 #include "sillage/paving/component.h"
 #include "sillage/paving/contour.h"

@@ -1,11 +1,16 @@
 #pragma once
-// CnNode: a contractor bound to the atoms of the network's domains it acts on.
-// The network wakes a node when one of its atoms shrank; run() contracts the
-// domains and reports which of its atoms shrank by more than the ratio.
-// CtcNode binds a box contractor (Ctc); tube contractors (slice by slice, or
-// whole-tube ones such as CtcDeriv) will be other kinds of node.
+// CnNode: a contractor bound to ranges of atoms of the network's domains.
+// The network wakes a node when one of its atoms shrank, and tells it which
+// ones (NodeRun::dirty), so that a node acting on tubes re-contracts only the
+// slices that changed. run() contracts the domains and reports which of its
+// atoms shrank by more than the ratio.
+//
+// Atoms of a node are numbered by position: the concatenation of its ranges.
+// CtcNode binds a box contractor (Ctc) on few atoms; TubeCtcNode applies one
+// at every slice and gate of tubes; dynamics/ adds CtcDeriv and CtcEval nodes.
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,36 +19,53 @@
 
 namespace sillage {
 
-// Atom `atom` of the network's domain number `domain`.
-struct AtomRef {
+// Atoms [first, first + count) of the network's domain number `domain`.
+struct AtomRange {
   std::size_t domain;
-  std::size_t atom;
+  std::size_t first;
+  std::size_t count;
+};
+
+// What one run of a node gets from the network, and gives back.
+struct NodeRun {
+  const std::vector<std::shared_ptr<Domain>>& domains;
+  double ratio;
+  // True on the first run of a contract(): everything is to be contracted.
+  bool all;
+  // Otherwise: positions of the node's atoms that shrank since its last run
+  // (sorted, no duplicates).
+  std::span<const std::size_t> dirty;
+  // Out: positions of the atoms this run shrank by more than `ratio`
+  // (shrink.h); duplicates allowed.
+  std::vector<std::size_t>& changed;
 };
 
 class CnNode {
  public:
-  explicit CnNode(std::vector<AtomRef> atoms) : atoms_(std::move(atoms)) {}
+  explicit CnNode(std::vector<AtomRange> ranges);
   virtual ~CnNode() = default;
   virtual std::string name() const = 0;
-  const std::vector<AtomRef>& atoms() const { return atoms_; }
-  // Contracts the domains; appends to `changed` the positions (in atoms()) of
-  // the atoms that shrank by more than `ratio` (see shrink.h). Returns false
-  // as soon as a domain became empty.
-  virtual bool run(const std::vector<std::shared_ptr<Domain>>& domains, double ratio,
-                   std::vector<std::size_t>& changed) const = 0;
+  const std::vector<AtomRange>& ranges() const { return ranges_; }
+  std::size_t nb_atoms() const { return nb_atoms_; }
+  // Position of the first atom of range r.
+  std::size_t offset(std::size_t r) const { return offsets_[r]; }
+  // Contracts the domains. Returns false as soon as a domain became empty.
+  virtual bool run(NodeRun& r) const = 0;
 
  private:
-  std::vector<AtomRef> atoms_;
+  std::vector<AtomRange> ranges_;
+  std::vector<std::size_t> offsets_;
+  std::size_t nb_atoms_ = 0;
 };
 
 // A box contractor on the concatenation of its atoms: read, contract, write
-// back intersected (so even a contractor that would enlarge cannot).
+// back intersected (so even a contractor that would enlarge cannot). Runs on
+// its whole box whatever changed.
 class CtcNode : public CnNode {
  public:
-  CtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRef> atoms);
+  CtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges);
   std::string name() const override { return ctc_->name(); }
-  bool run(const std::vector<std::shared_ptr<Domain>>& domains, double ratio,
-           std::vector<std::size_t>& changed) const override;
+  bool run(NodeRun& r) const override;
   const std::shared_ptr<const Ctc>& ctc() const { return ctc_; }
 
  private:

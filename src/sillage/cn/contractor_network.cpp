@@ -1,7 +1,10 @@
 #include "sillage/cn/contractor_network.h"
 
+#include <algorithm>
 #include <chrono>
 
+#include "sillage/cn/tube_ctc_node.h"
+#include "sillage/cn/tube_domain.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
 
@@ -33,41 +36,102 @@ std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain)
   return d;
 }
 
+std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& domains) {
+  for (const auto& r : domains) {
+    for (const auto& p : r.parts()) {
+      const auto it = index_.find(p.domain->key());
+      if (it != index_.end()) domains_[it->second]->check_layout(label(it->second));
+    }
+  }
+  std::vector<BoundDomain> bound;
+  for (const auto& r : domains) {
+    for (const auto& p : r.parts()) {
+      const std::size_t d = add_domain(p.domain);
+      bound.push_back({domains_[d], {d, p.first, p.count}});
+    }
+  }
+  return bound;
+}
+
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  std::size_t total = 0;
-  for (const auto& r : domains) total += r.count();
+  std::size_t total = 0, nb_tubes = 0;
+  for (const auto& r : domains) {
+    for (const auto& p : r.parts()) {
+      if (dynamic_cast<const TubeDomain*>(p.domain.get())) {
+        ++nb_tubes;
+      } else {
+        total += p.count;
+      }
+    }
+  }
+  total += nb_tubes;
   if (total != ctc->nb_vars()) {
     throw DimensionError("ContractorNetwork::add: " + ctc->name() + " acts on " + std::to_string(ctc->nb_vars()) +
                          " variables but the " + std::to_string(domains.size()) + " domains given add up to " +
-                         std::to_string(total));
+                         std::to_string(total) + (nb_tubes ? " (a tube counts as one variable)" : ""));
   }
-  // Validate everything before registering anything, so that a failed add
-  // leaves the network unchanged.
-  for (const auto& r : domains) {
-    const auto it = index_.find(r.domain()->key());
-    if (it != index_.end()) domains_[it->second]->check_layout(label(it->second));
+  if (nb_tubes > 0) {
+    // Check the tubes' layout and time domains before registering anything.
+    const TDomain* td = nullptr;
+    for (const auto& r : domains) {
+      for (const auto& p : r.parts()) {
+        const auto* t = dynamic_cast<const TubeDomain*>(p.domain.get());
+        if (!t) continue;
+        if (p.first != 0 || p.count != t->nb_atoms()) {
+          throw DimensionError("ContractorNetwork::add: " + ctc->name() +
+                               ": a tube argument must be a whole tube (all its slices and gates)");
+        }
+        if (td && t->tube().tdomain().get() != td) {
+          throw DimensionError("ContractorNetwork::add: " + ctc->name() + ": the tubes are not on one TDomain");
+        }
+        td = t->tube().tdomain().get();
+      }
+    }
   }
-  std::vector<AtomRef> atoms;
-  atoms.reserve(total);
-  for (const auto& r : domains) {
-    const std::size_t d = add_domain(r.domain());
-    for (std::size_t k = 0; k < r.count(); ++k) atoms.push_back({d, r.first() + k});
+  const std::vector<BoundDomain> bound = bind(domains);
+  std::vector<AtomRange> ranges;
+  std::vector<std::shared_ptr<TubeDomain>> tubes;
+  for (const auto& b : bound) {
+    ranges.push_back(b.range);
+    tubes.push_back(std::dynamic_pointer_cast<TubeDomain>(b.domain));
   }
-  add_node(std::make_shared<CtcNode>(std::move(ctc), std::move(atoms)));
+  if (nb_tubes > 0) {
+    add_node(std::make_shared<TubeCtcNode>(std::move(ctc), std::move(ranges), std::move(tubes)));
+  } else {
+    add_node(std::make_shared<CtcNode>(std::move(ctc), std::move(ranges)));
+  }
+}
+
+void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
+  if (!ctc) throw Error("ContractorNetwork::add: null contractor");
+  // make_node validates the arguments: on an error, forget the domains this
+  // call registered, so that a failed add leaves the network unchanged.
+  const std::size_t nb_before = domains_.size();
+  try {
+    add_node(ctc->make_node(bind(domains)));
+  } catch (...) {
+    while (domains_.size() > nb_before) {
+      index_.erase(domains_.back()->key());
+      domains_.pop_back();
+      watchers_.pop_back();
+    }
+    throw;
+  }
 }
 
 void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
   if (!node) throw Error("ContractorNetwork::add_node: null node");
-  for (const auto& a : node->atoms()) {
-    if (a.domain >= domains_.size() || a.atom >= domains_[a.domain]->nb_atoms()) {
-      throw DimensionError("ContractorNetwork::add_node: " + node->name() + " refers to an unknown domain atom");
+  for (const auto& a : node->ranges()) {
+    if (a.domain >= domains_.size() || a.first > domains_[a.domain]->nb_atoms() ||
+        a.count > domains_[a.domain]->nb_atoms() - a.first) {
+      throw DimensionError("ContractorNetwork::add_node: " + node->name() + " refers to unknown domain atoms");
     }
   }
   const std::size_t id = nodes_.size();
-  for (const auto& a : node->atoms()) {
-    auto& w = watchers_[a.domain][a.atom];
-    if (w.empty() || w.back() != id) w.push_back(id);
+  for (std::size_t g = 0; g < node->ranges().size(); ++g) {
+    const AtomRange& a = node->ranges()[g];
+    watchers_[a.domain].add({id, a.first, a.count, node->offset(g)});
   }
   nodes_.push_back(std::move(node));
 }
@@ -99,17 +163,26 @@ ContractStats ContractorNetwork::contract() {
 
   std::vector<std::size_t> round(nodes_.size()), next, changed;
   for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
-  std::vector<char> queued(nodes_.size(), 1);
+  std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
+  // pending[i]: positions of node i's atoms that shrank since it last ran.
+  std::vector<std::vector<std::size_t>> pending(nodes_.size());
   while (!round.empty()) {
     ++stats.iterations;
     for (const std::size_t i : round) {
       queued[i] = 0;
       changed.clear();
       const CnNode& node = *nodes_[i];
+      auto& dirty = pending[i];
+      std::sort(dirty.begin(), dirty.end());
+      dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+      NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
+      fresh[i] = 0;
       ++stats.contractor_calls;
-      if (!node.run(domains_, ratio_, changed)) {
+      const bool ok = node.run(run);
+      dirty.clear();
+      if (!ok) {
         stats.empty = true;
-        for (const auto& a : node.atoms()) {
+        for (const auto& a : node.ranges()) {
           if (domains_[a.domain]->is_empty()) {
             stats.empty_domain = label(a.domain);
             break;
@@ -118,13 +191,18 @@ ContractStats ContractorNetwork::contract() {
         return finish();
       }
       for (const std::size_t k : changed) {
-        const AtomRef& a = node.atoms()[k];
-        for (const std::size_t w : watchers_[a.domain][a.atom]) {
-          if (w != i && !queued[w]) {
+        // The range holding position k, then the atom it is.
+        std::size_t g = node.ranges().size() - 1;
+        while (node.offset(g) > k) --g;
+        const AtomRange& a = node.ranges()[g];
+        watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t pos) {
+          if (w == i) return;
+          pending[w].push_back(pos);
+          if (!queued[w]) {
             queued[w] = 1;
             next.push_back(w);
           }
-        }
+        });
       }
     }
     round.swap(next);

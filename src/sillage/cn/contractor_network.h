@@ -9,11 +9,20 @@
 //   ContractStats s = cn.contract();  // x and rho are contracted in place
 //
 // Domains are the user's own objects, shared: std::shared_ptr<Interval>,
-// std::shared_ptr<IntervalVector>, or a part of a box (DomainRef::component /
-// subvector). Their identity is the shared heap object, so moving or copying
-// the containers of the shared_ptrs changes nothing. The domains of one add()
-// are concatenated into the box given to the contractor; their sizes must add
-// up to its nb_vars() (DimensionError naming it otherwise).
+// std::shared_ptr<IntervalVector>, std::shared_ptr<Tube>,
+// std::shared_ptr<TubeVector>, or a part of a box or tube vector
+// (DomainRef::component / subvector). Their identity is the shared heap
+// object, so moving or copying the containers of the shared_ptrs changes
+// nothing. The domains of one add() are concatenated into the box given to
+// the contractor; their sizes must add up to its nb_vars() (DimensionError
+// naming it otherwise).
+//
+// Tubes. When an argument of add(ctc, ...) is a tube (or tube vector), ctc is
+// applied at every time (TubeCtcNode): a tube counts as one variable, the
+// other arguments are constants over time. Contractors on whole tubes
+// (CtcDeriv, CtcEval) come as NetworkCtc. The network tracks each slice and
+// gate of a tube as an atom of its own: a contraction of slice k wakes only
+// the contractors acting on slice k, and tells them which slices changed.
 //
 // Propagation: a queue of contractors, processed in rounds. Round 1 runs every
 // contractor once, in the order of add(); each atom (scalar component) that a
@@ -31,6 +40,8 @@
 
 #include "sillage/cn/cn_node.h"
 #include "sillage/cn/domain_ref.h"
+#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/watchers.h"
 
 namespace sillage {
 
@@ -55,8 +66,11 @@ class ContractorNetwork {
   std::shared_ptr<Interval> create_dom(const Interval& x);
   std::shared_ptr<IntervalVector> create_dom(const IntervalVector& x);
 
-  // Binds ctc to the concatenation of the domains (registered on first use).
+  // Binds ctc to the concatenation of the domains (registered on first use);
+  // applied at every time if a domain is a tube (see above).
   void add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains);
+  // A contractor with a node of its own (CtcDeriv, CtcEval, ...).
+  void add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains);
   // Any kind of node (extension point for tube contractors).
   void add_node(std::shared_ptr<const CnNode> node);
   // Registers a domain (idempotent); returns its index in the network.
@@ -73,11 +87,13 @@ class ContractorNetwork {
 
  private:
   std::string label(std::size_t d) const;
+  // Registers the parts of the references; validates first, so that a failed
+  // add leaves the network unchanged.
+  std::vector<BoundDomain> bind(const std::vector<DomainRef>& domains);
 
   std::vector<std::shared_ptr<Domain>> domains_;
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
-  // watchers_[d][a]: the nodes acting on atom a of domain d.
-  std::vector<std::vector<std::vector<std::size_t>>> watchers_;
+  std::vector<Watchers> watchers_;  // per domain
   std::vector<std::shared_ptr<const CnNode>> nodes_;
   double ratio_ = 0.01;
 };

@@ -2,17 +2,18 @@
 
 #include <string>
 
+#include "sillage/cn/tube_domain.h"
 #include "sillage/error.h"
 
 namespace sillage {
 
-DomainRef::DomainRef(std::shared_ptr<Domain> domain, std::size_t first, std::size_t count)
-    : domain_(std::move(domain)), first_(first), count_(count) {
-  if (!domain_) throw Error("DomainRef: null domain");
-  if (first_ > domain_->nb_atoms() || count_ > domain_->nb_atoms() - first_) {
-    throw DimensionError("DomainRef: components [" + std::to_string(first_) + ", " +
-                         std::to_string(first_ + count_) + ") out of range for " + domain_->kind());
+DomainRef::DomainRef(std::shared_ptr<Domain> domain, std::size_t first, std::size_t count) {
+  if (!domain) throw Error("DomainRef: null domain");
+  if (first > domain->nb_atoms() || count > domain->nb_atoms() - first) {
+    throw DimensionError("DomainRef: components [" + std::to_string(first) + ", " + std::to_string(first + count) +
+                         ") out of range for " + domain->kind());
   }
+  parts_.push_back({std::move(domain), first, count});
 }
 
 DomainRef::DomainRef(std::shared_ptr<Interval> x) : DomainRef(std::make_shared<IntervalDomain>(std::move(x)), 0, 1) {}
@@ -21,6 +22,20 @@ DomainRef::DomainRef(std::shared_ptr<IntervalVector> x) {
   auto d = std::make_shared<BoxDomain>(std::move(x));
   const std::size_t n = d->nb_atoms();
   *this = DomainRef(std::move(d), 0, n);
+}
+
+DomainRef::DomainRef(std::shared_ptr<Tube> x) {
+  auto d = std::make_shared<TubeDomain>(std::move(x));
+  const std::size_t n = d->nb_atoms();
+  *this = DomainRef(std::move(d), 0, n);
+}
+
+DomainRef::DomainRef(std::shared_ptr<TubeVector> x) {
+  if (!x) throw Error("DomainRef: null TubeVector");
+  for (std::size_t i = 0; i < x->size(); ++i) {
+    const DomainRef c = component(x, i);
+    parts_.push_back(c.parts_.front());
+  }
 }
 
 DomainRef DomainRef::component(std::shared_ptr<IntervalVector> x, std::size_t i) {
@@ -38,6 +53,16 @@ DomainRef DomainRef::subvector(std::shared_ptr<IntervalVector> x, std::size_t i,
                          "] for " + d->kind());
   }
   return DomainRef(std::move(d), i, j - i + 1);
+}
+
+DomainRef DomainRef::component(std::shared_ptr<TubeVector> x, std::size_t i) {
+  if (!x) throw Error("DomainRef::component: null TubeVector");
+  if (i >= x->size()) {
+    throw DimensionError("DomainRef::component: component " + std::to_string(i) + " out of range for a TubeVector of " +
+                         std::to_string(x->size()) + " components");
+  }
+  // Aliasing pointer: the component, keeping its tube vector alive.
+  return DomainRef(std::shared_ptr<Tube>(x, &(*x)[i]));
 }
 
 }  // namespace sillage

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cn/counting_ctc.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_binary.h"
 #include "sillage/ctc/ctc_box.h"
@@ -19,23 +20,9 @@
 #include "sillage/ctc/shrink.h"
 
 using namespace sillage;
+using sillage::test::Counting;
 
 namespace {
-
-// Counts the calls of the contractor it wraps.
-class Counting : public Ctc {
- public:
-  explicit Counting(std::shared_ptr<const Ctc> c) : Ctc(c->nb_vars()), c_(std::move(c)) {}
-  void contract(IntervalVector& x) const override {
-    ++calls;
-    c_->contract(x);
-  }
-  std::string name() const override { return "Counting(" + c_->name() + ")"; }
-  mutable std::atomic<int> calls{0};
-
- private:
-  std::shared_ptr<const Ctc> c_;
-};
 
 struct Beacon {
   double x, y;
@@ -236,7 +223,7 @@ TEST(ContractorNetwork, Errors) {
   EXPECT_THROW(cn.add(ctc({"a"}, "a"), {x, r}), DimensionError);
   EXPECT_THROW(DomainRef::component(x, 2), DimensionError);
   EXPECT_THROW(DomainRef::subvector(x, 1, 0), DimensionError);
-  EXPECT_THROW(cn.add(nullptr, {r}), Error);
+  EXPECT_THROW(cn.add(std::shared_ptr<const Ctc>(), {r}), Error);
   EXPECT_THROW(DomainRef(std::shared_ptr<Interval>()), Error);
   EXPECT_THROW(cn.set_ratio(1.0), Error);
   EXPECT_THROW(cn.set_ratio(-1e-3), Error);

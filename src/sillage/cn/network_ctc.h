@@ -1,0 +1,30 @@
+#pragma once
+// NetworkCtc: a contractor the network binds through a node of its own kind
+// (CtcDeriv, CtcEval, ...: contractors on whole tubes that are not box
+// contractors). ContractorNetwork::add(ctc, {domains}) registers the domains
+// and asks the contractor for the node acting on them.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/cn_node.h"
+
+namespace sillage {
+
+// A registered domain and the range of its atoms an argument covers.
+struct BoundDomain {
+  std::shared_ptr<Domain> domain;  // the network's domain object
+  AtomRange range;                 // range.domain: its index in the network
+};
+
+class NetworkCtc {
+ public:
+  virtual ~NetworkCtc() = default;
+  virtual std::string name() const = 0;
+  // The node acting on `args` (the parts of the DomainRefs of add(), in
+  // order). Throws DimensionError / Error, naming the contractor, when the
+  // arguments are not what it acts on.
+  virtual std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const = 0;
+};
+
+}  // namespace sillage

@@ -1,0 +1,50 @@
+#pragma once
+// TubeCtcNode: a box contractor applied at every time, on tubes and on
+// constant (time-independent) variables: f(x_1(t), ..., x_n(t), p) ∈ [y] for
+// all t (thesis 3.2.3, 4.3.1). ContractorNetwork::add makes one when an
+// argument is a tube.
+//
+// Slice granularity: at each run only the time atoms (slices, gates) that
+// changed since the last run are contracted, plus the gates next to a changed
+// slice (a gate lies in both neighbouring slices, and is intersected with
+// them first). Atom i of every tube is the same time element (all tubes are
+// on one TDomain), so the box of atom i gathers atom i of each tube.
+//
+// Constant variables p hold at every t: each contracted time element gives a
+// valid contraction of p, and p is intersected with all of them. When p
+// shrinks (by more than the ratio) every time element is contracted again,
+// until p is stable.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "sillage/cn/cn_node.h"
+#include "sillage/cn/tube_domain.h"
+#include "sillage/expr/function.h"
+
+namespace sillage {
+
+class TubeCtcNode : public CnNode {
+ public:
+  // `tubes[r]`: the TubeDomain of range r, or null for a constant range
+  // (Interval or box atoms). Every tube range must cover its whole tube, and
+  // all tubes must share one TDomain (DimensionError otherwise).
+  TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
+              std::vector<std::shared_ptr<TubeDomain>> tubes);
+  std::string name() const override { return ctc_->name(); }
+  bool run(NodeRun& r) const override;
+
+ private:
+  // Contracts the time atoms `atoms` (sorted); false if proven empty.
+  bool contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const;
+  bool contract_box(IntervalVector& box) const;
+
+  std::shared_ptr<const Ctc> ctc_;
+  const Function* f_ = nullptr;        // fast path: HC4 of a CtcFunction
+  const IntervalVector* image_ = nullptr;
+  std::vector<std::shared_ptr<TubeDomain>> tubes_;
+  std::size_t nb_time_atoms_ = 0;      // 2N+1
+  std::size_t nb_params_ = 0;
+};
+
+}  // namespace sillage

@@ -1,0 +1,32 @@
+#include "sillage/cn/tube_domain.h"
+
+#include "sillage/error.h"
+
+namespace sillage {
+
+TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)), nb_slices_(x_ ? x_->nb_slices() : 0) {
+  if (!x_) throw Error("ContractorNetwork: null Tube domain");
+}
+
+Interval TubeDomain::atom(std::size_t i) const {
+  const TubeData& d = x_->data();
+  return (i & 1) ? d.slices[i / 2] : d.gates[i / 2];
+}
+
+void TubeDomain::set_atom(std::size_t i, const Interval& x) {
+  TubeData& d = x_->data();
+  ((i & 1) ? d.slices[i / 2] : d.gates[i / 2]) = x;
+  d.touch();
+}
+
+std::string TubeDomain::kind() const { return "Tube(" + std::to_string(nb_slices_) + " slices)"; }
+
+void TubeDomain::check_layout(const std::string& label) const {
+  if (x_->nb_slices() != nb_slices_) {
+    throw DimensionError("ContractorNetwork: " + label + " was registered with " + std::to_string(nb_slices_) +
+                         " slices but now has " + std::to_string(x_->nb_slices()) +
+                         " (sample the TDomain before building the network)");
+  }
+}
+
+}  // namespace sillage

@@ -1,0 +1,37 @@
+#pragma once
+// TubeDomain: a tube as a network domain. Its atoms follow time: atom 2k is
+// gate k ([x](t_k)), atom 2k+1 is slice k ([x](k)), so a tube of N slices has
+// 2N+1 atoms and the network tracks (and wakes contractors on) each slice and
+// gate on its own.
+//
+// The identity (key()) is the Tube object, which the domain keeps alive: a
+// std::shared_ptr<Tube>, or a component of a shared TubeVector (aliasing
+// pointer). Refining the TDomain after registration changes the layout:
+// check_layout() then throws, as for a resized box.
+#include <memory>
+
+#include "sillage/cn/domain.h"
+#include "sillage/tube/tube.h"
+
+namespace sillage {
+
+class TubeDomain : public Domain {
+ public:
+  explicit TubeDomain(std::shared_ptr<Tube> x);
+  std::size_t nb_atoms() const override { return 2 * nb_slices_ + 1; }
+  Interval atom(std::size_t i) const override;
+  void set_atom(std::size_t i, const Interval& x) override;
+  bool is_empty() const override { return x_->is_empty(); }
+  const void* key() const override { return x_.get(); }
+  std::string kind() const override;
+  void check_layout(const std::string& label) const override;
+
+  Tube& tube() const { return *x_; }
+  const std::shared_ptr<Tube>& object() const { return x_; }
+
+ private:
+  std::shared_ptr<Tube> x_;
+  std::size_t nb_slices_;
+};
+
+}  // namespace sillage
