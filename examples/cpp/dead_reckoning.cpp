@@ -9,10 +9,11 @@
 //             v - x4 cos x3 = 0 (tube_ctc.h) on every slice and gate, then
 //             the primitives intersected, 3 iterations: same as plain, since
 //             nothing flows back from x to x3, x4;
-//  3. taylor: gates integrated with a first-order Taylor form per slice,
-//             ∫_slice v ∈ δ v(t_k) + δ²/2 [v'](k), v(t_k) from the GATES of
-//             x3, x4 and [v'] = u2 cos x3 - x4 sin x3 u1 (the input noise is
-//             integrated apart: it is not differentiable);
+//  3. taylor: gates integrated with a first-order Taylor form per slice
+//             (tube_taylor.h), ∫_slice v ∈ δ v(t_k) + δ²/2 [v'](k) from
+//             either gate, v(t_k) from the GATES of x3, x4 and
+//             [v'] = u2 cos x3 - x4 sin x3 u1 (the input noise is integrated
+//             apart: it is not differentiable);
 //  4. linear: beyond chapter 3, the correlation over time: x = nominal + e,
 //             the first-order part of e(T) is a linear function of the
 //             initial error and of the input noise, whose exact range is
@@ -37,6 +38,7 @@
 #include "sillage/tube/tube_arithmetic.h"
 #include "sillage/tube/tube_ctc.h"
 #include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_taylor.h"
 #include "sillage/tube/tube_vector.h"
 
 using namespace sillage;
@@ -95,46 +97,6 @@ TubeVector solve_cn(const Problem& p) {
   return x;
 }
 
-// Increments of x over each slice, for x' = w + e: w absolutely continuous
-// with w' ∈ dw(k) on slice k (first-order Taylor from the gates of w), e(t) ∈
-// noise; intersected with the plain δ_k [v](k), v ⊇ w + e.
-std::vector<Interval> taylor_increments(const Tube& w, const Tube& dw, const Interval& noise, const Tube& v) {
-  const TDomain& td = *v.tdomain();
-  std::vector<Interval> inc(td.nb_slices());
-  for (std::size_t k = 0; k < inc.size(); ++k) {
-    const Interval d = td.slice_width(k);
-    inc[k] = (d * (w.gate(k) + noise) + sqr(d) / Interval(2) * dw.slice(k)) & (d * v.slice(k));
-  }
-  return inc;
-}
-
-// The tube x with x' ∈ v, x(t_{k+1}) - x(t_k) ∈ inc[k] and x(t_k) ∈ g[k]:
-// forward and backward passes on the gates, then slices
-// x(t) ∈ (x(t_k) + [0,δ] v(k)) ∩ (x(t_{k+1}) - [0,δ] v(k)).
-Tube integrate(const Tube& v, const std::vector<Interval>& inc, std::vector<Interval> g) {
-  const TDomain& td = *v.tdomain();
-  const std::size_t n = td.nb_slices();
-  for (std::size_t k = 0; k < n; ++k) g[k + 1] &= g[k] + inc[k];
-  for (std::size_t k = n; k-- > 0;) g[k] &= g[k + 1] - inc[k];
-  std::vector<Interval> s(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const Interval span = Interval(0, td.slice_width(k).ub()) * v.slice(k);
-    s[k] = (g[k] + span) & (g[k + 1] - span);
-  }
-  for (std::size_t k = 0; k <= n; ++k) g[k] &= s[k < n ? k : n - 1];
-  return Tube(v.tdomain(), s, g);
-}
-
-std::vector<Interval> initial_gates(const TDomain& td, const Interval& x0) {
-  std::vector<Interval> g(td.nb_slices() + 1);  // the whole line
-  g[0] = x0;
-  return g;
-}
-
-Tube integrate_taylor(const Tube& w, const Tube& dw, const Interval& noise, const Tube& v, const Interval& x0) {
-  return integrate(v, taylor_increments(w, dw, noise, v), initial_gates(*v.tdomain(), x0));
-}
-
 // ---- 3. Taylor on the gates ----
 struct TaylorSolution {
   TubeVector x;
@@ -144,14 +106,14 @@ struct TaylorSolution {
 
 TaylorSolution solve_taylor(const Problem& p) {
   const IntervalVector x0 = initial_box();
-  Tube x3 = integrate_taylor(p.u1n, p.du1n, kNoise, p.u1, x0[2]);
-  Tube x4 = integrate_taylor(p.u2n, p.du2n, kNoise, p.u2, x0[3]);
+  Tube x3 = primitive_taylor(p.u1n, p.du1n, x0[2], kNoise);
+  Tube x4 = primitive_taylor(p.u2n, p.du2n, x0[3], kNoise);
   const Tube c = cos(x3), s = sin(x3);
   Tube v1 = x4 * c, v2 = x4 * s;
   const Tube dv1 = p.u2 * c - x4 * s * p.u1, dv2 = p.u2 * s + x4 * c * p.u1;
-  auto inc1 = taylor_increments(v1, dv1, Interval(0), v1), inc2 = taylor_increments(v2, dv2, Interval(0), v2);
-  Tube x1 = integrate(v1, inc1, initial_gates(*p.td, x0[0]));
-  Tube x2 = integrate(v2, inc2, initial_gates(*p.td, x0[1]));
+  auto inc1 = taylor_increments(v1, dv1), inc2 = taylor_increments(v2, dv2);
+  Tube x1 = primitive_from_increments(v1, inc1, x0[0]);
+  Tube x2 = primitive_from_increments(v2, inc2, x0[1]);
   return {TubeVector({x1, x2, x3, x4}), std::move(v1), std::move(v2), std::move(inc1), std::move(inc2)};
 }
 
@@ -191,8 +153,8 @@ TubeVector solve_linear(const Problem& p, const TaylorSolution& ty, std::size_t 
   const Tube pb1 = primitive(-(x4n * s)), pb2 = primitive(x4n * a);
   const Tube rem = primitive(abs(x4n) * sqr(E) / Interval(2) + E * (E + sqr(E) / Interval(2)));
   const Tube v1n = x4n * a, v2n = x4n * s;
-  const Tube n1 = integrate_taylor(v1n, p.u2n * a + x4n * da, Interval(0), v1n, Interval(0));
-  const Tube n2 = integrate_taylor(v2n, p.u2n * s + x4n * ds, Interval(0), v2n, Interval(0));
+  const Tube n1 = primitive_taylor(v1n, p.u2n * a + x4n * da);
+  const Tube n2 = primitive_taylor(v2n, p.u2n * s + x4n * ds);
 
   const std::size_t N = td->nb_slices();
   std::vector<Interval> g1(ty.x[0].gates().begin(), ty.x[0].gates().end());
@@ -205,8 +167,8 @@ TubeVector solve_linear(const Problem& p, const TaylorSolution& ty, std::size_t 
     if (K == N) break;
   }
   TubeVector x = ty.x;
-  x[0] = integrate(ty.v1, ty.inc1, std::move(g1));
-  x[1] = integrate(ty.v2, ty.inc2, std::move(g2));
+  x[0] = primitive_from_increments(ty.v1, ty.inc1, x0[0], g1);
+  x[1] = primitive_from_increments(ty.v2, ty.inc2, x0[1], g2);
   return x;
 }
 

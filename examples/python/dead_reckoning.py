@@ -1,10 +1,14 @@
 """Dead reckoning of a mobile robot (thesis 3.4, (3.14)-(3.20)): inputs (3.16)
-as tubes, x0 in the box (3.17), t in [0, 64]. Two guaranteed resolutions:
-plain (primitives of [u], v = x4 cos x3 by tube arithmetic, primitives of [v])
-and the contractor network (3.18) where v1 = x4 cos x3, v2 = x4 sin x3 are
-pointwise tube contractors (CtcFunction.contract on tubes). The nominal and
-extreme trajectories (RK4, step delta/4) are checked inside the tubes.
-The C++ example adds the Taylor-on-gates and linearised resolutions."""
+as tubes, x0 in the box (3.17), t in [0, 64]. Four guaranteed resolutions, as
+in the C++ example:
+  plain:  primitives of [u], v = x4 cos x3 by tube arithmetic, primitives of [v];
+  cn:     the contractor network (3.18), v1 = x4 cos x3, v2 = x4 sin x3 as
+          pointwise tube contractors in a ContractorNetwork on the tubes;
+  taylor: slice integrals by first-order Taylor forms from the gates
+          (sillage.primitive_taylor / taylor_increments);
+  linear: linearisation around the nominal path with a bounded second-order
+          remainder, at 64 checkpoints, intersected with taylor.
+The nominal and extreme trajectories (RK4, step delta/4) are checked inside."""
 import time
 
 import numpy as np
@@ -36,21 +40,82 @@ def solve_plain(td):
 
 def solve_cn(td, iterations=3):
     """CN (3.18): x and v start unbounded; v3 = u1, v4 = u2; x = x0 + integral of v;
-    v1 - x4 cos x3 = 0 and v2 - x4 sin x3 = 0 contracted on every slice and gate."""
+    v1 - x4 cos x3 = 0 and v2 - x4 sin x3 = 0 in a ContractorNetwork on the tubes
+    (every slice and gate, woken slice by slice)."""
     x0 = initial_box()
     u1, u2 = inputs(td)
     x, v = TubeVector(td, 4), TubeVector(td, 4)
-    c1 = CtcFunction(Function(["x3", "x4", "v"], "x4*cos(x3) - v"))
-    c2 = CtcFunction(Function(["x3", "x4", "v"], "x4*sin(x3) - v"))
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcFunction(Function(["x3", "x4", "v"], "x4*cos(x3) - v")), [x[2], x[3], v[0]])
+    cn.add(CtcFunction(Function(["x3", "x4", "v"], "x4*sin(x3) - v")), [x[2], x[3], v[1]])
     for _ in range(iterations):
+        before = TubeVector(x)
         v[2] &= u1
         v[3] &= u2
         for i in (2, 3):
             x[i] &= v[i].primitive(x0[i])
-        c1.contract(x[2], x[3], v[0])
-        c2.contract(x[2], x[3], v[1])
+        cn.contract()
         for i in (0, 1):
             x[i] &= v[i].primitive(x0[i])
+        if x == before:
+            break
+    return x
+
+
+NOISE = Interval(-1, 1) / Interval(1000)
+
+
+def solve_taylor(td):
+    """Slice integrals from the gates: int v in d v(t_k) + d^2/2 [v'](k), from either gate."""
+    x0 = initial_box()
+    u1, u2 = inputs(td)
+    x3 = sillage.primitive_taylor(Tube(td, "-9/20*cos(t/5)"), Tube(td, "9/100*sin(t/5)"), x0[2], NOISE)
+    x4 = sillage.primitive_taylor(Tube(td, "1/10 + sin(t/4)"), Tube(td, "cos(t/4)/4"), x0[3], NOISE)
+    c, s = sillage.cos(x3), sillage.sin(x3)
+    v1, v2 = x4 * c, x4 * s
+    dv1, dv2 = u2 * c - x4 * s * u1, u2 * s + x4 * c * u1
+    inc1, inc2 = sillage.taylor_increments(v1, dv1), sillage.taylor_increments(v2, dv2)
+    x1 = sillage.primitive_from_increments(v1, inc1, x0[0])
+    x2 = sillage.primitive_from_increments(v2, inc2, x0[1])
+    return TubeVector([x1, x2, x3, x4]), (v1, v2, inc1, inc2)
+
+
+def solve_linear(td, taylor, checkpoints=64):
+    """x = nominal + e. The first-order part of e(T) is linear in the initial error
+    (|e0| <= 1/100) and the input noise (|eps| <= 1/1000): its exact range is
+    (|A(0)| + |B(0)|)/100 + int_0^T (|A| + |B|)/1000, A(s) = int_s^T alpha, B likewise
+    (alpha, beta: the sensitivities below); the second-order remainder is bounded with
+    |e3|, |e4| <= E(t) = 1/100 + t/1000. Added at checkpoints, then propagated by the
+    Taylor increments."""
+    (x_t, (v1, v2, inc1, inc2)) = taylor
+    x0 = initial_box()
+    a, s = Tube(td, "sin(9/4*sin(t/5))"), Tube(td, "cos(9/4*sin(t/5))")  # cos x3n, sin x3n
+    x4n, E = Tube(td, "t/10 + 4 - 4*cos(t/4)"), Tube(td, "1/100 + t/1000")
+    da = Tube(td, "cos(9/4*sin(t/5))*9/20*cos(t/5)")
+    ds = Tube(td, "-sin(9/4*sin(t/5))*9/20*cos(t/5)")
+    u2n = Tube(td, "1/10 + sin(t/4)")
+    pa, ps = a.primitive(), s.primitive()
+    pb1, pb2 = (-(x4n * s)).primitive(), (x4n * a).primitive()
+    rem = (sillage.abs(x4n) * sillage.sqr(E) / Interval(2) + E * (E + sillage.sqr(E) / Interval(2))).primitive()
+    n1 = sillage.primitive_taylor(x4n * a, u2n * a + x4n * da)
+    n2 = sillage.primitive_taylor(x4n * s, u2n * s + x4n * ds)
+
+    def radius(p_a, p_b, k):
+        at, bt = p_a.gate(k), p_b.gate(k)
+        absum = sillage.abs(at - p_a) + sillage.abs(bt - p_b)  # |A|, |B| over each slice
+        first = (Interval((at - p_a.gate(0)).mag()) + Interval((bt - p_b.gate(0)).mag())) / Interval(100)
+        return (first + absum.integral(td.t(k)) / Interval(1000)).ub()
+
+    n = td.nb_slices()
+    g1, g2 = [x_t[0].gate(k) for k in range(n + 1)], [x_t[1].gate(k) for k in range(n + 1)]
+    step = max(1, n // checkpoints)
+    for k in list(range(step, n, step)) + [n]:
+        r = rem.gate(k).ub()
+        g1[k] &= x0[0] + n1.gate(k) + Interval(-1, 1) * Interval(radius(pa, pb1, k) + r)
+        g2[k] &= x0[1] + n2.gate(k) + Interval(-1, 1) * Interval(radius(ps, pb2, k) + r)
+    x = TubeVector(x_t)
+    x[0] = sillage.primitive_from_increments(v1, inc1, x0[0], g1)
+    x[1] = sillage.primitive_from_increments(v2, inc2, x0[1], g2)
     return x
 
 
@@ -117,7 +182,15 @@ def main():
         paths = rk4_paths(dt)
         print(f"delta = {dt} ({n} slices)")
         results = {}
-        for name, solve in (("plain", solve_plain), ("cn", solve_cn)):
+        taylor = None
+
+        def run_taylor(td):
+            nonlocal taylor
+            taylor = solve_taylor(td)
+            return taylor[0]
+
+        for name, solve in (("plain", solve_plain), ("cn", solve_cn), ("taylor", run_taylor),
+                            ("linear", lambda td: solve_linear(td, taylor))):
             t0 = time.perf_counter()
             x = solve(td)
             elapsed = time.perf_counter() - t0
@@ -129,7 +202,8 @@ def main():
         same = results["plain"][0] == results["cn"][0] and results["plain"][1] == results["cn"][1]
         print(f"  cn == plain on x1, x2: {same}; nominal RK4 p(tf) = ({paths[-1, 0, 0]:.4f}, {paths[-1, 0, 1]:.4f})")
         if dt == 0.005:
-            summary = f"delta=0.005: p(64) in {box_str(results['plain'][0].gate(n), results['plain'][1].gate(n))}"
+            summary = "delta=0.005: p(64) in " + ", ".join(
+                f"{box_str(results[k][0].gate(n), results[k][1].gate(n))} ({k})" for k in ("plain", "taylor", "linear"))
             try:
                 fig = sillage.tube_vector_figure(results["plain"], 0, 1, "[x1] x [x2], delta = 0.005")
                 fig.save(str(out / "dead_reckoning_py.svg"))

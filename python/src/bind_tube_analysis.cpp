@@ -4,9 +4,13 @@
 // Tube class registered by init_tube (module.cpp calls init_tube first); each
 // call uses the tube's cached synthesis tree (rebuilt after a modification).
 #include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
 
 #include "bindings.h"
 #include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_taylor.h"
 
 namespace sillage::python {
 
@@ -48,6 +52,18 @@ void init_tube_analysis(py::module_& m) {
           },
           py::arg("t1"), py::arg("t2"), kPartialDoc)
       .def("nb_slices", [](const TubeAnalysis& a) { return a.tree()->nb_slices(); });
+
+  // Primitives from Taylor increments (tube_taylor.h).
+  m.def("taylor_increments", &taylor_increments, py::arg("w"), py::arg("dw"), py::arg("noise") = Interval(0.0),
+        "Enclosures of ∫ over each slice of w + e, w' ∈ dw, e(t) ∈ noise, by first-order Taylor forms from\n"
+        "both gates of w (a list of N Intervals).");
+  m.def("primitive_from_increments", &primitive_from_increments, py::arg("x"), py::arg("increments"),
+        py::arg("x0"), py::arg("gates") = std::vector<Interval>(),
+        "The primitive of x with p(t0) ∈ x0 and p(t_{k+1}) - p(t_k) ∈ increments[k] (forward and backward\n"
+        "passes on the gates, slices from both gates and the slopes [x](k)); gates: known enclosures.");
+  m.def("primitive_taylor", &primitive_taylor, py::arg("w"), py::arg("dw"), py::arg("x0") = Interval(0.0),
+        py::arg("noise") = Interval(0.0),
+        "primitive_from_increments(w + noise, taylor_increments(w, dw, noise), x0): second order in δ.");
 
   if (!py::hasattr(m, "Tube")) return;  // the tube layer is not bound (yet)
   py::object cls = m.attr("Tube");

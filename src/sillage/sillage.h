@@ -43,6 +43,7 @@
 #include "sillage/tube/tube_builders.h"
 #include "sillage/tube/tube_ctc.h"
 #include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_taylor.h"
 #include "sillage/tube/tube_io.h"
 #include "sillage/tube/tube_vector.h"
 

@@ -1,6 +1,7 @@
 """The dead-reckoning example (thesis 3.4) on a coarse slicing: the plain and
-CN resolutions agree, contain the nominal and extreme RK4 paths, and the
-delta = 0.005 figure of the plain resolution is reproduced."""
+CN resolutions agree, every resolution contains the nominal and extreme RK4
+paths, taylor and linear tighten in turn, and the delta = 0.005 figure of the
+plain resolution is reproduced."""
 import sys
 from pathlib import Path
 
@@ -8,7 +9,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples" / "python"))
 dr = pytest.importorskip("dead_reckoning")
-from sillage import TDomain  # noqa: E402
+from sillage import Interval, TDomain  # noqa: E402
 
 
 def test_plain_and_cn_coarse():
@@ -28,3 +29,21 @@ def test_plain_figure_of_the_brief():
     assert abs(p2.lb() - 31.61) < 0.01 and abs(p2.ub() - 74.23) < 0.01
     # the nominal final position (RK4)
     assert p1.contains(38.3299) and p2.contains(53.0694)
+
+
+def test_taylor_and_linear_contain_the_paths_and_tighten():
+    td = TDomain(0.0, 64.0, 0.05)
+    paths = dr.rk4_paths(0.05)
+    taylor = dr.solve_taylor(td)
+    linear = dr.solve_linear(td, taylor)
+    plain = dr.solve_plain(td)
+    n = td.nb_slices()
+    for x in (taylor[0], linear):
+        misses, _, _ = dr.check(x, paths)
+        assert misses == 0
+    for i in (0, 1):
+        assert linear[i].gate(n).diam() < taylor[0][i].gate(n).diam() < plain[i].gate(n).diam()
+    # the sampled true set at t = 64 spans about [33.9, 42.9] x [50.0, 56.1]
+    assert linear[0].gate(n).is_superset(Interval(33.9, 42.9))
+    assert linear[1].gate(n).is_superset(Interval(50.0, 56.1))
+

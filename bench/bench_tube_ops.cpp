@@ -1,0 +1,104 @@
+// Per-slice cost of building and combining tubes, for N = 1e4, 1e5, 1e6:
+// construction from an expression of t (one batch evaluation), arithmetic
+// (+, *, cos), the pointwise contractor v - x4 cos x3 = 0 on every slice and
+// gate, and the same in a ContractorNetwork. Counter ns_per_slice.
+#include <benchmark/benchmark.h>
+
+#include <functional>
+#include <memory>
+
+#include "sillage/cn/contractor_network.h"
+#include "sillage/interval/elementary.h"
+#include "sillage/tube/tube_arithmetic.h"
+#include "sillage/tube/tube_ctc.h"
+
+namespace {
+
+using sillage::Interval;
+using sillage::TDomain;
+using sillage::Tube;
+
+std::shared_ptr<TDomain> domain(const benchmark::State& state) {
+  return TDomain::create(0.0, 1e-3 * static_cast<double>(state.range(0)), 1e-3);
+}
+
+void per_slice(benchmark::State& state) {
+  state.counters["ns_per_slice"] = benchmark::Counter(
+      static_cast<double>(state.range(0)), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_TubeFromExpression(benchmark::State& state) {
+  const auto td = domain(state);
+  for (auto _ : state) {
+    Tube x(td, "-9/20*cos(t/5) + [-0.001,0.001]");
+    benchmark::DoNotOptimize(x);
+  }
+  per_slice(state);
+}
+
+template <class Op>
+void BM_TubeBinary(benchmark::State& state, Op op) {
+  const auto td = domain(state);
+  const Tube a(td, "sin(t)"), b(td, "cos(t)");
+  for (auto _ : state) {
+    Tube c = op(a, b);
+    benchmark::DoNotOptimize(c);
+  }
+  per_slice(state);
+}
+
+void BM_TubeCos(benchmark::State& state) {
+  const auto td = domain(state);
+  const Tube a(td, "t/5 + [-0.01, 0.01]");
+  for (auto _ : state) {
+    Tube c = cos(a);
+    benchmark::DoNotOptimize(c);
+  }
+  per_slice(state);
+}
+
+const sillage::CtcFunction& v_ctc() {
+  static const sillage::CtcFunction c(sillage::Function({"v", "a", "b"}, "v - b*cos(a)"));
+  return c;
+}
+
+void BM_TubePointwiseContractor(benchmark::State& state) {
+  const auto td = domain(state);
+  const Tube x3(td, "t/5 + [-0.01, 0.01]"), x4(td, "[9.9, 10.1]");
+  for (auto _ : state) {
+    state.PauseTiming();
+    Tube a = x3, b = x4, v(td, Interval(-20, 20));
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(sillage::contract(v_ctc(), {&v, &a, &b}));
+  }
+  per_slice(state);
+}
+
+void BM_TubeNetworkPointwise(benchmark::State& state) {
+  const auto td = domain(state);
+  const Tube x3(td, "t/5 + [-0.01, 0.01]"), x4(td, "[9.9, 10.1]");
+  const auto ctc = std::make_shared<sillage::CtcFunction>(v_ctc());
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto a = std::make_shared<Tube>(x3), b = std::make_shared<Tube>(x4);
+    auto v = std::make_shared<Tube>(td, Interval(-20, 20));
+    sillage::ContractorNetwork cn;
+    cn.add(ctc, {v, a, b});
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(cn.contract());
+  }
+  per_slice(state);
+}
+
+BENCHMARK(BM_TubeFromExpression)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TubeBinary, add, std::plus<>())
+    ->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TubeBinary, mul, std::multiplies<>())
+    ->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeCos)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubePointwiseContractor)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeNetworkPointwise)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
