@@ -27,6 +27,8 @@ EXAMPLES = [
     ("sivia_two_beacons", "py", "sivia_two_beacons.py"),
     ("dead_reckoning", "cpp", "example_dead_reckoning"),
     ("dead_reckoning", "py", "dead_reckoning.py"),
+    ("causal_chain", "cpp", "example_causal_chain"),
+    ("causal_chain", "py", "causal_chain.py"),
 ]
 
 

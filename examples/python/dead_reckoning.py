@@ -14,7 +14,7 @@ import time
 import numpy as np
 
 import sillage  # noqa: F401
-from example_args import out_dir, print_result
+from example_args import out_dir, print_result, rk4
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 TF = 64.0
@@ -135,17 +135,7 @@ def rk4_paths(dt):
         return np.stack([x[:, 3] * np.cos(x[:, 2]), x[:, 3] * np.sin(x[:, 2]),
                          -9 / 20 * np.cos(t / 5) + c[:, 0], 0.1 + np.sin(t / 4) + c[:, 1]], axis=1)
 
-    out = np.empty((n + 1,) + x.shape)
-    out[0] = x
-    for j in range(n):
-        t = j * h
-        k1 = f(t, x)
-        k2 = f(t + h / 2, x + h / 2 * k1)
-        k3 = f(t + h / 2, x + h / 2 * k2)
-        k4 = f(t + h, x + h * k3)
-        x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-        out[j + 1] = x
-    return out
+    return rk4(f, x, h, n)
 
 
 def check(x, paths):

@@ -17,3 +17,21 @@ def out_dir(description):
 def print_result(name, result, check, figures=()):
     print("RESULT " + json.dumps({"name": name, "result": result, "check": bool(check),
                                   "figures": [list(f) for f in figures]}))
+
+
+def rk4(f, x0, h, n):
+    """n classical Runge-Kutta steps of size h of x' = f(t, x) from x0 at t = 0 (numpy
+    arrays of any shape); returns the n+1 states stacked along a new first axis."""
+    import numpy as np
+    x = np.asarray(x0, dtype=float)
+    out = np.empty((n + 1,) + x.shape)
+    out[0] = x
+    for j in range(n):
+        t = j * h
+        k1 = f(t, x)
+        k2 = f(t + h / 2, x + h / 2 * k1)
+        k3 = f(t + h / 2, x + h / 2 * k2)
+        k4 = f(t + h, x + h * k3)
+        x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out[j + 1] = x
+    return out

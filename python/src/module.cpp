@@ -14,6 +14,9 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_tube(m);
   sillage::python::init_tube_analysis(m);
   sillage::python::init_tube_ctc(m);
+  sillage::python::init_dynamics(m);
+  sillage::python::init_ctc_eval(m);
+  sillage::python::init_io(m);
   sillage::python::init_figures(m);
   sillage::python::init_tube_figures(m);
 }

@@ -47,6 +47,12 @@
 #include "sillage/tube/tube_io.h"
 #include "sillage/tube/tube_vector.h"
 
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/io/csv.h"
+#include "sillage/dynamics/time_propag.h"
+
 #include "sillage/figures/figure.h"
 #include "sillage/figures/html.h"
 #include "sillage/figures/thickness_figure.h"

@@ -113,6 +113,15 @@ class Tube {
   // consecutive slices/gates meeting y, in increasing time order.
   Interval inverse(const Interval& y, std::vector<Interval>& components) const;
 
+  // With a derivative tube v (x' ∈ v; dynamics/tube_eval_deriv.cpp): inside
+  // slice k, x(t) ∈ ([x](t_k) + (t-t_k)[v](k)) ∩ ([x](t_{k+1}) - (t_{k+1}-t)[v](k))
+  // ∩ [x](k), a polygon tighter than the slice box. eval: the hull of it over
+  // t ∈ [t] (Error if [t] is not inside the domain; empty -> empty).
+  // inverse: hull of the times where the polygon meets y, a subset of
+  // inverse(y). Rigorous; DimensionError if v is not on this TDomain.
+  Interval eval(const Interval& t, const Tube& v) const;
+  Interval inverse(const Interval& y, const Tube& v) const;
+
   // Low-level access for algorithms of this layer (contractors, arithmetic).
   // Callers that modify must keep sizes and call touch().
   TubeData& data() { return *data_; }

@@ -1,0 +1,98 @@
+// Python bindings of the dynamics layer: TimePropag, CtcDeriv (x' = v on
+// Tubes and TubeVectors, in place), and the derivative forms of Tube.eval and
+// Tube.inverse (added to the Tube class registered in bind_tube.cpp).
+#include <pybind11/stl.h>
+
+#include <memory>
+
+#include "bindings.h"
+#include "sillage/cn/network_ctc.h"
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/time_propag.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage::python {
+
+void init_dynamics(py::module_& m) {
+  py::enum_<TimePropag>(m, "TimePropag", "Direction of a temporal propagation; FORWARD | BACKWARD == FWD_BWD.")
+      .value("FORWARD", TimePropag::FORWARD)
+      .value("BACKWARD", TimePropag::BACKWARD)
+      .value("FWD_BWD", TimePropag::FWD_BWD)
+      .def("__or__", [](TimePropag a, TimePropag b) { return a | b; }, py::is_operator());
+
+  using C = CtcDeriv;
+  py::class_<C, NetworkCtc, std::shared_ptr<C>>(
+      m, "CtcDeriv",
+      "The differential contractor of x' = v (thesis 4.2, Alg. 3-5). contract(x, v) contracts the Tube\n"
+      "(or TubeVector) x in place and returns False if it is now empty; v is not changed. Optional\n"
+      "restrictions: a slice range (first, last) or a time interval t.")
+      .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD)
+      .def("time_propag", &C::time_propag)
+      .def(
+          "contract",
+          [](const C& c, Tube& x, const Tube& v) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v);
+          },
+          py::arg("x"), py::arg("v"))
+      .def(
+          "contract",
+          [](const C& c, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v, first, last);
+          },
+          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
+          "Only slices first..last and gates first..last+1 are read or changed.")
+      .def(
+          "contract",
+          [](const C& c, Tube& x, const Tube& v, const Interval& t) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v, t);
+          },
+          py::arg("x"), py::arg("v"), py::arg("t"), "Only the slices meeting the time interval t.")
+      .def(
+          "contract",
+          [](const C& c, TubeVector& x, const TubeVector& v) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v);
+          },
+          py::arg("x"), py::arg("v"))
+      .def(
+          "contract",
+          [](const C& c, TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v, first, last);
+          },
+          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"))
+      .def(
+          "contract",
+          [](const C& c, TubeVector& x, const TubeVector& v, const Interval& t) {
+            py::gil_scoped_release unlocked;
+            return c.contract(x, v, t);
+          },
+          py::arg("x"), py::arg("v"), py::arg("t"))
+      .def("__repr__", [](const C& c) {
+        switch (c.time_propag()) {
+          case TimePropag::FORWARD:
+            return std::string("CtcDeriv(TimePropag.FORWARD)");
+          case TimePropag::BACKWARD:
+            return std::string("CtcDeriv(TimePropag.BACKWARD)");
+          case TimePropag::FWD_BWD:
+            break;
+        }
+        return std::string("CtcDeriv(TimePropag.FWD_BWD)");
+      });
+
+  // Tube.eval(t, v) and Tube.inverse(y, v): overloads added to the class of
+  // bind_tube.cpp (def chains them with the existing "inverse").
+  if (!py::hasattr(m, "Tube")) return;
+  auto tube = py::reinterpret_borrow<py::class_<Tube, std::shared_ptr<Tube>>>(m.attr("Tube"));
+  tube.def("eval", &Tube::eval, py::arg("t"), py::arg("v"),
+           "Hull of x over the time (interval) t, read through the derivative tube v: in each slice the\n"
+           "polygon ([x](t_k) + (t-t_k)[v]) & ([x](t_k+1) - (t_k+1-t)[v]) & [x](k), tighter than x(t).")
+      .def("inverse", py::overload_cast<const Interval&, const Tube&>(&Tube::inverse, py::const_), py::arg("y"),
+           py::arg("v"), "Hull of the times where the polygon of x with derivative v meets y (within x.inverse(y)).");
+}
+
+}  // namespace sillage::python

@@ -1,0 +1,29 @@
+// CsvTable: numeric CSV files of the datasets; columns as numpy arrays.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "sillage/io/csv.h"
+
+namespace sillage::python {
+
+void init_io(py::module_& m) {
+  py::class_<CsvTable>(m, "CsvTable",
+                       "A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.")
+      .def_static("read", &CsvTable::read, py::arg("path"))
+      .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>")
+      .def("columns", &CsvTable::columns)
+      .def("nb_rows", &CsvTable::nb_rows)
+      .def("row", &CsvTable::row, py::arg("i"))
+      .def("has_column", &CsvTable::has_column, py::arg("name"))
+      .def("column", &CsvTable::column, py::arg("name"))
+      .def(
+          "values",
+          [](const CsvTable& t, const std::string& name) {
+            const std::vector<double> v = t.values(name);
+            return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+          },
+          py::arg("name"), "The column as a numpy array.");
+}
+
+}  // namespace sillage::python

@@ -1,0 +1,274 @@
+#include "sillage/dynamics/ctc_deriv.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+
+#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/dynamics/polygon_hull_x8.h"
+#include "sillage/dynamics/slice_deriv.h"
+#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+// Raw views of the arrays a sweep works on.
+struct Arrays {
+  const double* t;     // t_0 .. t_N
+  Interval* s;         // slices of x
+  Interval* g;         // gates of x
+  const Interval* v;   // slices of v
+};
+
+// Writes [lo, hi] to dst; returns nonzero if a bit changed (no branch: the
+// XOR of the bit patterns; a -0 replacing +0 counts as a change).
+inline std::uint64_t store(Interval& dst, double lo, double hi) {
+  const std::uint64_t diff = (std::bit_cast<std::uint64_t>(lo) ^ std::bit_cast<std::uint64_t>(dst.lb())) |
+                             (std::bit_cast<std::uint64_t>(hi) ^ std::bit_cast<std::uint64_t>(dst.ub()));
+  dst = Interval::from_bounds_unchecked(lo, hi);
+  return diff;
+}
+
+// k = first .. last; the right gate of slice k is carried in registers to
+// slice k+1. Returns false if something is empty; `changed` accumulates.
+template <class R, bool kEnv>
+bool forward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  double alo = d.g[first].lb(), ahi = d.g[first].ub();
+  double t0 = d.t[first];
+  bool ok = true;
+  std::uint64_t ch = 0;
+  for (std::size_t k = first; k <= last; ++k) {
+    const double t1 = d.t[k + 1];
+    double slo = d.s[k].lb(), shi = d.s[k].ub();
+    double blo = d.g[k + 1].lb(), bhi = d.g[k + 1].ub();
+    ok &= deriv::contract_slice<R, true, false, kEnv>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                      deriv::width<R>(t0, t1));
+    ch |= store(d.g[k], alo, ahi);
+    if constexpr (kEnv) ch |= store(d.s[k], slo, shi);
+    alo = blo;
+    ahi = bhi;
+    t0 = t1;
+  }
+  ch |= store(d.g[last + 1], alo, ahi);
+  changed |= ch != 0;
+  return ok;
+}
+
+// k = last .. first; the left gate of slice k is carried to slice k-1.
+// kWiden: the gates are consistent both ways (after a forward sweep).
+template <class R, bool kWiden>
+bool backward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  double blo = d.g[last + 1].lb(), bhi = d.g[last + 1].ub();
+  double t1 = d.t[last + 1];
+  bool ok = true;
+  std::uint64_t ch = 0;
+  for (std::size_t k = last + 1; k-- > first;) {
+    const double t0 = d.t[k];
+    double slo = d.s[k].lb(), shi = d.s[k].ub();
+    double alo = d.g[k].lb(), ahi = d.g[k].ub();
+    ok &= deriv::contract_slice<R, false, true, true, kWiden>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                      deriv::width<R>(t0, t1));
+    ch |= store(d.g[k + 1], blo, bhi);
+    ch |= store(d.s[k], slo, shi);
+    blo = alo;
+    bhi = ahi;
+    t1 = t0;
+  }
+  ch |= store(d.g[first], blo, bhi);
+  changed |= ch != 0;
+  return ok;
+}
+
+void set_empty(Tube& x) {
+  TubeData& d = x.data();
+  std::fill(d.slices.begin(), d.slices.end(), Interval::empty());
+  std::fill(d.gates.begin(), d.gates.end(), Interval::empty());
+  x.touch();
+}
+
+void check_pair(const Tube& x, const Tube& v, const char* where) {
+  if (x.tdomain() != v.tdomain()) {
+    throw DimensionError(std::string(where) + ": x and v are not on the same TDomain (" +
+                         std::to_string(x.nb_slices()) + " and " + std::to_string(v.nb_slices()) + " slices)");
+  }
+}
+
+void check_range(std::size_t n, std::size_t first, std::size_t last, const char* where) {
+  if (first > last || last >= n) {
+    throw Error(std::string(where) + ": slice range [" + std::to_string(first) + ", " + std::to_string(last) +
+                "] is not inside [0, " + std::to_string(n - 1) + "]");
+  }
+}
+
+#if SILLAGE_DERIV_HARD_ROUNDING
+// The backward sweep of FWD_BWD with hardware rounding, by blocks of slices
+// from the end: the gates of the block by the scalar rule (a sequential
+// chain), then the polygon hulls of the block 8 at a time (independent).
+// Bit for bit the result of backward_sweep<HardRounding, true>: in FWD_BWD
+// the gates already lie in their slices, so a slice's hull may come after
+// the next gate is computed.
+bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  constexpr std::size_t kBlock = 64;  // the block stays in L1 between the two passes
+  using R = deriv::HardRounding;
+  double blo = d.g[last + 1].lb(), bhi = d.g[last + 1].ub();
+  double t1 = d.t[last + 1];
+  bool ok = true;
+  std::uint64_t ch = 0;
+  for (std::size_t end = last + 1; end > first;) {
+    const std::size_t begin = end - first > kBlock ? end - kBlock : first;
+    for (std::size_t k = end; k-- > begin;) {
+      const double t0 = d.t[k];
+      double slo = d.s[k].lb(), shi = d.s[k].ub();
+      double alo = d.g[k].lb(), ahi = d.g[k].ub();
+      ok &= deriv::contract_slice<R, false, true, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                         deriv::width<R>(t0, t1));
+      ch |= store(d.g[k + 1], blo, bhi);
+      blo = alo;
+      bhi = ahi;
+      t1 = t0;
+    }
+    ch |= store(d.g[begin], blo, bhi);
+    ch |= deriv::polygon_hulls_x8(d.t, d.s, d.g, d.v, begin, end - begin);
+    end = begin;
+  }
+  changed |= ch != 0;
+  return ok;
+}
+#endif
+
+template <class R>
+bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  switch (p) {
+    case TimePropag::FORWARD:
+      return forward_sweep<R, true>(d, first, last, changed);
+    case TimePropag::BACKWARD:
+      return backward_sweep<R, false>(d, first, last, changed);
+    case TimePropag::FWD_BWD:
+      break;
+  }
+#if SILLAGE_DERIV_HARD_ROUNDING
+  if constexpr (std::is_same_v<R, deriv::HardRounding>) {
+    return forward_sweep<R, false>(d, first, last, changed) && backward_sweep_blocked(d, first, last, changed);
+  }
+#endif
+  return forward_sweep<R, false>(d, first, last, changed) && backward_sweep<R, true>(d, first, last, changed);
+}
+
+// Contracts slices first..last (checked); sets x empty and returns false on emptiness.
+bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
+  TubeData& dx = x.data();
+  const Arrays d{x.tdomain()->times().data(), dx.slices.data(), dx.gates.data(), v.data().slices.data()};
+  bool changed = false;
+#if SILLAGE_DERIV_HARD_ROUNDING
+  const bool ok = deriv::hardware_rounding() ? sweeps<deriv::HardRounding>(p, d, first, last, changed)
+                                             : sweeps<deriv::SoftRounding>(p, d, first, last, changed);
+#else
+  const bool ok = sweeps<deriv::SoftRounding>(p, d, first, last, changed);
+#endif
+  if (!ok) {
+    set_empty(x);
+    return false;
+  }
+  if (changed) x.touch();
+  return true;
+}
+
+void check_vectors(const TubeVector& x, const TubeVector& v, const char* where) {
+  if (x.size() != v.size()) {
+    throw DimensionError(std::string(where) + ": x has " + std::to_string(x.size()) + " components, v has " +
+                         std::to_string(v.size()));
+  }
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i].tdomain() != v[i].tdomain()) {
+      throw DimensionError(std::string(where) + ": component " + std::to_string(i) +
+                           " of x and of v are not on the same TDomain");
+    }
+  }
+}
+
+// Runs f on every component; if one is found empty, all are set empty.
+template <class F>
+bool each_component(TubeVector& x, F f) {
+  bool ok = true;
+  for (std::size_t i = 0; i < x.size() && ok; ++i) ok = f(i);
+  if (!ok) {
+    for (std::size_t i = 0; i < x.size(); ++i) set_empty(x[i]);
+  }
+  return ok;
+}
+
+}  // namespace
+
+void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::size_t& last, const char* where) {
+  if (t.is_empty() || !t.is_subset(td.t0_tf())) {
+    throw Error(std::string(where) + ": [t] = " + t.str() + " is " + (t.is_empty() ? "empty" : "not inside ") +
+                (t.is_empty() ? "" : td.t0_tf().str()));
+  }
+  const auto ts = td.times();
+  const std::size_t n = td.nb_slices();
+  if (t.is_degenerate()) {
+    const std::ptrdiff_t g = td.time_index(t.lb());
+    if (g < 0) {
+      first = last = td.slice_index(t.lb());
+    } else {
+      const auto k = static_cast<std::size_t>(g);
+      first = k > 0 ? k - 1 : 0;
+      last = std::min(k, n - 1);
+    }
+    return;
+  }
+  // Slices with t_k < t⁺ and t_{k+1} > t⁻.
+  first = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t.lb()) - ts.begin()) - 1;
+  last = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), t.ub()) - ts.begin()) - 1;
+}
+
+std::shared_ptr<const CnNode> CtcDeriv::make_node(const std::vector<BoundDomain>& args) const {
+  return make_deriv_node(*this, args);
+}
+
+bool CtcDeriv::contract(Tube& x, const Tube& v) const {
+  check_pair(x, v, "CtcDeriv::contract(x, v)");
+  return run(propag_, x, v, 0, x.nb_slices() - 1);
+}
+
+bool CtcDeriv::contract(Tube& x, const Tube& v, std::size_t first, std::size_t last) const {
+  check_pair(x, v, "CtcDeriv::contract(x, v, first, last)");
+  check_range(x.nb_slices(), first, last, "CtcDeriv::contract(x, v, first, last)");
+  return run(propag_, x, v, first, last);
+}
+
+bool CtcDeriv::contract(Tube& x, const Tube& v, const Interval& t) const {
+  const char* where = "CtcDeriv::contract(x, v, t)";
+  check_pair(x, v, where);
+  if (t.is_empty()) return true;
+  std::size_t first = 0, last = 0;
+  slice_range(*x.tdomain(), t, first, last, where);
+  return run(propag_, x, v, first, last);
+}
+
+bool CtcDeriv::contract(TubeVector& x, const TubeVector& v) const {
+  check_vectors(x, v, "CtcDeriv::contract(TubeVector x, TubeVector v)");
+  return each_component(x, [&](std::size_t i) { return run(propag_, x[i], v[i], 0, x.nb_slices() - 1); });
+}
+
+bool CtcDeriv::contract(TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) const {
+  const char* where = "CtcDeriv::contract(TubeVector x, TubeVector v, first, last)";
+  check_vectors(x, v, where);
+  check_range(x.nb_slices(), first, last, where);
+  return each_component(x, [&](std::size_t i) { return run(propag_, x[i], v[i], first, last); });
+}
+
+bool CtcDeriv::contract(TubeVector& x, const TubeVector& v, const Interval& t) const {
+  const char* where = "CtcDeriv::contract(TubeVector x, TubeVector v, t)";
+  check_vectors(x, v, where);
+  if (t.is_empty()) return true;
+  std::size_t first = 0, last = 0;
+  slice_range(*x.tdomain(), t, first, last, where);
+  return each_component(x, [&](std::size_t i) { return run(propag_, x[i], v[i], first, last); });
+}
+
+}  // namespace sillage

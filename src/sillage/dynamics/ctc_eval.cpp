@@ -1,0 +1,215 @@
+#include "sillage/dynamics/ctc_eval.h"
+
+#include <string>
+#include <vector>
+
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+void set_tube_empty(Tube& y) {
+  TubeData& d = y.data();
+  for (Interval& v : d.slices) v.set_empty();
+  for (Interval& v : d.gates) v.set_empty();
+  y.touch();
+}
+
+void check_domains(const Tube& y, const Tube* w, const char* where) {
+  if (w && w->tdomain() != y.tdomain()) {
+    throw DimensionError(std::string(where) + ": y and w are not on one TDomain");
+  }
+}
+
+// [t] ∩= [t_0, t_N] (Error if they do not meet), then samples the TDomain at
+// a degenerate t when allowed. False if t is empty.
+bool prepare_time(Interval& t, const Tube& y, bool sampling, const char* where) {
+  if (t.is_empty()) return false;
+  const Interval dom = y.tdomain()->t0_tf();
+  if (!t.intersects(dom)) {
+    throw Error(std::string(where) + ": [t] = " + t.str() + " does not meet the time domain " + dom.str());
+  }
+  t &= dom;
+  if (sampling && t.is_degenerate() && !y.tdomain()->is_time_point(t.lb())) y.tdomain()->sample(t.lb());
+  return true;
+}
+
+// The gate fronts of (5.6); marks [glo, ghi] the gates it changed. False if a
+// gate became empty.
+bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi) {
+  const TDomain& td = *y.tdomain();
+  const auto ts = td.times();
+  const std::size_t n = td.nb_slices();
+  TubeData& d = y.data();
+  const auto& ws = w.data().slices;
+  std::size_t first = 0, last = 0;
+  slice_range(td, t, first, last, "CtcEval");
+  const double ta = t.lb(), tb = t.ub();
+  const auto in_t = [&](std::size_t i) { return ta <= ts[i] && ts[i] <= tb; };
+  // Slice k holds times of [t] strictly inside it.
+  const auto meets = [&](std::size_t k) { return ts[k] < tb && ts[k + 1] > ta; };
+  const auto mark = [&](std::size_t i) {
+    glo = std::min(glo, i);
+    ghi = std::max(ghi, i);
+  };
+  // Sets gate g to h (h ⊆ g); false if it is empty.
+  const auto narrow = [&](std::size_t i, const Interval& h) {
+    Interval& g = d.gates[i];
+    if (h == g) return true;
+    g = h;
+    mark(i);
+    return !g.is_empty();
+  };
+
+  // Forward: F encloses y(t_k) when t* <= t_k.
+  std::vector<Interval> inside;  // F at the gates inside [t], in order
+  Interval F = Interval::empty();
+  for (std::size_t k = first; k <= n; ++k) {
+    const Interval g = d.gates[k];
+    if (in_t(k)) F |= g & z;
+    F &= g;
+    if (ts[k] > tb) {
+      if (F == g && k > last + 1) break;  // the front holds the gate: nothing more to learn
+      if (!narrow(k, F)) return false;
+    } else if (in_t(k)) {
+      inside.push_back(F);
+    }
+    if (k == n) break;
+    const Interval dt = td.slice_width(k);
+    Interval next = F + dt * ws[k];
+    if (meets(k)) next |= (d.slices[k] & z) + Interval(0, dt.ub()) * ws[k];
+    F = next;
+  }
+
+  // Backward: B encloses y(t_i) when t* >= t_i.
+  Interval B = Interval::empty();
+  std::size_t j = inside.size();
+  for (std::size_t i = last + 1;; --i) {
+    const Interval g = d.gates[i];
+    if (in_t(i)) B |= g & z;
+    B &= g;
+    if (ts[i] < ta) {
+      if (B == g && i + 1 < first) break;
+      if (!narrow(i, B)) return false;
+    } else if (in_t(i)) {
+      if (!narrow(i, g & (inside[--j] | B))) return false;
+    }
+    if (i == 0) break;
+    const std::size_t k = i - 1;
+    const Interval dt = td.slice_width(k);
+    Interval next = B - dt * ws[k];
+    if (meets(k)) next |= (d.slices[k] & z) - Interval(0, dt.ub()) * ws[k];
+    B = next;
+  }
+  return true;
+}
+
+// [t] ∩= [y]⁻¹([z]), [z] ∩= [y]([t]) (with the derivative when given).
+bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
+  t &= w ? y.inverse(z, *w) : y.inverse(z);
+  if (t.is_empty()) return false;
+  z &= w ? y.eval(t, *w) : y(t);
+  return !z.is_empty();
+}
+
+// The gate at a degenerate t that is a time point: ∩= [z].
+bool contract_gate(const Interval& t, const Interval& z, Tube& y) {
+  if (!t.is_degenerate()) return true;
+  const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
+  if (i < 0) return true;
+  Interval& g = y.data().gates[static_cast<std::size_t>(i)];
+  const Interval h = g & z;
+  if (h != g) {
+    g = h;
+    y.touch();
+  }
+  return !h.is_empty();
+}
+
+bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w) {
+  std::size_t glo = y.nb_slices() + 1, ghi = 0;
+  const bool ok = sweep_fronts(t, z, y, w, glo, ghi);
+  if (glo <= ghi) y.touch();
+  if (!ok) return false;
+  if (glo > ghi) return true;
+  // The slices around the changed gates, by CtcDeriv's slice rule.
+  const std::size_t n = y.nb_slices();
+  return CtcDeriv().contract(y, w, glo > 0 ? glo - 1 : 0, std::min(ghi, n - 1));
+}
+
+}  // namespace
+
+bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
+  const char* where = "CtcEval::contract(t, z, y, w)";
+  check_domains(y, &w, where);
+  const bool ok = prepare_time(t, y, sampling_, where) && !z.is_empty() && contract_t_z(t, z, y, &w) &&
+                  contract_tube(t, z, y, w);
+  if (!ok) {
+    t.set_empty();
+    z.set_empty();
+    set_tube_empty(y);
+  }
+  return ok;
+}
+
+bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
+  const char* where = "CtcEval::contract(t, z, y)";
+  const bool ok = prepare_time(t, y, sampling_, where) && !z.is_empty() && contract_t_z(t, z, y, nullptr) &&
+                  contract_gate(t, z, y);
+  if (!ok) {
+    t.set_empty();
+    z.set_empty();
+    set_tube_empty(y);
+  }
+  return ok;
+}
+
+namespace {
+
+void check_vector(const IntervalVector& z, const TubeVector& y, const TubeVector* w, const char* where) {
+  if (z.size() != y.size() || (w && w->size() != y.size())) {
+    throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
+                         std::to_string(y.size()) + (w ? ", w " + std::to_string(w->size()) : std::string()));
+  }
+  for (std::size_t i = 0; i < y.size(); ++i) check_domains(y[i], w ? &(*w)[i] : nullptr, where);
+}
+
+bool contract_vector(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector* w, bool sampling,
+                     const char* where) {
+  check_vector(z, y, w, where);
+  bool ok = prepare_time(t, y[0], sampling, where) && !z.is_empty();
+  // [t] from every component first, then [z] and the tubes with the common [t].
+  for (std::size_t i = 0; ok && i < y.size(); ++i) {
+    t &= w ? y[i].inverse(z[i], (*w)[i]) : y[i].inverse(z[i]);
+    ok = !t.is_empty();
+  }
+  for (std::size_t i = 0; ok && i < y.size(); ++i) {
+    ok = contract_t_z(t, z[i], y[i], w ? &(*w)[i] : nullptr);
+    if (ok) ok = w ? contract_tube(t, z[i], y[i], (*w)[i]) : contract_gate(t, z[i], y[i]);
+  }
+  if (!ok) {
+    t.set_empty();
+    z.set_empty();
+    for (std::size_t i = 0; i < y.size(); ++i) set_tube_empty(y[i]);
+  }
+  return ok;
+}
+
+}  // namespace
+
+std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>& args) const {
+  return make_eval_node(*this, args);
+}
+
+bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const {
+  return contract_vector(t, z, y, &w, sampling_, "CtcEval::contract(t, z, y, w)");
+}
+
+bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
+  return contract_vector(t, z, y, nullptr, sampling_, "CtcEval::contract(t, z, y)");
+}
+
+}  // namespace sillage

@@ -1,0 +1,66 @@
+#pragma once
+// CtcEval: the evaluation contractor C_eval of z = y(t), y' = w, with an
+// uncertain time t (thesis 5.2, Prop. 5.1, (5.6)):
+//   [t]    ∩= [y]⁻¹([z])
+//   [z]    ∩= [y]([t])
+//   [y](·) ∩= ⊔_{t1 ∈ [t]} ( ([y](t1) ∩ [z]) + ∫_{t1}^{·} [w] )
+// [t] and [z] use the tube with its derivative (Tube::inverse(y, w),
+// Tube::eval(t, w): the polygon inside each slice, tighter than the boxes).
+//
+// The tube is contracted by two sweeps over the gates (design guide):
+// the forward front F(t_i) encloses y(t_i) for a measurement time t* <= t_i,
+//   F ← ((F ∩ [y](t_i)) ∪ ([y](t_i) ∩ [z] if t_i ∈ [t])) ... + δ[w](k)
+//        ∪ (([y](k) ∩ [z]) + [0, δ][w](k)) for a slice k meeting [t],
+// the backward front B(t_i) likewise for t* >= t_i. A gate after [t] is
+// intersected with F, one before with B, one inside with F ∪ B. A sweep stops
+// once its front holds the whole gate (nothing more to learn from it: the
+// network's CtcDeriv carries on). The slices between the changed gates are
+// then contracted by CtcDeriv's slice rule (their gates and [w]).
+//
+// A degenerate [t] = {t} that is not a time point samples the TDomain there
+// (a new gate, in every tube on it) when sampling is allowed (the default);
+// in a ContractorNetwork it is not (the layout is fixed): sample the TDomain
+// before building the network for the tightest result.
+//
+// Inconsistency (Lemma 5.1): when [t], [z] or a gate becomes empty, [t], [z]
+// and [y] are all set empty and contract returns false.
+//
+// Without a derivative only [t], [z] and, for a t that is a time point, its
+// gate are contracted.
+//
+// In a ContractorNetwork: cn.add(ctc, {t, z, y, w}) (dynamics/tube_nodes.h).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/network_ctc.h"
+#include "sillage/interval/interval.h"
+#include "sillage/interval/interval_vector.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+class CtcEval : public NetworkCtc {
+ public:
+  CtcEval() = default;
+  std::string name() const override { return "CtcEval"; }
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
+
+  // Allow (default) or not the sampling of the TDomain at a degenerate t.
+  void enable_time_sampling(bool on) { sampling_ = on; }
+  bool time_sampling() const { return sampling_; }
+
+  // z = y(t), y' ∈ w. DimensionError if y and w are not on one TDomain;
+  // Error if t does not meet [t_0, t_N] (it is intersected with it).
+  bool contract(Interval& t, Interval& z, Tube& y, const Tube& w) const;
+  bool contract(Interval& t, Interval& z, Tube& y) const;  // no derivative
+  // Vector case, component-wise with one t (DimensionError on sizes).
+  bool contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const;
+  bool contract(Interval& t, IntervalVector& z, TubeVector& y) const;
+
+ private:
+  bool sampling_ = true;
+};
+
+}  // namespace sillage

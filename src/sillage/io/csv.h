@@ -1,0 +1,35 @@
+#pragma once
+// CsvTable: a numeric CSV file with one header line (the datasets of
+// ../shared/data: odometry, ranges, ground truth). Every cell must be a
+// finite number; a bad cell, a short row or a missing column is a ParseError that
+// names the file, the line and the column.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sillage {
+
+class CsvTable {
+ public:
+  // Reads `path` (comma-separated; blank lines and lines starting with '#'
+  // are skipped). Error if the file cannot be read.
+  static CsvTable read(const std::string& path);
+  // Parses text already in memory; `source` names it in error messages.
+  static CsvTable parse(const std::string& text, const std::string& source);
+
+  const std::vector<std::string>& columns() const { return columns_; }
+  std::size_t nb_rows() const { return rows_.size(); }
+  const std::vector<double>& row(std::size_t i) const { return rows_.at(i); }
+  bool has_column(const std::string& name) const;
+  // Index of a column; Error naming the file and the columns it has.
+  std::size_t column(const std::string& name) const;
+  // The values of a column, in file order.
+  std::vector<double> values(const std::string& name) const;
+
+ private:
+  std::string source_;
+  std::vector<std::string> columns_;
+  std::vector<std::vector<double>> rows_;
+};
+
+}  // namespace sillage

@@ -1,0 +1,82 @@
+// CtcDeriv and CtcEval as ContractorNetwork contractors: same result as the
+// direct calls, propagation through pointwise contractors, an observation
+// at an uncertain time propagated both ways, argument errors.
+#include <gtest/gtest.h>
+
+#include "sillage/cn/contractor_network.h"
+#include "sillage/ctc/ctc_function.h"
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_eval.h"
+#include "sillage/error.h"
+#include "sillage/tube/trajectory.h"
+
+using namespace sillage;
+
+TEST(TubeNodes, DerivInTheNetworkEqualsTheDirectCall) {
+  auto td = TDomain::create(0.0, 5.0, 0.1);
+  Tube x(td), v(td, "cos(t) + [-0.1, 0.1]");
+  x.set_gate(0, Interval(0.0));
+  Tube direct = x;
+  CtcDeriv().contract(direct, v);
+  auto nx = std::make_shared<Tube>(x), nv = std::make_shared<Tube>(v);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {nx, nv});
+  const ContractStats s = cn.contract();
+  EXPECT_FALSE(s.empty);
+  EXPECT_EQ(*nx, direct);
+  EXPECT_EQ(s.iterations, 1u);
+}
+
+TEST(TubeNodes, ObservationAtAnUncertainTimeIsPropagatedBothWays) {
+  // x' = v, v = cos(t) ± 0.05, x(t*) = sin(t*) observed with t* = 3 known to ±0.05.
+  auto td = TDomain::create(0.0, 6.0, 0.05);
+  auto x = std::make_shared<Tube>(td);
+  auto v = std::make_shared<Tube>(td, "cos(t) + [-0.05, 0.05]");
+  auto t = std::make_shared<Interval>(2.95, 3.05);
+  auto z = std::make_shared<Interval>(std::sin(3.0) - 1e-3, std::sin(3.0) + 1e-3);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.add(std::make_shared<CtcEval>(), {t, z, x, v});
+  const ContractStats s = cn.contract();
+  EXPECT_FALSE(s.empty);
+  EXPECT_TRUE(x->contains(Trajectory("sin(t)", td->t0_tf())));
+  EXPECT_TRUE(t->contains(3.0));
+  // Bounded everywhere from one observation (forward and backward).
+  EXPECT_LT(x->gate(0).diam(), 1.0);
+  EXPECT_LT(x->gate(td->nb_slices()).diam(), 1.0);
+  EXPECT_LT(x->gate(60).diam(), 0.2);  // t = 3
+}
+
+TEST(TubeNodes, VectorEvaluationAndPointwiseConstraints) {
+  // p' = (cos h, sin h) · s, heading and speed known: one position fix at t in [4, 4.1].
+  auto td = TDomain::create(0.0, 8.0, 0.05);
+  auto p = std::make_shared<TubeVector>(td, 2);
+  auto v = std::make_shared<TubeVector>(td, 2);
+  auto h = std::make_shared<Tube>(td, "t/4 + [-0.01, 0.01]");
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcFunction>(Function({"v", "h"}, "v - cos(h)")), {DomainRef::component(v, 0), h});
+  cn.add(std::make_shared<CtcFunction>(Function({"v", "h"}, "v - sin(h)")), {DomainRef::component(v, 1), h});
+  cn.add(std::make_shared<CtcDeriv>(), {p, v});
+  auto t = std::make_shared<Interval>(4.0, 4.1);
+  // True path: p(t) = (4 sin(t/4), 4 - 4 cos(t/4)).
+  auto z = std::make_shared<IntervalVector>(IntervalVector{{4 * std::sin(1.0) - 0.1, 4 * std::sin(1.0) + 0.1},
+                                                           {4 - 4 * std::cos(1.0) - 0.1, 4 - 4 * std::cos(1.0) + 0.1}});
+  cn.add(std::make_shared<CtcEval>(), {t, z, p, v});
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_TRUE(p->contains({Trajectory("4*sin(t/4)", td->t0_tf()), Trajectory("4 - 4*cos(t/4)", td->t0_tf())}));
+  EXPECT_LT((*p)[0].gate(0).diam(), 0.5);
+}
+
+TEST(TubeNodes, ArgumentErrorsLeaveTheNetworkUnchanged) {
+  auto td = TDomain::create(0.0, 1.0, 0.1), other = TDomain::create(0.0, 1.0, 0.2);
+  auto x = std::make_shared<Tube>(td), v = std::make_shared<Tube>(other);
+  auto a = std::make_shared<Interval>(0, 1);
+  ContractorNetwork cn;
+  EXPECT_THROW(cn.add(std::make_shared<CtcDeriv>(), {x}), DimensionError);
+  EXPECT_THROW(cn.add(std::make_shared<CtcDeriv>(), {x, v}), DimensionError);
+  EXPECT_THROW(cn.add(std::make_shared<CtcDeriv>(), {x, a}), DimensionError);
+  EXPECT_THROW(cn.add(std::make_shared<CtcEval>(), {x, a, x}), DimensionError);
+  EXPECT_THROW(cn.add(std::make_shared<CtcEval>(), {a, a}), DimensionError);
+  EXPECT_EQ(cn.nb_dom(), 0u);
+  EXPECT_EQ(cn.nb_ctc(), 0u);
+}

@@ -1,0 +1,67 @@
+"""CtcEval from Python (Prop. 5.1): in-place contraction of t, z and the tube,
+the vector case, inconsistency, and both dynamics contractors in a
+ContractorNetwork; CsvTable on the plaza1 dataset."""
+import math
+from pathlib import Path
+
+import pytest
+import sillage
+from sillage import Interval, IntervalVector, TDomain, Tube, TubeVector
+
+
+def test_known_time_shapes_the_gates():
+    td = TDomain(0.0, 10.0, 1.0)
+    y, w = Tube(td, Interval(-10, 10)), Tube(td, Interval(-1, 1))
+    t, z = Interval(5.0), Interval(0.0)
+    assert sillage.CtcEval().contract(t, z, y, w)
+    assert y.gate(5) == Interval(0.0) and y.gate(8) == Interval(-3, 3)
+
+
+def test_time_contracted_in_place_and_sampling():
+    td = TDomain(0.0, 10.0, 0.5)
+    y, w = Tube(td, "t"), Tube(td, Interval(1.0))
+    t, z = Interval(0.0, 10.0), Interval(3.0, 3.25)
+    sillage.CtcEval().contract(t, z, y, w)
+    assert t.is_superset(Interval(3.0, 3.25)) and t.ub() < 3.26
+    c = sillage.CtcEval()
+    assert c.time_sampling()
+    t2, z2 = Interval(2.25), Interval(-100, 100)
+    c.contract(t2, z2, y, w)
+    assert td.nb_slices() == 21 and z2.diam() < 1e-9
+
+
+def test_vector_and_no_derivative_and_inconsistency():
+    td = TDomain(0.0, 10.0, 0.5)
+    y = TubeVector(td, "(t, 2*t)")
+    t, z = Interval(0.0, 10.0), IntervalVector([Interval(0.0, 10.0), Interval(4.0, 5.0)])
+    assert sillage.CtcEval().contract(t, z, y)
+    assert t.is_subset(Interval(1.5, 3.0))
+    y1 = Tube(td, Interval(5, 6))
+    t1, z1 = Interval(1, 2), Interval(0.0)
+    assert not sillage.CtcEval().contract(t1, z1, y1, Tube(td, Interval(-1, 1)))
+    assert t1.is_empty() and z1.is_empty()
+
+
+def test_network_with_deriv_and_eval():
+    td = TDomain(0.0, 6.0, 0.05)
+    x, v = Tube(td), Tube(td, "cos(t) + [-0.05, 0.05]")
+    t, z = Interval(2.95, 3.05), Interval(math.sin(3.0) - 1e-3, math.sin(3.0) + 1e-3)
+    cn = sillage.ContractorNetwork()
+    cn.add(sillage.CtcDeriv(), [x, v])
+    cn.add(sillage.CtcEval(), [t, z, x, v])
+    s = cn.contract()
+    assert not s.empty
+    assert x.contains(sillage.Trajectory("sin(t)", Interval(0, 6)))
+    assert x.gate(0).diam() < 1.0 and x.gate(td.nb_slices()).diam() < 1.0
+    with pytest.raises(sillage.DimensionError):
+        cn.add(sillage.CtcDeriv(), [x])
+
+
+def test_csv_table():
+    t = sillage.CsvTable.parse("a,b\n1,2\n3,4\n")
+    assert list(t.values("b")) == [2.0, 4.0] and t.columns() == ["a", "b"]
+    with pytest.raises(sillage.ParseError, match="line|:3"):
+        sillage.CsvTable.parse("a\n1\nx\n", "f.csv")
+    plaza = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1" / "beacons.csv"
+    if plaza.exists():
+        assert sillage.CsvTable.read(str(plaza)).nb_rows() == 4
