@@ -23,6 +23,13 @@ const std::shared_ptr<TDomain>& checked(const std::shared_ptr<TDomain>& td, cons
   return td;
 }
 
+// The cached synthesis tree if it is current, else null (no build).
+std::shared_ptr<const SynthesisTree> current_tree(TubeData& d) {
+  std::lock_guard<std::mutex> lock(d.tree_cache.mutex);
+  if (d.tree_cache.tree && d.tree_cache.version == d.version) return d.tree_cache.tree;
+  return nullptr;
+}
+
 std::shared_ptr<TubeData> make_data(std::size_t n, const Interval& x) {
   auto d = std::make_shared<TubeData>();
   d->slices.assign(n, x);
@@ -143,6 +150,9 @@ Interval Tube::operator()(const Interval& t) const {
     throw Error("Tube::operator()([t]): [t] = " + t.str() + " is not inside the domain " + td_->t0_tf().str());
   }
   if (t.is_degenerate()) return (*this)(t.lb());
+  if (nb_slices() > kScanLimit) {  // a current tree answers any range at once
+    if (const auto tree = current_tree(*data_)) return tree->eval(t);
+  }
   const auto ts = td_->times();
   const double a = t.lb(), b = t.ub();
   // Slices k with t_k < b and t_{k+1} > a meet the interior (a, b).
@@ -162,10 +172,19 @@ std::shared_ptr<const SynthesisTree> Tube::synthesis_tree() const {
   TreeCache& c = data_->tree_cache;
   std::lock_guard<std::mutex> lock(c.mutex);
   if (!c.tree || c.version != data_->version) {
-    c.tree = std::make_shared<const SynthesisTree>(td_->times(), slices(), gates());
+    c.tree.reset();  // the old tree's memory goes before the new one is built
+    c.tree = std::make_shared<const SynthesisTree>(td_, data_);
     c.version = data_->version;
   }
   return c.tree;
+}
+
+std::size_t Tube::memory_bytes() const {
+  std::size_t bytes = sizeof(TubeData) + (data_->slices.capacity() + data_->gates.capacity()) * sizeof(Interval);
+  TreeCache& c = data_->tree_cache;
+  std::lock_guard<std::mutex> lock(c.mutex);
+  if (c.tree) bytes += c.tree->memory_bytes();
+  return bytes;
 }
 
 void Tube::set(const Interval& y, std::size_t k) {

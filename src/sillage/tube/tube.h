@@ -58,6 +58,8 @@ class Tube {
   // The synthesis tree of the current slices and gates (thesis Fig. 3.9),
   // built on the first query after a modification and cached; thread-safe.
   std::shared_ptr<const SynthesisTree> synthesis_tree() const;
+  // Bytes held: slices, gates and the cached synthesis tree if built (not the shared TDomain).
+  std::size_t memory_bytes() const;
 
   // [x](t): the gate when t is a time point, else the slice codomain.
   // Error if t is NaN or outside [t_0, t_N].

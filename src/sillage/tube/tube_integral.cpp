@@ -33,11 +33,11 @@ Interval difference(bool upper, const PrimitiveRange& r1, const PrimitiveRange& 
   const auto d_min = r2.rank_first <=> r1.rank_last;   // the smallest
   double lo, hi;
   if (!upper) {
-    lo = d_max > 0 ? -kInf : d_max < 0 ? kInf : rounding::sub_down(r2.min_last.lb(), r1.max_first.ub());
-    hi = d_min < 0 ? kInf : d_min > 0 ? -kInf : rounding::sub_up(r2.max_first.ub(), r1.min_last.lb());
+    lo = d_max > 0 ? -kInf : d_max < 0 ? kInf : rounding::sub_down(r2.min_last, r1.max_first);
+    hi = d_min < 0 ? kInf : d_min > 0 ? -kInf : rounding::sub_up(r2.max_first, r1.min_last);
   } else {
-    hi = d_max > 0 ? kInf : d_max < 0 ? -kInf : rounding::sub_up(r2.max_last.ub(), r1.min_first.lb());
-    lo = d_min < 0 ? -kInf : d_min > 0 ? kInf : rounding::sub_down(r2.min_first.lb(), r1.max_last.ub());
+    hi = d_max > 0 ? kInf : d_max < 0 ? -kInf : rounding::sub_up(r2.max_last, r1.min_first);
+    lo = d_min < 0 ? -kInf : d_min > 0 ? kInf : rounding::sub_down(r2.min_first, r1.max_last);
   }
   return make_range(lo, hi);
 }
@@ -65,10 +65,11 @@ Interval checked_point(const SynthesisTree& x, double t, const char* what, const
 std::pair<Interval, Interval> partial_integral(const SynthesisTree& x, const Interval& t1, const Interval& t2) {
   check_inside(x, t1, "[t1]", "partial_integral(x, [t1], [t2])");
   check_inside(x, t2, "[t2]", "partial_integral(x, [t1], [t2])");
-  if (t1.is_empty() || t2.is_empty() || x.has_empty_slice()) return {Interval::empty(), Interval::empty()};
+  if (t1.is_empty() || t2.is_empty()) return {Interval::empty(), Interval::empty()};
   PrimitiveRange l1, u1, l2, u2;
-  x.ranges(t1, l1, u1);
+  x.ranges(t1, l1, u1);  // also checks that a tube's tree is current
   x.ranges(t2, l2, u2);
+  if (x.has_empty_slice()) return {Interval::empty(), Interval::empty()};
   return {difference(false, l1, l2), difference(true, u1, u2)};
 }
 

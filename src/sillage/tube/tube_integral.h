@@ -24,11 +24,11 @@
 // A tube with an empty slice holds no trajectory: its integrals are empty.
 // An empty [t] gives an empty result; a time outside [t_0, t_N] is an Error.
 //
-// Cost: the free functions taking a Tube build a SynthesisTree, O(N), then
-// answer in O(log N). For repeated queries on one tube, use TubeAnalysis: it
-// holds the tree and rebuilds it only when the tube changed (Tube::version()).
-// (Tube has no slot for a cached tree, so the free functions cannot cache one
-// without risking a stale tree after the tube's storage is freed and reused.)
+// Cost: the free functions taking a Tube use the tube's cached SynthesisTree
+// (Tube::synthesis_tree: built in O(N) on the first query after a
+// modification), then answer in O(log N). TubeAnalysis is a handle on the
+// same cached tree. A tree kept from before a modification of its tube throws
+// an Error when queried (synthesis_tree.h): it never answers for old data.
 #include <memory>
 #include <utility>
 

@@ -2,12 +2,15 @@
 // slices; hull queries equal Tube::operator()([t]).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "sillage/error.h"
+#include "sillage/tube/prefix_lanes.h"
 #include "sillage/tube/synthesis_tree.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/tube.h"
@@ -88,17 +91,15 @@ struct Ref {
     PrimitiveRange r;
     r.rank_first = cand[0].rank;
     r.rank_last = cand[1].rank;
-    auto over = [&](const Rank& c, Interval& mn, Interval& mx) {
-      double a1 = kInf, a2 = kInf, b1 = -kInf, b2 = -kInf;
+    // The least lower end and the greatest upper end over the times of rank c.
+    auto over = [&](const Rank& c, double& mn, double& mx) {
+      mn = kInf;
+      mx = -kInf;
       for (const auto& x : cand) {
         if (x.rank != c) continue;
-        a1 = std::min(a1, x.fin.lb());
-        a2 = std::min(a2, x.fin.ub());
-        b1 = std::max(b1, x.fin.lb());
-        b2 = std::max(b2, x.fin.ub());
+        mn = std::min(mn, x.fin.lb());
+        mx = std::max(mx, x.fin.ub());
       }
-      mn = Interval(a1, a2);
-      mx = Interval(b1, b2);
     };
     over(r.rank_first, r.min_first, r.max_first);
     over(r.rank_last, r.min_last, r.max_last);
@@ -114,10 +115,10 @@ void expect_same(const Interval& x, const Interval& y, const char* what) {
 void expect_same(const PrimitiveRange& x, const PrimitiveRange& y) {
   EXPECT_TRUE(x.rank_first == y.rank_first);
   EXPECT_TRUE(x.rank_last == y.rank_last);
-  expect_same(x.min_first, y.min_first, "min_first");
-  expect_same(x.max_first, y.max_first, "max_first");
-  expect_same(x.min_last, y.min_last, "min_last");
-  expect_same(x.max_last, y.max_last, "max_last");
+  EXPECT_EQ(x.min_first, y.min_first) << "min_first";
+  EXPECT_EQ(x.max_first, y.max_first) << "max_first";
+  EXPECT_EQ(x.min_last, y.min_last) << "min_last";
+  EXPECT_EQ(x.max_last, y.max_last) << "max_last";
 }
 
 // A random sub-interval of [t0, tf], sometimes with ends on time points.
@@ -132,27 +133,34 @@ Interval random_t(std::mt19937_64& rng, const Data& d) {
   return {a, b};
 }
 
+// The tree's prefixes (every `step`-th time point) and `queries` random
+// range queries equal the linear-scan reference bit for bit.
+void expect_tree_equals_scan(std::mt19937_64& rng, const Data& d, const SynthesisTree& tree, const Ref& ref,
+                             std::size_t step, int queries) {
+  for (std::size_t k = 0; k < d.times.size(); k += step) {
+    EXPECT_TRUE(tree.lower_prefix(k).rank == ref.lower[k].rank);
+    EXPECT_TRUE(tree.upper_prefix(k).rank == ref.upper[k].rank);
+    expect_same(tree.lower_prefix(k).fin, ref.lower[k].fin, "lower prefix");
+    expect_same(tree.upper_prefix(k).fin, ref.upper[k].fin, "upper prefix");
+  }
+  for (int q = 0; q < queries; ++q) {
+    const Interval t = random_t(rng, d);
+    PrimitiveRange l, u;
+    tree.ranges(t, l, u);
+    expect_same(l, ref.range(false, t.lb(), t.ub()));
+    expect_same(u, ref.range(true, t.lb(), t.ub()));
+    EXPECT_EQ(tree.lower_range(t).min_first, l.min_first);
+    EXPECT_EQ(tree.upper_range(t).max_last, u.max_last);
+  }
+}
+
 TEST(SynthesisTree, PrimitiveRangesEqualLinearScan) {
   std::mt19937_64 rng(42);
   for (int trial = 0; trial < 60; ++trial) {
     const std::size_t n = 1 + static_cast<std::size_t>(trial % 37) * 3;
     const Data d = random_data(rng, n, trial % 2 == 1, trial % 3 == 0);
     const SynthesisTree tree(d.times, d.slices, d.gates);
-    const Ref ref(d);
-    for (std::size_t k = 0; k <= n; ++k) {
-      EXPECT_TRUE(tree.lower_prefix(k).rank == ref.lower[k].rank);
-      expect_same(tree.lower_prefix(k).fin, ref.lower[k].fin, "lower prefix");
-      expect_same(tree.upper_prefix(k).fin, ref.upper[k].fin, "upper prefix");
-    }
-    for (int q = 0; q < 40; ++q) {
-      const Interval t = random_t(rng, d);
-      PrimitiveRange l, u;
-      tree.ranges(t, l, u);
-      expect_same(l, ref.range(false, t.lb(), t.ub()));
-      expect_same(u, ref.range(true, t.lb(), t.ub()));
-      expect_same(tree.lower_range(t).min_first, l.min_first, "lower_range");
-      expect_same(tree.upper_range(t).max_last, u.max_last, "upper_range");
-    }
+    expect_tree_equals_scan(rng, d, tree, Ref(d), 1, 40);
   }
 }
 
@@ -194,8 +202,8 @@ TEST(SynthesisTree, SmallHandComputedPrefixes) {
   EXPECT_EQ(tree.lower_at(1.5).fin, Interval(0.5));
   EXPECT_EQ(tree.upper_at(1.5).fin, Interval(3.5));
   const PrimitiveRange r = tree.lower_range(Interval(0.5, 3.5));
-  EXPECT_EQ(r.min_first, Interval(0.0));
-  EXPECT_EQ(r.max_first, Interval(1.0));
+  EXPECT_EQ(r.min_first, 0.0);
+  EXPECT_EQ(r.max_first, 1.0);
   EXPECT_EQ(tree.slice_hull(0, 3), Interval(-1, 4));
   EXPECT_EQ(tree.eval(Interval(2.5, 3.5)), Interval(0, 4));
   EXPECT_FALSE(tree.has_empty_slice());
@@ -229,6 +237,147 @@ TEST(SynthesisTree, InvalidInput) {
   EXPECT_THROW(tree.slice_hull(0, 2), Error);
   EXPECT_EQ(tree.slice_index(2.0), 1u);
   EXPECT_EQ(tree.slice_index(1.0), 1u);
+}
+
+TEST(SynthesisTree, LargeTreesEqualLinearScan) {
+  // Several levels of blocks, anchors and tree nodes; sparse unbounded slices.
+  std::mt19937_64 rng(99);
+  for (const std::size_t n : {257u, 1000u, 4099u}) {
+    for (const bool unbounded : {false, true}) {
+      Data d = random_data(rng, n, false, n == 1000);
+      if (n == 257) {  // extreme values: the prefix steps fall back to the Interval operators
+        for (std::size_t k = 0; k < n; k += 5) {
+          d.slices[k] = k % 3 == 0 ? Interval(1e307, 1.5e308) : Interval(-1e-310, 1e-300 * static_cast<double>(k));
+        }
+      }
+      if (unbounded) {
+        d.slices[n / 3] = Interval(-kInf, 1.0);
+        d.slices[n / 3 + 9] = Interval(-kInf, kInf);
+        d.slices[2 * n / 3] = Interval(0.5, kInf);
+      }
+      const SynthesisTree tree(d.times, d.slices, d.gates);
+      expect_tree_equals_scan(rng, d, tree, Ref(d), 7, 60);
+    }
+  }
+}
+
+// A double with a random sign, mantissa and exponent in [e_lo, e_hi] (or a special value).
+double wild(std::mt19937_64& rng, int e_lo, int e_hi) {
+  std::uniform_int_distribution<int> kind(0, 19), e(e_lo, e_hi);
+  std::uniform_real_distribution<double> m(1.0, 2.0);
+  switch (kind(rng)) {
+    case 0: return 0.0;
+    case 1: return -0.0;
+    case 2: return std::numeric_limits<double>::denorm_min() * static_cast<double>(1 + rng() % 1000);
+    case 3: return std::numeric_limits<double>::max();
+    case 4: return 1.0;
+    default: break;
+  }
+  const double x = std::ldexp(m(rng), e(rng));
+  return rng() % 2 ? x : -x;
+}
+
+// The prefix step of the tree (fast path and fallback) gives the bits of the
+// Interval operators, also on tiny, huge, zero, unbounded and empty operands.
+TEST(SynthesisTree, PrefixStepIsTheIntervalArithmetic) {
+  std::mt19937_64 rng(5);
+  const int ranges[][2] = {{-40, 40}, {-1074, 1023}, {-1000, -900}, {900, 1023}, {-3, 3}};
+  std::size_t n_fast = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const auto& r = ranges[trial % 5];
+    double t0 = wild(rng, r[0], r[1]), t1 = wild(rng, r[0], r[1]);
+    if (trial % 3 == 0) t1 = std::nextafter(t0, kInf);  // the narrowest slice
+    if (t0 == t1 || !std::isfinite(t1)) continue;
+    if (t0 > t1) std::swap(t0, t1);
+    if (!std::isfinite(t1 - t0) && trial % 2 == 0) continue;
+    double lo = wild(rng, r[0], r[1]), hi = wild(rng, r[0], r[1]);
+    if (lo > hi) std::swap(lo, hi);
+    Interval s(lo, hi);
+    if (trial % 50 == 1) s = Interval(-kInf, hi);
+    if (trial % 50 == 2) s = Interval(lo, kInf);
+    if (trial % 50 == 3) s = Interval::empty();
+    double l0 = wild(rng, r[0], r[1]), l1 = wild(rng, r[0], r[1]), u0 = wild(rng, r[0], r[1]),
+           u1 = wild(rng, r[0], r[1]);
+    if (l0 > l1) std::swap(l0, l1);
+    if (u0 > u1) std::swap(u0, u1);
+    if (trial % 7 == 0) l0 = l1 = u0 = u1 = 0.0;  // the start of the sums
+    if (trial % 97 == 0) l0 = -kInf;            // after an overflow
+    const Interval l = Interval::from_bounds_unchecked(l0, l1 == -0.0 ? 0.0 : l1);
+    const Interval u = Interval::from_bounds_unchecked(u0, u1 == -0.0 ? 0.0 : u1);
+    // Reference.
+    Interval l_ref = l, u_ref = u;
+    if (!s.is_empty()) {
+      const Interval width = Interval(t1) - Interval(t0);
+      if (s.lb() != -kInf) l_ref = l + width * Interval::from_bounds_unchecked(s.lb(), s.lb());
+      if (s.ub() != kInf) u_ref = u + width * Interval::from_bounds_unchecked(s.ub(), s.ub());
+    }
+    detail::Lanes p = detail::lanes_of(l, u);
+    detail::Lanes probe = p;
+    if (std::isfinite(s.lb()) && std::isfinite(s.ub())) {
+      detail::LaneMask bad{};
+      detail::advance_fast(probe, t0, t1, s.lb(), s.ub(), bad);
+      n_fast += !detail::any(bad);
+    }
+    detail::advance(p, t0, t1, s);
+    const Interval l_got = detail::lower_of(p), u_got = detail::upper_of(p);
+    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    ASSERT_EQ(bits(l_got.lb()), bits(l_ref.lb())) << t0 << " " << t1 << " " << s << " " << l;
+    ASSERT_EQ(bits(l_got.ub()), bits(l_ref.ub())) << t0 << " " << t1 << " " << s << " " << l;
+    ASSERT_EQ(bits(u_got.lb()), bits(u_ref.lb())) << t0 << " " << t1 << " " << s << " " << u;
+    ASSERT_EQ(bits(u_got.ub()), bits(u_ref.ub())) << t0 << " " << t1 << " " << s << " " << u;
+  }
+  EXPECT_GT(n_fast, 30000u);  // the fast path was exercised, not only the fallback
+}
+
+// A tube's tree reads the tube's storage: once that changes or goes, the tree
+// refuses to answer rather than answer from data it was not built from.
+TEST(SynthesisTree, TreeOfATubeChecksTheTube) {
+  auto td = TDomain::create(0.0, 10.0, 0.01);
+  auto x = std::make_unique<Tube>(td, "sin(t) + [-0.1, 0.1]");
+  const auto tree = x->synthesis_tree();
+  const Interval t(0.5, 9.5);
+  EXPECT_EQ(tree->eval(t), (*x)(t));
+  EXPECT_NO_THROW(tree->lower_range(t));
+  x->set(Interval(5, 6), 500);
+  EXPECT_THROW(tree->eval(t), Error);
+  EXPECT_THROW(tree->lower_range(t), Error);
+  EXPECT_THROW(tree->lower_at(1.0), Error);
+  EXPECT_EQ(tree->nb_slices(), 1000u);  // the tree as built
+  const auto fresh = x->synthesis_tree();
+  EXPECT_EQ(fresh->eval(t).ub(), 6.0);
+  td->sample(5.005);  // splits a slice of x: a modification
+  EXPECT_THROW(fresh->eval(t), Error);
+  const auto third = x->synthesis_tree();
+  EXPECT_EQ(third->nb_slices(), 1001u);
+  EXPECT_EQ(third->eval(t), (*x)(t));
+  x.reset();  // the tube is gone
+  EXPECT_THROW(third->eval(t), Error);
+  EXPECT_THROW(third->upper_prefix(3), Error);
+}
+
+// The bound: a scalar tube with its tree built holds at most 64 bytes
+// per slice (32 for slices and gates, the rest for the tree).
+TEST(SynthesisTree, TubeWithTreeHoldsAtMost64BytesPerSlice) {
+  const std::size_t n = 100000;
+  auto td = TDomain::create(0.0, static_cast<double>(n) * 0.01, 0.01);
+  ASSERT_EQ(td->nb_slices(), n);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> c(-1, 1), w(0, 0.5), p(0, 1);
+  for (const bool unbounded : {false, true}) {
+    std::vector<Interval> s(n);
+    for (auto& y : s) {
+      const double m = c(rng);
+      y = Interval(unbounded && p(rng) < 0.1 ? -kInf : m, unbounded && p(rng) < 0.1 ? kInf : m + w(rng));
+    }
+    const Tube x(td, s);
+    const std::size_t bare = x.memory_bytes();
+    EXPECT_LE(bare, 33 * n);
+    (void)x(Interval(1.0, 900.0));  // a long query builds the tree
+    const std::size_t with_tree = x.memory_bytes();
+    EXPECT_GT(with_tree, bare);
+    EXPECT_LE(with_tree, 64 * n) << static_cast<double>(with_tree) / static_cast<double>(n) << " bytes per slice";
+    EXPECT_LE(x.synthesis_tree()->memory_bytes(), 24 * n);
+  }
 }
 
 }  // namespace
