@@ -109,7 +109,7 @@ bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
 
 // [t] ∩= [y]⁻¹([z]), [z] ∩= [y]([t]) (with the derivative when given).
 bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
-  t &= w ? y.inverse(z, *w) : y.inverse(z);
+  t &= w ? y.inverse(z, *w, t) : y.inverse(z);
   if (t.is_empty()) return false;
   z &= w ? y.eval(t, *w) : y(t);
   return !z.is_empty();
@@ -183,7 +183,7 @@ bool contract_vector(Interval& t, IntervalVector& z, TubeVector& y, const TubeVe
   bool ok = prepare_time(t, y[0], sampling, where) && !z.is_empty();
   // [t] from every component first, then [z] and the tubes with the common [t].
   for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    t &= w ? y[i].inverse(z[i], (*w)[i]) : y[i].inverse(z[i]);
+    t &= w ? y[i].inverse(z[i], (*w)[i], t) : y[i].inverse(z[i]);
     ok = !t.is_empty();
   }
   for (std::size_t i = 0; ok && i < y.size(); ++i) {

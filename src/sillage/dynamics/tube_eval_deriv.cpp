@@ -3,6 +3,7 @@
 // polygon of CtcDeriv's slice rule (slice_deriv.h), computed here on a local
 // copy of the slice (the tube itself is not changed).
 #include <algorithm>
+#include <span>
 #include <string>
 
 #include "sillage/dynamics/ctc_deriv.h"
@@ -138,14 +139,14 @@ Interval Tube::eval(const Interval& t, const Tube& v) const {
   return r;
 }
 
-Interval Tube::inverse(const Interval& y, const Tube& v) const {
-  check_v(*this, v, "Tube::inverse(y, v)");
-  if (y.is_empty()) return Interval::empty();
-  const auto ts = td_->times();
-  const TubeData& dx = *data_;
-  const TubeData& dv = *v.data_;
+namespace {
+
+// Hull of the times of slices first..last where the polygon meets y, within
+// [ta, tb]; empty if none (or if a slice holds no trajectory).
+Interval inverse_polygon(const TubeData& dx, const TubeData& dv, std::span<const double> ts, const Interval& y,
+                         std::size_t first, std::size_t last, double ta, double tb) {
   double r_lo = rounding::kInf, r_hi = -rounding::kInf;
-  for (std::size_t k = 0; k < nb_slices(); ++k) {
+  for (std::size_t k = first; k <= last; ++k) {
     const LocalSlice s(dx, dv, ts, k);
     if (!s.ok) return Interval::empty();  // no trajectory at all
     if (!(s.slo <= y.ub() && y.lb() <= s.shi)) continue;
@@ -153,10 +154,31 @@ Interval Tube::inverse(const Interval& y, const Tube& v) const {
     // Upper bound of the polygon >= y⁻, and lower bound <= y⁺ (mirrored).
     if (!cut_times(s.ahi, s.bhi, s.vhi, s.vlo, y.lb(), s.t0, s.t1, lo, hi)) continue;
     if (!cut_times(-s.alo, -s.blo, -s.vlo, -s.vhi, -y.ub(), s.t0, s.t1, lo, hi)) continue;
+    lo = std::max(lo, ta);
+    hi = std::min(hi, tb);
+    if (lo > hi) continue;
     r_lo = std::min(r_lo, lo);
     r_hi = std::max(r_hi, hi);
   }
   return r_lo <= r_hi ? Interval::from_bounds_unchecked(r_lo, r_hi) : Interval::empty();
+}
+
+}  // namespace
+
+Interval Tube::inverse(const Interval& y, const Tube& v) const {
+  check_v(*this, v, "Tube::inverse(y, v)");
+  if (y.is_empty()) return Interval::empty();
+  const auto ts = td_->times();
+  return inverse_polygon(*data_, *v.data_, ts, y, 0, nb_slices() - 1, ts.front(), ts.back());
+}
+
+Interval Tube::inverse(const Interval& y, const Tube& v, const Interval& t) const {
+  const char* where = "Tube::inverse(y, v, t)";
+  check_v(*this, v, where);
+  if (y.is_empty() || t.is_empty()) return Interval::empty();
+  std::size_t first = 0, last = 0;
+  slice_range(*td_, t, first, last, where);  // Error if t is not inside the domain
+  return inverse_polygon(*data_, *v.data_, td_->times(), y, first, last, t.lb(), t.ub());
 }
 
 }  // namespace sillage

@@ -123,6 +123,8 @@ class Tube {
   // inverse(y). Rigorous; DimensionError if v is not on this TDomain.
   Interval eval(const Interval& t, const Tube& v) const;
   Interval inverse(const Interval& y, const Tube& v) const;
+  // The same restricted to t ∈ [t] (the slices meeting [t]): ⊆ [t].
+  Interval inverse(const Interval& y, const Tube& v, const Interval& t) const;
 
   // Low-level access for algorithms of this layer (contractors, arithmetic).
   // Callers that modify must keep sizes and call touch().

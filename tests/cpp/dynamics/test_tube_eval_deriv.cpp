@@ -149,3 +149,16 @@ TEST(TubeEvalDeriv, RandomTubesContainTruthAndAreTighter) {
     }
   }
 }
+
+TEST(TubeEvalDeriv, InverseRestrictedToATimeInterval) {
+  // y(t) = t on [0, 10]: the times where y meets [3, 7], within [2, 5] -> [3, 5].
+  auto td = TDomain::create(0.0, 10.0, 0.5);
+  const Tube y(td, "t"), w(td, Interval(1.0));
+  const Interval all = y.inverse(Interval(3, 7), w);
+  const Interval part = y.inverse(Interval(3, 7), w, Interval(2, 5));
+  EXPECT_TRUE(part.is_superset(Interval(3, 5)));
+  EXPECT_TRUE(part.is_subset(Interval(2.999999, 5.0)));
+  EXPECT_TRUE(part.is_subset(all));
+  EXPECT_TRUE(y.inverse(Interval(3, 7), w, Interval(8, 9)).is_empty());
+  EXPECT_THROW(y.inverse(Interval(3, 7), w, Interval(9, 11)), Error);
+}
