@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/ctc/shrink.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
@@ -37,9 +38,20 @@ bool prepare_time(Interval& t, const Tube& y, bool sampling, const char* where) 
   return true;
 }
 
+// Records the atoms of one tube (2k: gate k, 2k+1: slice k) that shrank by
+// more than a ratio, for the network; inactive without a list.
+struct ChangeLog {
+  double ratio = 0.0;
+  std::vector<std::size_t>* atoms = nullptr;
+  void note(std::size_t atom, const Interval& before, const Interval& after) const {
+    if (atoms && shrank(before, after, ratio)) atoms->push_back(atom);
+  }
+};
+
 // The gate fronts of (5.6); marks [glo, ghi] the gates it changed. False if a
 // gate became empty.
-bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi) {
+bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi,
+                  const ChangeLog& log) {
   const TDomain& td = *y.tdomain();
   const auto ts = td.times();
   const std::size_t n = td.nb_slices();
@@ -59,6 +71,7 @@ bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   const auto narrow = [&](std::size_t i, const Interval& h) {
     Interval& g = d.gates[i];
     if (h == g) return true;
+    log.note(2 * i, g, h);
     g = h;
     mark(i);
     return !g.is_empty();
@@ -116,86 +129,81 @@ bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
 }
 
 // The gate at a degenerate t that is a time point: ∩= [z].
-bool contract_gate(const Interval& t, const Interval& z, Tube& y) {
+bool contract_gate(const Interval& t, const Interval& z, Tube& y, const ChangeLog& log) {
   if (!t.is_degenerate()) return true;
   const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
   if (i < 0) return true;
   Interval& g = y.data().gates[static_cast<std::size_t>(i)];
   const Interval h = g & z;
   if (h != g) {
+    log.note(2 * static_cast<std::size_t>(i), g, h);
     g = h;
     y.touch();
   }
   return !h.is_empty();
 }
 
-bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w) {
+bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w, const ChangeLog& log) {
   std::size_t glo = y.nb_slices() + 1, ghi = 0;
-  const bool ok = sweep_fronts(t, z, y, w, glo, ghi);
+  const bool ok = sweep_fronts(t, z, y, w, glo, ghi, log);
   if (glo <= ghi) y.touch();
   if (!ok) return false;
   if (glo > ghi) return true;
   // The slices around the changed gates, by CtcDeriv's slice rule.
-  const std::size_t n = y.nb_slices();
-  return CtcDeriv().contract(y, w, glo > 0 ? glo - 1 : 0, std::min(ghi, n - 1));
-}
-
-}  // namespace
-
-bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
-  const char* where = "CtcEval::contract(t, z, y, w)";
-  check_domains(y, &w, where);
-  const bool ok = prepare_time(t, y, sampling_, where) && !z.is_empty() && contract_t_z(t, z, y, &w) &&
-                  contract_tube(t, z, y, w);
-  if (!ok) {
-    t.set_empty();
-    z.set_empty();
-    set_tube_empty(y);
+  const std::size_t n = y.nb_slices(), a = glo > 0 ? glo - 1 : 0, b = std::min(ghi, n - 1);
+  TubeData& d = y.data();
+  std::vector<Interval> before;
+  if (log.atoms) {
+    for (std::size_t k = a; k <= b; ++k) before.insert(before.end(), {d.gates[k], d.slices[k]});
+    before.push_back(d.gates[b + 1]);
   }
-  return ok;
-}
-
-bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
-  const char* where = "CtcEval::contract(t, z, y)";
-  const bool ok = prepare_time(t, y, sampling_, where) && !z.is_empty() && contract_t_z(t, z, y, nullptr) &&
-                  contract_gate(t, z, y);
-  if (!ok) {
-    t.set_empty();
-    z.set_empty();
-    set_tube_empty(y);
+  const bool deriv_ok = CtcDeriv().contract(y, w, a, b);
+  if (log.atoms) {
+    for (std::size_t k = a; k <= b; ++k) {
+      log.note(2 * k, before[2 * (k - a)], d.gates[k]);
+      log.note(2 * k + 1, before[2 * (k - a) + 1], d.slices[k]);
+    }
+    log.note(2 * (b + 1), before.back(), d.gates[b + 1]);
   }
-  return ok;
+  return deriv_ok;
 }
 
-namespace {
-
-void check_vector(const IntervalVector& z, const TubeVector& y, const TubeVector* w, const char* where) {
-  if (z.size() != y.size() || (w && w->size() != y.size())) {
+// Every case on component tubes (w empty: no derivative), one [t];
+// logs[i] (if given) receives the atoms of y[i] that shrank.
+bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
+                  bool sampling, const char* where, double ratio, std::vector<std::vector<std::size_t>>* logs) {
+  if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
-                         std::to_string(y.size()) + (w ? ", w " + std::to_string(w->size()) : std::string()));
+                         std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
   }
-  for (std::size_t i = 0; i < y.size(); ++i) check_domains(y[i], w ? &(*w)[i] : nullptr, where);
-}
-
-bool contract_vector(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector* w, bool sampling,
-                     const char* where) {
-  check_vector(z, y, w, where);
-  bool ok = prepare_time(t, y[0], sampling, where) && !z.is_empty();
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    check_domains(*y[i], w.empty() ? nullptr : w[i], where);
+    if (y[i]->tdomain() != y[0]->tdomain()) throw DimensionError(std::string(where) + ": y is on several TDomains");
+  }
+  bool ok = prepare_time(t, *y[0], sampling, where) && !z.is_empty();
   // [t] from every component first, then [z] and the tubes with the common [t].
   for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    t &= w ? y[i].inverse(z[i], (*w)[i], t) : y[i].inverse(z[i]);
+    t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
     ok = !t.is_empty();
   }
   for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    ok = contract_t_z(t, z[i], y[i], w ? &(*w)[i] : nullptr);
-    if (ok) ok = w ? contract_tube(t, z[i], y[i], (*w)[i]) : contract_gate(t, z[i], y[i]);
+    const ChangeLog log{ratio, logs ? &(*logs)[i] : nullptr};
+    ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
+    if (ok) ok = w.empty() ? contract_gate(t, z[i], *y[i], log) : contract_tube(t, z[i], *y[i], *w[i], log);
   }
   if (!ok) {
     t.set_empty();
     z.set_empty();
-    for (std::size_t i = 0; i < y.size(); ++i) set_tube_empty(y[i]);
+    for (Tube* yi : y) set_tube_empty(*yi);
   }
   return ok;
+}
+
+template <class V, class T>
+std::vector<T*> pointers(V& y) {
+  std::vector<T*> p;
+  for (std::size_t i = 0; i < y.size(); ++i) p.push_back(&y[i]);
+  return p;
 }
 
 }  // namespace
@@ -204,12 +212,34 @@ std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>&
   return make_eval_node(*this, args);
 }
 
+bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
+  IntervalVector zv{z};
+  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, "CtcEval::contract(t, z, y, w)", 0.0, nullptr);
+  z = ok ? zv[0] : Interval::empty();
+  return ok;
+}
+
+bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
+  IntervalVector zv{z};
+  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, "CtcEval::contract(t, z, y)", 0.0, nullptr);
+  z = ok ? zv[0] : Interval::empty();
+  return ok;
+}
+
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const {
-  return contract_vector(t, z, y, &w, sampling_, "CtcEval::contract(t, z, y, w)");
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_,
+                      "CtcEval::contract(t, z, y, w)", 0.0, nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
-  return contract_vector(t, z, y, nullptr, sampling_, "CtcEval::contract(t, z, y)");
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, "CtcEval::contract(t, z, y)", 0.0,
+                      nullptr);
+}
+
+bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
+                       double ratio, std::vector<std::vector<std::size_t>>& changed) const {
+  changed.assign(y.size(), {});
+  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, ratio, changed)", ratio, &changed);
 }
 
 }  // namespace sillage

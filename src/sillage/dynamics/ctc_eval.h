@@ -58,6 +58,11 @@ class CtcEval : public NetworkCtc {
   // Vector case, component-wise with one t (DimensionError on sizes).
   bool contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const;
   bool contract(Interval& t, IntervalVector& z, TubeVector& y) const;
+  // For network nodes: the vector case on component tubes (w empty: no
+  // derivative); changed[i] receives the atoms of y[i] (2k: gate k, 2k+1:
+  // slice k) that shrank by more than `ratio` (shrink.h).
+  bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
+                double ratio, std::vector<std::vector<std::size_t>>& changed) const;
 
  private:
   bool sampling_ = true;

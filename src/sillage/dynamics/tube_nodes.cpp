@@ -104,16 +104,12 @@ class EvalNode : public CnNode {
       for (std::size_t j = 0; j < ranges()[a].count; ++j) z[c++] = r.domains[ranges()[a].domain]->atom(ranges()[a].first + j);
     }
     const IntervalVector z0 = z;
-    std::vector<TubeData> before;
-    for (const auto& y : y_) before.push_back(y->tube().data());
-    bool ok = true;
-    if (nb_z_ == 1 && w_.empty()) {
-      ok = ctc_.contract(t, z[0], y_[0]->tube());
-    } else if (nb_z_ == 1) {
-      ok = ctc_.contract(t, z[0], y_[0]->tube(), w_[0]->tube());
-    } else {
-      ok = contract_components(t, z);
-    }
+    std::vector<Tube*> ys;
+    std::vector<const Tube*> ws;
+    for (const auto& y : y_) ys.push_back(&y->tube());
+    for (const auto& w : w_) ws.push_back(&w->tube());
+    std::vector<std::vector<std::size_t>> changed;
+    const bool ok = ctc_.contract(t, z, ys, ws, r.ratio, changed);
     // Write back t and z (intersected), report what shrank.
     const auto put = [&](std::size_t range, std::size_t j, std::size_t pos, const Interval& was, const Interval& now) {
       Domain& d = *r.domains[ranges()[range].domain];
@@ -128,23 +124,12 @@ class EvalNode : public CnNode {
       for (std::size_t j = 0; j < ranges()[a].count; ++j, ++c) put(a, j, offset(a) + j, z0[c], z[c]);
     }
     for (std::size_t i = 0; i < y_.size(); ++i) {
-      report_tube_changes(before[i], y_[i]->tube(), offset(1 + z_args_ + i), r.ratio, r.changed);
+      for (const std::size_t a : changed[i]) r.changed.push_back(offset(1 + z_args_ + i) + a);
     }
     return ok;
   }
 
  private:
-  // The vector case on the component tubes (they need not form a TubeVector).
-  bool contract_components(Interval& t, IntervalVector& z) const {
-    std::vector<Tube> ys, ws;
-    for (const auto& y : y_) ys.push_back(y->tube());
-    for (const auto& w : w_) ws.push_back(w->tube());
-    TubeVector yv(std::move(ys));
-    const bool ok = w_.empty() ? ctc_.contract(t, z, yv) : ctc_.contract(t, z, yv, TubeVector(std::move(ws)));
-    for (std::size_t i = 0; i < y_.size(); ++i) y_[i]->tube() = yv[i];
-    return ok;
-  }
-
   CtcEval ctc_;
   std::size_t nb_z_ = 0, z_args_ = 0;
   std::vector<std::shared_ptr<TubeDomain>> y_, w_;

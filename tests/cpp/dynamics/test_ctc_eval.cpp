@@ -4,6 +4,7 @@
 // truth kept on random tubes around a random trajectory.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -160,4 +161,24 @@ TEST(CtcEval, TruthIsNeverRemoved) {
     contracted += y.volume() < volume_before;
   }
   EXPECT_GE(contracted, 20);  // a thin tube and a wide [t] may teach nothing
+}
+
+TEST(CtcEval, NetworkFormLogsExactlyTheAtomsThatShrank) {
+  UnitProblem p;
+  const Tube before = p.y;
+  Interval t(4.5, 5.5);
+  IntervalVector z{Interval(0.0)};
+  std::vector<std::vector<std::size_t>> changed;
+  ASSERT_TRUE(CtcEval().contract(t, z, {&p.y}, {&p.w}, 0.0, changed));
+  ASSERT_EQ(changed.size(), 1u);
+  std::vector<std::size_t> expected;
+  for (std::size_t k = 0; k <= p.y.nb_slices(); ++k) {
+    if (p.y.gate(k) != before.gate(k)) expected.push_back(2 * k);
+    if (k < p.y.nb_slices() && p.y.slice(k) != before.slice(k)) expected.push_back(2 * k + 1);
+  }
+  std::vector<std::size_t> got = changed[0];
+  std::sort(got.begin(), got.end());
+  got.erase(std::unique(got.begin(), got.end()), got.end());
+  EXPECT_EQ(got, expected);
+  EXPECT_FALSE(expected.empty());
 }
