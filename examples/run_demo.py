@@ -29,6 +29,14 @@ EXAMPLES = [
     ("dead_reckoning", "py", "dead_reckoning.py"),
     ("causal_chain", "cpp", "example_causal_chain"),
     ("causal_chain", "py", "causal_chain.py"),
+    ("sin_ivp", "cpp", "example_sin_ivp"),
+    ("sin_ivp", "py", "sin_ivp.py"),
+    ("lissajous", "cpp", "example_lissajous"),
+    ("lissajous", "py", "lissajous.py"),
+    ("kidnapped_robot", "cpp", "example_kidnapped_robot"),
+    ("kidnapped_robot", "py", "kidnapped_robot.py"),
+    ("plaza1", "cpp", "example_plaza1"),
+    ("plaza1", "py", "plaza1.py"),
 ]
 
 

@@ -1,8 +1,9 @@
-// CtcEval (thesis Prop. 5.1): contract(t, z, y, w) on the caller's own
+// CtcEval (thesis Prop. 5.1) and CtcIncrement (odometry increments): contract(t, z, y, w) on the caller's own
 // Interval / IntervalVector / Tube / TubeVector objects, in place; a
 // NetworkCtc, so ContractorNetwork.add(CtcEval(), [t, z, y, w]) binds it.
 #include "bindings.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_increment.h"
 
 namespace sillage::python {
 
@@ -27,6 +28,16 @@ void init_ctc_eval(py::module_& m) {
             return w ? c.contract(t, z, y, *w) : c.contract(t, z, y);
           },
           py::arg("t"), py::arg("z"), py::arg("y"), py::arg("w") = nullptr);
+
+  py::class_<CtcIncrement, NetworkCtc, std::shared_ptr<CtcIncrement>>(
+      m, "CtcIncrement",
+      "x(t_{k+1}) - x(t_k) ∈ [i](k) for every slice k (odometry increments): contract(x, i) contracts the\n"
+      "gates of x in place (Tube or TubeVector); returns False if x is empty.")
+      .def(py::init<>())
+      .def("contract", py::overload_cast<Tube&, const Tube&>(&CtcIncrement::contract, py::const_), py::arg("x"),
+           py::arg("i"))
+      .def("contract", py::overload_cast<TubeVector&, const TubeVector&>(&CtcIncrement::contract, py::const_),
+           py::arg("x"), py::arg("i"));
 }
 
 }  // namespace sillage::python

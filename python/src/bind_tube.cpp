@@ -62,6 +62,7 @@ void init_tdomain(py::module_& m) {
       .def("slice_domain", &TDomain::slice_domain, py::arg("k"))
       .def("slice_width", &TDomain::slice_width, py::arg("k"), "Rigorous enclosure of t_{k+1} - t_k.")
       .def("is_time_point", &TDomain::is_time_point, py::arg("t"))
+      .def("time_index", &TDomain::time_index, py::arg("t"), "The index k with t_k == t, or -1 if t is not a time point.")
       .def("sample", &TDomain::sample, py::arg("t"), "Adds the time point t; returns its index.")
       .def("nb_attached", &TDomain::nb_attached)
       .def("__repr__", [](const TDomain& td) {

@@ -5,12 +5,20 @@
 
 namespace sillage {
 
-CnNode::CnNode(std::vector<AtomRange> ranges) : ranges_(std::move(ranges)) {
+CnNode::CnNode(std::vector<AtomRange> ranges) : ranges_(std::move(ranges)), watched_(ranges_) {
   offsets_.reserve(ranges_.size());
   for (const auto& r : ranges_) {
     offsets_.push_back(nb_atoms_);
     nb_atoms_ += r.count;
   }
+}
+
+void CnNode::watch_only(std::size_t r, std::size_t first, std::size_t count) {
+  const AtomRange& a = ranges_.at(r);
+  if (first < a.first || count > a.count || first - a.first > a.count - count) {
+    throw DimensionError("CnNode::watch_only: atoms outside range " + std::to_string(r));
+  }
+  watched_[r] = {a.domain, first, count};
 }
 
 CtcNode::CtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges)

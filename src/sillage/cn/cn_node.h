@@ -49,11 +49,21 @@ class CnNode {
   std::size_t nb_atoms() const { return nb_atoms_; }
   // Position of the first atom of range r.
   std::size_t offset(std::size_t r) const { return offsets_[r]; }
+  // The atoms whose shrinking wakes this node: its ranges, unless narrowed
+  // by watch_only (one entry per range, a sub-range of it; count 0: none).
+  const std::vector<AtomRange>& watched() const { return watched_; }
   // Contracts the domains. Returns false as soon as a domain became empty.
   virtual bool run(NodeRun& r) const = 0;
 
+ protected:
+  // Wakes this node only for atoms [first, first + count) of range r (a node
+  // whose contraction depends on part of a domain, e.g. CtcEval on the
+  // slices around [t]). Waking less never loses a solution.
+  void watch_only(std::size_t r, std::size_t first, std::size_t count);
+
  private:
   std::vector<AtomRange> ranges_;
+  std::vector<AtomRange> watched_;
   std::vector<std::size_t> offsets_;
   std::size_t nb_atoms_ = 0;
 };

@@ -131,7 +131,8 @@ void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
   const std::size_t id = nodes_.size();
   for (std::size_t g = 0; g < node->ranges().size(); ++g) {
     const AtomRange& a = node->ranges()[g];
-    watchers_[a.domain].add({id, a.first, a.count, node->offset(g)});
+    const AtomRange& w = node->watched()[g];
+    if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first)});
   }
   nodes_.push_back(std::move(node));
 }

@@ -2,14 +2,14 @@
 
 namespace sillage {
 
-Watchers::Watchers(std::size_t nb_atoms) {
-  if (nb_atoms <= kIndexedAtoms) per_atom_.resize(nb_atoms);
-}
-
 void Watchers::add(const Watch& w) {
-  watches_.push_back(w);
-  if (per_atom_.empty()) return;
-  for (std::size_t a = w.first; a < w.first + w.count; ++a) per_atom_[a].push_back(watches_.size() - 1);
+  if (w.first == 0 && w.count == nb_atoms_) {
+    whole_.push_back(w);
+    return;
+  }
+  if (per_atom_.empty()) per_atom_.resize(nb_atoms_);
+  parts_.push_back(w);
+  for (std::size_t a = w.first; a < w.first + w.count; ++a) per_atom_[a].push_back(parts_.size() - 1);
 }
 
 }  // namespace sillage

@@ -1,8 +1,9 @@
 #pragma once
-// Watchers: for one domain, the nodes acting on each of its atoms, and where
-// that atom sits among the node's atoms. Small domains (intervals, boxes)
-// index every atom; large ones (tubes: 2N+1 atoms, few nodes each) keep the
-// list of ranges and scan it, which costs no memory per atom.
+// Watchers: for one domain, the nodes to wake when one of its atoms shrinks,
+// and where that atom sits among the node's atoms. Watches of the whole
+// domain (the usual case for tube contractors) are kept in a list that every
+// atom matches, which costs no memory per atom; watches of part of a domain
+// (a box component, the few slices a CtcEval looks at) are indexed per atom.
 #include <cstddef>
 #include <vector>
 
@@ -16,25 +17,21 @@ class Watchers {
     std::size_t offset;        // position of atom `first` in the node
   };
 
-  explicit Watchers(std::size_t nb_atoms);
+  explicit Watchers(std::size_t nb_atoms) : nb_atoms_(nb_atoms) {}
 
   void add(const Watch& w);
   // Calls f(node, position in node) for each watch covering atom a.
   template <class F>
   void for_each(std::size_t a, F&& f) const {
-    if (!per_atom_.empty()) {
-      for (const std::size_t w : per_atom_[a]) f(watches_[w].node, watches_[w].offset + a - watches_[w].first);
-      return;
-    }
-    for (const Watch& w : watches_) {
-      if (a >= w.first && a - w.first < w.count) f(w.node, w.offset + a - w.first);
-    }
+    for (const Watch& w : whole_) f(w.node, w.offset + a);
+    if (per_atom_.empty()) return;
+    for (const std::size_t i : per_atom_[a]) f(parts_[i].node, parts_[i].offset + a - parts_[i].first);
   }
 
  private:
-  static constexpr std::size_t kIndexedAtoms = 1024;
-  std::vector<Watch> watches_;
-  std::vector<std::vector<std::size_t>> per_atom_;  // watch indices; empty if not indexed
+  std::size_t nb_atoms_;
+  std::vector<Watch> whole_, parts_;
+  std::vector<std::vector<std::size_t>> per_atom_;  // indices in parts_; allocated with the first part
 };
 
 }  // namespace sillage

@@ -1,5 +1,6 @@
 #include "sillage/dynamics/tube_nodes.h"
 
+#include <algorithm>
 #include <string>
 
 #include "sillage/cn/tube_changes.h"
@@ -37,10 +38,13 @@ std::vector<std::shared_ptr<TubeDomain>> tubes(const std::vector<BoundDomain>& a
   return out;
 }
 
-class DerivNode : public CnNode {
+// x' = v (CtcDeriv) or x(t_{k+1}) - x(t_k) ∈ [v](k) (CtcIncrement), x and v
+// tubes (or components) in pairs.
+template <class C>
+class PairNode : public CnNode {
  public:
-  DerivNode(CtcDeriv ctc, const std::vector<BoundDomain>& args) : CnNode(ranges_of(args)), ctc_(ctc) {
-    const std::string who = "ContractorNetwork::add(CtcDeriv)";
+  PairNode(C ctc, const std::vector<BoundDomain>& args) : CnNode(ranges_of(args)), ctc_(ctc) {
+    const std::string who = "ContractorNetwork::add(" + ctc_.name() + ")";
     if (args.empty() || args.size() % 2 != 0) {
       throw DimensionError(who + ": expects x and v with as many components, got " + std::to_string(args.size()) +
                            " tubes");
@@ -52,7 +56,7 @@ class DerivNode : public CnNode {
       throw DimensionError(who + ": x and v are not on one TDomain");
     }
   }
-  std::string name() const override { return "CtcDeriv"; }
+  std::string name() const override { return ctc_.name(); }
   bool run(NodeRun& r) const override {
     for (std::size_t i = 0; i < x_.size(); ++i) {
       Tube& x = x_[i]->tube();
@@ -65,7 +69,7 @@ class DerivNode : public CnNode {
   }
 
  private:
-  CtcDeriv ctc_;
+  C ctc_;
   std::vector<std::shared_ptr<TubeDomain>> x_, v_;
 };
 
@@ -90,6 +94,16 @@ class EvalNode : public CnNode {
     if (rest == 2 * nb_z_) w_ = tubes(args, i + nb_z_, nb_z_, who, "w");
     if (!w_.empty() && w_.front()->tube().tdomain() != y_.front()->tube().tdomain()) {
       throw DimensionError(who + ": y and w are not on one TDomain");
+    }
+    // Wake only for the slices around [t] (it only shrinks): what happens
+    // elsewhere reaches [t] and [z] through those slices, or is CtcDeriv's.
+    const TDomain& td = *y_.front()->tube().tdomain();
+    const Interval t = args[0].domain->atom(args[0].range.first) & td.t0_tf();
+    if (!t.is_empty()) {
+      std::size_t first = 0, last = 0;
+      slice_range(td, t, first, last, "ContractorNetwork::add(CtcEval)");
+      const std::size_t lo = first > 0 ? first - 1 : 0, hi = std::min(last + 1, td.nb_slices() - 1);
+      for (std::size_t r = 1 + z_args_; r < args.size(); ++r) watch_only(r, 2 * lo, 2 * (hi - lo + 1) + 1);
     }
   }
   std::string name() const override { return "CtcEval"; }
@@ -138,7 +152,11 @@ class EvalNode : public CnNode {
 }  // namespace
 
 std::shared_ptr<const CnNode> make_deriv_node(const CtcDeriv& ctc, const std::vector<BoundDomain>& args) {
-  return std::make_shared<DerivNode>(ctc, args);
+  return std::make_shared<PairNode<CtcDeriv>>(ctc, args);
+}
+
+std::shared_ptr<const CnNode> make_increment_node(const CtcIncrement& ctc, const std::vector<BoundDomain>& args) {
+  return std::make_shared<PairNode<CtcIncrement>>(ctc, args);
 }
 
 std::shared_ptr<const CnNode> make_eval_node(const CtcEval& ctc, const std::vector<BoundDomain>& args) {

@@ -184,3 +184,47 @@ TEST(ContractorNetworkTube, DeadReckoningNetworkKeepsTheTruth) {
     EXPECT_LT(v->max_thickness(), 1.0);
   }
 }
+
+namespace {
+
+// A node on a whole tube that asks to be woken only by atoms [0, 20): counts its runs.
+class PartialWatch : public NetworkCtc {
+ public:
+  std::string name() const override { return "PartialWatch"; }
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override {
+    return std::make_shared<Node>(args[0].range, runs);
+  }
+  std::shared_ptr<std::atomic<int>> runs = std::make_shared<std::atomic<int>>(0);
+
+ private:
+  struct Node : CnNode {
+    Node(AtomRange r, std::shared_ptr<std::atomic<int>> runs) : CnNode({r}), runs_(std::move(runs)) {
+      watch_only(0, 0, 20);
+    }
+    std::string name() const override { return "PartialWatch"; }
+    bool run(NodeRun&) const override {
+      ++*runs_;
+      return true;
+    }
+    std::shared_ptr<std::atomic<int>> runs_;
+  };
+};
+
+}  // namespace
+
+TEST(ContractorNetworkTube, NodesWatchingPartOfATubeAreWokenOnlyThere) {
+  auto td = TDomain::create(0.0, 1.0, 0.01);
+  auto x = std::make_shared<Tube>(td, Interval(-10, 10));
+  const auto far = std::make_shared<PartialWatch>(), near = std::make_shared<PartialWatch>();
+  ContractorNetwork cn;
+  cn.add(far, {x});
+  cn.add(std::make_shared<SliceObservation>(42, Interval(1, 2)), {x});  // atom 85: outside [0, 20)
+  cn.contract();
+  EXPECT_EQ(far->runs->load(), 1);  // round 1 only
+  ContractorNetwork cn2;
+  auto y = std::make_shared<Tube>(td, Interval(-10, 10));
+  cn2.add(near, {y});
+  cn2.add(std::make_shared<SliceObservation>(3, Interval(1, 2)), {y});  // atom 7: inside
+  cn2.contract();
+  EXPECT_EQ(near->runs->load(), 2);
+}

@@ -1,0 +1,117 @@
+"""Real data: CMU "Plaza 1" (../shared/data/plaza1, read in place; --data DIR
+to point elsewhere). Dead reckoning from the odometry (distance and drifting
+heading change per period), then the same plus the 3529 radio ranges to 4
+beacons, each at an uncertain time (CtcEval). The same network and stated error
+bounds as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
+the position tube. Figures: the map (tube, truth, beacons) and the thickness."""
+import argparse
+import math
+import time
+from pathlib import Path
+
+import sillage
+from example_args import print_result
+from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcIncrement, DomainRef, Function, Interval,
+                     IntervalVector, TDomain, Tube, TubeVector)
+
+# The error model (see the C++ example for the reasons of each value).
+POS0, HEADING0 = 0.1, 0.05            # m, rad: the start, from the ground truth
+GYRO_BIAS, TURN_MAX = 5e-4, 0.8       # rad/s
+DIST_REL, DIST_OVER, DIST_UNDER = 0.02, 0.07, 0.001
+SPEED_MAX = 5.0                       # m/s
+RANGE_ERR = (-1.0, 7.0)               # measured - true, m: ranges biased long
+TIME_ERR = 0.2                        # s
+
+
+def load(folder):
+    gt, odo = CsvTable.read(str(folder / "ground_truth.csv")), CsvTable.read(str(folder / "odometry.csv"))
+    rg, bc = CsvTable.read(str(folder / "ranges.csv")), CsvTable.read(str(folder / "beacons.csv"))
+    beacons = {int(i): (x, y) for i, x, y in zip(bc.values("beacon_id"), bc.values("x_m"), bc.values("y_m"))}
+    return dict(t=gt.values("t_s"), x=gt.values("x_m"), y=gt.values("y_m"), heading=gt.values("heading_rad"),
+                dist=odo.values("delta_dist_m"), dpsi=odo.values("delta_heading_drp_rad"),
+                rt=rg.values("t_s"), rid=rg.values("beacon_id"), r=rg.values("range_m"), beacons=beacons)
+
+
+def slice_tube(td, slices):
+    """Per-slice values; gates are hulls of their two slices (no information of their own)."""
+    n = len(slices)
+    gates = [slices[max(k - 1, 0)] | slices[min(k, n - 1)] for k in range(n + 1)]
+    return Tube(td, slices, gates)
+
+
+def solve(d, with_ranges):
+    t0 = time.process_time()
+    td = TDomain(list(d["t"]))
+    n = td.nb_slices()
+    widths = [td.slice_width(k) for k in range(n)]
+    dpsi = [Interval(d["dpsi"][k]) + widths[k] * Interval(-GYRO_BIAS, GYRO_BIAS) for k in range(n)]
+    dist = [(Interval(d["dist"][k]) * Interval(1 - DIST_REL, 1 + DIST_REL) + Interval(-DIST_OVER, DIST_UNDER))
+            & Interval(0, math.inf) for k in range(n)]
+    psi = Tube(td)
+    psi.set_gate(0, Interval(d["heading"][0]) + Interval(-HEADING0, HEADING0))
+    heading = sillage.ContractorNetwork()
+    heading.add(CtcIncrement(), [psi, slice_tube(td, dpsi)])
+    heading.add(CtcDeriv(), [psi, Tube(td, Interval(-TURN_MAX, TURN_MAX))])
+    heading.contract()
+    # increments of p per slice, slice by slice
+    inc = TubeVector([slice_tube(td, [dist[k] * sillage.cos(psi.slice(k)) for k in range(n)]),
+                      slice_tube(td, [dist[k] * sillage.sin(psi.slice(k)) for k in range(n)])])
+    speed, v, p = Tube(td, Interval(0, SPEED_MAX)), TubeVector(td, 2), TubeVector(td, 2)
+    p.set_gate(0, IntervalVector([Interval(d["x"][0] - POS0, d["x"][0] + POS0),
+                                  Interval(d["y"][0] - POS0, d["y"][0] + POS0)]))
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcFunction(Function(["a", "s", "h"], "a - s*cos(h)")), [v[0], speed, psi])
+    cn.add(CtcFunction(Function(["a", "s", "h"], "a - s*sin(h)")), [v[1], speed, psi])
+    cn.add(CtcIncrement(), [p, inc])
+    cn.add(CtcDeriv(), [p, v])
+    keep = []  # the measurement domains (the network holds them too)
+    if with_ranges:
+        ev = CtcEval()
+        for tj, bid, r in zip(d["rt"], d["rid"], d["r"]):
+            t = Interval(tj - TIME_ERR, tj + TIME_ERR) & td.t0_tf()
+            bx, by = d["beacons"][int(bid)]
+            q = IntervalVector(2)
+            rng = Interval(r - RANGE_ERR[1], r - RANGE_ERR[0]) & Interval(0, math.inf)
+            cn.add(ev, [t, q, p, v])
+            cn.add(CtcFunction(Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)"), rng), [q])
+            keep.append((t, q))
+    stats = cn.contract()
+    cpu = time.process_time() - t0
+    gx, gy = p[0].gates_array(), p[1].gates_array()
+    inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
+    diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]
+    return p, stats, cpu, inside, sum(diam) / len(diam), max(diam), len(keep)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--out", default="out")
+    ap.add_argument("--data", default=str(Path(__file__).resolve().parents[3] / "shared" / "data" / "plaza1"))
+    args = ap.parse_args()
+    out, folder = Path(args.out), Path(args.data)
+    out.mkdir(parents=True, exist_ok=True)
+    if not (folder / "odometry.csv").exists():
+        print(f"no plaza1 data at {folder} (pass --data DIR)")
+        print_result("plaza1", "skipped: no data", True)
+        return
+    d = load(folder)
+    ok, summary, figures = True, "", []
+    truth = (sillage.Trajectory(list(d["t"]), list(d["x"])), sillage.Trajectory(list(d["t"]), list(d["y"])))
+    for with_ranges in (False, True):
+        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges)
+        n = len(d["t"])
+        label = "odometry + ranges" if with_ranges else "odometry only"
+        print(f"{label}: {nr} ranges, {stats.iterations} rounds, {stats.contractor_calls} contractor runs, "
+              f"{cpu:.2f} s CPU; truth inside at {inside}/{n} time points; box diameter mean {mean_d:.2f} m, "
+              f"max {max_d:.2f} m")
+        ok = ok and inside == n and not stats.empty
+        summary += f"{label}: truth inside {100 * inside / n:.1f} %, mean/max diameter {mean_d:.2f}/{max_d:.2f} m; "
+        tag = "ranges" if with_ranges else "odometry"
+        fig = sillage.tube_vector_figure(p, 0, 1, f"plaza1 (Python): {label}", sillage.TubeStyle(), *truth)
+        fig.save(str(out / f"plaza1_map_{tag}_py.svg"))
+        figures.append((f"plaza1_map_{tag}_py.svg", f"plaza1 map, {label}, Python"))
+    print_result("plaza1", summary, ok, figures)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,48 @@
+#include "sillage/dynamics/ctc_increment.h"
+
+#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+bool CtcIncrement::contract(Tube& x, const Tube& i) const {
+  if (x.tdomain() != i.tdomain()) throw DimensionError("CtcIncrement::contract(x, i): x and i are not on one TDomain");
+  TubeData& d = x.data();
+  const auto& inc = i.data().slices;
+  const std::size_t n = x.nb_slices();
+  bool changed = false, ok = true;
+  const auto narrow = [&](Interval& g, const Interval& h) {
+    const Interval r = g & h;
+    if (r != g) {
+      g = r;
+      changed = true;
+    }
+    ok = ok && !r.is_empty();
+  };
+  for (std::size_t k = 0; k < n && ok; ++k) narrow(d.gates[k + 1], d.gates[k] + inc[k]);
+  for (std::size_t k = n; k-- > 0 && ok;) narrow(d.gates[k], d.gates[k + 1] - inc[k]);
+  if (!ok) {
+    for (Interval& v : d.slices) v.set_empty();
+    for (Interval& v : d.gates) v.set_empty();
+    changed = true;
+  }
+  if (changed) x.touch();
+  return ok;
+}
+
+bool CtcIncrement::contract(TubeVector& x, const TubeVector& i) const {
+  if (x.size() != i.size()) {
+    throw DimensionError("CtcIncrement::contract(x, i): x has " + std::to_string(x.size()) + " components, i " +
+                         std::to_string(i.size()));
+  }
+  bool ok = true;
+  for (std::size_t c = 0; c < x.size() && ok; ++c) ok = contract(x[c], i[c]);
+  if (!ok) x.set(IntervalVector(x.size(), Interval::empty()));  // no trajectory: every component empty
+  return ok;
+}
+
+std::shared_ptr<const CnNode> CtcIncrement::make_node(const std::vector<BoundDomain>& args) const {
+  return make_increment_node(*this, args);
+}
+
+}  // namespace sillage

@@ -1,0 +1,35 @@
+#pragma once
+// CtcIncrement: x(t_{k+1}) − x(t_k) ∈ [i](k) for every slice k, where [i](k)
+// (the slice k of a tube i) encloses the integral of x' over the slice: the
+// discrete form of x' = v that odometry gives (a distance or a heading change
+// per sampling period, not an instantaneous rate). Only the gates of x are
+// contracted, by a forward then a backward sweep:
+//   [x](t_{k+1}) ∩= [x](t_k) + [i](k),   [x](t_k) ∩= [x](t_{k+1}) − [i](k).
+// One forward-backward call reaches the fixed point of these rules. The
+// slices of x are left to CtcDeriv with bounds of the instantaneous rate,
+// which are looser than the increments but hold inside the slices.
+//
+// Empty: an empty increment or gate empties x; contract returns false.
+// In a ContractorNetwork: cn.add(ctc, {x, i}) with tubes or tube vectors.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/network_ctc.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+class CtcIncrement : public NetworkCtc {
+ public:
+  CtcIncrement() = default;
+  std::string name() const override { return "CtcIncrement"; }
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
+
+  // DimensionError if x and i are not on one TDomain.
+  bool contract(Tube& x, const Tube& i) const;
+  bool contract(TubeVector& x, const TubeVector& i) const;
+};
+
+}  // namespace sillage
