@@ -35,6 +35,10 @@ EXAMPLES = [
     ("lissajous", "py", "lissajous.py"),
     ("kidnapped_robot", "cpp", "example_kidnapped_robot"),
     ("kidnapped_robot", "py", "kidnapped_robot.py"),
+    ("lowcost_beacons", "cpp", "example_lowcost_beacons"),
+    ("lowcost_beacons", "py", "lowcost_beacons.py"),
+    ("drifting_clock", "cpp", "example_drifting_clock"),
+    ("drifting_clock", "py", "drifting_clock.py"),
     ("plaza1", "cpp", "example_plaza1"),
     ("plaza1", "py", "plaza1.py"),
 ]

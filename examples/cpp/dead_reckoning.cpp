@@ -5,10 +5,9 @@
 // resolutions, every one guaranteed (outward rounding included):
 //  1. plain:  x3, x4 = primitives of [u]; v = x4 cos x3 by tube arithmetic;
 //             x1, x2 = primitives of [v] (slice-wise, thesis (3.8));
-//  2. cn:     CN (3.18) with [v] unbounded and the pointwise contractor of
-//             v - x4 cos x3 = 0 (tube_ctc.h) on every slice and gate, then
-//             the primitives intersected, 3 iterations: same as plain, since
-//             nothing flows back from x to x3, x4;
+//  2. cn:     CN (3.18) in a ContractorNetwork: x' = v by CtcDeriv (the
+//             optimal slice rule of chapter 4, gates and polygons), the
+//             pointwise v1 = x4 cos x3, v2 = x4 sin x3 on every slice and gate;
 //  3. taylor: gates integrated with a first-order Taylor form per slice
 //             (tube_taylor.h), ∫_slice v ∈ δ v(t_k) + δ²/2 [v'](k) from
 //             either gate, v(t_k) from the GATES of x3, x4 and
@@ -32,6 +31,8 @@
 #include <vector>
 
 #include "example_args.h"
+#include "sillage/cn/contractor_network.h"
+#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 #include "sillage/interval/elementary.h"
@@ -79,22 +80,22 @@ TubeVector solve_plain(const Problem& p) {
 }
 
 // ---- 2. the contractor network (3.18) ----
+// x' = v (CtcDeriv, the differential contractor of chapter 4, optimal per
+// slice), v1 = x4 cos x3, v2 = x4 sin x3 (pointwise), v3 = u1, v4 = u2,
+// x(0) ∈ x0: one ContractorNetwork, propagated to its fixed point.
 TubeVector solve_cn(const Problem& p) {
-  const IntervalVector x0 = initial_box();
-  TubeVector x(p.td, 4), v(p.td, 4);
-  const CtcFunction c1(Function({"x3", "x4", "v"}, "x4*cos(x3) - v"));
-  const CtcFunction c2(Function({"x3", "x4", "v"}, "x4*sin(x3) - v"));
-  for (int it = 0; it < 3; ++it) {  // the thesis runs 3 iterations; stop earlier at the fixed point
-    const TubeVector before = x;
-    v[2] &= p.u1;  // v3 = u1, v4 = u2: nothing flows back to the inputs
-    v[3] &= p.u2;
-    for (std::size_t i = 2; i < 4; ++i) x[i] &= primitive(v[i], x0[i]);
-    contract(c1, {&x[2], &x[3], &v[0]});
-    contract(c2, {&x[2], &x[3], &v[1]});
-    for (std::size_t i = 0; i < 2; ++i) x[i] &= primitive(v[i], x0[i]);
-    if (x == before) break;
-  }
-  return x;
+  auto x = std::make_shared<TubeVector>(p.td, 4), v = std::make_shared<TubeVector>(p.td, 4);
+  x->set_gate(0, initial_box());
+  (*v)[2] = p.u1;
+  (*v)[3] = p.u2;
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*cos(x3) - v")),
+         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 0)});
+  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*sin(x3) - v")),
+         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 1)});
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.contract();
+  return *x;
 }
 
 // ---- 3. Taylor on the gates ----
@@ -291,7 +292,8 @@ int main(int argc, char** argv) {
     std::printf("  nominal RK4 p(tf) = (%.4f, %.4f)\n", nom.x.back()[0], nom.x.back()[1]);
     if (dt == 0.005) {
       summary = "delta=0.005: p(64) in " + box_str(results[0].second[0].gate(N), results[0].second[1].gate(N)) +
-                " (plain), " + box_str(results[2].second[0].gate(N), results[2].second[1].gate(N)) + " (taylor), " +
+                " (plain), " + box_str(results[1].second[0].gate(N), results[1].second[1].gate(N)) + " (cn), " +
+                box_str(results[2].second[0].gate(N), results[2].second[1].gate(N)) + " (taylor), " +
                 box_str(results[3].second[0].gate(N), results[3].second[1].gate(N)) + " (linear)";
       std::vector<double> ts, x1, x2;
       for (std::size_t j = 0; j < nom.t.size(); j += 4) ts.push_back(nom.t[j]), x1.push_back(nom.x[j][0]),

@@ -14,6 +14,18 @@ def out_dir(description):
     return out
 
 
+def out_dir_and_step(description, dt, ratio=0.0):
+    """--out (created), --dt (slice width) and --ratio (network wake ratio): (out, args)."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--out", default="out", help="folder for the figures")
+    ap.add_argument("--dt", type=float, default=dt, help="slice width")
+    ap.add_argument("--ratio", type=float, default=ratio, help="wake ratio of the network (0: true fixed point)")
+    args = ap.parse_args()
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    return out, args
+
+
 def print_result(name, result, check, figures=()):
     print("RESULT " + json.dumps({"name": name, "result": result, "check": bool(check),
                                   "figures": [list(f) for f in figures]}))

@@ -146,6 +146,25 @@ std::string ContractorNetwork::label(std::size_t d) const {
   return "domain " + std::to_string(d) + " (" + domains_[d]->kind() + ")";
 }
 
+namespace {
+
+// Sorts v and drops duplicates; v holds positions < n. A long list is
+// bucketed through `mark` (n flags) rather than sorted.
+void sort_unique(std::vector<std::size_t>& v, std::size_t n, std::vector<char>& mark) {
+  if (v.size() < 64 || v.size() < n / 16) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return;
+  }
+  mark.assign(n, 0);
+  for (const std::size_t p : v) mark[p] = 1;
+  v.clear();
+  for (std::size_t p = 0; p < n; ++p)
+    if (mark[p]) v.push_back(p);
+}
+
+}  // namespace
+
 ContractStats ContractorNetwork::contract() {
   const auto start = std::chrono::steady_clock::now();
   ContractStats stats;
@@ -163,6 +182,7 @@ ContractStats ContractorNetwork::contract() {
   if (stats.empty) return finish();
 
   std::vector<std::size_t> round(nodes_.size()), next, changed;
+  std::vector<char> mark;
   for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
   std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
   // pending[i]: positions of node i's atoms that shrank since it last ran.
@@ -174,8 +194,7 @@ ContractStats ContractorNetwork::contract() {
       changed.clear();
       const CnNode& node = *nodes_[i];
       auto& dirty = pending[i];
-      std::sort(dirty.begin(), dirty.end());
-      dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+      sort_unique(dirty, node.nb_atoms(), mark);
       NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
       fresh[i] = 0;
       ++stats.contractor_calls;

@@ -125,6 +125,16 @@ bool TubeCtcNode::run(NodeRun& r) const {
   std::vector<std::size_t> atoms;
   bool all = r.all;
   if (!all) {
+    // r.dirty is sorted, so within one tube the atoms (with the gates of
+    // the changed slices) come out sorted; several tubes need a sort.
+    bool sorted = true;
+    const auto push = [&](std::size_t i) {
+      if (!atoms.empty() && i <= atoms.back()) {
+        if (i == atoms.back()) return;
+        sorted = false;
+      }
+      atoms.push_back(i);
+    };
     for (const std::size_t pos : r.dirty) {
       const std::size_t g = static_cast<std::size_t>(
           std::upper_bound(ranges().begin(), ranges().end(), pos,
@@ -135,19 +145,22 @@ bool TubeCtcNode::run(NodeRun& r) const {
         break;
       }
       const std::size_t i = pos - offset(g);
-      atoms.push_back(i);
-      if (i & 1) {  // a slice: its two gates
-        atoms.push_back(i - 1);
-        atoms.push_back(i + 1);
+      if (i & 1) {  // a slice: with its two gates
+        push(i - 1);
+        push(i);
+        push(i + 1);
+      } else {
+        push(i);
       }
+    }
+    if (!sorted) {
+      std::sort(atoms.begin(), atoms.end());
+      atoms.erase(std::unique(atoms.begin(), atoms.end()), atoms.end());
     }
   }
   if (all) {
     atoms.resize(nb_time_atoms_);
     for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
-  } else {
-    std::sort(atoms.begin(), atoms.end());
-    atoms.erase(std::unique(atoms.begin(), atoms.end()), atoms.end());
   }
 
   // Constants: read, intersect with every contracted time element, write back.

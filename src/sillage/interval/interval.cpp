@@ -77,18 +77,6 @@ double Interval::mig() const {
   return std::min(std::fabs(lo_), std::fabs(hi_));
 }
 
-Interval Interval::operator&(const Interval& y) const {
-  const double l = std::max(lo_, y.lo_), u = std::min(hi_, y.hi_);
-  if (!(l <= u)) return empty();
-  return {l, u, Unchecked{}};
-}
-
-Interval Interval::operator|(const Interval& y) const {
-  if (is_empty()) return y;
-  if (y.is_empty()) return *this;
-  return {std::min(lo_, y.lo_), std::max(hi_, y.hi_), Unchecked{}};
-}
-
 std::pair<Interval, Interval> Interval::bisect(double ratio) const {
   if (!(ratio > 0 && ratio < 1)) {
     throw Error("Interval::bisect: ratio must lie in (0, 1), got " + number_text(ratio));

@@ -73,8 +73,18 @@ class Interval {
   double volume() const { return is_empty() ? 0.0 : diam(); }
 
   // ---- set operations ----
-  Interval operator&(const Interval& y) const;  // intersection (2.6), (2.18)
-  Interval operator|(const Interval& y) const;  // hull of the union (2.8), (2.17)
+  // Intersection (2.6), (2.18) and hull of the union (2.8), (2.17); inline:
+  // contractors call them on every slice.
+  Interval operator&(const Interval& y) const {
+    const double l = std::max(lo_, y.lo_), u = std::min(hi_, y.hi_);
+    if (!(l <= u)) return empty();
+    return {l, u, Unchecked{}};
+  }
+  Interval operator|(const Interval& y) const {
+    if (is_empty()) return y;
+    if (y.is_empty()) return *this;
+    return {std::min(lo_, y.lo_), std::max(hi_, y.hi_), Unchecked{}};
+  }
   Interval& operator&=(const Interval& y) { return *this = *this & y; }
   Interval& operator|=(const Interval& y) { return *this = *this | y; }
   // Split at lb + ratio * diam (at 0 or a finite point if unbounded).

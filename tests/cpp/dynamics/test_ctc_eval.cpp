@@ -9,6 +9,7 @@
 #include <memory>
 #include <random>
 
+#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/error.h"
 #include "sillage/tube/trajectory.h"
@@ -181,4 +182,49 @@ TEST(CtcEval, NetworkFormLogsExactlyTheAtomsThatShrank) {
   got.erase(std::unique(got.begin(), got.end()), got.end());
   EXPECT_EQ(got, expected);
   EXPECT_FALSE(expected.empty());
+}
+
+// The definition (5.6) evaluated on a fine sampling of t1 ∈ [t], at the gates
+// after [t]: hull over t1 of ([y](t1) ∩ [z]) + ∫_{t1}^{t_i} [w], ∩ [y](t_i).
+Interval reference_gate(const Tube& y, const Tube& w, const Interval& t, const Interval& z, std::size_t i) {
+  const TDomain& td = *y.tdomain();
+  Interval hull = Interval::empty();
+  const int samples = 2000;
+  for (int s = 0; s <= samples; ++s) {
+    const double t1 = t.lb() + (t.ub() - t.lb()) * s / samples;
+    const Interval v = y(t1) & z;
+    if (v.is_empty()) continue;
+    // ∫_{t1}^{t_i} [w]: the rest of t1's slice, then whole slices.
+    std::size_t k = td.slice_index(t1);
+    Interval integral = (Interval(td.t(k + 1)) - Interval(t1)) * w.slice(k);
+    for (std::size_t j = k + 1; j < i; ++j) integral += td.slice_width(j) * w.slice(j);
+    hull |= v + integral;
+  }
+  return hull & y.gate(i);
+}
+
+TEST(CtcEval, MatchesTheDefinitionOnFineSamplingUpToTheSlices) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    auto td = TDomain::create(0.0, 10.0, 1.0);
+    Tube y(td, "sin(t) + [-0.8, 0.8]");
+    const Tube w(td, "cos(t) + [-0.2, 0.2]");
+    CtcDeriv().contract(y, w);  // a tube consistent with its derivative, as in a network
+    const double a = 2 + 4 * u(rng), b = a + 0.3 + 1.5 * u(rng);
+    const double c = std::sin(a + (b - a) * u(rng));
+    Interval t(a, b), z(c - 0.05, c + 0.05);
+    const Tube y0 = y;
+    CtcEval ctc;
+    ctc.enable_time_sampling(false);
+    ASSERT_TRUE(ctc.contract(t, z, y, w));
+    for (std::size_t i = td->slice_index(b) + 1; i <= td->nb_slices(); ++i) {
+      const Interval ref = reference_gate(y0, w, Interval(a, b), Interval(c - 0.05, c + 0.05), i);
+      // Never tighter than the definition (the sampled hull is inside the exact one)...
+      EXPECT_TRUE(ref.is_subset(y.gate(i))) << trial << " gate " << i << ": " << y.gate(i) << " vs " << ref;
+      // ...and no wider than it, up to one slice of [w]: for t1 inside a slice we use [0, δ][w](k).
+      const double margin = 1.0 * w.slice(td->slice_index(a)).mag() + 1.0 * w.slice(td->slice_index(b)).mag();
+      EXPECT_LE(y.gate(i).diam(), ref.diam() + 2 * margin + 1e-9) << trial << " gate " << i;
+    }
+  }
 }
