@@ -108,8 +108,14 @@ def main():
         summary += f"{label}: truth inside {100 * inside / n:.1f} %, mean/max diameter {mean_d:.2f}/{max_d:.2f} m; "
         tag = "ranges" if with_ranges else "odometry"
         fig = sillage.tube_vector_figure(p, 0, 1, f"plaza1 (Python): {label}", sillage.TubeStyle(), *truth)
+        for bx, by in d["beacons"].values():
+            fig.draw_point([bx, by], 5.0, sillage.Style("#d62728", "black"))
         fig.save(str(out / f"plaza1_map_{tag}_py.svg"))
-        figures.append((f"plaza1_map_{tag}_py.svg", f"plaza1 map, {label}, Python"))
+        figures.append((f"plaza1_map_{tag}_py.svg", f"plaza1 map, {label} (beacons in red), Python"))
+        th = sillage.thickness_figure(p, sillage.ThicknessMeasure.MaxDiameter,
+                                      f"plaza1: position box diameter, {label}")
+        th.save(str(out / f"plaza1_thickness_{tag}_py.svg"))
+        figures.append((f"plaza1_thickness_{tag}_py.svg", f"plaza1 thickness, {label}, Python"))
     print_result("plaza1", summary, ok, figures)
 
 
