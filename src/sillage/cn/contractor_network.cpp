@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"
@@ -55,61 +56,34 @@ std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& d
 
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  std::size_t total = 0, nb_tubes = 0;
-  for (const auto& r : domains) {
-    for (const auto& p : r.parts()) {
-      if (dynamic_cast<const TubeDomain*>(p.domain.get())) {
-        ++nb_tubes;
-      } else {
-        total += p.count;
-      }
+  add_bound(domains, [&](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
+    std::vector<AtomRange> ranges;
+    std::vector<std::shared_ptr<TubeDomain>> tubes;
+    bool any_tube = false;
+    for (const auto& b : bound) {
+      ranges.push_back(b.range);
+      tubes.push_back(std::dynamic_pointer_cast<TubeDomain>(b.domain));
+      any_tube = any_tube || tubes.back();
     }
-  }
-  total += nb_tubes;
-  if (total != ctc->nb_vars()) {
-    throw DimensionError("ContractorNetwork::add: " + ctc->name() + " acts on " + std::to_string(ctc->nb_vars()) +
-                         " variables but the " + std::to_string(domains.size()) + " domains given add up to " +
-                         std::to_string(total) + (nb_tubes ? " (a tube counts as one variable)" : ""));
-  }
-  if (nb_tubes > 0) {
-    // Check the tubes' layout and time domains before registering anything.
-    const TDomain* td = nullptr;
-    for (const auto& r : domains) {
-      for (const auto& p : r.parts()) {
-        const auto* t = dynamic_cast<const TubeDomain*>(p.domain.get());
-        if (!t) continue;
-        if (p.first != 0 || p.count != t->nb_atoms()) {
-          throw DimensionError("ContractorNetwork::add: " + ctc->name() +
-                               ": a tube argument must be a whole tube (all its slices and gates)");
-        }
-        if (td && t->tube().tdomain().get() != td) {
-          throw DimensionError("ContractorNetwork::add: " + ctc->name() + ": the tubes are not on one TDomain");
-        }
-        td = t->tube().tdomain().get();
-      }
-    }
-  }
-  const std::vector<BoundDomain> bound = bind(domains);
-  std::vector<AtomRange> ranges;
-  std::vector<std::shared_ptr<TubeDomain>> tubes;
-  for (const auto& b : bound) {
-    ranges.push_back(b.range);
-    tubes.push_back(std::dynamic_pointer_cast<TubeDomain>(b.domain));
-  }
-  if (nb_tubes > 0) {
-    add_node(std::make_shared<TubeCtcNode>(std::move(ctc), std::move(ranges), std::move(tubes)));
-  } else {
-    add_node(std::make_shared<CtcNode>(std::move(ctc), std::move(ranges)));
-  }
+    // The node constructors check the arguments (DimensionError naming ctc).
+    if (any_tube) return std::make_shared<TubeCtcNode>(ctc, std::move(ranges), std::move(tubes));
+    return std::make_shared<CtcNode>(ctc, std::move(ranges));
+  });
 }
 
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  // make_node validates the arguments: on an error, forget the domains this
+  add_bound(domains, [&](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
+}
+
+void ContractorNetwork::add_bound(
+    const std::vector<DomainRef>& domains,
+    const std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>& make) {
+  // The node validates its arguments: on an error, forget the domains this
   // call registered, so that a failed add leaves the network unchanged.
   const std::size_t nb_before = domains_.size();
   try {
-    add_node(ctc->make_node(bind(domains)));
+    add_node(make(bind(domains)));
   } catch (...) {
     while (domains_.size() > nb_before) {
       index_.erase(domains_.back()->key());

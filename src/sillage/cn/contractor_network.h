@@ -33,6 +33,7 @@
 // when a domain becomes empty (that domain is set empty, the others keep their
 // last values, which remain valid enclosures; ContractStats::empty tells).
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -90,6 +91,10 @@ class ContractorNetwork {
   // Registers the parts of the references; validates first, so that a failed
   // add leaves the network unchanged.
   std::vector<BoundDomain> bind(const std::vector<DomainRef>& domains);
+  // Binds the domains, then adds the node `make` builds on them; if `make`
+  // throws, the domains this call registered are forgotten.
+  void add_bound(const std::vector<DomainRef>& domains,
+                 const std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>& make);
 
   std::vector<std::shared_ptr<Domain>> domains_;
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index

@@ -36,10 +36,11 @@ TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> 
     ++nb_vars;
     const Tube& x = tubes_[g]->tube();
     if (a.first != 0 || a.count != tubes_[g]->nb_atoms()) {
-      throw DimensionError(where + ": argument " + std::to_string(g) + " must be a whole tube");
+      throw DimensionError(where + ": argument " + std::to_string(g) +
+                           " must be a whole tube (all its slices and gates)");
     }
     if (td && x.tdomain().get() != td) {
-      throw DimensionError(where + ": argument " + std::to_string(g) + " is not on the TDomain of the other tubes");
+      throw DimensionError(where + ": the tubes are not on one TDomain (argument " + std::to_string(g) + ")");
     }
     td = x.tdomain().get();
     nb_time_atoms_ = tubes_[g]->nb_atoms();
