@@ -1,17 +1,26 @@
 #pragma once
-// For network nodes that contract whole tubes (CtcDeriv, CtcEval): the atoms
-// of a tube that shrank between a copy taken before the contraction and the
-// tube after it, reported to the network as node positions.
+// For network nodes that contract whole tubes (CtcDeriv, CtcIncrement): the
+// slices and gates of a tube before a contraction, to report to the network
+// those that shrank. The buffers are reused from one run to the next.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sillage/tube/tube.h"
 
 namespace sillage {
 
-// Appends offset + atom (atom 2k: gate k, 2k+1: slice k) for each slice or gate of
-// `after` that shrank by more than `ratio` from `before` (shrink.h).
-void report_tube_changes(const TubeData& before, const Tube& after, std::size_t offset, double ratio,
-                         std::vector<std::size_t>& changed);
+class TubeSnapshot {
+ public:
+  void take(const Tube& x);
+  // Appends offset + atom (atom 2k: gate k, 2k+1: slice k) for each slice or
+  // gate of `after` that shrank by more than `ratio` since take() (shrink.h);
+  // nothing at all when the tube was not modified (same version).
+  void report(const Tube& after, std::size_t offset, double ratio, std::vector<std::size_t>& changed) const;
+
+ private:
+  std::vector<Interval> slices_, gates_;
+  std::uint64_t version_ = 0;
+};
 
 }  // namespace sillage

@@ -60,9 +60,9 @@ class PairNode : public CnNode {
   bool run(NodeRun& r) const override {
     for (std::size_t i = 0; i < x_.size(); ++i) {
       Tube& x = x_[i]->tube();
-      const TubeData before = x.data();
+      before_.take(x);
       const bool ok = ctc_.contract(x, v_[i]->tube());
-      report_tube_changes(before, x, offset(i), r.ratio, r.changed);
+      before_.report(x, offset(i), r.ratio, r.changed);
       if (!ok) return false;
     }
     return true;
@@ -71,6 +71,7 @@ class PairNode : public CnNode {
  private:
   C ctc_;
   std::vector<std::shared_ptr<TubeDomain>> x_, v_;
+  mutable TubeSnapshot before_;  // scratch of run() (a network runs one node at a time)
 };
 
 class EvalNode : public CnNode {
