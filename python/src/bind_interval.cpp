@@ -173,6 +173,7 @@ void init_interval_class(py::module_& m) {
   py::class_<I, std::shared_ptr<I>> c(m, "Interval",
                                       "A closed interval [lb, ub] of reals, possibly empty or unbounded. "
                                       "Operations round outward: the exact result is always enclosed.");
+  def_copy(c);
   c.def(py::init<>(), "The whole real line.")
       .def(py::init<double>(), py::arg("x"), "The degenerate interval [x, x].")
       .def(py::init<double, double>(), py::arg("lb"), py::arg("ub"))
@@ -209,9 +210,6 @@ void init_interval_class(py::module_& m) {
       .def("bisect", &I::bisect, py::arg("ratio") = 0.5, "Two halves split at lb + ratio * diam.")
       .def("inflate", &I::inflate, py::arg("r"))
       .def("set_empty", &I::set_empty)
-      .def("copy", [](const I& x) { return x; })
-      .def("__copy__", [](const I& x) { return x; })
-      .def("__deepcopy__", [](const I& x, py::dict) { return x; })
       .def("__contains__", &I::contains)
       .def(py::pickle([](const I& x) { return bounds_state(x); },
                       [](const py::tuple& t) {
@@ -254,6 +252,7 @@ void init_vector_class(py::module_& m) {
   using V = IntervalVector;
   py::class_<V, std::shared_ptr<V>> c(m, "IntervalVector",
                                       "A box: a vector of intervals. Empty as soon as one component is.");
+  def_copy(c);
   c.def(py::init([](const py::object& obj) { return vector_from(obj); }), py::arg("x"),
         "IntervalVector(n) (n copies of the real line), or from a list of intervals / numbers / "
         "pairs [lb, ub], or from an (n, 2) array of bounds.")
@@ -305,9 +304,6 @@ void init_vector_class(py::module_& m) {
            py::arg("ratio") = 0.5)
       .def("inflate", &V::inflate, py::arg("r"))
       .def("set_empty", &V::set_empty)
-      .def("copy", [](const V& v) { return v; })
-      .def("__copy__", [](const V& v) { return v; })
-      .def("__deepcopy__", [](const V& v, py::dict) { return v; })
       .def("to_numpy", &vector_to_numpy, "An (n, 2) array of bounds (an empty component gives inf, -inf).")
       .def("__array__", [](const V& v, const py::object& dtype, const py::object&) {
              return as_array(vector_to_numpy(v), dtype);
@@ -342,6 +338,7 @@ void init_vector_class(py::module_& m) {
 void init_matrix_class(py::module_& m) {
   using M = IntervalMatrix;
   py::class_<M, std::shared_ptr<M>> c(m, "IntervalMatrix", "A matrix of intervals (a box of real matrices).");
+  def_copy(c);
   c.def(py::init([](std::size_t r, std::size_t k, const py::object& x) {
           return M(r, k, x.is_none() ? Interval() : to_interval(x, "IntervalMatrix(rows, cols, x)"));
         }),
@@ -387,9 +384,6 @@ void init_matrix_class(py::module_& m) {
       .def("intersects", &M::intersects, py::arg("y"))
       .def("inflate", &M::inflate, py::arg("r"))
       .def("set_empty", &M::set_empty)
-      .def("copy", [](const M& a) { return a; })
-      .def("__copy__", [](const M& a) { return a; })
-      .def("__deepcopy__", [](const M& a, py::dict) { return a; })
       .def("to_numpy", &matrix_to_numpy, "An (n, m, 2) array of bounds.")
       .def("__array__", [](const M& a, const py::object& dtype, const py::object&) {
              return as_array(matrix_to_numpy(a), dtype);

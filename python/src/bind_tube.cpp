@@ -92,6 +92,7 @@ void init_tube_class(py::module_& m) {
   py::class_<T, std::shared_ptr<T>> c(m, "Tube",
                                       "A sliced enclosure of scalar trajectories: N slice codomains and N+1 gates "
                                       "on a TDomain. Copies (copy()) are attached to the same TDomain.");
+  def_copy(c);
   c.def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
         "From an expression of t, e.g. Tube(td, 'sin(t) + [-0.1,0.1]').")
       .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"))
@@ -127,9 +128,6 @@ void init_tube_class(py::module_& m) {
            py::arg("y"), "The connected subsets of the inverse, in time order.")
       .def("slices_array", [](const T& x) { return bounds_array(x.slices()); }, "(N, 2) array of slice bounds.")
       .def("gates_array", [](const T& x) { return bounds_array(x.gates()); }, "(N+1, 2) array of gate bounds.")
-      .def("copy", [](const T& x) { return T(x); })
-      .def("__copy__", [](const T& x) { return T(x); })
-      .def("__deepcopy__", [](const T& x, py::dict) { return T(x); })
       .def("__repr__", [](const T& x) {
         std::ostringstream os;
         os << x;
@@ -216,6 +214,7 @@ void init_tube_functions(py::module_& m) {
 void init_tube_vector(py::module_& m) {
   using V = TubeVector;
   py::class_<V, std::shared_ptr<V>> c(m, "TubeVector", "n tubes on one TDomain; v[i] is a live reference.");
+  def_copy(c);
   c.def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
         "From a vector expression of t, e.g. '(cos(t), sin(t))'.")
       .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"))
@@ -254,9 +253,6 @@ void init_tube_vector(py::module_& m) {
       .def("set", py::overload_cast<const IntervalVector&>(&V::set), py::arg("y"))
       .def("set", py::overload_cast<const IntervalVector&, std::size_t>(&V::set), py::arg("y"), py::arg("k"))
       .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"))
-      .def("copy", [](const V& v) { return V(v); })
-      .def("__copy__", [](const V& v) { return V(v); })
-      .def("__deepcopy__", [](const V& v, py::dict) { return V(v); })
       .def(py::self == py::self)
       .def(py::self != py::self)
       .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),

@@ -5,6 +5,15 @@
 
 namespace sillage::python {
 namespace py = pybind11;
+
+// copy(), __copy__ and __deepcopy__ of a value type: a C++ copy.
+template <class Class>
+void def_copy(Class& cls) {
+  using T = typename Class::type;
+  cls.def("copy", [](const T& x) { return T(x); })
+      .def("__copy__", [](const T& x) { return T(x); })
+      .def("__deepcopy__", [](const T& x, py::dict) { return T(x); });
+}
 void init_errors(py::module_& m);
 void init_interval(py::module_& m);
 void init_expr(py::module_& m);
