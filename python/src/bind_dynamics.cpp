@@ -92,7 +92,11 @@ void init_dynamics(py::module_& m) {
            "Hull of x over the time (interval) t, read through the derivative tube v: in each slice the\n"
            "polygon ([x](t_k) + (t-t_k)[v]) & ([x](t_k+1) - (t_k+1-t)[v]) & [x](k), tighter than x(t).")
       .def("inverse", py::overload_cast<const Interval&, const Tube&>(&Tube::inverse, py::const_), py::arg("y"),
-           py::arg("v"), "Hull of the times where the polygon of x with derivative v meets y (within x.inverse(y)).");
+           py::arg("v"), "Hull of the times where the polygon of x with derivative v meets y (within x.inverse(y)).")
+      .def("inverse",
+           py::overload_cast<const Interval&, const Tube&, const Interval&>(&Tube::inverse, py::const_),
+           py::arg("y"), py::arg("v"), py::arg("t"), "The same, restricted to the times t (a subset of t).")
+      .def("memory_bytes", &Tube::memory_bytes, "Bytes held: slices, gates and the cached synthesis tree.");
 }
 
 }  // namespace sillage::python

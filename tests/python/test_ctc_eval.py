@@ -65,3 +65,14 @@ def test_csv_table():
     plaza = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1" / "beacons.csv"
     if plaza.exists():
         assert sillage.CsvTable.read(str(plaza)).nb_rows() == 4
+
+
+def test_inverse_within_a_time_interval_and_memory():
+    td = TDomain(0.0, 10.0, 0.5)
+    y, w = Tube(td, "t"), Tube(td, Interval(1.0))
+    part = y.inverse(Interval(3, 7), w, Interval(2, 5))
+    assert part.is_superset(Interval(3, 5)) and part.is_subset(Interval(2.999, 5.0))
+    assert y.inverse(Interval(3, 7), w, Interval(8, 9)).is_empty()
+    with pytest.raises(sillage.Error):
+        y.inverse(Interval(3, 7), w, Interval(9, 11))
+    assert y.memory_bytes() >= 32 * td.nb_slices()
