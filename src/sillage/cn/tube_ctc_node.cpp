@@ -14,6 +14,9 @@ namespace {
 // (each pass is a valid contraction: stopping early loses no solution).
 constexpr int kMaxParamPasses = 64;
 
+// Boxes contracted together (one HC4 batch); their rows stay in cache.
+constexpr std::size_t kChunk = 256;
+
 Interval& time_atom(TubeData& d, std::size_t i) { return (i & 1) ? d.slices[i / 2] : d.gates[i / 2]; }
 
 }  // namespace
@@ -56,68 +59,97 @@ TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> 
   }
 }
 
-bool TubeCtcNode::contract_box(IntervalVector& box) const {
-  if (f_) return f_->hc4_revise(box, *image_);
-  ctc_->contract(box);
-  return !box.is_empty();
+void TubeCtcNode::contract_boxes(std::vector<Interval>& box, std::size_t count) const {
+  const std::size_t n = ctc_->nb_vars();
+  if (f_) {
+    std::vector<Interval*> cols(n);
+    for (std::size_t v = 0; v < n; ++v) cols[v] = box.data() + v * count;
+    f_->hc4_revise_batch(cols, count, *image_);
+    return;
+  }
+  IntervalVector b(n);
+  for (std::size_t j = 0; j < count; ++j) {
+    for (std::size_t v = 0; v < n; ++v) b[v] = box[v * count + j];
+    ctc_->contract(b);
+    for (std::size_t v = 0; v < n; ++v) box[v * count + j] = b[v];
+  }
 }
 
 bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const {
   const std::size_t n = ctc_->nb_vars();
-  IntervalVector box(n), before(n);
+  // With constants, a chunk is one box: each box sees them as narrowed by the previous ones.
+  const std::size_t chunk = nb_params_ > 0 ? 1 : kChunk;
+  std::vector<Interval> before(n * chunk), box;
+  std::vector<std::size_t> ids;  // the time atoms of the chunk
   const std::size_t last = nb_time_atoms_ - 1;
   std::vector<char> touched(tubes_.size(), 0);
+  const auto touch = [&] {
+    for (std::size_t g = 0; g < tubes_.size(); ++g)
+      if (touched[g]) tubes_[g]->tube().touch();
+  };
   // Slices first, then gates (which are intersected with their slices).
   for (const int parity : {1, 0}) {
-    for (const std::size_t i : atoms) {
-      if (static_cast<int>(i & 1) != parity) continue;
-      std::size_t v = 0, p = 0;
-      for (std::size_t g = 0; g < tubes_.size(); ++g) {
-        if (!tubes_[g]) {
-          for (std::size_t c = 0; c < ranges()[g].count; ++c) box[v++] = params[p++];
-          continue;
+    for (auto next = atoms.begin(); next != atoms.end();) {
+      ids.clear();
+      for (; next != atoms.end() && ids.size() < chunk; ++next)
+        if (static_cast<int>(*next & 1) == parity) ids.push_back(*next);
+      if (ids.empty()) break;
+      const std::size_t c = ids.size();
+      // Gather: box j in column layout, variable v at v * c + j.
+      for (std::size_t j = 0; j < c; ++j) {
+        const std::size_t i = ids[j];
+        std::size_t v = 0, p = 0;
+        for (std::size_t g = 0; g < tubes_.size(); ++g) {
+          if (!tubes_[g]) {
+            for (std::size_t k = 0; k < ranges()[g].count; ++k) before[v++ * c + j] = params[p++];
+            continue;
+          }
+          TubeData& d = tubes_[g]->tube().data();
+          Interval& x = time_atom(d, i);
+          if (parity == 0) {  // x(t_k) lies in both neighbouring slices
+            Interval h = x;
+            if (i > 0) h &= d.slices[i / 2 - 1];
+            if (i < last) h &= d.slices[i / 2];
+            if (h != x) {
+              if (shrank(x, h, r.ratio)) r.changed.push_back(offset(g) + i);
+              x = h;
+              touched[g] = 1;
+            }
+          }
+          before[v++ * c + j] = x;
         }
-        TubeData& d = tubes_[g]->tube().data();
-        Interval& x = time_atom(d, i);
-        if (parity == 0) {  // x(t_k) lies in both neighbouring slices
-          Interval h = x;
-          if (i > 0) h &= d.slices[i / 2 - 1];
-          if (i < last) h &= d.slices[i / 2];
-          if (h != x) {
-            if (shrank(x, h, r.ratio)) r.changed.push_back(offset(g) + i);
-            x = h;
+      }
+      box.assign(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(n * c));
+      contract_boxes(box, c);
+      // Scatter, in order: a box proven empty stops the run there.
+      for (std::size_t j = 0; j < c; ++j) {
+        const std::size_t i = ids[j];
+        bool ok = true;
+        for (std::size_t v = 0; v < n; ++v) ok = ok && !box[v * c + j].is_empty();
+        std::size_t v = 0, p = 0;
+        for (std::size_t g = 0; g < tubes_.size(); ++g) {
+          if (!tubes_[g]) {
+            for (std::size_t k = 0; k < ranges()[g].count; ++k, ++v)
+              params[p++] &= ok ? box[v * c + j] : Interval::empty();
+            continue;
+          }
+          Interval& x = time_atom(tubes_[g]->tube().data(), i);
+          const Interval now = ok ? (x & box[v * c + j]) : Interval::empty();
+          if (now != x) {
+            if (shrank(before[v * c + j], now, r.ratio)) r.changed.push_back(offset(g) + i);
+            x = now;
             touched[g] = 1;
           }
+          ++v;
         }
-        box[v++] = x;
-      }
-      before = box;
-      const bool ok = contract_box(box);
-      v = p = 0;
-      for (std::size_t g = 0; g < tubes_.size(); ++g) {
-        if (!tubes_[g]) {
-          for (std::size_t c = 0; c < ranges()[g].count; ++c, ++v) params[p++] &= ok ? box[v] : Interval::empty();
-          continue;
+        if (!ok) {
+          touch();
+          return false;
         }
-        TubeData& d = tubes_[g]->tube().data();
-        Interval& x = time_atom(d, i);
-        const Interval now = ok ? (x & box[v]) : Interval::empty();
-        if (now != x) {
-          if (shrank(before[v], now, r.ratio)) r.changed.push_back(offset(g) + i);
-          x = now;
-          touched[g] = 1;
-        }
-        ++v;
-      }
-      if (!ok) {
-        for (std::size_t g = 0; g < tubes_.size(); ++g)
-          if (touched[g]) tubes_[g]->tube().touch();
-        return false;
       }
     }
   }
-  for (std::size_t g = 0; g < tubes_.size(); ++g)
-    if (touched[g]) tubes_[g]->tube().touch();
+  touch();
   return true;
 }
 
@@ -126,16 +158,10 @@ bool TubeCtcNode::run(NodeRun& r) const {
   std::vector<std::size_t> atoms;
   bool all = r.all;
   if (!all) {
-    // r.dirty is sorted, so within one tube the atoms (with the gates of
-    // the changed slices) come out sorted; several tubes need a sort.
-    bool sorted = true;
-    const auto push = [&](std::size_t i) {
-      if (!atoms.empty() && i <= atoms.back()) {
-        if (i == atoms.back()) return;
-        sorted = false;
-      }
-      atoms.push_back(i);
-    };
+    // A changed slice brings its two gates. Several tubes interleave their
+    // atoms: a short list is sorted, a long one merged through flags.
+    const bool long_list = 3 * r.dirty.size() > nb_time_atoms_ / 16;
+    std::vector<char> mark(long_list ? nb_time_atoms_ : 0, 0);
     for (const std::size_t pos : r.dirty) {
       const std::size_t g = static_cast<std::size_t>(
           std::upper_bound(ranges().begin(), ranges().end(), pos,
@@ -146,17 +172,18 @@ bool TubeCtcNode::run(NodeRun& r) const {
         break;
       }
       const std::size_t i = pos - offset(g);
-      if (i & 1) {  // a slice: with its two gates
-        push(i - 1);
-        push(i);
-        push(i + 1);
-      } else {
-        push(i);
+      const std::size_t first = (i & 1) ? i - 1 : i, last = (i & 1) ? i + 1 : i;
+      for (std::size_t j = first; j <= last; ++j) {
+        if (long_list) mark[j] = 1;
+        else atoms.push_back(j);
       }
     }
-    if (!sorted) {
+    if (!long_list) {
       std::sort(atoms.begin(), atoms.end());
       atoms.erase(std::unique(atoms.begin(), atoms.end()), atoms.end());
+    } else if (!all) {
+      for (std::size_t j = 0; j < nb_time_atoms_; ++j)
+        if (mark[j]) atoms.push_back(j);
     }
   }
   if (all) {

@@ -8,7 +8,8 @@
 // changed since the last run are contracted, plus the gates next to a changed
 // slice (a gate lies in both neighbouring slices, and is intersected with
 // them first). Atom i of every tube is the same time element (all tubes are
-// on one TDomain), so the box of atom i gathers atom i of each tube.
+// on one TDomain), so the box of atom i gathers atom i of each tube. The
+// boxes go by chunks: the HC4 of a CtcFunction walks its tape once per chunk.
 //
 // Constant variables p hold at every t: each contracted time element gives a
 // valid contraction of p, and p is intersected with all of them. When p
@@ -37,7 +38,9 @@ class TubeCtcNode : public CnNode {
  private:
   // Contracts the time atoms `atoms` (sorted); false if proven empty.
   bool contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const;
-  bool contract_box(IntervalVector& box) const;
+  // Contracts the boxes j < count stored by columns: variable v of box j
+  // at box[v * count + j] (empty in every variable if proven inconsistent).
+  void contract_boxes(std::vector<Interval>& box, std::size_t count) const;
 
   std::shared_ptr<const Ctc> ctc_;
   const Function* f_ = nullptr;        // fast path: HC4 of a CtcFunction

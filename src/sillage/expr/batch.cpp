@@ -30,6 +30,7 @@ void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b
     case Op::Div: return binary_loop(r, a, b, cnt, [](I x, I y) { return x / y; });
     case Op::Neg: return unary_loop(r, a, cnt, [](I x) { return -x; });
     case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return sqr(x); });
+    case Op::PowInt: return unary_loop(r, a, cnt, [n = in.n](I x) { return pow_int(x, n); });
     case Op::Sqrt: return unary_loop(r, a, cnt, [](I x) { return sqrt(x); });
     case Op::Exp: return unary_loop(r, a, cnt, [](I x) { return exp(x); });
     case Op::Sin: return unary_loop(r, a, cnt, [](I x) { return sin(x); });
@@ -60,6 +61,7 @@ void Tape::forward_batch(const Interval* const* xs, std::size_t count, Interval*
       eval_row(in, r, row[in.a], row[in.b], count);
     }
   }
+  if (!out) return;
   for (std::size_t o = 0; o < outputs_.size(); ++o) std::copy(row[outputs_[o]], row[outputs_[o]] + count, out[o]);
 }
 

@@ -1,6 +1,8 @@
 // Function: construction, natural and centered evaluation, HC4-revise.
 #include "sillage/expr/function.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <ostream>
 #include <sstream>
@@ -118,12 +120,7 @@ bool Function::hc4_revise(IntervalVector& x, const IntervalVector& y) const {
   bool ok = !x.is_empty() && !y.is_empty();
   if (ok) {
     t.forward(x.components().data(), v.data());
-    for (std::size_t i = 0; i < y.size() && ok; ++i) {
-      Interval& o = v[t.outputs()[i]];
-      o &= y[i];
-      ok = !o.is_empty();
-    }
-    ok = ok && t.backward(v.data());
+    ok = t.backward(v.data(), y.components().data());
   }
   if (!ok) {
     x.set_empty();
@@ -131,6 +128,42 @@ bool Function::hc4_revise(IntervalVector& x, const IntervalVector& y) const {
   }
   for (std::size_t i = 0; i < x.size(); ++i) x[i] &= v[i];
   return true;
+}
+
+void Function::hc4_revise_batch(std::span<Interval* const> xs, std::size_t count, const IntervalVector& y) const {
+  if (xs.size() != nb_vars())
+    throw DimensionError("Function::hc4_revise_batch: expected " + std::to_string(nb_vars()) +
+                         " variable columns, got " + std::to_string(xs.size()));
+  if (y.size() != image_dim())
+    throw DimensionError("Function::hc4_revise_batch: expected an image of size " + std::to_string(image_dim()) +
+                         ", got " + std::to_string(y.size()));
+  const detail::Tape& t = impl_->tape;
+  const std::size_t n = nb_vars();
+  constexpr std::size_t kChunk = 128;  // rows stay in cache
+  // One row of the chunk per slot, the variables' rows included (the backward
+  // pass contracts them in place).
+  thread_local std::vector<Interval> rows;
+  thread_local std::vector<std::uint8_t> ok;
+  rows.resize(std::max(rows.size(), t.size() * std::min(kChunk, count)));
+  ok.resize(std::min(kChunk, count));
+  std::vector<const Interval*> cols(n);
+  for (std::size_t start = 0; start < count; start += kChunk) {
+    const std::size_t cnt = std::min(kChunk, count - start);
+    std::fill(ok.begin(), ok.begin() + static_cast<std::ptrdiff_t>(cnt), y.is_empty() ? 0 : 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      Interval* const r = rows.data() + i * cnt;
+      for (std::size_t j = 0; j < cnt; ++j) {
+        r[j] = xs[i][start + j];
+        if (r[j].is_empty()) ok[j] = 0;
+      }
+      cols[i] = r;
+    }
+    t.forward_batch(cols.data(), cnt, rows.data(), nullptr);
+    t.backward_batch(rows.data(), cnt, y.components().data(), ok.data());
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < cnt; ++j)
+        xs[i][start + j] = ok[j] ? xs[i][start + j] & rows[i * cnt + j] : Interval::empty();
+  }
 }
 
 bool Function::hc4_revise(IntervalVector& x, const Interval& y) const {

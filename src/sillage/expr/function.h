@@ -52,6 +52,11 @@ class Function {
   bool hc4_revise(IntervalVector& x, const IntervalVector& y) const;
   // Scalar shortcut: f(x) in y.
   bool hc4_revise(IntervalVector& x, const Interval& y) const;
+  // hc4_revise on `count` boxes at once, same results box by box: xs[i]
+  // points to the `count` intervals of variable i (n pointers), contracted in
+  // place; a box proven inconsistent becomes empty in every variable. Both
+  // passes walk the tape once per chunk of boxes.
+  void hc4_revise_batch(std::span<Interval* const> xs, std::size_t count, const IntervalVector& y) const;
 
   // Symbolic derivative: for m = 1 the gradient (a vector function of size
   // n); otherwise the Jacobian flattened row-major (size m*n).

@@ -3,6 +3,15 @@
 // the backward functions of backward.h. Operands are contracted on copies then
 // intersected, so a node shared by several users (or used twice by one, as
 // in x * x) receives the intersection of all its projections.
+//
+// A node whose value is still its forward image [f](a, b) has nothing to
+// project when f is defined on the whole of a and b: every point of a finds
+// a partner in b with an image in [f](a, b) (operands shrunk since by other
+// users included), so the projections keep a and b whole. Such nodes are
+// skipped; near a fixed point they are most of the DAG.
+#include <cstdint>
+#include <vector>
+
 #include "sillage/expr/tape.h"
 #include "sillage/interval/backward.h"
 
@@ -44,23 +53,120 @@ bool project(const Instr& in, const Interval& y, Interval& a, Interval& b) {
   return true;
 }
 
+// When a slot still at its forward value [f](a, b) may skip its projection:
+// where f is defined on the whole of a and b (see the header comment).
+enum class Idle : std::uint8_t { Skip, IfDivisorSigned, IfNonNegative, IfPositive, IfSigned, Project };
+
+Idle idle_rule(const Instr& in) {
+  switch (in.op) {
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Neg:
+    case Op::Sqr:
+    case Op::Exp:
+    case Op::Sin:
+    case Op::Cos:
+    case Op::Atan:
+    case Op::Sinh:
+    case Op::Cosh:
+    case Op::Tanh:
+    case Op::Abs:
+    case Op::Min:
+    case Op::Max:
+    case Op::Sign: return Idle::Skip;
+    case Op::Div: return Idle::IfDivisorSigned;
+    case Op::Sqrt: return Idle::IfNonNegative;
+    case Op::Log: return Idle::IfPositive;
+    case Op::PowInt: return in.n >= 0 ? Idle::Skip : Idle::IfSigned;
+    default: return Idle::Project;  // the others may cut their operands even so
+  }
+}
+
+bool strictly_signed(const Interval& x) { return x.lb() > 0 || x.ub() < 0; }
+
+bool keeps_operands(Idle rule, const Interval& a, const Interval& b) {
+  switch (rule) {
+    case Idle::Skip: return true;
+    case Idle::IfDivisorSigned: return strictly_signed(b);
+    case Idle::IfNonNegative: return a.lb() >= 0;
+    case Idle::IfPositive: return a.lb() > 0;
+    case Idle::IfSigned: return strictly_signed(a);
+    case Idle::Project: return false;
+  }
+  return false;
+}
+
+// x &= p; records whether x changed.
+void meet(Interval& x, const Interval& p, std::uint8_t& moved) {
+  const Interval m = x & p;
+  if (m != x) {
+    x = m;
+    moved = 1;
+  }
+}
+
+// The backward pass over `count` boxes (see Tape::backward_batch); kOne: a
+// single box, for which the compiler drops the inner loops.
+template <bool kOne>
+void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const Interval* y, std::uint8_t* ok,
+                   bool skip_idle) {
+  const std::size_t count = kOne ? 1 : count_in;
+  const std::vector<Instr>& code = t.code();
+  // moved[k * count + j]: slot k of box j differs from its forward value. Per thread, like the rows.
+  thread_local std::vector<std::uint8_t> flags;
+  flags.assign(code.size() * count, 0);
+  const auto row = [&](std::size_t k) { return rows + k * count; };
+  const auto moved = [&](std::size_t k) { return flags.data() + k * count; };
+  for (std::size_t i = 0; i < t.outputs().size(); ++i) {
+    Interval* const o = row(t.outputs()[i]);
+    std::uint8_t* const m = moved(t.outputs()[i]);
+    for (std::size_t j = 0; j < count; ++j) {
+      if (!ok[j]) continue;
+      meet(o[j], y[i], m[j]);
+      if (o[j].is_empty()) ok[j] = 0;
+    }
+  }
+  for (std::size_t k = code.size(); k-- > t.nb_vars();) {
+    const Instr& in = code[k];
+    const bool binary = op_arity(in.op) == 2;
+    const Idle rule = skip_idle ? idle_rule(in) : Idle::Project;
+    Interval *const r = row(k), *const ra = row(in.a), *const rb = row(in.b);
+    std::uint8_t *const m = moved(k), *const ma = moved(in.a), *const mb = moved(in.b);
+    for (std::size_t j = 0; j < count; ++j) {
+      if (!ok[j]) continue;
+      if (r[j].is_empty()) {
+        ok[j] = 0;
+        continue;
+      }
+      if (in.op == Op::Const || (!m[j] && keeps_operands(rule, ra[j], rb[j]))) continue;
+      Interval a = ra[j];
+      Interval b = binary ? rb[j] : Interval();
+      if (!project(in, r[j], a, b)) {
+        ok[j] = 0;
+        continue;
+      }
+      meet(ra[j], a, ma[j]);
+      if (binary) meet(rb[j], b, mb[j]);
+      if (ra[j].is_empty() || (binary && rb[j].is_empty())) ok[j] = 0;
+    }
+  }
+  for (std::size_t k = 0; k < t.nb_vars(); ++k)
+    for (std::size_t j = 0; j < count; ++j)
+      if (row(k)[j].is_empty()) ok[j] = 0;
+}
+
 }  // namespace
 
-bool Tape::backward(Interval* v) const {
-  for (std::size_t k = code_.size(); k-- > nb_vars_;) {
-    const Instr& in = code_[k];
-    if (v[k].is_empty()) return false;
-    if (in.op == Op::Const) continue;
-    Interval a = v[in.a];
-    Interval b = op_arity(in.op) == 2 ? v[in.b] : Interval();
-    if (!project(in, v[k], a, b)) return false;
-    v[in.a] &= a;
-    if (op_arity(in.op) == 2) v[in.b] &= b;
-    if (v[in.a].is_empty() || (op_arity(in.op) == 2 && v[in.b].is_empty())) return false;
-  }
-  for (std::size_t k = 0; k < nb_vars_; ++k)
-    if (v[k].is_empty()) return false;
-  return true;
+bool Tape::backward(Interval* v, const Interval* y, bool skip_idle) const {
+  std::uint8_t ok = 1;
+  backward_rows<true>(*this, v, 1, y, &ok, skip_idle);
+  return ok != 0;
+}
+
+void Tape::backward_batch(Interval* rows, std::size_t count, const Interval* y, std::uint8_t* ok,
+                          bool skip_idle) const {
+  backward_rows<false>(*this, rows, count, y, ok, skip_idle);
 }
 
 }  // namespace sillage::detail

@@ -40,11 +40,19 @@ class Tape {
   // forward, and tells whether every operation's operands lie in its domain
   // where it is continuous and differentiable (the mean-value form applies).
   bool forward_in_domain(const Interval* x, Interval* v) const;
-  // Backward pass of HC4 over v filled by forward and whose output slots were
-  // intersected with the target: contracts every slot. False if a slot empties.
-  bool backward(Interval* v) const;
-  // Batch: xs[i] are columns of `count` intervals; rows is scratch of
-  // size() * count intervals; out[k] receives output k.
+  // Backward pass of HC4 over v filled by forward: intersects output k with
+  // y[k], then projects each slot onto its operands, down to the variables.
+  // False if a slot empties. Slots whose projection provably changes nothing
+  // are skipped (hc4.cpp); skip_idle = false projects them all, for tests.
+  bool backward(Interval* v, const Interval* y, bool skip_idle = true) const;
+  // backward on `count` boxes laid out as by forward_batch, variables
+  // included: slot k of box j at rows[k * count + j]. ok[j] (in: box j is to
+  // be contracted) is cleared where a slot of box j empties.
+  void backward_batch(Interval* rows, std::size_t count, const Interval* y, std::uint8_t* ok,
+                      bool skip_idle = true) const;
+  // Batch: xs[i] are columns of `count` intervals; rows (size() * count
+  // intervals) receives row k = instruction k for k >= nb_vars(); out[k]
+  // (if out is not null) receives output k.
   void forward_batch(const Interval* const* xs, std::size_t count, Interval* rows, Interval* const* out) const;
 
  private:

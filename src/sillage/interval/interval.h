@@ -31,8 +31,8 @@ class Interval {
 
   static Interval empty() { return Interval(rounding::kInf, -rounding::kInf, Unchecked{}); }
   static Interval all_reals() { return Interval(); }
-  static Interval pos_reals() { return {0.0, rounding::kInf}; }
-  static Interval neg_reals() { return {-rounding::kInf, 0.0}; }
+  static Interval pos_reals() { return {0.0, rounding::kInf, Unchecked{}}; }
+  static Interval neg_reals() { return {-rounding::kInf, 0.0, Unchecked{}}; }
   static Interval pi();
   static Interval half_pi();
   static Interval two_pi();

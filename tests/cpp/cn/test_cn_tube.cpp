@@ -80,6 +80,27 @@ TEST(ContractorNetworkTube, PointwiseConstraintEqualsDirectTubeContraction) {
   EXPECT_EQ(s.iterations, 1u);  // one node: nothing else to wake
 }
 
+// Many slices: the boxes go by chunks (one HC4 batch each), slices then
+// gates; same tubes as box by box.
+TEST(ContractorNetworkTube, ChunkedContractionEqualsDirectTubeContraction) {
+  auto td = TDomain::create(0.0, 10.0, 0.007);  // 1429 slices, several chunks
+  const Tube x(td, "sin(t) + [-0.1, 0.1]"), v(td, "cos(t) + [-0.2, 0.2]");
+  Tube y(td), w(td, Interval(-1, 1));
+  Tube rx = x, rv = v, ry = y, rw = w;
+  const CtcFunction c(Function({"y", "w", "x", "v"}, "(y - sqrt((x - 2)^2 + 1), w - (x - 2) * v / y)"));
+  ASSERT_TRUE(contract(c, {&ry, &rw, &rx, &rv}));
+  auto nx = std::make_shared<Tube>(x), nv = std::make_shared<Tube>(v), ny = std::make_shared<Tube>(y),
+       nw = std::make_shared<Tube>(w);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcFunction>(c), {ny, nw, nx, nv});
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_EQ(*ny, ry);
+  EXPECT_EQ(*nw, rw);
+  EXPECT_EQ(*nx, rx);
+  EXPECT_EQ(*nv, rv);
+  EXPECT_TRUE(ry.slice(500).is_bounded());
+}
+
 TEST(ContractorNetworkTube, ASliceChangeWakesOnlyThatSliceAndItsGates) {
   auto td = TDomain::create(0.0, 1.0, 0.01);  // 100 slices, 201 atoms
   auto x = std::make_shared<Tube>(td, Interval(-10, 10));
