@@ -1,13 +1,14 @@
-// The three contractor networks of the chapter-4 examples (examples/cpp/
-// sin_ivp.cpp, lissajous.cpp, kidnapped_robot.cpp), from building the tubes
-// to the fixed point. The examples print the resulting enclosures; here only
-// the time is measured.
+// The contractor networks of the chapter-4 examples (examples/cpp/
+// sin_ivp.cpp, causal_chain.cpp, lissajous.cpp, kidnapped_robot.cpp), from
+// building the tubes to the fixed point. The examples print the resulting
+// enclosures; here only the time is measured.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <memory>
 #include <string>
 
+#include "causal_chain_network.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -33,6 +34,18 @@ void BM_SinIvp(benchmark::State& state) {
     benchmark::DoNotOptimize(x->gate(x->nb_slices()));
   }
   state.SetLabel("delta = " + std::to_string(dt));
+}
+
+// 4.4.1, the causal chain on [0, 14] with δ = 0.01 (the example's network):
+// from x0 only (Fig. 4.8), then with the final box too (Fig. 4.9).
+void BM_CausalChain(benchmark::State& state) {
+  const bool final_box = state.range(0) == 1;
+  for (auto _ : state) {
+    const causal_chain::Problem p = causal_chain::build(TDomain::create(0.0, causal_chain::kTf, 0.01), final_box);
+    benchmark::DoNotOptimize(p.cn->contract());
+    benchmark::DoNotOptimize(p.x->gate(0));
+  }
+  state.SetLabel(final_box ? "x0 and final box" : "x0 only");
 }
 
 // 4.4.2, CN (4.29) on [0, 2π].
@@ -84,6 +97,7 @@ void BM_KidnappedRobot(benchmark::State& state) {
 }
 
 BENCHMARK(BM_SinIvp)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CausalChain)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Lissajous)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_KidnappedRobot)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 

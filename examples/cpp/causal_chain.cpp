@@ -17,25 +17,17 @@
 #include <string>
 #include <vector>
 
+#include "causal_chain_network.h"
 #include "example_args.h"
-#include "sillage/cn/contractor_network.h"
-#include "sillage/ctc/ctc_function.h"
-#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
 using namespace sillage;
+using namespace causal_chain;
 
 namespace {
 
-constexpr double kTf = 14.0;
 const IntervalVector kCapdBox{{38.1545777835, 71.7221807908}, {-11.4056594783, 27.2737690279}};
-
-IntervalVector initial_box() {  // (4.26)
-  const Interval h = Interval::pi() * Interval(-6) / Interval(5);
-  return {Interval(-1, 1), Interval(-1, 1), h + Interval(-0.02, 0.02)};
-}
-const IntervalVector kFinalBox{{53.9, 55.9}, {6.9, 8.9}, {-2.36, -2.32}};
 
 using State = std::array<double, 3>;
 
@@ -87,19 +79,10 @@ struct Run {
 
 Run solve(const std::shared_ptr<TDomain>& td, bool with_final_box) {
   const double start = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+  const Problem p = build(td, with_final_box);
   Run r;
-  r.x = std::make_shared<TubeVector>(td, 3);
-  auto v = std::make_shared<TubeVector>(td, 3);
-  (*v)[2] = Tube(td, "-cos((t+33)/5) + [-0.02, 0.02]");  // (4.27)
-  r.x->set_gate(0, initial_box());
-  if (with_final_box) r.x->set_gate(td->nb_slices(), kFinalBox);
-  ContractorNetwork cn;
-  cn.add(std::make_shared<CtcFunction>(Function({"v1", "x3"}, "v1 - 10*cos(x3)")),
-         {DomainRef::component(v, 0), DomainRef::component(r.x, 2)});
-  cn.add(std::make_shared<CtcFunction>(Function({"v2", "x3"}, "v2 - 10*sin(x3)")),
-         {DomainRef::component(v, 1), DomainRef::component(r.x, 2)});
-  cn.add(std::make_shared<CtcDeriv>(), {r.x, v});
-  r.stats = cn.contract();
+  r.x = p.x;
+  r.stats = p.cn->contract();
   r.cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
   return r;
 }
