@@ -54,6 +54,13 @@
 #include "sillage/io/csv.h"
 #include "sillage/dynamics/time_propag.h"
 
+#include "sillage/loops/loop_function.h"
+#include "sillage/loops/path_crossings.h"
+#include "sillage/loops/plane_function.h"
+#include "sillage/loops/topological_degree.h"
+#include "sillage/loops/tplane.h"
+#include "sillage/loops/zero_tests.h"
+
 #include "sillage/figures/figure.h"
 #include "sillage/figures/html.h"
 #include "sillage/figures/thickness_figure.h"

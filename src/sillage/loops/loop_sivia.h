@@ -1,0 +1,35 @@
+#pragma once
+// proprioLoopSIVIA (thesis Alg. 6): a paving of the t-plane square
+// [t0, tf]^2 whose outer approximation (Inner ∪ Boundary leaves) encloses
+// the feasible loops T = {(t1, t2) | t1 < t2, 0 ∈ [f](t1, t2)} of a
+// LoopFunction, at precision eps (seconds).
+//
+// Tests on a t-box [t] = [t1] x [t2]:
+//  - t1 < t2: only the part with t1 <= ub[t2] and t2 >= lb[t1] may hold a
+//    loop; the rest is cut off as Outside (this contraction makes the
+//    bisection of the square never produce boxes below the diagonal, beside
+//    boxes straddling it);
+//  - on or against the diagonal (ub[t1] >= lb[t2]), f(t, t) = 0 lies in
+//    [f], and only the injectivity test (6.9) can decide: if
+//    0 ∉ [v]([lb t1, ub t2]) (some component of the velocity keeps one sign
+//    over the whole span, so that component of p is strictly monotonic
+//    there), p is injective on the span and the box is Outside;
+//  - strictly above the diagonal: outside (6.8) if 0 ∉ [f]([t]); else inner
+//    (6.10), velocity form only, if on both components the range of ∫v^- is
+//    <= 0 and that of ∫v^+ is >= 0: for every (t1, t2) some velocity of the
+//    tube integrates to 0 (the components of a velocity tube are
+//    independent, and each integral sweeps the whole interval between ∫v^-
+//    and ∫v^+); else (6.9) as above. With positions (7.28) the positions
+//    constrain the velocities jointly over time, so no leaf is Inner.
+// Undecided boxes are bisected (largest side, midpoint) down to width eps.
+// Parallel with oneTBB; the paving never depends on the thread count.
+#include "sillage/loops/loop_function.h"
+#include "sillage/paving/paving.h"
+
+namespace sillage {
+
+// Error if eps <= 0 or NaN, if `square` is not a bounded 2-D box [a, b]^2
+// with a < b, or if it is not inside the time domain of f.
+Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel = true);
+
+}  // namespace sillage
