@@ -9,79 +9,12 @@
 #include <vector>
 
 #include "sillage/figures/tube_figure.h"
+#include "svg_check.h"
 
 using namespace sillage;
+using namespace sillage::test;
 
 namespace {
-
-struct Tag {
-  std::string name;
-  std::map<std::string, std::string> attr;
-};
-
-// Minimal XML check of our own output: balanced tags, quoted attributes,
-// known entities only. Returns the opening tags in order.
-std::vector<Tag> parse(const std::string& s) {
-  std::vector<Tag> tags;
-  std::vector<std::string> open;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    if (s[i] == '&') {
-      const std::string ent = s.substr(i, s.find(';', i) - i + 1);
-      EXPECT_TRUE(ent == "&amp;" || ent == "&lt;" || ent == "&gt;" || ent == "&quot;" || ent == "&apos;") << ent;
-    }
-    if (s[i] != '<') {
-      ++i;
-      continue;
-    }
-    if (s.compare(i, 2, "<?") == 0) {
-      i = s.find("?>", i) + 2;
-      continue;
-    }
-    if (s.compare(i, 2, "</") == 0) {
-      const auto end = s.find('>', i);
-      const std::string name = s.substr(i + 2, end - i - 2);
-      EXPECT_TRUE(!open.empty() && open.back() == name) << "unbalanced </" << name << ">";
-      if (!open.empty()) open.pop_back();
-      i = end + 1;
-      continue;
-    }
-    Tag t;
-    for (++i; i < s.size() && std::isalnum(static_cast<unsigned char>(s[i])); ++i) t.name += s[i];
-    EXPECT_FALSE(t.name.empty());
-    for (;;) {
-      while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-      if (i >= s.size()) {
-        ADD_FAILURE() << "truncated tag";
-        return tags;
-      }
-      if (s.compare(i, 2, "/>") == 0) {
-        i += 2;
-        break;
-      }
-      if (s[i] == '>') {
-        ++i;
-        open.push_back(t.name);
-        break;
-      }
-      std::string key;
-      while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '-' || s[i] == ':')) {
-        key += s[i++];
-      }
-      if (key.empty() || s.compare(i, 2, "=\"") != 0) {
-        ADD_FAILURE() << "bad attribute at " << s.substr(i, 40);
-        return tags;
-      }
-      const auto close = s.find('"', i + 2);
-      t.attr[key] = s.substr(i + 2, close - i - 2);
-      EXPECT_EQ(t.attr[key].find('<'), std::string::npos);
-      i = close + 1;
-    }
-    tags.push_back(t);
-  }
-  EXPECT_TRUE(open.empty()) << "unclosed tags";
-  return tags;
-}
 
 struct Rect {
   double x0, y0, x1, y1;  // pixels
@@ -89,10 +22,10 @@ struct Rect {
 
 std::vector<Rect> rects(const Figure& fig, const std::string& cls) {
   std::vector<Rect> r;
-  for (const auto& t : parse(fig.svg())) {
-    if (t.name != "rect" || !t.attr.count("class") || t.attr.at("class") != cls) continue;
-    const double x = std::stod(t.attr.at("x")), y = std::stod(t.attr.at("y"));
-    r.push_back({x, y, x + std::stod(t.attr.at("width")), y + std::stod(t.attr.at("height"))});
+  for (const auto& t : parse_xml(fig.svg())) {
+    if (t.name != "rect" || !t.attributes.count("class") || t.attributes.at("class") != cls) continue;
+    const double x = std::stod(t.attributes.at("x")), y = std::stod(t.attributes.at("y"));
+    r.push_back({x, y, x + std::stod(t.attributes.at("width")), y + std::stod(t.attributes.at("height"))});
   }
   return r;
 }
@@ -132,7 +65,7 @@ TEST(TubeFigure, OneRectanglePerSliceForSmallTubes) {
   auto td = domain(10, 1);
   Tube x(td, std::vector<Interval>{{0, 1}, {1, 3}, {2, 4}, {0, 2}, {-1, 1}, {0, 1}, {2, 3}, {1, 5}, {0, 4}, {1, 2}});
   Figure fig = tube_figure(x, "a <small> tube");
-  const auto tags = parse(fig.svg());
+  const auto tags = parse_xml(fig.svg());
   ASSERT_FALSE(tags.empty());
   EXPECT_EQ(tags[0].name, "svg");
   EXPECT_EQ(rects(fig, "slice").size(), 10u);
@@ -168,7 +101,7 @@ TEST(TubeFigure, GatesAndTruth) {
   EXPECT_EQ(rects(fig, "slice").size(), x.nb_slices());
   EXPECT_EQ(rects(fig, "gate").size(), x.nb_slices() + 1);
   std::size_t polylines = 0;
-  for (const auto& t : parse(fig.svg())) polylines += t.name == "polyline" && t.attr.at("class") == "truth";
+  for (const auto& t : parse_xml(fig.svg())) polylines += t.name == "polyline" && t.attributes.at("class") == "truth";
   EXPECT_EQ(polylines, 1u);
   EXPECT_TRUE(x.contains(truth));
 }
@@ -245,7 +178,7 @@ TEST(TubeFigure, Thickness) {
   EXPECT_DOUBLE_EQ(ddiag[0], std::sqrt(2.0));
   Figure fig = thickness_figure(x);
   std::size_t curves = 0;
-  for (const auto& t : parse(fig.svg())) curves += t.name == "polyline" && t.attr.at("class") == "thickness";
+  for (const auto& t : parse_xml(fig.svg())) curves += t.name == "polyline" && t.attributes.at("class") == "thickness";
   EXPECT_EQ(curves, 1u);
   EXPECT_THROW(step_figure(*td, {1, 2}, "bad", 600, 200), DimensionError);
   auto big = domain(10, 1e-4);
@@ -263,7 +196,7 @@ TEST(TubeFigure, NonUniformDomainSampledTruthAndUnboundedVector) {
   EXPECT_EQ(rects(fig, "slice").size(), 5u);
   expect_covered(fig, x, -1e9, 1e9);
   std::size_t truths = 0;
-  for (const auto& t : parse(fig.svg())) truths += t.name == "polyline" && t.attr.at("class") == "truth";
+  for (const auto& t : parse_xml(fig.svg())) truths += t.name == "polyline" && t.attributes.at("class") == "truth";
   EXPECT_EQ(truths, 1u);
 
   TubeVector v(td, 2, Interval(0, 1));
