@@ -41,6 +41,11 @@ EXAMPLES = [
     ("drifting_clock", "py", "drifting_clock.py"),
     ("plaza1", "cpp", "example_plaza1"),
     ("plaza1", "py", "plaza1.py"),
+    ("loops_survey", "cpp", "example_loops_survey"),
+    ("loops_plaza1", "cpp", "example_loops_plaza1"),
+    ("loops_plaza1", "py", "loops_plaza1.py"),
+    ("loops_utias", "cpp", "example_loops_utias"),
+    ("loops_lissajous", "py", "loops_lissajous.py"),
 ]
 
 

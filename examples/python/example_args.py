@@ -26,6 +26,26 @@ def out_dir_and_step(description, dt, ratio=0.0):
     return out, args
 
 
+def out_dir_and_data(description, dataset, name, extra_args=None):
+    """--out (created) and --data (default ../shared/data/<dataset> beside the repository):
+    (out, folder, args), or None after reporting the example as skipped when the folder has no
+    odometry.csv. extra_args(parser) may add options."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--out", default="out", help="folder for the figures")
+    ap.add_argument("--data", default=str(Path(__file__).resolve().parents[3] / "shared" / "data" / dataset),
+                    help="the data folder")
+    if extra_args:
+        extra_args(ap)
+    args = ap.parse_args()
+    out, folder = Path(args.out), Path(args.data)
+    out.mkdir(parents=True, exist_ok=True)
+    if not (folder / "odometry.csv").exists():
+        print(f"no {dataset} data at {folder} (pass --data DIR)")
+        print_result(name, "skipped: no data", True)
+        return None
+    return out, folder, args
+
+
 def print_result(name, result, check, figures=()):
     print("RESULT " + json.dumps({"name": name, "result": result, "check": bool(check),
                                   "figures": [list(f) for f in figures]}))

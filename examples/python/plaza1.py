@@ -4,14 +4,12 @@ heading change per period), then the same plus the 3529 radio ranges to 4
 beacons, each at an uncertain time (CtcEval). The same network and stated error
 bounds as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
 the position tube. Figures: the map (tube, truth, beacons) and the thickness."""
-import argparse
 import math
 import time
-from pathlib import Path
 
 import sillage
-from example_args import print_result
-from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcIncrement, DomainRef, Function, Interval,
+from example_args import out_dir_and_data, print_result
+from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcIncrement, Function, Interval,
                      IntervalVector, TDomain, Tube, TubeVector)
 
 # The error model (see the C++ example for the reasons of each value).
@@ -84,16 +82,10 @@ def solve(d, with_ranges):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--out", default="out")
-    ap.add_argument("--data", default=str(Path(__file__).resolve().parents[3] / "shared" / "data" / "plaza1"))
-    args = ap.parse_args()
-    out, folder = Path(args.out), Path(args.data)
-    out.mkdir(parents=True, exist_ok=True)
-    if not (folder / "odometry.csv").exists():
-        print(f"no plaza1 data at {folder} (pass --data DIR)")
-        print_result("plaza1", "skipped: no data", True)
+    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1")
+    if parsed is None:
         return
+    out, folder, _ = parsed
     d = load(folder)
     ok, summary, figures = True, "", []
     truth = (sillage.Trajectory(list(d["t"]), list(d["x"])), sillage.Trajectory(list(d["t"]), list(d["y"])))

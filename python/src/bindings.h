@@ -26,6 +26,7 @@ void init_tube_ctc(py::module_& m);
 void init_dynamics(py::module_& m);
 void init_ctc_eval(py::module_& m);
 void init_io(py::module_& m);
+void init_loops(py::module_& m);
 void init_tube_figures(py::module_& m);
 void init_figures(py::module_& m);
 }  // namespace sillage::python

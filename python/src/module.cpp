@@ -17,6 +17,7 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_dynamics(m);
   sillage::python::init_ctc_eval(m);
   sillage::python::init_io(m);
+  sillage::python::init_loops(m);
   sillage::python::init_figures(m);
   sillage::python::init_tube_figures(m);
 }
