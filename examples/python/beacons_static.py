@@ -6,7 +6,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import sillage  # noqa: E402
 from example_args import out_dir, print_result  # noqa: E402
 from sillage import ContractorNetwork, CtcFunction, Function, Interval, IntervalVector  # noqa: E402
 from sillage import plot  # noqa: E402

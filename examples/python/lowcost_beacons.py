@@ -8,7 +8,6 @@ The true robot, x(0) = (0, 0, pi/2, 0) with the centre input (RK4, step dt/10),
 must stay inside the tubes, and every time where it meets [z_i] inside [t_i]."""
 import math
 import time
-from pathlib import Path
 
 import numpy as np
 

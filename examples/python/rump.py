@@ -4,7 +4,7 @@ confident wrong answer; interval arithmetic encloses the exact value
 from fractions import Fraction
 
 from example_args import out_dir, print_result
-from sillage import Function, Interval, IntervalVector
+from sillage import Function, IntervalVector
 
 
 def rump(x, y, a=333.75, b=5.5):

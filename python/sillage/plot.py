@@ -5,7 +5,7 @@ boundary boxes, blue for boxes proven outside. Every helper draws on a given
 matplotlib Axes and returns what it added.
 """
 import numpy as np
-from matplotlib.collections import PatchCollection, PolyCollection
+from matplotlib.collections import PolyCollection
 from matplotlib.patches import Circle, PathPatch, Rectangle
 from matplotlib.path import Path
 
