@@ -76,6 +76,13 @@ void run_tplane(benchmark::State& state, double hours, double eps_divisor, bool 
 void BM_DetectionsAndProofs(benchmark::State& state) { run_tplane(state, double(state.range(0)), 2000, true); }
 BENCHMARK(BM_DetectionsAndProofs)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Against the mission length at dt = 0.1 s: 1e4, 3.6e4, 7.2e4 and 1e5 slices (arg in seconds).
+void BM_DetectionsAndProofsVsLength(benchmark::State& state) {
+  run_tplane(state, double(state.range(0)) / 3600.0, 2000, true);
+}
+BENCHMARK(BM_DetectionsAndProofsVsLength)->Arg(1000)->Arg(3600)->Arg(7200)->Arg(10000)
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_Detections(benchmark::State& state) { run_tplane(state, double(state.range(0)), 2000, false); }
 BENCHMARK(BM_Detections)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
