@@ -20,4 +20,5 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_loops(m);
   sillage::python::init_figures(m);
   sillage::python::init_tube_figures(m);
+  sillage::python::init_loop_figures(m);
 }
