@@ -50,11 +50,8 @@ std::string iv(const Interval& a, int digits = 4) {
 
 int main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
-  double dt = 0.01, ratio = 0.0;
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::string(argv[i]) == "--dt") dt = std::stod(argv[i + 1]);
-    if (std::string(argv[i]) == "--ratio") ratio = std::stod(argv[i + 1]);
-  }
+  const double dt = example::option_number(argc, argv, "--dt", 0.01);
+  const double ratio = example::option_number(argc, argv, "--ratio", 0.0);
   const auto td = TDomain::create(0.0, kTf, dt);
 
   // The a priori [h] (h(0) = 0 and ḣ ∈ [φ] only) and its inverses, for comparison.

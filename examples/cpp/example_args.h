@@ -1,6 +1,7 @@
 #pragma once
-// Tiny shared helpers of the C++ examples: the --out folder and the RESULT line
-// that examples/run_demo.py reads.
+// Tiny shared helpers of the C++ examples: `--name value` options, the --out
+// folder and the RESULT line that examples/run_demo.py reads.
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -9,11 +10,22 @@
 
 namespace example {
 
-inline std::filesystem::path out_dir(int argc, char** argv) {
-  std::filesystem::path out = "out";
+// The value following `name` on the command line, or `fallback` if absent.
+inline std::string option_value(int argc, char** argv, const std::string& name, const std::string& fallback) {
   for (int i = 1; i + 1 < argc; ++i) {
-    if (std::string(argv[i]) == "--out") out = argv[i + 1];
+    if (std::string(argv[i]) == name) return argv[i + 1];
   }
+  return fallback;
+}
+
+// A numeric option; text that is not a number reads as 0 (examples check their ranges).
+inline double option_number(int argc, char** argv, const std::string& name, double fallback) {
+  const std::string v = option_value(argc, argv, name, "");
+  return v.empty() ? fallback : std::atof(v.c_str());
+}
+
+inline std::filesystem::path out_dir(int argc, char** argv) {
+  const std::filesystem::path out = option_value(argc, argv, "--out", "out");
   std::filesystem::create_directories(out);
   return out;
 }

@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "example_args.h"
-#include "example_options.h"
 #include "loops_figures.h"
 #include "loops_real_data.h"
 #include "plaza1_data.h"

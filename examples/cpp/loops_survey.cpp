@@ -38,13 +38,6 @@ using namespace sillage;
 
 namespace {
 
-double option(int argc, char** argv, const std::string& name, double fallback) {
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (argv[i] == name) return std::atof(argv[i + 1]);
-  }
-  return fallback;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -78,9 +71,9 @@ std::size_t velocity_misses(const looping_mission::Mission& m) {
 
 int main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
-  const double hours = option(argc, argv, "--hours", 1.0);
-  const double divisor = option(argc, argv, "--eps-divisor", 2000.0);
-  const double e = option(argc, argv, "--e", 0.01), seed = option(argc, argv, "--seed", 2017);
+  const double hours = example::option_number(argc, argv, "--hours", 1.0);
+  const double divisor = example::option_number(argc, argv, "--eps-divisor", 2000.0);
+  const double e = example::option_number(argc, argv, "--e", 0.01), seed = example::option_number(argc, argv, "--seed", 2017);
   if (!(hours > 0) || !(divisor >= 1) || !(e > 0) || !(seed >= 0)) {
     std::fprintf(stderr, "loops_survey: need --hours > 0, --eps-divisor >= 1, --e > 0 and --seed >= 0\n");
     return 2;

@@ -193,11 +193,8 @@ Figure thickness_plot(const TDomain& td, const std::vector<std::vector<double>>&
 
 int main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
-  double dt = 0.05, ratio = 0.0;
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::string(argv[i]) == "--dt") dt = std::stod(argv[i + 1]);
-    if (std::string(argv[i]) == "--ratio") ratio = std::stod(argv[i + 1]);
-  }
+  const double dt = example::option_number(argc, argv, "--dt", 0.05);
+  const double ratio = example::option_number(argc, argv, "--ratio", 0.0);
   const auto td = make_tdomain(dt);
   const std::size_t N = td->nb_slices();
 

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "example_args.h"
-#include "example_options.h"
 #include "sillage/error.h"
 #include "sillage/io/csv.h"
 
