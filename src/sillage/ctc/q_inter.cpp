@@ -1,0 +1,96 @@
+#include "sillage/ctc/q_inter.h"
+
+#include <algorithm>
+#include <string>
+
+namespace sillage {
+
+void check_q(int q, const char* where) {
+  if (q < 0) throw Error(std::string(where) + ": q must be >= 0 (at most q wrong constraints), got " + std::to_string(q));
+}
+
+namespace {
+
+// Exact hull of S = {x : c(x) >= p}, c(x) = #{i : x in [a_i, b_i]}, over the
+// non-empty intervals given by sorted lower bounds `a` and sorted upper
+// bounds `b` (the same n intervals), 1 <= p <= n.
+//
+// Why it is exact. Since a_i <= b_i, x in [a_i, b_i] <=> a_i <= x and not
+// b_i < x, and b_i < x implies a_i <= x, so
+//     c(x) = #{i : a_i <= x} - #{i : b_i < x}.
+// c is a step function that only rises at a lower bound (a_i is in its
+// interval) and only falls just after an upper bound (b_i is in its interval),
+// so S is a finite union of closed intervals: each of them starts at some a_i
+// and ends at some b_j. Hence min S = min{a_i : c(a_i) >= p} and
+// max S = max{b_j : c(b_j) >= p}, and S is empty when no a_i qualifies.
+// Infinite bounds fit the same formula: c(-inf), read as "for every x low
+// enough", counts the intervals unbounded below, and symmetrically at +inf.
+Interval hull_of_level_set(const std::vector<double>& a, const std::vector<double>& b, std::size_t p) {
+  const auto count = [&](double x) {
+    const auto le = std::upper_bound(a.begin(), a.end(), x) - a.begin();  // a_i <= x
+    const auto lt = std::lower_bound(b.begin(), b.end(), x) - b.begin();  // b_i < x
+    return static_cast<std::size_t>(le - lt);
+  };
+  const auto lo = std::find_if(a.begin(), a.end(), [&](double x) { return count(x) >= p; });
+  if (lo == a.end()) return Interval::empty();
+  const auto hi = std::find_if(b.rbegin(), b.rend(), [&](double x) { return count(x) >= p; });
+  // hi exists: S is non-empty, so its maximum is one of the b_j.
+  return Interval::from_bounds_unchecked(*lo, *hi);
+}
+
+// The q-relaxed hull of m intervals of which the non-empty ones have lower
+// bounds a and upper bounds b (sorted here); the m - a.size() others are empty.
+Interval relaxed_hull(std::vector<double>& a, std::vector<double>& b, std::size_t m, int q) {
+  const auto uq = static_cast<std::size_t>(q);
+  if (uq >= m) return Interval::all_reals();
+  const std::size_t p = m - uq;  // constraints that must hold
+  if (a.size() < p) return Interval::empty();
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return hull_of_level_set(a, b, p);
+}
+
+}  // namespace
+
+Interval q_inter(const std::vector<Interval>& xs, int q) {
+  check_q(q, "q_inter");
+  if (xs.empty()) throw Error("q_inter: needs at least one interval");
+  std::vector<double> a, b;
+  for (const auto& x : xs) {
+    if (x.is_empty()) continue;
+    a.push_back(x.lb());
+    b.push_back(x.ub());
+  }
+  return relaxed_hull(a, b, xs.size(), q);
+}
+
+IntervalVector q_inter(const std::vector<IntervalVector>& boxes, int q) {
+  check_q(q, "q_inter");
+  if (boxes.empty()) throw Error("q_inter: needs at least one box");
+  const std::size_t n = boxes[0].size();
+  for (std::size_t i = 1; i < boxes.size(); ++i) {
+    if (boxes[i].size() != n) {
+      throw DimensionError("q_inter: box " + std::to_string(i) + " has size " + std::to_string(boxes[i].size()) +
+                           ", box 0 has size " + std::to_string(n));
+    }
+  }
+  // An empty box counts against every point, so it adds no bounds in any
+  // component (one of its components alone being empty must not matter).
+  std::vector<const IntervalVector*> live;
+  for (const auto& x : boxes) {
+    if (!x.is_empty()) live.push_back(&x);
+  }
+  IntervalVector result(n);
+  std::vector<double> a(live.size()), b(live.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t i = 0; i < live.size(); ++i) {
+      a[i] = (*live[i])[k].lb();
+      b[i] = (*live[i])[k].ub();
+    }
+    result[k] = relaxed_hull(a, b, boxes.size(), q);
+    if (result[k].is_empty()) return IntervalVector::empty(n);
+  }
+  return result;
+}
+
+}  // namespace sillage
