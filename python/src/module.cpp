@@ -21,4 +21,5 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_figures(m);
   sillage::python::init_tube_figures(m);
   sillage::python::init_loop_figures(m);
+  sillage::python::init_qinter(m);
 }

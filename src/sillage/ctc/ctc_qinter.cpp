@@ -1,7 +1,5 @@
 #include "sillage/ctc/ctc_qinter.h"
 
-#include "sillage/ctc/q_inter.h"
-
 namespace sillage {
 
 CtcQInter::CtcQInter(std::vector<CtcPtr> list, int q) : CtcCombination(std::move(list), "CtcQInter"), q_(q) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sillage/ctc/ctc_algebra.h"
+#include "sillage/ctc/q_inter.h"
 
 namespace sillage {
 

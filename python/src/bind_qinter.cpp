@@ -1,0 +1,86 @@
+// Outliers: the q-relaxed intersection (q_inter, CtcQInter) and the GOMNE
+// loop (gomne, GomneResult). gomne releases the GIL (Python subclasses of Ctc
+// take it back in their overrides).
+#include <pybind11/stl.h>
+
+#include <climits>
+#include <optional>
+#include <vector>
+
+#include "bindings.h"
+#include "sillage/ctc/ctc_qinter.h"
+#include "sillage/ctc/gomne.h"
+
+namespace sillage::python {
+
+std::shared_ptr<const Ctc> hold_ctc(const py::handle& h);  // bind_ctc.cpp
+
+namespace {
+
+std::vector<CtcPtr> hold_ctcs(const py::iterable& list) {
+  std::vector<CtcPtr> v;
+  for (const auto& h : list) v.push_back(hold_ctc(h));
+  return v;
+}
+
+}  // namespace
+
+void init_qinter(py::module_& m) {
+  m.def("q_inter", py::overload_cast<const std::vector<Interval>&, int>(&q_inter), py::arg("xs"), py::arg("q"),
+        R"doc(The hull of the points lying in at least m - q of the m intervals xs
+(an empty interval contains no point). Exact; the whole line when q >= m.)doc");
+  m.def("q_inter", py::overload_cast<const std::vector<IntervalVector>&, int>(&q_inter), py::arg("boxes"),
+        py::arg("q"),
+        R"doc(Component-wise q-relaxed intersection of boxes of the same size: an outer
+approximation of the points lying in at least m - q of them. An empty box
+counts as a constraint violated everywhere.)doc");
+
+  py::class_<CtcQInter, Ctc, std::shared_ptr<CtcQInter>>(m, "CtcQInter", R"doc(
+The q-relaxed intersection of m contractors: contract(x) keeps every point of x
+that satisfies at least m - q of the m constraints ("at most q are wrong"):
+x & q_inter([c.contract(copy of x) for c in ctcs], q). q = 0 is CtcInter; q >= m
+leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
+      .def(py::init([](const py::iterable& ctcs, int q) { return std::make_shared<CtcQInter>(hold_ctcs(ctcs), q); }),
+           py::arg("ctcs"), py::arg("q"))
+      .def("q", &CtcQInter::q);
+
+  py::class_<GomneResult>(m, "GomneResult", "What gomne proved; see gomne.")
+      .def_readonly("q", &GomneResult::q,
+                    "The smallest q not proven infeasible: at least q measurements are wrong (q_max + 1 if every q "
+                    "<= q_max was infeasible).")
+      .def_readonly("box", &GomneResult::box, "Hull of the leaves: encloses the q-relaxed feasible set.")
+      .def_readonly("outliers", &GomneResult::outliers,
+                    "Indices of the measurements violated on the whole q-relaxed set (proven wrong if at most q are).")
+      .def_readonly("leaves", &GomneResult::leaves, "The boxes of the paving of the q-relaxed set.")
+      .def("is_empty", &GomneResult::is_empty)
+      .def("__repr__", [](const GomneResult& r) {
+        return "<GomneResult q=" + std::to_string(r.q) + " box=" + r.box.str() + " outliers=" +
+               py::repr(py::cast(r.outliers)).cast<std::string>() + ">";
+      });
+
+  m.def(
+      "gomne",
+      [](const py::iterable& ctcs, const IntervalVector& box, double eps, std::optional<int> q_max, double ratio) {
+        const auto list = hold_ctcs(ctcs);
+        GomneOptions o;
+        o.eps = eps;
+        o.q_max = q_max.value_or(INT_MAX);
+        o.ratio = ratio;
+        py::gil_scoped_release release;
+        return gomne(list, box, o);
+      },
+      py::arg("ctcs"), py::arg("box"), py::arg("eps") = GomneOptions{}.eps, py::arg("q_max") = py::none(),
+      py::arg("ratio") = GomneOptions{}.ratio,
+      R"doc(GOMNE, the guaranteed outlier minimal number estimator. For q = 0, 1, ... the
+set S_q of the points of box satisfying at least m - q of the m constraints is
+contracted by CtcFixPoint(CtcQInter(ctcs, q), ratio) and, if eps is finite,
+paved to precision eps; the first q not proven empty is returned.
+
+Guarantees, if the truth lies in box: at least result.q measurements are
+wrong. If moreover at most result.q are wrong, the truth lies in result.box
+(and in one of result.leaves) and every index of result.outliers is a wrong
+measurement (its contractor empties every leaf). eps > 0 (a finite eps needs a
+bounded box), q_max >= 0 (default: the number of contractors).)doc");
+}
+
+}  // namespace sillage::python
