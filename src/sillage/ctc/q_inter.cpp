@@ -26,25 +26,54 @@ namespace {
 // Infinite bounds fit the same formula: c(-inf), read as "for every x low
 // enough", counts the intervals unbounded below, and symmetrically at +inf.
 Interval hull_of_level_set(const std::vector<double>& a, const std::vector<double>& b, std::size_t p) {
-  const auto count = [&](double x) {
-    const auto le = std::upper_bound(a.begin(), a.end(), x) - a.begin();  // a_i <= x
-    const auto lt = std::lower_bound(b.begin(), b.end(), x) - b.begin();  // b_i < x
-    return static_cast<std::size_t>(le - lt);
-  };
-  const auto lo = std::find_if(a.begin(), a.end(), [&](double x) { return count(x) >= p; });
-  if (lo == a.end()) return Interval::empty();
-  const auto hi = std::find_if(b.rbegin(), b.rend(), [&](double x) { return count(x) >= p; });
-  // hi exists: S is non-empty, so its maximum is one of the b_j.
-  return Interval::from_bounds_unchecked(*lo, *hi);
+  const std::size_t n = a.size();
+  // Lowest a_i with c(a_i) >= p, ascending; j = #{b < a_i} by a moving pointer
+  // (j <= i + 1: b_k < a_i implies a_k < a_i).
+  std::size_t lo = n;
+  for (std::size_t i = 0, j = 0; i < n; ++i) {
+    if (i + 1 < n && a[i + 1] == a[i]) continue;  // at the last of equal a's, i + 1 = #{a <= a_i}
+    while (j < n && b[j] < a[i]) ++j;
+    if (i + 1 - j >= p) {
+      lo = i;
+      break;
+    }
+  }
+  if (lo == n) return Interval::empty();
+  // Highest b_i with c(b_i) >= p, descending; above = #{a > b_i} by a moving
+  // pointer (i <= n - above: b_k < b_i implies a_k < b_i). S is non-empty, so
+  // this loop finds its maximum.
+  for (std::size_t i = n, above = 0; i-- > 0;) {
+    if (i > 0 && b[i - 1] == b[i]) continue;  // at the first of equal b's, i = #{b < b_i}
+    while (above < n && a[n - 1 - above] > b[i]) ++above;
+    if (n - above - i >= p) return Interval::from_bounds_unchecked(a[lo], b[i]);
+  }
+  return Interval::empty();  // not reached
 }
 
 // The q-relaxed hull of m intervals of which the non-empty ones have lower
-// bounds a and upper bounds b (sorted here); the m - a.size() others are empty.
+// bounds a and upper bounds b (reordered here); the m - a.size() others are empty.
+//
+// A shortcut first: with a_(p) the p-th smallest lower bound and b^(p) the
+// p-th largest upper bound, S is inside [a_(p), b^(p)] (below a_(p) fewer than
+// p intervals have started, above b^(p) fewer than p are left), and when
+// c(a_(p)) >= p and c(b^(p)) >= p both ends are in S, so the hull is exactly
+// [a_(p), b^(p)]: O(n), the common case of mostly consistent data. Otherwise,
+// sort and sweep (hull_of_level_set).
 Interval relaxed_hull(std::vector<double>& a, std::vector<double>& b, std::size_t m, int q) {
   const auto uq = static_cast<std::size_t>(q);
   if (uq >= m) return Interval::all_reals();
-  const std::size_t p = m - uq;  // constraints that must hold
-  if (a.size() < p) return Interval::empty();
+  const std::size_t p = m - uq, n = a.size();  // p constraints must hold
+  if (n < p) return Interval::empty();
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(p - 1), a.end());
+  std::nth_element(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n - p), b.end());
+  const double lo = a[p - 1], hi = b[n - p];
+  if (hi < lo) return Interval::empty();
+  const auto count = [&](double x) {  // c(x), see hull_of_level_set
+    std::size_t c = 0;
+    for (std::size_t i = 0; i < n; ++i) c += (a[i] <= x) - (b[i] < x);
+    return c;
+  };
+  if (count(lo) >= p && count(hi) >= p) return Interval::from_bounds_unchecked(lo, hi);
   std::sort(a.begin(), a.end());
   std::sort(b.begin(), b.end());
   return hull_of_level_set(a, b, p);
