@@ -1,6 +1,7 @@
-// Outliers: the q-relaxed intersection (q_inter, CtcQInter) and the GOMNE
-// loop (gomne, GomneResult). gomne releases the GIL (Python subclasses of Ctc
-// take it back in their overrides).
+// Outliers: the q-relaxed intersection (q_inter, CtcQInter), the GOMNE loop
+// (gomne, GomneResult) and position fixes on a tube (TubeObservation,
+// CtcQEval). gomne releases the GIL (Python subclasses of Ctc take it back in
+// their overrides).
 #include <pybind11/stl.h>
 
 #include <climits>
@@ -10,6 +11,7 @@
 #include "bindings.h"
 #include "sillage/ctc/ctc_qinter.h"
 #include "sillage/ctc/gomne.h"
+#include "sillage/dynamics/ctc_qeval.h"
 
 namespace sillage::python {
 
@@ -81,6 +83,27 @@ wrong. If moreover at most result.q are wrong, the truth lies in result.box
 (and in one of result.leaves) and every index of result.outliers is a wrong
 measurement (its contractor empties every leaf). eps > 0 (a finite eps needs a
 bounded box), q_max >= 0 (default: the number of contractors).)doc");
+
+  py::class_<TubeObservation>(m, "TubeObservation", "A position fix x(t) in z for some t in the interval t.")
+      .def(py::init([](const Interval& t, const IntervalVector& z) { return TubeObservation{t, z}; }), py::arg("t"),
+           py::arg("z"))
+      .def_readwrite("t", &TubeObservation::t)
+      .def_readwrite("z", &TubeObservation::z)
+      .def("__repr__", [](const TubeObservation& o) {
+        return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + ">";
+      });
+
+  py::class_<CtcQEval>(m, "CtcQEval", R"doc(
+Position fixes on a tube, at most q of them wrong. contract(x, v, obs) contracts
+a copy of the TubeVector x by each fix alone (CtcEval with the derivative v),
+then intersects x, gate by gate and slice by slice, with the q-relaxed
+intersection of the copies: a trajectory satisfying m - q fixes is kept. Returns
+the indices of the fixes no trajectory of the input x satisfies (wrong, if at
+most q are). The TDomain is never sampled.)doc")
+      .def(py::init<int>(), py::arg("q"))
+      .def("q", &CtcQEval::q)
+      .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
+           "Contracts x in place; obs is a list of TubeObservation.");
 }
 
 }  // namespace sillage::python

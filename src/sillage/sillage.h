@@ -52,6 +52,7 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_increment.h"
+#include "sillage/dynamics/ctc_qeval.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/io/csv.h"
 #include "sillage/dynamics/time_propag.h"

@@ -150,3 +150,37 @@ def test_errors():
         sillage.gomne([c], box((0, 1)))
     with pytest.raises(sillage.Error):
         sillage.q_inter([], 0)
+
+
+def fixes(wrong):
+    """x(t) = (cos t, sin t) through its derivative +-0.01; ten fixes +-0.05, those at `wrong` off by (2, -1)."""
+    td = sillage.TDomain(0.0, 10.0, 0.05)
+    x = sillage.TubeVector(td, box((-10, 10), (-10, 10)))
+    v = sillage.TubeVector(td, "(-sin(t), cos(t))")
+    for j in range(2):
+        v[j] += Interval(-0.01, 0.01)
+    obs = []
+    for i in range(10):
+        t = 0.5 + i
+        dx, dy = (2.0, -1.0) if i in wrong else (0.0, 0.0)
+        z = box((math.cos(t) + dx - 0.05, math.cos(t) + dx + 0.05), (math.sin(t) + dy - 0.05, math.sin(t) + dy + 0.05))
+        obs.append(sillage.TubeObservation(Interval(t - 0.01, t + 0.01), z))
+    return x, v, obs
+
+
+def test_ctc_qeval_two_wrong_fixes():
+    for q in (0, 1):
+        x, v, obs = fixes([3, 7])
+        sillage.CtcQEval(q).contract(x, v, obs)
+        assert x.is_empty()
+    x, v, obs = fixes([3, 7])
+    before = x.copy()
+    c = sillage.CtcQEval(2)
+    assert c.q() == 2 and c.contract(x, v, obs) == []
+    assert x.is_subset(before) and x.max_thickness() < 0.3
+    assert all(x(k / 10).contains([math.cos(k / 10), math.sin(k / 10)]) for k in range(101))
+    assert c.contract(x, v, obs) == [3, 7]  # on the contracted tube the wrong fixes are violated everywhere
+    with pytest.raises(sillage.Error, match="q must be >= 0"):
+        sillage.CtcQEval(-1)
+    with pytest.raises(sillage.Error, match="observation"):
+        c.contract(x, v, [])
