@@ -81,6 +81,17 @@ def test_ctc_qinter_keeps_points_with_enough_constraints():
                     assert x.contains(p)
 
 
+def test_ctc_qinter_in_sivia_and_in_a_network():
+    ctcs = [sillage.CtcBox(box((1, 3))), sillage.CtcBox(box((2, 4))), sillage.CtcBox(box((10, 11)))]
+    c = sillage.CtcQInter(ctcs, 1)
+    assert bounds(sillage.sivia(box((0, 20)), c, 0.1).hull()) == [(2, 3)]
+    cn = sillage.ContractorNetwork()
+    x = box((0, 20))
+    cn.add(c, [x])
+    cn.contract()
+    assert bounds(x) == [(2, 3)]
+
+
 def ranges(wrong, seed=42):
     """20 beacons, truth (3.25, -1.5), ranges +-0.1; those at `wrong` shifted by 5 to 15."""
     rng = random.Random(seed)

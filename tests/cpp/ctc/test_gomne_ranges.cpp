@@ -54,6 +54,7 @@ TEST(GomneRanges, FindsTheInjectedOutliers) {
     const GomneResult g = gomne(r.ctcs, kX0, o);
     EXPECT_EQ(g.q, static_cast<int>(wrong.size()));
     EXPECT_TRUE(g.box.contains(r.truth)) << g.box;
+    EXPECT_TRUE(g.box.is_subset(kX0));
     EXPECT_EQ(g.outliers, wrong);
     EXPECT_LT(g.box.max_diam(), 1.0) << g.box;
     bool in_a_leaf = false;
