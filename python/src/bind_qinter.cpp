@@ -12,6 +12,7 @@
 #include "sillage/ctc/ctc_qinter.h"
 #include "sillage/ctc/gomne.h"
 #include "sillage/dynamics/ctc_qeval.h"
+#include "sillage/dynamics/gomne_tube.h"
 
 namespace sillage::python {
 
@@ -84,9 +85,14 @@ wrong. If moreover at most result.q are wrong, the truth lies in result.box
 measurement (its contractor empties every leaf). eps > 0 (a finite eps needs a
 bounded box), q_max >= 0 (default: the number of contractors).)doc");
 
-  py::class_<TubeObservation>(m, "TubeObservation", "A position fix x(t) in z for some t in the interval t.")
-      .def(py::init([](const Interval& t, const IntervalVector& z) { return TubeObservation{t, z}; }), py::arg("t"),
-           py::arg("z"))
+  py::class_<TubeObservation>(m, "TubeObservation", R"doc(
+A fix x(t) in z for some t in the interval t, z satisfying the contractor ctc
+(None: no constraint). A range r to a beacon b: z = IntervalVector(n) and
+ctc = CtcFunction(|z - b|, r).)doc")
+      .def(py::init([](const Interval& t, const IntervalVector& z, const py::object& ctc) {
+             return TubeObservation{t, z, ctc.is_none() ? nullptr : hold_ctc(ctc)};
+           }),
+           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none())
       .def_readwrite("t", &TubeObservation::t)
       .def_readwrite("z", &TubeObservation::z)
       .def("__repr__", [](const TubeObservation& o) {
@@ -104,6 +110,28 @@ most q are). The TDomain is never sampled.)doc")
       .def("q", &CtcQEval::q)
       .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
            "Contracts x in place; obs is a list of TubeObservation.");
+
+  py::class_<TubeGomneResult>(m, "TubeGomneResult", "What gomne_tube proved; see gomne_tube.")
+      .def_readonly("q", &TubeGomneResult::q, "At least q fixes are wrong (q_max + 1 if every q <= q_max emptied x).")
+      .def_readonly("x", &TubeGomneResult::x, "The tube contracted with CtcQEval(q).")
+      .def_readonly("outliers", &TubeGomneResult::outliers,
+                    "The fixes no trajectory of x satisfies (proven wrong if at most q are).");
+  m.def(
+      "gomne_tube",
+      [](const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs, std::optional<int> q_max,
+         int max_passes) {
+        TubeGomneOptions o;
+        o.q_max = q_max.value_or(INT_MAX);
+        o.max_passes = max_passes;
+        return gomne_tube(x, v, obs, o);
+      },
+      py::arg("x"), py::arg("v"), py::arg("obs"), py::arg("q_max") = py::none(),
+      py::arg("max_passes") = TubeGomneOptions{}.max_passes,
+      R"doc(GOMNE over the fixes of a tube: for q = 0, 1, ... contracts a copy of x by
+CtcQEval(q) (passes repeated while it changes, at most max_passes) and stops at
+the first q that does not empty it. If the true trajectory lies in x (with its
+derivative in v), at least result.q fixes are wrong; if moreover at most
+result.q are, the truth lies in result.x and result.outliers are wrong fixes.)doc");
 }
 
 }  // namespace sillage::python

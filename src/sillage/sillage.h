@@ -53,6 +53,7 @@
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/dynamics/ctc_qeval.h"
+#include "sillage/dynamics/gomne_tube.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/io/csv.h"
 #include "sillage/dynamics/time_propag.h"

@@ -195,3 +195,28 @@ def test_ctc_qeval_two_wrong_fixes():
         sillage.CtcQEval(-1)
     with pytest.raises(sillage.Error, match="observation"):
         c.contract(x, v, [])
+
+
+def test_gomne_tube_range_fixes():
+    td = sillage.TDomain(0.0, 10.0, 0.05)
+    x = sillage.TubeVector(td, box((-10, 10), (-10, 10)))
+    v = sillage.TubeVector(td, "(-sin(t), cos(t))")
+    for j in range(2):
+        v[j] += Interval(-0.01, 0.01)
+    beacons = [(3, 0), (0, 3), (-3, 0), (0, -3)]
+    obs = []
+    for i in range(10):
+        t = 0.5 + i
+        b = beacons[i % 4]
+        r = math.hypot(math.cos(t) - b[0], math.sin(t) - b[1]) + (1.0 if i in (2, 6) else 0.0)
+        d = Function(["z1", "z2"], f"sqrt((z1 - ({b[0]}))^2 + (z2 - ({b[1]}))^2)")
+        obs.append(sillage.TubeObservation(Interval(t - 0.01, t + 0.01), IntervalVector(2),
+                                           sillage.CtcFunction(d, Interval(r - 0.05, r + 0.05))))
+    res = sillage.gomne_tube(x, v, obs)
+    assert res.q == 2 and res.outliers == [2, 6]
+    assert all(res.x(k / 10).contains([math.cos(k / 10), math.sin(k / 10)]) for k in range(101))
+    assert res.x.max_thickness() < 0.5
+    none = sillage.gomne_tube(x, v, obs, q_max=1)
+    assert none.q == 2 and none.x.is_empty() and none.outliers == []
+    with pytest.raises(sillage.Error, match="max_passes"):
+        sillage.gomne_tube(x, v, obs, max_passes=0)

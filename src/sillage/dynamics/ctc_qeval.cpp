@@ -3,6 +3,7 @@
 #include <string>
 
 #include "sillage/ctc/q_inter.h"
+#include "sillage/ctc/shrink.h"
 #include "sillage/dynamics/ctc_eval.h"
 
 namespace sillage {
@@ -20,6 +21,31 @@ void check_observations(const TubeVector& x, const TubeVector& v, const std::vec
       throw DimensionError("CtcQEval::contract: observation " + std::to_string(i) + " has " +
                            std::to_string(obs[i].z.size()) + " components, the tube " + std::to_string(x.size()));
     }
+    if (!obs[i].t.intersects(x.tdomain()->t0_tf())) {
+      throw Error("CtcQEval::contract: the time " + obs[i].t.str() + " of observation " + std::to_string(i) +
+                  " does not meet the time domain " + x.tdomain()->t0_tf().str());
+    }
+    if (obs[i].ctc && obs[i].ctc->nb_vars() != x.size()) {
+      throw DimensionError("CtcQEval::contract: the contractor of observation " + std::to_string(i) + " (" +
+                           obs[i].ctc->name() + ") acts on " + std::to_string(obs[i].ctc->nb_vars()) +
+                           " variables, the tube has " + std::to_string(x.size()));
+    }
+  }
+}
+
+// Contracts y by one observation alone: CtcEval alternated with the
+// constraint on z until z stops shrinking (shrink.h); false if inconsistent.
+bool contract_alone(const CtcEval& eval, const TubeObservation& o, TubeVector& y, const TubeVector& v) {
+  Interval t = o.t & y.tdomain()->t0_tf();  // not empty (checked)
+  IntervalVector z = o.z;
+  while (true) {
+    const IntervalVector before = z;
+    if (o.ctc) {
+      o.ctc->contract(z);
+      z &= before;  // a contractor never enlarges; guard against one that would
+    }
+    if (z.is_empty() || !eval.contract(t, z, y, v)) return false;
+    if (!o.ctc || !shrank(before, z, 0.01)) return !y.is_empty();
   }
 }
 
@@ -48,9 +74,7 @@ std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
   std::vector<TubeVector> copies(obs.size(), x);
   std::vector<bool> live(obs.size());
   for (std::size_t i = 0; i < obs.size(); ++i) {
-    Interval t = obs[i].t & Interval(x.tdomain()->t0(), x.tdomain()->tf());
-    IntervalVector z = obs[i].z;
-    live[i] = !t.is_empty() && eval.contract(t, z, copies[i], v) && !copies[i].is_empty();
+    live[i] = contract_alone(eval, obs[i], copies[i], v);
     if (!live[i]) violated.push_back(i);
   }
   if (static_cast<std::size_t>(q_) >= obs.size()) return violated;

@@ -1,6 +1,6 @@
 #pragma once
 // CtcQEval: position fixes on a tube when some of them may be wrong. The
-// observations x(t_i) ∈ [z_i], t_i ∈ [t_i], i = 1..m, of a trajectory x with
+//  x(t_i) ∈ [z_i], t_i ∈ [t_i], i = 1..m, of a trajectory x with
 // x' ∈ [v] are relaxed so that at most q of them may be wrong:
 //   - a copy of [x] is contracted by each observation alone (CtcEval with
 //     the derivative [v], which carries the fix along the whole tube);
@@ -16,15 +16,19 @@
 #include <cstddef>
 #include <vector>
 
+#include "sillage/ctc/ctc_algebra.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {
 
-// One position fix: x(t) ∈ z for some t ∈ [t].
+// One fix: x(t) ∈ z for some t ∈ [t], and z satisfies the constraint of
+// `ctc` (null: none). A range r to a beacon b is z = IntervalVector(n) with
+// ctc = CtcFunction(|z - b|, [r]); a position fix is a bounded z alone.
 struct TubeObservation {
   Interval t;
   IntervalVector z;
+  CtcPtr ctc = nullptr;  // on z.size() variables
 };
 
 class CtcQEval {
@@ -35,7 +39,8 @@ class CtcQEval {
 
   // Contracts x; v is its derivative (same TDomain and size, else
   // DimensionError); each z of the non-empty list obs has x.size()
-  // components (else Error / DimensionError). Returns the indices of the
+  // components and each ctc acts on x.size() variables (else Error /
+  // DimensionError). Returns the indices of the
   // observations that no trajectory of the input [x] satisfies (their copy
   // came out empty): if at most q observations are wrong, they are wrong.
   std::vector<std::size_t> contract(TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs) const;

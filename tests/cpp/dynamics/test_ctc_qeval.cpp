@@ -7,21 +7,17 @@
 #include <cmath>
 #include <vector>
 
+#include "dynamics/circle_mission.h"
 #include "sillage/dynamics/ctc_qeval.h"
-#include "sillage/tube/tdomain.h"
 
 using namespace sillage;
 
 namespace {
 
-struct Fixes {
-  std::shared_ptr<TDomain> td = TDomain::create(0.0, 10.0, 0.05);
-  TubeVector x{td, IntervalVector(2, Interval(-10, 10))};
-  TubeVector v{td, "(-sin(t), cos(t))"};
+struct Fixes : test::CircleMission {
   std::vector<TubeObservation> obs;
 
   explicit Fixes(const std::vector<std::size_t>& wrong) {
-    for (std::size_t j = 0; j < 2; ++j) v[j] += Interval(-0.01, 0.01);
     for (std::size_t i = 0; i < 10; ++i) {
       const double t = 0.5 + static_cast<double>(i);
       IntervalVector z{Interval(std::cos(t)).inflate(0.05), Interval(std::sin(t)).inflate(0.05)};
@@ -32,14 +28,6 @@ struct Fixes {
     }
   }
 };
-
-bool holds_truth(const TubeVector& x) {
-  for (int k = 0; k <= 1000; ++k) {
-    const double t = k / 100.0;
-    if (!x(t).contains({std::cos(t), std::sin(t)})) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -53,17 +41,17 @@ TEST(CtcQEval, TwoWrongFixes) {
   const TubeVector before = f.x;
   EXPECT_TRUE(CtcQEval(2).contract(f.x, f.v, f.obs).empty());  // each fix alone fits the wide tube
   EXPECT_TRUE(f.x.is_subset(before));
-  EXPECT_TRUE(holds_truth(f.x));
+  EXPECT_TRUE(test::holds_circle(f.x));
   EXPECT_LT(f.x.max_thickness(), 0.3);
   // On the contracted tube the two wrong fixes are violated by every trajectory.
   EXPECT_EQ(CtcQEval(2).contract(f.x, f.v, f.obs), (std::vector<std::size_t>{3, 7}));
-  EXPECT_TRUE(holds_truth(f.x));
+  EXPECT_TRUE(test::holds_circle(f.x));
 }
 
 TEST(CtcQEval, NoWrongFixIsTheIntersectionAndLargeQTheIdentity) {
   Fixes f({});
   CtcQEval(0).contract(f.x, f.v, f.obs);
-  EXPECT_TRUE(holds_truth(f.x));
+  EXPECT_TRUE(test::holds_circle(f.x));
   EXPECT_LT(f.x.max_thickness(), 0.3);
   Fixes g({});
   const TubeVector before = g.x;
