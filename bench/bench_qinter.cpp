@@ -5,6 +5,7 @@
 // that the true point survives and few results are empty (counter
 // empty_ratio). Each iteration takes the next input from a pool of 4096
 // random boxes around the true point, so that no input is seen twice in a row.
+// Last, the whole GOMNE loop on 20 of the ranges.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "sillage/ctc/ctc_box.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/ctc/ctc_qinter.h"
+#include "sillage/ctc/gomne.h"
 
 using namespace sillage;
 
@@ -98,10 +100,28 @@ void BM_QInterIntervals(benchmark::State& state) {
 void BM_CtcQInterBoxes(benchmark::State& state) { run_ctc(state, box_ctcs(static_cast<std::size_t>(state.range(0)))); }
 void BM_CtcQInterRings(benchmark::State& state) { run_ctc(state, ring_ctcs(static_cast<std::size_t>(state.range(0)))); }
 
+// GOMNE on m = 20 ranges (2 wrong) from X0 = [-50, 50]^2, paved to eps.
+void BM_Gomne20Ranges(benchmark::State& state) {
+  const auto ctcs = ring_ctcs(20);
+  GomneOptions o;
+  o.eps = state.range(0) == 0 ? 0.1 : 0.01;
+  GomneResult r;
+  for (auto _ : state) {
+    r = gomne(ctcs, IntervalVector{{-50, 50}, {-50, 50}}, o);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["eps"] = o.eps;
+  state.counters["q"] = r.q;
+  state.counters["outliers"] = static_cast<double>(r.outliers.size());
+  state.counters["leaves"] = static_cast<double>(r.leaves.size());
+}
+
 }  // namespace
 
 BENCHMARK(BM_QInterIntervals)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
 BENCHMARK(BM_CtcQInterBoxes)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
 BENCHMARK(BM_CtcQInterRings)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
+
+BENCHMARK(BM_Gomne20Ranges)->ArgName("eps_index")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -68,10 +68,13 @@ Interval relaxed_hull(std::vector<double>& a, std::vector<double>& b, std::size_
   std::nth_element(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n - p), b.end());
   const double lo = a[p - 1], hi = b[n - p];
   if (hi < lo) return Interval::empty();
-  const auto count = [&](double x) {  // c(x), see hull_of_level_set
-    std::size_t c = 0;
-    for (std::size_t i = 0; i < n; ++i) c += (a[i] <= x) - (b[i] < x);
-    return c;
+  const auto count = [&](double x) {  // c(x), see hull_of_level_set (>= 0)
+    std::size_t started = 0, ended = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      started += a[i] <= x;
+      ended += b[i] < x;
+    }
+    return started - ended;
   };
   if (count(lo) >= p && count(hi) >= p) return Interval::from_bounds_unchecked(lo, hi);
   std::sort(a.begin(), a.end());
