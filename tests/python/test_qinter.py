@@ -1,8 +1,12 @@
 """Outliers from Python: q_inter on intervals (hand cases and brute force),
 CtcQInter (q = 0 is CtcInter, q >= m is the identity, sampled points kept),
-gomne on a 20-beacon range-only localisation with injected outliers, errors."""
+gomne on a 20-beacon range-only localisation with injected outliers, errors;
+CtcQEval and gomne_tube on fixes of a tube; the outliers_ranges example."""
 import math
 import random
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 import sillage
@@ -220,3 +224,12 @@ def test_gomne_tube_range_fixes():
     assert none.q == 2 and none.x.is_empty() and none.outliers == []
     with pytest.raises(sillage.Error, match="max_passes"):
         sillage.gomne_tube(x, v, obs, max_passes=0)
+
+
+def test_example_outliers_ranges(tmp_path):
+    pytest.importorskip("matplotlib")
+    script = Path(__file__).resolve().parents[2] / "examples" / "python" / "outliers_ranges.py"
+    run = subprocess.run([sys.executable, str(script), "--out", str(tmp_path)], capture_output=True, text=True,
+                         cwd=script.parent)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "q = 3, outliers [4, 11, 16]" in run.stdout and (tmp_path / "outliers_ranges_py.png").exists()
