@@ -71,6 +71,10 @@ void draw_scene(Figure& fig, const GomneResult& r) {
 int main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double eps = example::option_number(argc, argv, "--eps", 0.1);
+  if (!(eps > 0)) {
+    std::fprintf(stderr, "outliers_ranges: --eps must be > 0\n");
+    return 2;
+  }
   const IntervalVector x0{{-50, 50}, {-50, 50}};
   const auto ctcs = range_contractors();
 
