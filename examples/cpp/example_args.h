@@ -50,7 +50,8 @@ inline std::vector<std::string> accepted_options(const std::string& program) {
   std::cerr << program << ": " << message << "\nusage: " << program;
   for (const auto& o : accepted_options(program)) {
     const auto eq = o.find('=');
-    std::cerr << " [" << o.substr(0, eq) << (eq == std::string::npos ? (o == "--out" ? " DIR" : " VALUE") : " X") << "]";
+    const char* value = eq != std::string::npos ? " X" : o == "--out" ? " DIR" : " VALUE";
+    std::cerr << " [" << o.substr(0, eq) << value << "]";
   }
   std::cerr << std::endl;
   std::exit(2);

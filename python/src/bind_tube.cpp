@@ -112,7 +112,8 @@ void init_tube_class(py::module_& m) {
           py::arg("y"), py::arg("k"), "Slice k := y, its gates := y & the neighbouring slices.")
       .def("set", py::overload_cast<const Interval&>(&T::set), py::arg("y"))
       .def(
-          "set_gate", [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
+          "set_gate",
+          [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
           py::arg("k"), py::arg("y"))
       .def("codomain", &T::codomain)
       .def("volume", &T::volume)

@@ -11,8 +11,8 @@ void check_budget(const Budget& budget, const char* where) {
   }
 }
 
-BudgetMeter::BudgetMeter(const Budget& budget, const char* where, const char* option)
-    : budget_(budget), where_(where), option_(option), start_(std::chrono::steady_clock::now()) {
+BudgetMeter::BudgetMeter(const Budget& budget, const char* where, const char* option, const char* hint)
+    : budget_(budget), where_(where), option_(option), hint_(hint), start_(std::chrono::steady_clock::now()) {
   check_budget(budget, where);
 }
 
@@ -25,7 +25,7 @@ void BudgetMeter::add() {
     throw BudgetExceeded(std::string(where_) + ": budget exceeded: " + std::to_string(budget_.max_boxes + 1) +
                          " boxes > max_boxes = " +
                          std::to_string(budget_.max_boxes) + "; raise " + option_ +
-                         ".max_boxes (0: no limit) or use a larger eps");
+                         ".max_boxes (0: no limit)" + hint_);
   }
   // The clock is read every 256 boxes only: it costs more than a box count.
   if (budget_.max_seconds > 0 && now % 256 == 0) {

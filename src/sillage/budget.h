@@ -54,10 +54,12 @@ class Cancelled : public std::runtime_error {
 
 // Counts the boxes of one run against a Budget; thread-safe (one meter is
 // shared by the oneTBB tasks of the run). `option` names the setting that
-// holds the budget in error messages (e.g. "options.budget").
+// holds the budget in error messages (e.g. "options.budget"), `hint` another
+// way out (" or use a larger eps").
 class BudgetMeter {
  public:
-  BudgetMeter(const Budget& budget, const char* where, const char* option = "options.budget");
+  BudgetMeter(const Budget& budget, const char* where, const char* option = "options.budget",
+              const char* hint = "");
   // Counts one more box; throws BudgetExceeded or Cancelled.
   void add();
   std::size_t boxes() const { return boxes_.load(std::memory_order_relaxed); }
@@ -66,6 +68,7 @@ class BudgetMeter {
   Budget budget_;
   const char* where_;
   const char* option_;
+  const char* hint_;
   std::chrono::steady_clock::time_point start_;
   std::atomic<std::size_t> boxes_{0};
 };

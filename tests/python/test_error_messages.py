@@ -55,7 +55,8 @@ def test_shared_expressions_print_linearly():
 
 def test_wrong_types_and_indices():
     a = sl.IntervalVector([[0, 1]])
-    with pytest.raises(sl.ArgumentTypeError, match=r"^contractor: expected a sillage.Ctc \(or a subclass\), got function$"):
+    with pytest.raises(sl.ArgumentTypeError,
+                       match=r"^contractor: expected a sillage.Ctc \(or a subclass\), got function$"):
         sl.ContractorNetwork().add(lambda x: x, [a])
     with pytest.raises(sl.ArgumentTypeError,
                        match="^sivia: f must return an IntervalVector or an Interval, got str$"):

@@ -117,7 +117,9 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     for (const IntervalVector& b : p.newton_boxes) {
       if ((p.newton = newton_test(b, fn, jac).proven)) break;
     }
-    if (options.count && p.degree) p.count = detail::count_zeros(l.boxes_, *p.degree, fn, jac, count_options, meter).count;
+    if (options.count && p.degree) {
+      p.count = detail::count_zeros(l.boxes_, *p.degree, fn, jac, count_options, meter).count;
+    }
   });
 
   for (std::size_t i = 0; i < detections_.size(); ++i) {

@@ -48,7 +48,13 @@ TEST(LoopBudget, DetectionsStopAtTheBudget) {
   EXPECT_THROW(tp.compute_proofs(v, po), Cancelled);
   po.budget = Budget{};
   po.budget.max_boxes = 3;
-  EXPECT_THROW(tp.compute_proofs(v, po), BudgetExceeded);
+  try {
+    tp.compute_proofs(v, po);
+    FAIL();
+  } catch (const BudgetExceeded& e) {
+    EXPECT_STREQ(e.what(), "TPlane::compute_proofs: budget exceeded: 4 boxes > max_boxes = 3; raise "
+                           "options.budget.max_boxes (0: no limit)");
+  }
   EXPECT_NO_THROW(tp.compute_proofs(v));
   EXPECT_TRUE(tp.detections()[0].proven());
 }

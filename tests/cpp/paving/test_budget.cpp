@@ -18,8 +18,8 @@ Paving sphere(std::size_t n, double eps, const SiviaOptions& o) {
   std::string text = "x0^2";
   std::vector<std::string> vars{"x0"};
   for (std::size_t i = 1; i < n; ++i) {
-    vars.push_back("x" + std::to_string(i));
-    text += " + x" + std::to_string(i) + "^2";
+    vars.push_back(std::string(1, 'x').append(std::to_string(i)));
+    text.append(" + ").append(vars.back()).append("^2");
   }
   return sivia(IntervalVector(n, Interval(-2, 2)), Function(vars, text), Interval(0, 1), eps, o);
 }
