@@ -101,7 +101,8 @@ class Parser {
     for (;;) {
       const Token name = expect(Tok::Ident);
       if (vars_.count(name.text) || bindings_.count(name.text) || is_reserved_name(name.text)) {
-        fail("'" + name.text + "' is a variable, a reserved name or already bound", name.col);
+        fail(std::string("'").append(quote_text(name.text)).append("' is a variable, a reserved name or already bound"),
+             name.col);
       }
       expect(Tok::Equals);
       const Expr e = scalar(parse_sum());
@@ -282,7 +283,7 @@ class Parser {
     try {
       return detail::decimal_enclosure(t.text);
     } catch (const ParseError&) {
-      fail("invalid number literal '" + t.text + "'", t.col);
+      fail("invalid number literal '" + quote_text(t.text) + "'", t.col);
     }
   }
 
@@ -354,7 +355,7 @@ class Parser {
         if (auto b = bindings_.find(t.text); b != bindings_.end()) return {{b->second}, t.col};
         if (t.text == "pi") return {{expr_pi()}, t.col};
         if (is_nan_name(t.text)) fail("NaN is not a valid number", t.col);
-        fail("unknown identifier '" + t.text + "'", t.col);
+        fail("unknown identifier '" + quote_text(t.text) + "'", t.col);
       }
       case Tok::End: fail("expected an operand", t.col);
       default: fail("expected an operand, got " + std::string(tok_name(t.kind)), t.col);

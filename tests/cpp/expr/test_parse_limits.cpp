@@ -56,6 +56,10 @@ TEST(ParseLimits, LongTextsAreQuotedNearTheError) {
   text += " $";
   const std::string m = parse_error(text);
   EXPECT_EQ(m, "unexpected character '$' at column 403 near \"...x + x + x + x + x + x + x + x $\"");
+  // A long token is quoted up to 60 characters too.
+  EXPECT_EQ(parse_error("x + " + std::string(1000, 'z')), "unknown identifier '" + std::string(60, 'z') +
+                                                            "...' at column 5 near \"x + " + std::string(56, 'z') +
+                                                            "...\"");
 }
 
 TEST(ParseLimits, NestingLimitIsExactly500Levels) {
