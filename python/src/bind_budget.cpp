@@ -13,18 +13,21 @@ void init_budget(py::module_& m) {
       .def("reset", &CancelToken::reset);
 
   py::class_<Budget>(m, "Budget",
-                     "Limits of a long computation: boxes (0: none), seconds (0: none) and a CancelToken.")
-      .def(py::init([](std::size_t max_boxes, double max_seconds, const CancelToken* cancel) {
-             Budget b{max_boxes, max_seconds, cancel ? *cancel : CancelToken{}};
+                     "Limits of a long computation: boxes, bytes of a paving, seconds (0: none) and a CancelToken.")
+      .def(py::init([](std::size_t max_boxes, std::size_t max_bytes, double max_seconds, const CancelToken* cancel) {
+             Budget b{max_boxes, max_bytes, max_seconds, cancel ? *cancel : CancelToken{}};
              check_budget(b, "Budget");
              return b;
            }),
-           py::arg("max_boxes") = Budget{}.max_boxes, py::arg("max_seconds") = 0.0, py::arg("cancel") = nullptr)
+           py::arg("max_boxes") = Budget{}.max_boxes, py::arg("max_bytes") = Budget{}.max_bytes,
+           py::arg("max_seconds") = 0.0, py::arg("cancel") = nullptr)
       .def_readwrite("max_boxes", &Budget::max_boxes)
+      .def_readwrite("max_bytes", &Budget::max_bytes)
       .def_readwrite("max_seconds", &Budget::max_seconds)
       .def_readwrite("cancel", &Budget::cancel)
       .def("__repr__", [](const Budget& b) {
-        return "Budget(max_boxes=" + std::to_string(b.max_boxes) + ", max_seconds=" + number_text(b.max_seconds) + ")";
+        return "Budget(max_boxes=" + std::to_string(b.max_boxes) + ", max_bytes=" + std::to_string(b.max_bytes) +
+               ", max_seconds=" + number_text(b.max_seconds) + ")";
       });
 }
 

@@ -20,9 +20,9 @@ def sphere(n):
 
 def test_budget_objects():
     b = sl.Budget()
-    assert b.max_boxes == 10_000_000 and b.max_seconds == 0 and not b.cancel.cancelled()
+    assert b.max_boxes == 10_000_000 and b.max_bytes == 2**30 and b.max_seconds == 0 and not b.cancel.cancelled()
     assert repr(sl.SiviaOptions()) == ("SiviaOptions(parallel=True, budget=Budget(max_boxes=10000000, "
-                                       "max_seconds=0))")
+                                       "max_bytes=1073741824, max_seconds=0))")
     o = sl.SiviaOptions(parallel=False, budget=sl.Budget(max_boxes=5, max_seconds=1.5))
     assert (o.parallel, o.budget.max_boxes, o.budget.max_seconds) == (False, 5, 1.5)
     o.budget.max_boxes = 7  # the options' own budget, not a copy
@@ -44,7 +44,11 @@ def test_sivia_budget_exceeded():
     with pytest.raises(sl.BudgetExceeded, match="51 boxes > max_boxes = 50"):
         sl.sivia(sl.IntervalVector([[-2, 2], [-2, 2]]), lambda b: b[0] ** 2 + b[1] ** 2, sl.Interval(0, 1), 1e-3, o)
     with pytest.raises(sl.BudgetExceeded, match=r"max_seconds = 0.10000000000000001 \(after \d+ boxes\)"):
-        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_seconds=0.1)))
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3,
+                 sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=0, max_seconds=0.1)))
+    with pytest.raises(sl.BudgetExceeded, match=r"^sivia: budget exceeded: 101 boxes of 168 bytes > max_bytes = 16800; "
+                                                r"raise options.budget.max_bytes \(0: no limit\) or use a larger eps$"):
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=16800)))
 
 
 def test_tplane_budget_exceeded():
@@ -67,7 +71,7 @@ def test_tplane_budget_exceeded():
 def test_cancel_token_from_another_thread():
     f, x0 = sphere(10)
     token = sl.CancelToken()
-    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=0, cancel=token))
+    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=0, cancel=token))
     threading.Timer(0.2, token.cancel).start()
     start = time.monotonic()
     with pytest.raises(sl.Cancelled, match="^sivia: cancelled$"):
@@ -87,7 +91,7 @@ def interrupt_after(seconds):
 @pytest.mark.parametrize("parallel", [True, False])
 def test_ctrl_c_stops_sivia(parallel):
     f, x0 = sphere(10)
-    o = sl.SiviaOptions(parallel=parallel, budget=sl.Budget(max_boxes=0))  # unbounded but for Ctrl-C
+    o = sl.SiviaOptions(parallel=parallel, budget=sl.Budget(max_boxes=0, max_bytes=0))  # unbounded but for Ctrl-C
     interrupt_after(0.3)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
@@ -104,6 +108,6 @@ def test_ctrl_c_stops_tplane_detections():
     interrupt_after(0.3)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0))
+        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0, max_bytes=0))
     assert time.monotonic() - start < 2
     assert tp.nb_detections() == 0

@@ -217,7 +217,9 @@ void kernel_test(const IntervalVector& lo, const IntervalVector& hi, bool may_be
 Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
                     const Budget& budget, const char* where, const char* option) {
   check_sivia_input(x0, eps, where);
-  BudgetMeter meter(budget, where, option, " or use a larger eps");
+  // What a node costs: its tag and offset, and its box (kept once per node).
+  const std::size_t bytes_per_box = sizeof(Paving::Node) + x0.size() * sizeof(Interval);
+  BudgetMeter meter(budget, where, option, " or use a larger eps", bytes_per_box);
   Paving p(x0.size());
   if (x0.is_empty()) return p;
   Chunk root;

@@ -62,9 +62,23 @@ TEST(Budget, DefaultBoundsTenDimensions) {
   EXPECT_NE(budget_error(10, 1e-3, o).find("200001 boxes > max_boxes = 200000"), std::string::npos);
 }
 
-TEST(Budget, MaxSeconds) {
+TEST(Budget, MaxBytes) {
+  // A node of a 10-D paving: 8 bytes and 10 intervals of 16 bytes.
   SiviaOptions o;
   o.budget.max_boxes = 0;
+  o.budget.max_bytes = 168 * 1000 + 100;
+  EXPECT_EQ(budget_error(10, 1e-3, o),
+            "sivia: budget exceeded: 1001 boxes of 168 bytes > max_bytes = 168100; raise options.budget.max_bytes "
+            "(0: no limit) or use a larger eps");
+  // The default: 1 GiB, 6.4 million boxes in 10-D, more than 10^7 in 2-D.
+  EXPECT_EQ(Budget{}.max_bytes, std::size_t{1} << 30);
+  o.budget.max_bytes = 100;
+  EXPECT_THROW(sphere(10, 0.1, o), Error);  // not even one box
+}
+
+TEST(Budget, MaxSeconds) {
+  SiviaOptions o;
+  o.budget.max_boxes = o.budget.max_bytes = 0;
   o.budget.max_seconds = 0.2;
   const auto start = std::chrono::steady_clock::now();
   const std::string m = budget_error(10, 1e-3, o);
@@ -81,7 +95,7 @@ TEST(Budget, CancelledFromAnotherThread) {
   for (bool parallel : {false, true}) {
     SiviaOptions o;
     o.parallel = parallel;
-    o.budget.max_boxes = 0;
+    o.budget.max_boxes = o.budget.max_bytes = 0;
     const CancelToken token = o.budget.cancel;
     std::thread canceller([token] {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
