@@ -30,7 +30,8 @@ void raise(py::handle type, const char* what) {
 // sillage::Error becomes sillage.Error (a ValueError) and its subclasses
 // subclasses of it; ArgumentTypeError and OutOfRangeError are also a
 // TypeError and an IndexError, BudgetExceeded a sillage.Error, Cancelled a
-// KeyboardInterrupt (not an Error: the input was fine).
+// KeyboardInterrupt (not an Error: the input was fine). Other standard
+// exceptions map as pybind11 maps them; every message is made valid UTF-8.
 void init_errors(py::module_& m) {
   static py::handle error, dimension, parse, type, range, budget, cancelled;
   error = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_ValueError)));
@@ -57,6 +58,22 @@ void init_errors(py::module_& m) {
       raise(error, e.what());
     } catch (const Cancelled& e) {
       raise(cancelled, e.what());
+    } catch (const py::error_already_set&) {
+      throw;  // pybind11's own exceptions: its translator knows them
+    } catch (const py::builtin_exception&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      PyErr_SetString(PyExc_MemoryError, "out of memory");
+    } catch (const std::out_of_range& e) {  // pybind11's mapping of the standard exceptions, made UTF-8 safe
+      raise(PyExc_IndexError, e.what());
+    } catch (const std::overflow_error& e) {
+      raise(PyExc_OverflowError, e.what());
+    } catch (const std::range_error& e) {
+      raise(PyExc_ValueError, e.what());
+    } catch (const std::logic_error& e) {
+      raise(PyExc_ValueError, e.what());
+    } catch (const std::exception& e) {
+      raise(PyExc_RuntimeError, e.what());
     }
   });
 }

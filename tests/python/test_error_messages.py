@@ -27,6 +27,13 @@ def test_non_ascii_parse_errors(text, message):
     assert str(e.value) == message
 
 
+def test_bytes_that_are_not_utf8():
+    # Bytes reach the parser as they are; the message stays valid UTF-8 and non-empty.
+    with pytest.raises(sl.ParseError) as e:
+        sl.Function(["x"], b"x + \xe9")
+    assert str(e.value) == "unexpected byte 0xE9 (the text is not valid UTF-8) at column 5 in \"x + \ufffd\""
+
+
 @pytest.mark.parametrize("open_, close", [("(", ")"), ("sin(", ")"), ("-", "")])
 def test_nesting_limit_is_500_levels(open_, close):
     ok = open_ * 500 + "x" + close * 500
