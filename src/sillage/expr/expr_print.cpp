@@ -6,7 +6,10 @@
 // kInlineMax characters is printed once, named by a let-binding:
 //   let a = x * x + 1; b = a * a + 1 in b * b + 1
 // Shorter ones (x - 1, sin(x)) stay inline, where they read best. The output
-// is linear in the size of the DAG.
+// is linear in the size of the DAG. A sub-expression nested deeper than
+// kMaxNesting levels (as parser.cpp counts them) is named as well, so that
+// the text always parses back (the parser stops at 500 levels).
+#include <algorithm>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -23,6 +26,7 @@ namespace sillage {
 namespace {
 
 constexpr std::size_t kInlineMax = 8;
+constexpr std::size_t kMaxNesting = 400;
 
 enum Prec { kSum = 1, kProduct = 2, kUnary = 3, kPower = 4, kAtom = 5 };
 
@@ -69,6 +73,14 @@ std::size_t own_length(const ExprNode& e) {
     case Op::Root: return 8 + std::to_string(e.n).size();  // "root(" ", n" ")"
     default: return std::string(op_name(e.op)).size() + 2 * e.args.size();  // "f(" ", " ")"
   }
+}
+
+// Nesting levels (parser.cpp's DepthGuard) that e adds around an operand
+// printed with or without parentheses: a call, a unary sign, parentheses.
+std::size_t added_levels(const ExprNode& e, bool parenthesized) {
+  const bool call = !(e.op == Op::Add || e.op == Op::Sub || e.op == Op::Mul || e.op == Op::Div ||
+                      e.op == Op::Neg || e.op == Op::Sqr || e.op == Op::PowInt);
+  return (parenthesized ? 1 : 0) + (call || e.op == Op::Neg ? 1 : 0);
 }
 
 // Names of the shared sub-expressions printed once.
@@ -167,7 +179,7 @@ class NameSource {
 // that order, with their names in `names`.
 std::vector<const ExprNode*> choose_names(const std::vector<Expr>& order, const std::vector<Expr>& roots,
                                           const std::vector<std::string>& taken, Names& names) {
-  std::unordered_map<const ExprNode*, std::size_t> uses, length;
+  std::unordered_map<const ExprNode*, std::size_t> uses, length, nesting;
   std::unordered_set<std::string> vars(taken.begin(), taken.end());
   for (const Expr& r : roots) ++uses[r.get()];
   for (const Expr& e : order) {
@@ -179,16 +191,22 @@ std::vector<const ExprNode*> choose_names(const std::vector<Expr>& order, const 
   for (const Expr& e : order) {
     const ExprNode& node = e.node();
     std::size_t n = own_length(node);
+    // Own levels: the exponent of a power, the sign of a negative constant.
+    std::size_t depth = node.op == Op::Sqr || node.op == Op::PowInt || prec(node) == kUnary ? 1 : 0;
     for (std::size_t i = 0; i < node.args.size(); ++i) {
       const ExprNode* a = node.args[i].get();
       if (auto it = names.find(a); it != names.end()) {
         n += it->second.size();
+        depth = std::max(depth, added_levels(node, false));
       } else {
-        n += length[a] + (prec(*a) < operand_prec(node, i) ? 2 : 0);
+        const bool parenthesized = prec(*a) < operand_prec(node, i);
+        n += length[a] + (parenthesized ? 2 : 0);
+        depth = std::max(depth, nesting[a] + added_levels(node, parenthesized));
       }
     }
     length[&node] = n;
-    if (!node.args.empty() && uses[&node] >= 2 && n > kInlineMax) {
+    nesting[&node] = depth;
+    if (!node.args.empty() && ((uses[&node] >= 2 && n > kInlineMax) || depth > kMaxNesting)) {
       names.emplace(&node, source.next());
       bound.push_back(&node);
     }

@@ -64,6 +64,24 @@ TEST(Print, LetReadsBack) {
   EXPECT_THROW(parse_expr({"x"}, "x + let a = 1 in a"), ParseError);  // only in front
 }
 
+TEST(Print, DeepNestsPrintWithinTheParserLimit) {
+  // 1000 nested calls (built, not parsed): the 400 innermost are named, so
+  // that no part of the text nests deeper than the parser's 500 levels.
+  ExprVar x("x");
+  for (auto wrap : {+[](const Expr& e) { return sin(e); }, +[](const Expr& e) { return -(e * 2); },
+                    +[](const Expr& e) { return 1 - e; }, +[](const Expr& e) { return sqr(e + 1); }}) {
+    Expr e = x;
+    for (int i = 0; i < 1000; ++i) e = wrap(e);
+    const std::string text = e.str();
+    EXPECT_EQ(text.substr(0, 4), "let ");
+    EXPECT_EQ(parse_expr({"x"}, text), e);
+  }
+  // Shallow ones are left alone.
+  Expr e = x;
+  for (int i = 0; i < 400; ++i) e = sin(e);
+  EXPECT_EQ(e.str().substr(0, 8), "sin(sin(");
+}
+
 TEST(Print, SharedDagsPrintLinearly) {
   // 40 levels: 2^40 leaves as a tree; 40 bindings of about 20 characters here.
   ExprVar x("x");
