@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 #include "sillage/error.h"
 #include "sillage/text_utf8.h"
@@ -51,15 +52,15 @@ std::string_view next_line(std::string_view text, std::size_t& at) {
 
 // Column names must be non-empty and distinct (1-based column numbers in errors).
 void check_header(const std::vector<std::string>& names, const std::string& where) {
+  std::unordered_map<std::string_view, std::size_t> first;  // a hash: headers may be huge
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (names[i].empty()) {
       throw ParseError(where + ": column " + std::to_string(i + 1) + " of the header has no name");
     }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (names[j] == names[i]) {
-        throw ParseError(where + ": columns " + std::to_string(j + 1) + " and " + std::to_string(i + 1) +
-                         " of the header have the same name '" + quote_text(names[i]) + "'");
-      }
+    const auto [it, added] = first.emplace(names[i], i);
+    if (!added) {
+      throw ParseError(where + ": columns " + std::to_string(it->second + 1) + " and " + std::to_string(i + 1) +
+                       " of the header have the same name '" + quote_text(names[i]) + "'");
     }
   }
 }
