@@ -1,32 +1,119 @@
 #pragma once
 // Tiny shared helpers of the C++ examples: `--name value` options, the --out
-// folder and the RESULT line that examples/run_demo.py reads.
+// folder and the RESULT line that examples/run_demo.py reads. A bad command
+// line (unknown option, missing value, text where a number is expected)
+// prints the problem and a usage line and exits with status 2, as the Python
+// examples' argparse does.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace example {
 
+// The options of each example beyond --out, by program name (without the
+// "example_" prefix of the binary): add an example's options here, or they
+// are rejected as unknown. Options ending in "=X" take a number.
+inline const std::vector<std::pair<std::string, std::vector<std::string>>>& program_options() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
+      {"drifting_clock", {"--dt=X", "--ratio=X"}},
+      {"lowcost_beacons", {"--dt=X", "--ratio=X"}},
+      {"plaza1", {"--data"}},
+      {"loops_plaza1", {"--data", "--eps-div=X"}},
+      {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
+      {"loops_utias", {"--data", "--robot"}},
+  };
+  return table;
+}
+
+inline std::string program_name(const char* argv0) {
+  std::string name = std::filesystem::path(argv0 ? argv0 : "example").filename().string();
+  if (name.rfind("example_", 0) == 0) name.erase(0, 8);
+  return name;
+}
+
+// "--out" and the program's options.
+inline std::vector<std::string> accepted_options(const std::string& program) {
+  std::vector<std::string> r{"--out"};
+  for (const auto& [name, options] : program_options()) {
+    if (name == program) r.insert(r.end(), options.begin(), options.end());
+  }
+  return r;
+}
+
+// Prints "<program>: <message>" and the usage line, and exits with status 2.
+[[noreturn]] inline void usage_error(const std::string& program, const std::string& message) {
+  std::cerr << program << ": " << message << "\nusage: " << program;
+  for (const auto& o : accepted_options(program)) {
+    const auto eq = o.find('=');
+    const char* value = eq != std::string::npos ? " X" : o == "--out" ? " DIR" : " VALUE";
+    std::cerr << " [" << o.substr(0, eq) << value << "]";
+  }
+  std::cerr << std::endl;
+  std::exit(2);
+}
+
+// A finite number written whole (no trailing text), else nullopt.
+inline std::optional<double> parse_number(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+// Checks the whole command line once: `--name value` pairs of known options
+// only, numbers where numbers are expected; otherwise usage_error (exit 2).
+inline void check_args(int argc, char** argv) {
+  static bool checked = false;
+  if (checked) return;
+  checked = true;
+  const std::string program = program_name(argc > 0 ? argv[0] : nullptr);
+  const std::vector<std::string> accepted = accepted_options(program);
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string spec;
+    for (const auto& o : accepted) {
+      if (o.substr(0, o.find('=')) == arg) spec = o;
+    }
+    if (spec.empty()) usage_error(program, "unknown option '" + arg + "'");
+    if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0) {
+      usage_error(program, "option " + arg + " needs a value");
+    }
+    const std::string value = argv[++i];
+    if (spec.find('=') != std::string::npos && !parse_number(value)) {
+      usage_error(program, "option " + arg + " expects a number, got '" + value + "'");
+    }
+  }
+}
+
 // The value following `name` on the command line, or `fallback` if absent.
 inline std::string option_value(int argc, char** argv, const std::string& name, const std::string& fallback) {
+  check_args(argc, argv);
   for (int i = 1; i + 1 < argc; ++i) {
     if (std::string(argv[i]) == name) return argv[i + 1];
   }
   return fallback;
 }
 
-// A numeric option; text that is not a number reads as 0 (examples check their ranges).
+// A numeric option (check_args has made sure it is a number).
 inline double option_number(int argc, char** argv, const std::string& name, double fallback) {
   const std::string v = option_value(argc, argv, name, "");
-  return v.empty() ? fallback : std::atof(v.c_str());
+  return v.empty() ? fallback : *parse_number(v);
 }
 
 inline std::filesystem::path out_dir(int argc, char** argv) {
   const std::filesystem::path out = option_value(argc, argv, "--out", "out");
-  std::filesystem::create_directories(out);
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec) {
+    usage_error(program_name(argc > 0 ? argv[0] : nullptr),
+                "cannot create --out " + out.string() + ": " + ec.message());
+  }
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "arg_checks.h"
 #include "bindings.h"
 #include "sillage/ctc/ctc_algebra.h"
 #include "sillage/ctc/ctc_binary.h"
@@ -76,6 +77,11 @@ class PySep : public Sep {
 template <class T>
 std::shared_ptr<const T> hold(const py::handle& h, const char* what) {
   if (h.is_none()) throw Error(std::string(what) + " is None");
+  if (!py::isinstance<T>(h)) {  // a lambda, a string...: say what was expected
+    const std::string expected = py::str(py::type::of<T>().attr("__name__"));
+    throw ArgumentTypeError(std::string(what) + ": expected a sillage." + expected + " (or a subclass), got " +
+                            type_name(h));
+  }
   const auto p = h.cast<std::shared_ptr<T>>();
   auto* keep = new py::object(py::reinterpret_borrow<py::object>(h));
   return std::shared_ptr<const T>(p.get(), [keep](const T*) {

@@ -2,7 +2,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <string>
+
 #include "bindings.h"
+#include "sillage/error.h"
 #include "sillage/io/csv.h"
 
 namespace sillage::python {
@@ -14,7 +17,15 @@ void init_io(py::module_& m) {
       .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>")
       .def("columns", &CsvTable::columns)
       .def("nb_rows", &CsvTable::nb_rows)
-      .def("row", &CsvTable::row, py::arg("i"))
+      .def(
+          "row",
+          [](const CsvTable& t, py::ssize_t i) {  // signed: row(-1) is an OutOfRangeError, not a cast error
+            if (i < 0) {
+              throw OutOfRangeError("CsvTable.row: no row " + std::to_string(i) + " (" + t.rows_text() + ")");
+            }
+            return t.row(static_cast<std::size_t>(i));
+          },
+          py::arg("i"))
       .def("has_column", &CsvTable::has_column, py::arg("name"))
       .def("column", &CsvTable::column, py::arg("name"))
       .def(

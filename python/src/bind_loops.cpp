@@ -1,9 +1,10 @@
 // Loops in the t-plane (thesis ch. 6): TPlane and Loop, ProofOptions,
 // LoopFunction, the zero tests on planar maps (topological_degree,
 // newton_test, count_zeros) and the true crossings of a sampled path
-// (self_crossings). TPlane runs in C++ with the GIL released (its components
-// are proven in parallel); the zero tests take either Python callables (run
-// on the calling thread) or a LoopFunction (run in C++ without the GIL).
+// (self_crossings). TPlane runs in C++ on a worker thread without the GIL
+// (its components are proven in parallel) and stops on Ctrl-C
+// (interruptible.h); the zero tests take either Python callables (run on the
+// calling thread) or a LoopFunction (run in C++ the same way as TPlane).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "interruptible.h"
 #include "sillage/loops/loop_function.h"
 #include "sillage/loops/path_crossings.h"
 #include "sillage/loops/tplane.h"
@@ -87,23 +89,42 @@ void init_loops(py::module_& m) {
       .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes)
       .def_readwrite("newton", &ProofOptions::newton)
       .def_readwrite("newton_inflation", &ProofOptions::newton_inflation)
-      .def_readwrite("count", &ProofOptions::count);
+      .def_readwrite("count", &ProofOptions::count)
+      .def_readwrite("budget", &ProofOptions::budget, "For the whole call (sillage.Budget).");
 
   const py::call_guard<py::gil_scoped_release> nogil;
   py::class_<TPlane>(m, "TPlane", "Loop detections (Alg. 6) and proofs (Alg. 7-10) in the t-plane.")
       .def(py::init<const Interval&>(), py::arg("tdomain"))
       .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"))
       .def("domain", &TPlane::domain)
-      .def("compute_detections", py::overload_cast<double, const TubeVector&>(&TPlane::compute_detections),
-           py::arg("eps"), py::arg("v"), nogil, "Alg. 6 from a 2-D velocity tube v.")
-      .def("compute_detections",
-           py::overload_cast<double, const TubeVector&, const TubeVector&>(&TPlane::compute_detections),
-           py::arg("eps"), py::arg("p"), py::arg("w"), nogil, "Alg. 6 with (7.28), from positions p and velocities w.")
-      .def("compute_proofs", py::overload_cast<const TubeVector&, const ProofOptions&>(&TPlane::compute_proofs),
-           py::arg("v"), py::arg("options") = ProofOptions{}, nogil)
-      .def("compute_proofs",
-           py::overload_cast<const TubeVector&, const TubeVector&, const ProofOptions&>(&TPlane::compute_proofs),
-           py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{}, nogil)
+      .def(
+          "compute_detections",
+          [](TPlane& tp, double eps, const TubeVector& v, const Budget& b) {
+            run_interruptible(b.cancel, [&](const CancelToken& t) { tp.compute_detections(eps, v, with_token(b, t)); });
+          },
+          py::arg("eps"), py::arg("v"), py::arg("budget") = Budget{},
+          "Alg. 6 from a 2-D velocity tube v; the paving's nodes count against budget.")
+      .def(
+          "compute_detections",
+          [](TPlane& tp, double eps, const TubeVector& p, const TubeVector& w, const Budget& b) {
+            run_interruptible(b.cancel,
+                              [&](const CancelToken& t) { tp.compute_detections(eps, p, w, with_token(b, t)); });
+          },
+          py::arg("eps"), py::arg("p"), py::arg("w"), py::arg("budget") = Budget{},
+          "Alg. 6 with (7.28), from positions p and velocities w.")
+      .def(
+          "compute_proofs",
+          [](TPlane& tp, const TubeVector& v, const ProofOptions& o) {
+            run_interruptible(o.budget.cancel, [&](const CancelToken& t) { tp.compute_proofs(v, with_token(o, t)); });
+          },
+          py::arg("v"), py::arg("options") = ProofOptions{})
+      .def(
+          "compute_proofs",
+          [](TPlane& tp, const TubeVector& p, const TubeVector& w, const ProofOptions& o) {
+            run_interruptible(o.budget.cancel,
+                              [&](const CancelToken& t) { tp.compute_proofs(p, w, with_token(o, t)); });
+          },
+          py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{})
       .def("eps", &TPlane::eps)
       .def("paving", &TPlane::paving, py::return_value_policy::reference_internal)
       .def("nb_detections", &TPlane::nb_detections)
@@ -136,7 +157,8 @@ void init_loops(py::module_& m) {
   py::class_<DegreeOptions>(m, "DegreeOptions")
       .def(py::init<>())
       .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length)
-      .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations);
+      .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations)
+      .def_readwrite("budget", &DegreeOptions::budget);
   py::class_<DegreeResult>(m, "DegreeResult")
       .def_readonly("degree", &DegreeResult::degree)
       .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations)
@@ -152,15 +174,19 @@ void init_loops(py::module_& m) {
   m.def(
       "topological_degree",
       [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const DegreeOptions& o) {
-        return topological_degree(boxes, f.function(), o);
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return topological_degree(boxes, f.function(), with_token(o, t));
+        });
       },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{}, nogil);
+      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{});
   m.def(
       "topological_degree",
       [](const std::vector<ContourLoop>& loops, const LoopFunction& f, const DegreeOptions& o) {
-        return topological_degree(loops, f.function(), o);
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return topological_degree(loops, f.function(), with_token(o, t));
+        });
       },
-      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{}, nogil);
+      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{});
   m.def(
       "topological_degree",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
@@ -203,7 +229,8 @@ void init_loops(py::module_& m) {
   py::class_<CountOptions>(m, "CountOptions")
       .def(py::init<>())
       .def_readwrite("min_width", &CountOptions::min_width)
-      .def_readwrite("max_boxes", &CountOptions::max_boxes);
+      .def_readwrite("max_boxes", &CountOptions::max_boxes)
+      .def_readwrite("budget", &CountOptions::budget);
   py::class_<CountResult>(m, "CountResult")
       .def_readonly("count", &CountResult::count)
       .def_readonly("nb_boxes", &CountResult::nb_boxes)
@@ -214,9 +241,11 @@ void init_loops(py::module_& m) {
   m.def(
       "count_zeros",
       [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
-        return count_zeros(boxes, degree, f.function(), f.jacobian_function(), o);
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return count_zeros(boxes, degree, f.function(), f.jacobian_function(), with_token(o, t));
+        });
       },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{}, nogil,
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
       "Alg. 10 with the Jacobian (6.18) of a LoopFunction.");
   m.def(
       "count_zeros",

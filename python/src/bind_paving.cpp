@@ -1,15 +1,17 @@
 // Set inversion: Paving, PavingTag, components and contours, SiviaOptions,
 // sivia and kernel_sivia. Calls with C++ functions, contractors and separators
-// release the GIL and run in parallel unless options.parallel is False (Python
-// subclasses of Ctc/Sep take the GIL in their overrides); Python callables run
-// on the calling thread.
+// run on a worker thread without the GIL, in parallel unless options.parallel
+// is False, and stop on Ctrl-C (interruptible.h; Python subclasses of Ctc/Sep
+// take the GIL in their overrides); Python callables run on the calling thread.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <optional>
 #include <string>
 
+#include "arg_checks.h"
 #include "bindings.h"
+#include "interruptible.h"
 #include "sillage/paving/sivia_function.h"
 
 namespace sillage::python {
@@ -18,11 +20,39 @@ namespace {
 
 py::tuple point(const Point2& p) { return py::make_tuple(p.x, p.y); }
 
-// [f]([x]) from a Python callable returning an IntervalVector or an Interval.
-IntervalVector call_box_function(const py::function& f, const IntervalVector& x) {
-  const py::object r = f(x);
+// A box from what a Python callable returned: an IntervalVector, an Interval,
+// a number or anything IntervalVector(...) accepts (ArgumentTypeError naming
+// `what` otherwise).
+IntervalVector as_box(const py::handle& r, const char* what) {
+  if (py::isinstance<IntervalVector>(r)) return r.cast<IntervalVector>();
   if (py::isinstance<Interval>(r)) return IntervalVector{r.cast<Interval>()};
-  return r.cast<IntervalVector>();
+  if (py::isinstance<py::float_>(r) || py::isinstance<py::int_>(r)) return IntervalVector{Interval(r.cast<double>())};
+  const std::string type = type_name(r);
+  if (!py::isinstance<py::str>(r) && !py::isinstance<py::bytes>(r)) {
+    try {
+      return py::type::of<IntervalVector>()(r).cast<IntervalVector>();
+    } catch (const py::error_already_set& e) {
+      if (!e.matches(PyExc_TypeError)) throw;  // a ValueError (sillage.Error) says what is wrong
+    }
+  }
+  throw ArgumentTypeError(std::string(what) + " must return an IntervalVector or an Interval, got " + type);
+}
+
+// [f]([x]) from a Python callable.
+IntervalVector call_box_function(const py::function& f, const IntervalVector& x) {
+  return as_box(f(x), "sivia: f");
+}
+
+// Runs sivia with the options on a worker thread that Ctrl-C stops.
+template <class Run>
+Paving interruptible(const SiviaOptions& o, Run run) {
+  return run_interruptible(o.budget.cancel, [&](const CancelToken& t) { return run(with_token(o, t)); });
+}
+
+// Python callables need the GIL: one thread (Ctrl-C works through them).
+SiviaOptions sequential(SiviaOptions o) {
+  o.parallel = false;
+  return o;
 }
 
 // Leaves of a tag as a float array (k, dim, 2) of [lb, ub] rows: fast plotting.
@@ -39,8 +69,6 @@ py::array_t<double> boxes_array(const Paving& p, PavingTag tag) {
   }
   return a;
 }
-
-const SiviaOptions kSequential{false};
 
 }  // namespace
 
@@ -121,38 +149,44 @@ void init_paving(py::module_& m) {
       .def("__repr__", &Paving::str);
 
   py::class_<SiviaOptions>(m, "SiviaOptions", "Options of sivia and kernel_sivia.")
-      .def(py::init([](bool parallel) { return SiviaOptions{parallel}; }), py::arg("parallel") = true)
+      .def(py::init([](bool parallel, const Budget* budget) {
+             SiviaOptions o;
+             o.parallel = parallel;
+             if (budget) o.budget = *budget;
+             return o;
+           }),
+           py::arg("parallel") = true, py::arg("budget") = nullptr)
       .def_readwrite("parallel", &SiviaOptions::parallel,
                      "Grow subtrees as oneTBB tasks (default True). The paving does not depend on it.")
+      .def_readwrite("budget", &SiviaOptions::budget,
+                     "Limits on the paving's nodes and the time (sillage.Budget; BudgetExceeded when exceeded).")
       .def("__repr__", [](const SiviaOptions& o) {
-        return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") + ")";
+        return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") +
+               ", budget=" + py::repr(py::cast(o.budget)).cast<std::string>() + ")";
       });
   // Every overload takes options=SiviaOptions() last, as in C++. Calls with a
-  // Python callable always run sequentially (they need the GIL), whatever the options.
+  // Python callable always run sequentially (they need the GIL), whatever options.parallel.
   const auto opts = [] { return py::arg("options") = SiviaOptions{}; };
 
   // ---- sivia: Function first, so that a Function never goes to the callable overload ----
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, f, y, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
       "SIVIA (thesis Alg. 1): paving of x0 for X = f^-1(Y).");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const Interval& y, double eps, const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, f, y, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
          const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, f, y, ctc, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, ctc, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
       "SIVIA coupled with a contractor (thesis Fig. 2.13): undetermined boxes are contracted before bisection.");
@@ -160,60 +194,56 @@ void init_paving(py::module_& m) {
       "sivia",
       [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps,
          const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, f, IntervalVector{y}, ctc, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, IntervalVector{y}, ctc, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts());
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions&) {
-        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
+      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
+        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
       "SIVIA with a Python inclusion function f(box) -> box (or Interval); always sequential.");
   m.def(
       "sivia",
-      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions&) {
-        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, kSequential);
+      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions& o) {
+        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, sep, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, sep, eps, io); });
       },
       py::arg("x0"), py::arg("sep"), py::arg("eps"), opts(),
       "SIVIA with a separator (thesis 2.4.3): removed parts tagged Inner/Outside.");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return sivia(x0, ctc, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, ctc, eps, io); });
       },
       py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts(), "SIVIA with a contractor: an outer approximation.");
 
   m.def(
       "kernel_sivia",
       [](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps, const SiviaOptions& o) {
-        py::gil_scoped_release release;
-        return kernel_sivia(x0, f_lo, f_hi, eps, o);
+        return interruptible(o, [&](const SiviaOptions& io) { return kernel_sivia(x0, f_lo, f_hi, eps, io); });
       },
       py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"), opts(),
       "Kernel SIVIA (thesis Alg. 2) of [f](x) = [f_lo(x), f_hi(x)].");
   m.def(
       "kernel_sivia",
-      [](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions&) {
+      [](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions& o) {
         auto bounds = [&f](const IntervalVector& x) {
           const py::object r = f(x);
+          if (!py::isinstance<py::tuple>(r) && !py::isinstance<py::list>(r)) {
+            throw ArgumentTypeError("kernel_sivia: f must return a pair ([f-]([x]), [f+]([x])), got " + type_name(r));
+          }
           const auto t = r.cast<py::sequence>();
           if (t.size() != 2) throw Error("kernel_sivia: f must return a pair ([f-]([x]), [f+]([x]))");
-          auto as_box = [](const py::handle& h) {
-            return py::isinstance<Interval>(h) ? IntervalVector{h.cast<Interval>()} : h.cast<IntervalVector>();
-          };
-          return std::pair{as_box(t[0]), as_box(t[1])};
+          return std::pair{as_box(t[0], "kernel_sivia: f"), as_box(t[1], "kernel_sivia: f")};
         };
-        return kernel_sivia(x0, bounds, eps, kSequential);
+        return kernel_sivia(x0, bounds, eps, sequential(o));
       },
       py::arg("x0"), py::arg("f"), py::arg("eps"), opts(),
       "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions; always sequential.");

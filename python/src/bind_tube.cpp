@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "arg_checks.h"
 #include "bindings.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
@@ -102,12 +103,18 @@ void init_tube_class(py::module_& m) {
            py::arg("slices"), py::arg("gates"))
       .def("tdomain", &T::tdomain)
       .def("nb_slices", &T::nb_slices)
-      .def("slice", &T::slice, py::arg("k"))
-      .def("gate", &T::gate, py::arg("k"))
-      .def("set", py::overload_cast<const Interval&, std::size_t>(&T::set), py::arg("y"), py::arg("k"),
-           "Slice k := y, its gates := y & the neighbouring slices.")
+      // Signed indices: -1 is an OutOfRangeError, not an argument mismatch.
+      .def("slice", [](const T& x, py::ssize_t k) { return x.slice(index_arg(k, "Tube.slice", "slice")); },
+           py::arg("k"))
+      .def("gate", [](const T& x, py::ssize_t k) { return x.gate(index_arg(k, "Tube.gate", "gate")); }, py::arg("k"))
+      .def(
+          "set", [](T& x, const Interval& y, py::ssize_t k) { x.set(y, index_arg(k, "Tube.set(y, k)", "slice")); },
+          py::arg("y"), py::arg("k"), "Slice k := y, its gates := y & the neighbouring slices.")
       .def("set", py::overload_cast<const Interval&>(&T::set), py::arg("y"))
-      .def("set_gate", &T::set_gate, py::arg("k"), py::arg("y"))
+      .def(
+          "set_gate",
+          [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
+          py::arg("k"), py::arg("y"))
       .def("codomain", &T::codomain)
       .def("volume", &T::volume)
       .def("thickness", &T::thickness, py::arg("k"))
@@ -251,7 +258,10 @@ void init_tube_vector(py::module_& m) {
       .def("is_subset", &V::is_subset, py::arg("y"))
       .def("contains", &V::contains, py::arg("trajectories"))
       .def("set", py::overload_cast<const IntervalVector&>(&V::set), py::arg("y"))
-      .def("set", py::overload_cast<const IntervalVector&, std::size_t>(&V::set), py::arg("y"), py::arg("k"))
+      .def(
+          "set",
+          [](V& x, const IntervalVector& y, py::ssize_t k) { x.set(y, index_arg(k, "TubeVector.set(y, k)", "slice")); },
+          py::arg("y"), py::arg("k"))
       .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"))
       .def(py::self == py::self)
       .def(py::self != py::self)

@@ -8,6 +8,7 @@
 
 #include <pybind11/stl.h>
 
+#include "arg_checks.h"
 #include "bindings.h"
 #include "sillage/tube/tube_integral.h"
 #include "sillage/tube/tube_taylor.h"
@@ -42,13 +43,17 @@ void init_tube_analysis(py::module_& m) {
           "[x]([t]), as Tube.__call__.")
       .def(
           "integral",
-          [](const TubeAnalysis& a, const Interval& t1, const py::object& t2) {
-            return t2.is_none() ? a.integral(t1) : a.integral(t1, t2.cast<Interval>());
+          [](const TubeAnalysis& a, const py::object& t1, const py::object& t2) {
+            const char* where = "TubeAnalysis.integral";
+            const Interval i1 = interval_arg(t1, where, "t1");
+            return t2.is_none() ? a.integral(i1) : a.integral(i1, interval_arg(t2, where, "t2"));
           },
           py::arg("t1"), py::arg("t2") = py::none(), kIntegralDoc)
       .def(
-          "partial_integral", [](const TubeAnalysis& a, const Interval& t1, const Interval& t2) {
-            return a.partial_integral(t1, t2);
+          "partial_integral",
+          [](const TubeAnalysis& a, const py::object& t1, const py::object& t2) {
+            const char* where = "TubeAnalysis.partial_integral";
+            return a.partial_integral(interval_arg(t1, where, "t1"), interval_arg(t2, where, "t2"));
           },
           py::arg("t1"), py::arg("t2"), kPartialDoc)
       .def("nb_slices", [](const TubeAnalysis& a) { return a.tree()->nb_slices(); });
@@ -69,14 +74,18 @@ void init_tube_analysis(py::module_& m) {
   py::object cls = m.attr("Tube");
   add_method(cls, "integral",
              py::cpp_function(
-                 [](const Tube& x, const Interval& t1, const py::object& t2) {
-                   return t2.is_none() ? integral(x, t1) : integral(x, t1, t2.cast<Interval>());
+                 [](const Tube& x, const py::object& t1, const py::object& t2) {
+                   const Interval i1 = interval_arg(t1, "Tube.integral", "t1");
+                   return t2.is_none() ? integral(x, i1) : integral(x, i1, interval_arg(t2, "Tube.integral", "t2"));
                  },
                  py::name("integral"), py::is_method(cls), py::arg("t1"), py::arg("t2") = py::none(),
                  kIntegralDoc));
   add_method(cls, "partial_integral",
-             py::cpp_function([](const Tube& x, const Interval& t1,
-                                 const Interval& t2) { return partial_integral(x, t1, t2); },
+             py::cpp_function(
+                 [](const Tube& x, const py::object& t1, const py::object& t2) {
+                   return partial_integral(x, interval_arg(t1, "Tube.partial_integral", "t1"),
+                                           interval_arg(t2, "Tube.partial_integral", "t2"));
+                 },
                               py::name("partial_integral"), py::is_method(cls), py::arg("t1"), py::arg("t2"),
                               kPartialDoc));
   add_method(cls, "primitive",

@@ -15,6 +15,7 @@ void def_copy(Class& cls) {
       .def("__deepcopy__", [](const T& x, py::dict) { return T(x); });
 }
 void init_errors(py::module_& m);
+void init_budget(py::module_& m);
 void init_interval(py::module_& m);
 void init_expr(py::module_& m);
 void init_ctc(py::module_& m);

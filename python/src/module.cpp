@@ -6,6 +6,7 @@
 PYBIND11_MODULE(_sillage, m) {
   m.doc() = "sillage: guaranteed state estimation by constraint programming over intervals and tubes";
   sillage::python::init_errors(m);
+  sillage::python::init_budget(m);
   sillage::python::init_interval(m);
   sillage::python::init_expr(m);
   sillage::python::init_ctc(m);

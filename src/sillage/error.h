@@ -23,6 +23,19 @@ class ParseError : public Error {
   using Error::Error;
 };
 
+// A value of the wrong type where sillage expected another (a Python callable
+// returning a str instead of a box, a lambda instead of a contractor).
+class ArgumentTypeError : public Error {
+ public:
+  using Error::Error;
+};
+
+// An index or a time out of the valid range (a row, a slice, a component).
+class OutOfRangeError : public Error {
+ public:
+  using Error::Error;
+};
+
 // A double in full precision (17 significant digits), for error messages.
 std::string number_text(double x);
 

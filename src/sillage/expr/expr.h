@@ -117,6 +117,15 @@ Expr min(const Expr& x, const Expr& y);
 Expr max(const Expr& x, const Expr& y);
 Expr sign(const Expr& x);
 
+// Infix text that parse_expr reads back into the same DAG; a shared
+// sub-expression of more than a few characters is printed once, named by a
+// let-binding ("let a = x * x + 1; b = a * a + 1 in b * b + 1"): the text is
+// linear in the size of the DAG.
 std::ostream& operator<<(std::ostream& os, const Expr& e);
+// The same for several expressions sharing their bindings, "(e1, e2, ...)"
+// when as_vector (else separated by ", "); no binding is named as one of
+// `taken` (the variables of a Function, used or not).
+void print_exprs(std::ostream& os, const std::vector<Expr>& es, bool as_vector,
+                 const std::vector<std::string>& taken = {});
 
 }  // namespace sillage

@@ -260,13 +260,7 @@ void Function::eval_batch(std::span<const Interval* const> xs, std::size_t count
 
 std::string Function::expr_str() const {
   std::ostringstream os;
-  if (image_dim() == 1) {
-    os << impl_->exprs[0];
-  } else {
-    os << '(';
-    for (std::size_t i = 0; i < image_dim(); ++i) os << (i ? ", " : "") << impl_->exprs[i];
-    os << ')';
-  }
+  print_exprs(os, impl_->exprs, image_dim() != 1, impl_->vars);  // one set of let-bindings for all outputs
   return os.str();
 }
 

@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "sillage/error.h"
 #include "sillage/expr/literal.h"
+#include "sillage/text_utf8.h"
 
 namespace sillage {
 namespace {
@@ -34,12 +36,14 @@ const std::unordered_map<std::string, FunctionSpec>& functions() {
   return table;
 }
 
-enum class Tok { Number, Ident, LParen, RParen, LBracket, RBracket, Comma, Plus, Minus, Star, Slash, Caret, End };
+enum class Tok {
+  Number, Ident, LParen, RParen, LBracket, RBracket, Comma, Plus, Minus, Star, Slash, Caret, Equals, Semicolon, End
+};
 
 struct Token {
   Tok kind;
   std::string text;
-  std::size_t col;  // 1-based
+  std::size_t col;  // 1-based, in characters
 };
 
 const char* tok_name(Tok k) {
@@ -56,6 +60,8 @@ const char* tok_name(Tok k) {
     case Tok::Star: return "'*'";
     case Tok::Slash: return "'/'";
     case Tok::Caret: return "'^'";
+    case Tok::Equals: return "'='";
+    case Tok::Semicolon: return "';'";
     case Tok::End: return "the end";
   }
   return "?";
@@ -75,22 +81,56 @@ class Parser {
   }
 
   std::vector<Expr> parse_all() {
+    if (peek().kind == Tok::Ident && peek().text == "let") parse_bindings();
     Item it = parse_sum();
     if (peek().kind != Tok::End) fail("expected an operator or the end", peek().col);
     return it.exprs;
   }
 
  private:
+  // Short texts are quoted whole, long ones around the column.
   [[noreturn]] void fail(const std::string& what, std::size_t col) const {
-    throw ParseError(what + " at column " + std::to_string(col) + " in \"" + text_ + "\"");
+    const std::string text = text_.size() <= 60 ? valid_utf8(text_) : excerpt(text_, col);
+    throw ParseError(what + " at column " + std::to_string(col) + (text_.size() <= 60 ? " in \"" : " near \"") +
+                     text + "\"");
+  }
+
+  // "let a = e1; b = e2 in e": names for sub-expressions (see operator<<).
+  void parse_bindings() {
+    next();
+    for (;;) {
+      const Token name = expect(Tok::Ident);
+      if (vars_.count(name.text) || bindings_.count(name.text) || is_reserved_name(name.text)) {
+        fail(std::string("'").append(quote_text(name.text)).append("' is a variable, a reserved name or already bound"),
+             name.col);
+      }
+      expect(Tok::Equals);
+      const Expr e = scalar(parse_sum());
+      bindings_.emplace(name.text, e);
+      if (peek().kind == Tok::Semicolon) {
+        next();
+        continue;
+      }
+      if (peek().kind == Tok::Ident && peek().text == "in") {
+        next();
+        return;
+      }
+      fail("expected ';' or 'in'", peek().col);
+    }
   }
 
   void tokenize() {
     std::size_t i = 0;
     const std::string& s = text_;
+    // Columns count characters: the bytes that do not continue a UTF-8 sequence.
+    std::size_t counted = 0, chars = 0;
+    auto column = [&](std::size_t at) {
+      for (; counted < at; ++counted) chars += (static_cast<unsigned char>(s[counted]) & 0xC0) != 0x80;
+      return chars + 1;
+    };
     while (i < s.size()) {
       const char c = s[i];
-      const std::size_t col = i + 1;
+      const std::size_t col = column(i);
       if (std::isspace(static_cast<unsigned char>(c))) {
         ++i;
       } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < s.size() &&
@@ -104,7 +144,7 @@ class Parser {
             j = k;
             while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
           } else {
-            fail("expected digits of the exponent", k + 1);
+            fail("expected digits of the exponent", column(k));
           }
         }
         toks_.push_back({Tok::Number, s.substr(i, j - i), col});
@@ -127,13 +167,29 @@ class Parser {
           case '*': k = Tok::Star; break;
           case '/': k = Tok::Slash; break;
           case '^': k = Tok::Caret; break;
-          default: fail(std::string("unexpected character '") + c + "'", col);
+          case '=': k = Tok::Equals; break;
+          case ';': k = Tok::Semicolon; break;
+          default: unexpected(i, col);
         }
         toks_.push_back({k, std::string(1, c), col});
         ++i;
       }
     }
-    toks_.push_back({Tok::End, "", s.size() + 1});
+    toks_.push_back({Tok::End, "", column(s.size())});
+  }
+
+  // The whole character at byte i, or the byte if it is not UTF-8.
+  [[noreturn]] void unexpected(std::size_t i, std::size_t col) const {
+    const unsigned char c = static_cast<unsigned char>(text_[i]);
+    if (c < 0x20 || c == 0x7F) fail("unexpected control character " + code_point_name(text_.substr(i, 1)), col);
+    const std::size_t n = utf8_sequence_length(text_, i);
+    if (n == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", c);
+      fail(std::string("unexpected byte ") + hex + " (the text is not valid UTF-8)", col);
+    }
+    const std::string ch = text_.substr(i, n);
+    fail("unexpected character '" + ch + "'" + (n > 1 ? " (" + code_point_name(ch) + ")" : ""), col);
   }
 
   const Token& peek() const { return toks_[pos_]; }
@@ -149,7 +205,9 @@ class Parser {
     return it.exprs[0];
   }
 
-  // Bounds the recursion: a pathological text must raise, not overflow the stack.
+  // Bounds the recursion: a pathological text must raise, not overflow the
+  // stack. One level per parenthesis, bracket-free call, sign or exponent:
+  // exactly the nesting a reader sees.
   struct DepthGuard {
     Parser& p;
     explicit DepthGuard(Parser& parser) : p(parser) {
@@ -160,7 +218,6 @@ class Parser {
   static constexpr int kMaxDepth = 500;
 
   Item parse_sum() {
-    DepthGuard guard(*this);
     Item left = parse_product();
     while (peek().kind == Tok::Plus || peek().kind == Tok::Minus) {
       const bool plus = next().kind == Tok::Plus;
@@ -183,8 +240,8 @@ class Parser {
   }
 
   Item parse_unary() {
-    DepthGuard guard(*this);
     if (peek().kind == Tok::Minus || peek().kind == Tok::Plus) {
+      DepthGuard guard(*this);
       const Token& t = next();
       const bool minus = t.kind == Tok::Minus;
       const std::size_t col = t.col;
@@ -198,6 +255,7 @@ class Parser {
     Item base = parse_primary();
     if (peek().kind != Tok::Caret) return base;
     next();
+    DepthGuard guard(*this);
     Expr b = scalar(base);
     Expr e = scalar(parse_unary());  // right-associative: x^y^z = x^(y^z)
     return {{pow(b, e)}, base.col};
@@ -225,7 +283,7 @@ class Parser {
     try {
       return detail::decimal_enclosure(t.text);
     } catch (const ParseError&) {
-      fail("invalid number literal '" + t.text + "'", t.col);
+      fail("invalid number literal '" + quote_text(t.text) + "'", t.col);
     }
   }
 
@@ -252,6 +310,7 @@ class Parser {
   }
 
   Item parse_call(const Token& name) {
+    DepthGuard guard(*this);
     const auto it = functions().find(name.text);
     expect(Tok::LParen);
     std::vector<Expr> args{scalar(parse_sum())};
@@ -281,6 +340,7 @@ class Parser {
       case Tok::Number: return {{Expr(number(t))}, t.col};
       case Tok::LBracket: return parse_interval(t.col);
       case Tok::LParen: {
+        DepthGuard guard(*this);
         Item it{{scalar(parse_sum())}, t.col};
         while (peek().kind == Tok::Comma) {
           next();
@@ -292,9 +352,10 @@ class Parser {
       case Tok::Ident: {
         if (functions().count(t.text)) return parse_call(t);
         if (auto v = vars_.find(t.text); v != vars_.end()) return {{v->second}, t.col};
+        if (auto b = bindings_.find(t.text); b != bindings_.end()) return {{b->second}, t.col};
         if (t.text == "pi") return {{expr_pi()}, t.col};
         if (is_nan_name(t.text)) fail("NaN is not a valid number", t.col);
-        fail("unknown identifier '" + t.text + "'", t.col);
+        fail("unknown identifier '" + quote_text(t.text) + "'", t.col);
       }
       case Tok::End: fail("expected an operand", t.col);
       default: fail("expected an operand, got " + std::string(tok_name(t.kind)), t.col);
@@ -303,6 +364,7 @@ class Parser {
 
   std::string text_;
   std::unordered_map<std::string, Expr> vars_;
+  std::unordered_map<std::string, Expr> bindings_;  // let
   std::vector<Token> toks_;
   std::size_t pos_ = 0;
   int depth_ = 0;
@@ -322,8 +384,8 @@ void check_var_names(const std::vector<std::string>& vars) {
 bool is_reserved_name(const std::string& name) {
   std::string l = name;
   std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return std::tolower(c); });
-  return name == "pi" || name == "inf" || name == "oo" || name == "empty" || l == "nan" ||
-         functions().count(name) > 0;
+  return name == "pi" || name == "inf" || name == "oo" || name == "empty" || name == "let" || name == "in" ||
+         l == "nan" || functions().count(name) > 0;
 }
 
 std::vector<Expr> parse_exprs(const std::vector<std::string>& vars, const std::string& text) {
@@ -335,7 +397,7 @@ Expr parse_expr(const std::vector<std::string>& vars, const std::string& text) {
   std::vector<Expr> es = parse_exprs(vars, text);
   if (es.size() != 1)
     throw ParseError("expected a scalar expression, got a vector of size " + std::to_string(es.size()) + " in \"" +
-                     text + "\"");
+                     quote_text(text) + "\"");
   return es[0];
 }
 

@@ -1,11 +1,15 @@
 #include "sillage/io/csv.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
+#include <unordered_map>
 
 #include "sillage/error.h"
+#include "sillage/text_utf8.h"
 
 namespace sillage {
 
@@ -24,6 +28,43 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
+// The text without its UTF-8 byte order mark; ParseError for UTF-16 (a byte
+// order mark FF FE or FE FF, or NUL bytes), which would read as garbage.
+std::string_view checked_encoding(const std::string& text, const std::string& source) {
+  std::string_view v(text);
+  if (v.substr(0, 2) == "\xFF\xFE" || v.substr(0, 2) == "\xFE\xFF") {
+    throw ParseError(source + ": the file is UTF-16 (it starts with a byte order mark); convert it to UTF-8");
+  }
+  if (v.find('\0') != std::string_view::npos) {
+    throw ParseError(source + ": the file contains NUL bytes (UTF-16 or binary?); convert it to UTF-8 text");
+  }
+  if (v.substr(0, 3) == "\xEF\xBB\xBF") v.remove_prefix(3);
+  return v;
+}
+
+// The line starting at `at` (without its end: \n, \r\n or a lone \r); moves `at` past it.
+std::string_view next_line(std::string_view text, std::size_t& at) {
+  const std::size_t end = std::min(text.find_first_of("\r\n", at), text.size());
+  const std::string_view line = text.substr(at, end - at);
+  at = end + (end < text.size() && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? 2 : 1);
+  return line;
+}
+
+// Column names must be non-empty and distinct (1-based column numbers in errors).
+void check_header(const std::vector<std::string>& names, const std::string& where) {
+  std::unordered_map<std::string_view, std::size_t> first;  // a hash: headers may be huge
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty()) {
+      throw ParseError(where + ": column " + std::to_string(i + 1) + " of the header has no name");
+    }
+    const auto [it, added] = first.emplace(names[i], i);
+    if (!added) {
+      throw ParseError(where + ": columns " + std::to_string(it->second + 1) + " and " + std::to_string(i + 1) +
+                       " of the header have the same name '" + quote_text(names[i]) + "'");
+    }
+  }
+}
+
 }  // namespace
 
 CsvTable CsvTable::read(const std::string& path) {
@@ -37,36 +78,50 @@ CsvTable CsvTable::read(const std::string& path) {
 CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
   CsvTable t;
   t.source_ = source;
-  std::istringstream in(text);
-  std::string line;
-  std::size_t line_no = 0;
-  while (std::getline(in, line)) {
+  const std::string_view body = checked_encoding(text, source);
+  std::size_t line_no = 0, header_line = 0;
+  for (std::size_t at = 0; at < body.size();) {
+    const std::string line(next_line(body, at));
     ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
     const std::vector<std::string> cells = split(line);
+    const std::string where = source + ":" + std::to_string(line_no);
     if (t.columns_.empty()) {
+      check_header(cells, where);
       t.columns_ = cells;
+      header_line = line_no;
       continue;
     }
-    const std::string where = source + ":" + std::to_string(line_no);
     if (cells.size() != t.columns_.size()) {
-      throw ParseError(where + ": " + std::to_string(cells.size()) + " cells, the header has " +
-                       std::to_string(t.columns_.size()));
+      throw ParseError(where + ": " + std::to_string(cells.size()) + " cells, the header (line " +
+                       std::to_string(header_line) + ") has " + std::to_string(t.columns_.size()));
     }
     std::vector<double> row(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      const std::string& s = cells[c];
-      const char* end = s.data() + s.size();
-      const auto [p, ec] = std::from_chars(s.data(), end, row[c]);
-      if (s.empty() || ec != std::errc() || p != end || !std::isfinite(row[c])) {
-        throw ParseError(where + ": column '" + t.columns_[c] + "': '" + s + "' is not a finite number");
+      const std::string& cell = cells[c];
+      const char* end = cell.data() + cell.size();
+      const auto [p, ec] = std::from_chars(cell.data(), end, row[c]);
+      if (cell.empty() || ec != std::errc() || p != end || !std::isfinite(row[c])) {
+        throw ParseError(where + ": column '" + quote_text(t.columns_[c]) + "': '" + quote_text(cell) +
+                         "' is not a finite number");
       }
     }
     t.rows_.push_back(std::move(row));
   }
   if (t.columns_.empty()) throw ParseError(source + ": no header line");
   return t;
+}
+
+const std::vector<double>& CsvTable::row(std::size_t i) const {
+  if (i >= rows_.size()) {
+    throw OutOfRangeError(source_ + ": no row " + std::to_string(i) + " (" + rows_text() + ")");
+  }
+  return rows_[i];
+}
+
+std::string CsvTable::rows_text() const {
+  if (rows_.empty()) return "the table has no rows";
+  return "the table has " + std::to_string(rows_.size()) + " rows: 0 to " + std::to_string(rows_.size() - 1);
 }
 
 bool CsvTable::has_column(const std::string& name) const {
@@ -80,7 +135,7 @@ std::size_t CsvTable::column(const std::string& name) const {
     if (columns_[i] == name) return i;
   std::string have;
   for (const auto& c : columns_) have += (have.empty() ? "" : ", ") + c;
-  throw Error(source_ + ": no column '" + name + "' (columns: " + have + ")");
+  throw Error(source_ + ": no column '" + quote_text(name) + "' (columns: " + quote_text(have, 200) + ")");
 }
 
 std::vector<double> CsvTable::values(const std::string& name) const {

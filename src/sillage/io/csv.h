@@ -2,7 +2,8 @@
 // CsvTable: a numeric CSV file with one header line (the datasets of
 // ../shared/data: odometry, ranges, ground truth). Every cell must be a
 // finite number; a bad cell, a short row or a missing column is a ParseError that
-// names the file, the line and the column.
+// names the file, the line and the column. Header names are non-empty and
+// distinct. Cells are quoted in messages up to 60 characters.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -12,14 +13,18 @@ namespace sillage {
 class CsvTable {
  public:
   // Reads `path` (comma-separated; blank lines and lines starting with '#'
-  // are skipped). Error if the file cannot be read.
+  // are skipped; lines end with \n, \r\n or \r; a UTF-8 byte order mark is
+  // skipped, UTF-16 is a ParseError). Error if the file cannot be read.
   static CsvTable read(const std::string& path);
   // Parses text already in memory; `source` names it in error messages.
   static CsvTable parse(const std::string& text, const std::string& source);
 
   const std::vector<std::string>& columns() const { return columns_; }
   std::size_t nb_rows() const { return rows_.size(); }
-  const std::vector<double>& row(std::size_t i) const { return rows_.at(i); }
+  // Row i (OutOfRangeError if i >= nb_rows()).
+  const std::vector<double>& row(std::size_t i) const;
+  // "the table has 3 rows: 0 to 2", for messages about rows.
+  std::string rows_text() const;
   bool has_column(const std::string& name) const;
   // Index of a column; Error naming the file and the columns it has.
   std::size_t column(const std::string& name) const;

@@ -21,6 +21,12 @@ namespace sillage {
 
 CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                         const PlaneJacobian& jacobian, const CountOptions& options) {
+  BudgetMeter meter(options.budget, "count_zeros");
+  return detail::count_zeros(boxes, degree, f, jacobian, options, meter);
+}
+
+CountResult detail::count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
+                                const PlaneJacobian& jacobian, const CountOptions& options, BudgetMeter& meter) {
   if (boxes.empty()) throw Error("count_zeros: no box (the region is empty)");
   if (!(options.min_width > 0)) {
     throw Error("count_zeros: min_width must be positive, got " + number_text(options.min_width));
@@ -37,6 +43,7 @@ CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, co
   while (!stack.empty()) {
     const IntervalVector b = stack.back();
     stack.pop_back();
+    meter.add();
     const IntervalVector y = detail::eval_plane_function(f, b, "count_zeros");
     if (!y[0].contains(0.0) || !y[1].contains(0.0)) continue;  // no zero of f* in b
     const Interval det = detail::determinant2(detail::eval_plane_jacobian(jacobian, b, "count_zeros"));

@@ -69,17 +69,31 @@ void separate(const LoopFunction& f, IntervalVector& x_in, IntervalVector& x_out
 
 }  // namespace
 
-Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel) {
-  detail::check_sivia_input(square, eps, kWhere);
+namespace {
+
+Paving paving_of(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel, const Budget& budget,
+                 const char* where, const char* option) {
+  detail::check_sivia_input(square, eps, where);
   if (square.size() != 2 || square.is_empty() || square[0] != square[1] || !(square[0].lb() < square[0].ub())) {
-    throw Error(std::string(kWhere) + ": the t-plane must be a square [a, b]^2 with a < b, got " + square.str());
+    throw Error(std::string(where) + ": the t-plane must be a square [a, b]^2 with a < b, got " + square.str());
   }
   if (!square[0].is_subset(f.time_domain())) {
-    throw Error(std::string(kWhere) + ": the t-plane " + square.str() + " is not inside the time domain " +
+    throw Error(std::string(where) + ": the t-plane " + square.str() + " is not inside the time domain " +
                 f.time_domain().str() + " of the tubes");
   }
   auto test = [&f](IntervalVector& x_in, IntervalVector& x_out) { separate(f, x_in, x_out); };
-  return detail::build_paving(square, eps, test, parallel, kWhere);
+  return detail::build_paving(square, eps, test, parallel, budget, where, option);
+}
+
+}  // namespace
+
+Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, const SiviaOptions& options) {
+  return paving_of(f, square, eps, options.parallel, options.budget, kWhere, "options.budget");
+}
+
+Paving detail::build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps,
+                                 const Budget& budget, const char* where) {
+  return paving_of(f, square, eps, true, budget, where, "budget");
 }
 
 }  // namespace sillage

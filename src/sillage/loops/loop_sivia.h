@@ -24,12 +24,21 @@
 // Undecided boxes are bisected (largest side, midpoint) down to width eps.
 // Parallel with oneTBB; the paving never depends on the thread count.
 #include "sillage/loops/loop_function.h"
-#include "sillage/paving/paving.h"
+#include "sillage/paving/sivia.h"
 
 namespace sillage {
 
 // Error if eps <= 0 or NaN, if `square` is not a bounded 2-D box [a, b]^2
-// with a < b, or if it is not inside the time domain of f.
-Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel = true);
+// with a < b, or if it is not inside the time domain of f. The options (parallel,
+// budget) are those of sivia.h.
+Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps,
+                  const SiviaOptions& options = {});
+
+namespace detail {
+// loop_sivia in parallel for a caller named `where` whose budget argument is
+// called "budget" (error messages).
+Paving build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps, const Budget& budget,
+                         const char* where);
+}  // namespace detail
 
 }  // namespace sillage

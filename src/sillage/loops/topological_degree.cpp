@@ -109,7 +109,8 @@ void check_loops(const std::vector<ContourLoop>& loops, const DegreeOptions& opt
 // depth-first so that the pieces of a loop stay in their cyclic order.
 class BoundaryCover {
  public:
-  BoundaryCover(const PlaneFunction& f, const DegreeOptions& options) : f_(f), options_(options) {}
+  BoundaryCover(const PlaneFunction& f, const DegreeOptions& options, BudgetMeter& meter)
+      : f_(f), options_(options), meter_(meter) {}
 
   std::vector<Piece> cover(const ContourLoop& loop) {
     std::vector<Piece> pieces;
@@ -130,6 +131,7 @@ class BoundaryCover {
       int quarter = kUnresolved;
       if (nb_evaluations_ < options_.max_evaluations) {
         ++nb_evaluations_;
+        meter_.add();
         quarter = quarter_of(detail::eval_plane_function(f_, segment_box(p, q), "topological_degree"));
       }
       Point2 m;
@@ -146,6 +148,7 @@ class BoundaryCover {
 
   const PlaneFunction& f_;
   const DegreeOptions& options_;
+  BudgetMeter& meter_;
   std::size_t nb_evaluations_ = 0;
   std::vector<std::pair<Point2, Point2>> stack_;  // pieces still to examine, reused across edges
 };
@@ -167,10 +170,12 @@ int winding_number(const std::vector<Piece>& pieces) {
 
 }  // namespace
 
-DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const PlaneFunction& f,
-                                const DegreeOptions& options) {
+namespace {
+
+DegreeResult degree_of(const std::vector<ContourLoop>& loops, const PlaneFunction& f, const DegreeOptions& options,
+                       BudgetMeter& meter) {
   check_loops(loops, options);
-  BoundaryCover cover(f, options);
+  BoundaryCover cover(f, options, meter);
   DegreeResult result;
   int degree = 0;
   for (const auto& loop : loops) {
@@ -186,12 +191,30 @@ DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const Pla
   return result;
 }
 
+std::vector<ContourLoop> loops_of(const std::vector<IntervalVector>& boxes) {
+  if (boxes.empty()) throw Error("topological_degree: no box (the region is empty)");
+  std::vector<ContourLoop> loops = contour(boxes);
+  if (loops.empty()) throw Error("topological_degree: the boxes have no interior, the region has no boundary");
+  return loops;
+}
+
+}  // namespace
+
+DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const PlaneFunction& f,
+                                const DegreeOptions& options) {
+  BudgetMeter meter(options.budget, "topological_degree");
+  return degree_of(loops, f, options, meter);
+}
+
 DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                 const DegreeOptions& options) {
-  if (boxes.empty()) throw Error("topological_degree: no box (the region is empty)");
-  const std::vector<ContourLoop> loops = contour(boxes);
-  if (loops.empty()) throw Error("topological_degree: the boxes have no interior, the region has no boundary");
-  return topological_degree(loops, f, options);
+  BudgetMeter meter(options.budget, "topological_degree");
+  return degree_of(loops_of(boxes), f, options, meter);
+}
+
+DegreeResult detail::topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                                        const DegreeOptions& options, BudgetMeter& meter) {
+  return degree_of(loops_of(boxes), f, options, meter);
 }
 
 }  // namespace sillage

@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/loops/plane_function.h"
 #include "sillage/paving/contour.h"
 
@@ -25,6 +26,9 @@ struct DegreeOptions {
   // Cap on the evaluations of [f] for one degree (guards against an edge
   // that holds a true zero: then no subdivision can conclude).
   std::size_t max_evaluations = 1u << 20;
+  // Cancellation and time (budget.h); each evaluation counts as a box. Unlike
+  // max_evaluations (an inconclusive result), exceeding it throws.
+  Budget budget;
 };
 
 struct DegreeResult {
@@ -51,5 +55,11 @@ DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const Pla
 // Same over a union of 2-D boxes with disjoint interiors (its contour()).
 DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                 const DegreeOptions& options = {});
+
+namespace detail {
+// The same, counting against a meter shared with the caller (options.budget unused).
+DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                                const DegreeOptions& options, BudgetMeter& meter);
+}  // namespace detail
 
 }  // namespace sillage

@@ -47,23 +47,23 @@ void TPlane::check_tube(const TubeVector& x, const char* what, const char* where
   }
 }
 
-void TPlane::compute_detections(double eps, const TubeVector& v) {
+void TPlane::compute_detections(double eps, const TubeVector& v, const Budget& budget) {
   const char* where = "TPlane::compute_detections(eps, v)";
   check_tube(v, "velocity", where);
   if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + number_text(eps));
-  detect(eps, LoopFunction(v));
+  detect(eps, LoopFunction(v), budget);
 }
 
-void TPlane::compute_detections(double eps, const TubeVector& p, const TubeVector& w) {
+void TPlane::compute_detections(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget) {
   const char* where = "TPlane::compute_detections(eps, p, w)";
   check_tube(p, "position", where);
   check_tube(w, "velocity", where);
   if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + number_text(eps));
-  detect(eps, LoopFunction(p, w));
+  detect(eps, LoopFunction(p, w), budget);
 }
 
-void TPlane::detect(double eps, const LoopFunction& f) {
-  Paving paving = loop_sivia(f, domain_, eps);
+void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
+  Paving paving = detail::build_loop_paving(f, domain_, eps, budget, "TPlane::compute_detections");
   std::vector<Loop> loops;
   for (Component& c : paving.components()) {
     Loop l;

@@ -34,6 +34,7 @@
 #include <optional>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/paving/paving.h"
 #include "sillage/tube/tdomain.h"
@@ -99,6 +100,9 @@ struct ProofOptions {
   // diagonal, and meets no other component. 0: the hull only.
   double newton_inflation = 0.25;
   bool count = true;   // run Alg. 10
+  // For the whole of compute_proofs: every evaluation of the degree test and
+  // every box of the counts counts as a box (budget.h).
+  Budget budget;
 };
 
 class TPlane {
@@ -113,10 +117,11 @@ class TPlane {
   // Alg. 6 from a 2-D velocity tube whose TDomain covers [t0, tf]. Error if
   // eps <= 0 or NaN, DimensionError if v is not 2-D, Error if its TDomain
   // does not cover the t-plane. Replaces the previous results (kept
-  // whole if it throws).
-  void compute_detections(double eps, const TubeVector& v);
+  // whole if it throws). The paving's nodes count against `budget`
+  // (budget.h: BudgetExceeded, Cancelled).
+  void compute_detections(double eps, const TubeVector& v, const Budget& budget = {});
   // Alg. 6 with the tighter function (7.28) from positions and velocities.
-  void compute_detections(double eps, const TubeVector& p, const TubeVector& w);
+  void compute_detections(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget = {});
   // Degree test, Newton test and loop count on each complete detection, and
   // the map box of every detection, with the inclusion function of v (or of
   // (p, w)): normally the tubes given to compute_detections. Any tubes
@@ -136,7 +141,7 @@ class TPlane {
 
  private:
   void check_tube(const TubeVector& x, const char* what, const char* where) const;
-  void detect(double eps, const LoopFunction& f);
+  void detect(double eps, const LoopFunction& f, const Budget& budget);
   void prove(const LoopFunction& f, const ProofOptions& options);
   std::vector<IntervalVector> newton_boxes(const Loop& l, double inflation) const;
 

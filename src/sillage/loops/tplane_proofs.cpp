@@ -106,16 +106,20 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
   count_options.min_width = options.count_width_fraction * eps_;
   count_options.max_boxes = options.count_max_boxes;
 
+  // One meter for all the components: the budget is that of the whole call.
+  BudgetMeter meter(options.budget, "TPlane::compute_proofs");
   // Each task writes its own Proof only: the results do not depend on threads.
   tbb::parallel_for(std::size_t{0}, detections_.size(), [&](std::size_t i) {
     const Loop& l = detections_[i];
     Proof& p = proofs[i];
     if (!l.complete_) return;
-    p.degree = topological_degree(l.boxes_, fn, degree_options).degree;
+    p.degree = detail::topological_degree(l.boxes_, fn, degree_options, meter).degree;
     for (const IntervalVector& b : p.newton_boxes) {
       if ((p.newton = newton_test(b, fn, jac).proven)) break;
     }
-    if (options.count && p.degree) p.count = count_zeros(l.boxes_, *p.degree, fn, jac, count_options).count;
+    if (options.count && p.degree) {
+      p.count = detail::count_zeros(l.boxes_, *p.degree, fn, jac, count_options, meter).count;
+    }
   });
 
   for (std::size_t i = 0; i < detections_.size(); ++i) {

@@ -35,6 +35,9 @@ NewtonResult newton_test(const IntervalVector& box, const PlaneFunction& f, cons
 struct CountOptions {
   double min_width = 1e-9;          // ζ of Remark 6.1: boxes are not bisected below this width
   std::size_t max_boxes = 1u << 16; // cap on the refined boxes
+  // Cancellation and time (budget.h); each box examined counts. Unlike
+  // max_boxes (an inconclusive result), exceeding it throws.
+  Budget budget;
 };
 
 struct CountResult {
@@ -49,5 +52,11 @@ struct CountResult {
 // hold no zero). nullopt when this cannot be shown.
 CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                         const PlaneJacobian& jacobian, const CountOptions& options = {});
+
+namespace detail {
+// The same, counting against a meter shared with the caller (options.budget unused).
+CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
+                        const PlaneJacobian& jacobian, const CountOptions& options, BudgetMeter& meter);
+}  // namespace detail
 
 }  // namespace sillage

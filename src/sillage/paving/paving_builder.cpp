@@ -35,8 +35,9 @@ std::uint32_t offset(std::size_t from, std::size_t to, const char* where) {
 
 class Builder {
  public:
-  Builder(const Separation& separate, double eps, std::size_t dim, bool parallel, const char* where)
-      : separate_(separate), eps_(eps), dim_(dim), parallel_(parallel), where_(where) {}
+  Builder(const Separation& separate, double eps, std::size_t dim, bool parallel, BudgetMeter& meter,
+          const char* where)
+      : separate_(separate), eps_(eps), dim_(dim), parallel_(parallel), meter_(meter), where_(where) {}
 
   // Grows the subtree of `root` into c, in pre-order. Iterative below the
   // parallel levels (an explicit stack), so that deep trees (tiny eps) never
@@ -85,6 +86,7 @@ class Builder {
  private:
   // Appends a node; returns its local index.
   std::size_t push(Chunk& c, const IntervalVector& x, std::uint8_t kind) const {
+    meter_.add();
     c.nodes.push_back({0, kind});
     c.bounds.insert(c.bounds.end(), x.begin(), x.end());
     ++c.total;
@@ -151,6 +153,7 @@ class Builder {
   double eps_;
   std::size_t dim_;
   bool parallel_;
+  BudgetMeter& meter_;
   const char* where_;
 };
 
@@ -212,12 +215,15 @@ void kernel_test(const IntervalVector& lo, const IntervalVector& hi, bool may_be
 }
 
 Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
-                    const char* where) {
+                    const Budget& budget, const char* where, const char* option) {
   check_sivia_input(x0, eps, where);
+  // What a node costs: its tag and offset, and its box (kept once per node).
+  const std::size_t bytes_per_box = sizeof(Paving::Node) + x0.size() * sizeof(Interval);
+  BudgetMeter meter(budget, where, option, " or use a larger eps", bytes_per_box);
   Paving p(x0.size());
   if (x0.is_empty()) return p;
   Chunk root;
-  Builder(separate, eps, x0.size(), parallel, where).grow(root, x0, 0);
+  Builder(separate, eps, x0.size(), parallel, meter, where).grow(root, x0, 0);
   p.raw_nodes().reserve(root.total);
   p.raw_bounds().reserve(root.total * x0.size());
   flatten(root, p.raw_nodes(), p.raw_bounds(), x0.size());

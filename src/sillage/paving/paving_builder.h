@@ -17,8 +17,12 @@
 // Parallelism: the subtrees of the first kParallelDepth bisection levels are
 // grown as oneTBB tasks into separate chunks, spliced afterwards in
 // pre-order. The tree therefore never depends on the number of threads.
+//
+// Budget (budget.h): every node stored counts as a box; the tasks share one
+// BudgetMeter, so exceeding the budget or a cancellation stops them all.
 #include <functional>
 
+#include "sillage/budget.h"
 #include "sillage/paving/paving.h"
 
 namespace sillage::detail {
@@ -31,9 +35,10 @@ inline constexpr int kParallelDepth = 12;
 void check_sivia_input(const IntervalVector& x0, double eps, const char* where);
 
 // The paving of x0 by `separate` at precision eps (an empty paving if x0 is
-// empty). `where` names the caller in error messages.
+// empty). `where` names the caller in error messages, `option` the setting
+// that holds the budget (see BudgetMeter).
 Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
-                    const char* where);
+                    const Budget& budget, const char* where, const char* option = "options.budget");
 
 // The inclusion tests of Alg. 1 and Alg. 2 as separations of x (x_in and
 // x_out hold [x]): Outside empties x_out, Inner empties x_in. `may_be_inner`

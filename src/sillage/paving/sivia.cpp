@@ -21,7 +21,7 @@ Paving sivia(const IntervalVector& x0, const InclusionFunction& f, const Interva
   auto test = [&](IntervalVector& x_in, IntervalVector& x_out) {
     detail::image_test(f(x_in), y, true, x_in, x_out, "sivia");
   };
-  return detail::build_paving(x0, eps, test, options.parallel, "sivia");
+  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "sivia");
 }
 
 Paving sivia(const IntervalVector& x0, const InclusionFunction& f, const Interval& y, double eps,
@@ -37,7 +37,7 @@ Paving sivia(const IntervalVector& x0, const InclusionFunction& f, const Interva
     detail::image_test(f(x_in), y, true, x_in, x_out, "sivia");
     if (!x_in.is_empty() && !x_out.is_empty()) ctc(x_out);  // undetermined: contract, then bisect
   };
-  return detail::build_paving(x0, eps, test, options.parallel, "sivia (with contractor)");
+  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "sivia (with contractor)");
 }
 
 Paving sivia(const IntervalVector& x0, const InclusionFunction& f, const IntervalVector& y, const Ctc& ctc,
@@ -49,7 +49,7 @@ Paving sivia(const IntervalVector& x0, const InclusionFunction& f, const Interva
 Paving sivia_separator(const IntervalVector& x0, const SeparateFunction& sep, double eps,
                        const SiviaOptions& options) {
   require(static_cast<bool>(sep), "sivia (separator)");
-  return detail::build_paving(x0, eps, sep, options.parallel, "sivia (separator)");
+  return detail::build_paving(x0, eps, sep, options.parallel, options.budget, "sivia (separator)");
 }
 
 Paving sivia(const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& options) {
@@ -62,7 +62,7 @@ Paving sivia_contractor(const IntervalVector& x0, const ContractFunction& ctc, d
                         const SiviaOptions& options) {
   require(static_cast<bool>(ctc), "sivia (contractor)");
   auto outer_only = [&ctc](IntervalVector& /*x_in*/, IntervalVector& x_out) { ctc(x_out); };
-  return detail::build_paving(x0, eps, outer_only, options.parallel, "sivia (contractor)");
+  return detail::build_paving(x0, eps, outer_only, options.parallel, options.budget, "sivia (contractor)");
 }
 
 Paving sivia(const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& options) {
@@ -76,7 +76,7 @@ Paving kernel_sivia(const IntervalVector& x0, const KernelBounds& f, double eps,
     const auto [lo, hi] = f(x_in);  // [f-]([x]), [f+]([x])
     detail::kernel_test(lo, hi, true, x_in, x_out, "kernel_sivia");
   };
-  return detail::build_paving(x0, eps, test, options.parallel, "kernel_sivia");
+  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "kernel_sivia");
 }
 
 }  // namespace sillage

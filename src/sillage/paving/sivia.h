@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "sillage/ctc/ctc.h"
+#include "sillage/budget.h"
 #include "sillage/ctc/sep.h"
 #include "sillage/paving/paving.h"
 
@@ -31,6 +32,9 @@ using KernelBounds = std::function<std::pair<IntervalVector, IntervalVector>(con
 
 struct SiviaOptions {
   bool parallel = true;  // grow subtrees as oneTBB tasks
+  // Boxes (paving nodes), time and cancellation (budget.h): BudgetExceeded
+  // or Cancelled is thrown when exhausted; 10^7 boxes by default.
+  Budget budget;
 };
 
 // Alg. 1: X = f^-1(Y). A box is Outside when [f]([x]) ∩ Y = ∅, Inner when

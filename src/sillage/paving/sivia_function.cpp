@@ -23,7 +23,7 @@ Paving sivia_impl(const IntervalVector& x0, const Function& f, const IntervalVec
     detail::image_test(fx, y, inner, x_in, x_out, "sivia");
     if (ctc && !x_in.is_empty() && !x_out.is_empty()) ctc->contract(x_out);
   };
-  return detail::build_paving(x0, eps, test, options.parallel, "sivia");
+  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "sivia");
 }
 
 }  // namespace
@@ -54,7 +54,7 @@ Paving kernel_sivia(const IntervalVector& x0, const Function& f_lo, const Functi
     const bool inner = lo_defined.defined_on(x_in) && hi_defined.defined_on(x_in);
     detail::kernel_test(lo, hi, inner, x_in, x_out, "kernel_sivia");
   };
-  return detail::build_paving(x0, eps, test, options.parallel, "kernel_sivia");
+  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "kernel_sivia");
 }
 
 }  // namespace sillage

@@ -48,3 +48,59 @@ TEST(Csv, ReadsThePlaza1Dataset) {
   EXPECT_EQ(beacons.nb_rows(), 4u);
   EXPECT_EQ(beacons.values("beacon_id"), (std::vector<double>{0, 1, 5, 6}));
 }
+
+namespace {
+
+std::string csv_error(const std::string& text) {
+  try {
+    CsvTable::parse(text, "f.csv");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST(Csv, EncodingsAndLineEnds) {
+  // A UTF-8 byte order mark is not part of the first name.
+  EXPECT_EQ(CsvTable::parse("\xEF\xBB\xBFt,x\n1,2\n", "f.csv").columns(), (std::vector<std::string>{"t", "x"}));
+  // CR-only, CRLF and LF line ends.
+  for (const std::string eol : {"\r", "\r\n", "\n"}) {
+    const CsvTable t = CsvTable::parse("t,x" + eol + "1,2" + eol + "3,4" + eol, "f.csv");
+    EXPECT_EQ(t.nb_rows(), 2u);
+    EXPECT_EQ(t.values("x"), (std::vector<double>{2, 4}));
+  }
+  EXPECT_EQ(CsvTable::parse("t\r1\r\r2", "f.csv").nb_rows(), 2u);
+  EXPECT_EQ(csv_error(std::string("\xFF\xFEt\0,\0x\0", 8)),
+            "f.csv: the file is UTF-16 (it starts with a byte order mark); convert it to UTF-8");
+  EXPECT_EQ(csv_error(std::string("\xFE\xFF\0t", 4)),
+            "f.csv: the file is UTF-16 (it starts with a byte order mark); convert it to UTF-8");
+  EXPECT_EQ(csv_error(std::string("t\0,\0x\0", 6)),
+            "f.csv: the file contains NUL bytes (UTF-16 or binary?); convert it to UTF-8 text");
+}
+
+TEST(Csv, HeaderNamesAreNonEmptyAndDistinct) {
+  EXPECT_EQ(csv_error("t,x,,y\n1,2,3,4\n"), "f.csv:1: column 3 of the header has no name");
+  EXPECT_EQ(csv_error("# c\nt,x,y,x\n1,2,3,4\n"), "f.csv:2: columns 2 and 4 of the header have the same name 'x'");
+  EXPECT_EQ(csv_error("t,x\n1,2,3\n"), "f.csv:2: 3 cells, the header (line 1) has 2");
+}
+
+TEST(Csv, LongCellsAreQuotedBriefly) {
+  const std::string cell(10'000'000, 'z');
+  const std::string m = csv_error("t\n" + cell + "\n");
+  EXPECT_EQ(m, "f.csv:2: column 't': '" + std::string(60, 'z') + "...' is not a finite number");
+  // Cells that are not UTF-8 still give a UTF-8 message.
+  EXPECT_EQ(csv_error("t\n\xE9\n"), "f.csv:2: column 't': '\xEF\xBF\xBD' is not a finite number");
+}
+
+TEST(Csv, RowOutOfRange) {
+  const CsvTable t = CsvTable::parse("a\n1\n2\n", "f.csv");
+  EXPECT_EQ(t.row(1)[0], 2.0);
+  try {
+    t.row(2);
+    FAIL();
+  } catch (const OutOfRangeError& e) {
+    EXPECT_STREQ(e.what(), "f.csv: no row 2 (the table has 2 rows: 0 to 1)");
+  }
+}

@@ -373,7 +373,7 @@ TEST(Sivia, ResultDoesNotDependOnTheThreadCount) {
   const IntervalVector y = box(9.03, 9.83, 6.94, 7.74);
   auto run = [&](std::size_t threads, bool parallel) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return sivia(box(-10, 10, -10, 10), f, y, 0.02, SiviaOptions{parallel});
+    return sivia(box(-10, 10, -10, 10), f, y, 0.02, SiviaOptions{parallel, {}});
   };
   const Paving one = run(1, true), two = run(2, true), seq = run(2, false), four = run(4, true);
   EXPECT_GT(one.nb_nodes(), 1000u);

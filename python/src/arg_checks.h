@@ -1,0 +1,36 @@
+#pragma once
+// Arguments checked by hand where pybind11's casts would fail with a generic
+// message ("incompatible function arguments", "Unable to cast"): a negative
+// index, a NaN time, a value of the wrong type. Each gives a sillage error
+// that says what was expected.
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "bindings.h"
+#include "sillage/error.h"
+#include "sillage/interval/interval.h"
+
+namespace sillage::python {
+
+// The name of the Python type of h ("str", "function").
+inline std::string type_name(const py::handle& h) { return py::str(py::type::handle_of(h).attr("__name__")); }
+
+// A non-negative index (OutOfRangeError naming `where` otherwise).
+inline std::size_t index_arg(py::ssize_t k, const char* where, const char* what) {
+  if (k < 0) throw OutOfRangeError(std::string(where) + ": " + what + " " + std::to_string(k) + " is negative");
+  return static_cast<std::size_t>(k);
+}
+
+// An Interval or a number (not NaN) given for `name`.
+inline Interval interval_arg(const py::handle& h, const char* where, const char* name) {
+  if (py::isinstance<Interval>(h)) return h.cast<Interval>();
+  if (py::isinstance<py::float_>(h) || py::isinstance<py::int_>(h)) {
+    const double x = h.cast<double>();
+    if (std::isnan(x)) throw Error(std::string(where) + ": " + name + " is NaN, expected a time or an Interval");
+    return Interval(x);
+  }
+  throw ArgumentTypeError(std::string(where) + ": " + name + " must be an Interval or a number, got " + type_name(h));
+}
+
+}  // namespace sillage::python

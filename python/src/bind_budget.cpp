@@ -1,0 +1,34 @@
+// Budget and CancelToken (sillage/budget.h). The long algorithms take a
+// Budget in their options; Ctrl-C stops them (interruptible.h).
+#include "bindings.h"
+#include "sillage/budget.h"
+
+namespace sillage::python {
+
+void init_budget(py::module_& m) {
+  py::class_<CancelToken>(m, "CancelToken", "A flag that stops a computation (shared by its copies).")
+      .def(py::init<>())
+      .def("cancel", &CancelToken::cancel, "Ask the computations holding this token to stop (any thread).")
+      .def("cancelled", &CancelToken::cancelled)
+      .def("reset", &CancelToken::reset);
+
+  py::class_<Budget>(m, "Budget",
+                     "Limits of a long computation: boxes, bytes of a paving, seconds (0: none) and a CancelToken.")
+      .def(py::init([](std::size_t max_boxes, std::size_t max_bytes, double max_seconds, const CancelToken* cancel) {
+             Budget b{max_boxes, max_bytes, max_seconds, cancel ? *cancel : CancelToken{}};
+             check_budget(b, "Budget");
+             return b;
+           }),
+           py::arg("max_boxes") = Budget{}.max_boxes, py::arg("max_bytes") = Budget{}.max_bytes,
+           py::arg("max_seconds") = 0.0, py::arg("cancel") = nullptr)
+      .def_readwrite("max_boxes", &Budget::max_boxes)
+      .def_readwrite("max_bytes", &Budget::max_bytes)
+      .def_readwrite("max_seconds", &Budget::max_seconds)
+      .def_readwrite("cancel", &Budget::cancel)
+      .def("__repr__", [](const Budget& b) {
+        return "Budget(max_boxes=" + std::to_string(b.max_boxes) + ", max_bytes=" + std::to_string(b.max_bytes) +
+               ", max_seconds=" + number_text(b.max_seconds) + ")";
+      });
+}
+
+}  // namespace sillage::python

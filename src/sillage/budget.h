@@ -1,0 +1,85 @@
+#pragma once
+// Budgets and cancellation of the long algorithms (SIVIA and its variants,
+// the t-plane detections and proofs, the degree and count refinements).
+// Their cost grows without bound as eps shrinks or the dimension grows, so
+// each one checks a Budget as it goes:
+//  - max_boxes: boxes stored or refined (for a paving: its nodes), 10^7 by
+//    default;
+//  - max_bytes: the memory of a paving's nodes (16 n + 8 bytes each in
+//    dimension n), 1 GiB by default: 10^7 boxes in 2-D, 6.4 million in 10-D;
+//  - max_seconds: wall-clock time, none by default (0);
+//  - cancel: a CancelToken that another thread may set (Python sets it on
+//    Ctrl-C); checked at every box, across the oneTBB tasks too.
+// Exceeding a budget throws BudgetExceeded; a cancelled token throws Cancelled.
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "sillage/error.h"
+
+namespace sillage {
+
+// A flag shared by copies: cancel() on one copy is seen by all of them.
+class CancelToken {
+ public:
+  CancelToken() : flag_(std::make_shared<std::atomic<bool>>(false)) {}
+  void cancel() const { flag_->store(true, std::memory_order_relaxed); }
+  bool cancelled() const { return flag_->load(std::memory_order_relaxed); }
+  void reset() const { flag_->store(false, std::memory_order_relaxed); }
+
+ private:
+  std::shared_ptr<std::atomic<bool>> flag_;
+};
+
+struct Budget {
+  std::size_t max_boxes = 10'000'000;  // 0: no limit
+  std::size_t max_bytes = 1u << 30;    // pavings only; 0: no limit
+  double max_seconds = 0;              // 0: no limit
+  CancelToken cancel;
+};
+
+// A budget exceeded: the message names the algorithm, the budget, the value
+// reached and the option that raises it.
+class BudgetExceeded : public Error {
+ public:
+  using Error::Error;
+};
+
+// The computation was cancelled through its CancelToken. Not an Error: the
+// input was fine.
+class Cancelled : public std::runtime_error {
+ public:
+  explicit Cancelled(const std::string& where) : std::runtime_error(where + ": cancelled") {}
+};
+
+// Counts the boxes of one run against a Budget; thread-safe (one meter is
+// shared by the oneTBB tasks of the run). `option` names the setting that
+// holds the budget in error messages (e.g. "options.budget"), `hint` another
+// way out (" or use a larger eps"); with bytes_per_box > 0, max_bytes holds
+// too (the boxes of a paving).
+class BudgetMeter {
+ public:
+  BudgetMeter(const Budget& budget, const char* where, const char* option = "options.budget",
+              const char* hint = "", std::size_t bytes_per_box = 0);
+  // Counts one more box; throws BudgetExceeded or Cancelled.
+  void add();
+  std::size_t boxes() const { return boxes_.load(std::memory_order_relaxed); }
+
+ private:
+  Budget budget_;
+  const char* where_;
+  const char* option_;
+  const char* hint_;
+  std::size_t bytes_per_box_;
+  std::size_t max_boxes_in_memory_;  // max_bytes / bytes_per_box; 0: no limit
+  std::chrono::steady_clock::time_point start_;
+  std::atomic<std::size_t> boxes_{0};
+};
+
+// Throws Error for a negative or NaN max_seconds.
+void check_budget(const Budget& budget, const char* where);
+
+}  // namespace sillage

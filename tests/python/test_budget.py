@@ -1,0 +1,113 @@
+"""Budgets and cancellation of the long algorithms from Python: BudgetExceeded
+with a message that says how to raise the budget, a CancelToken set from
+another thread (sillage.Cancelled), and Ctrl-C (SIGINT) stopping a SIVIA or a
+t-plane computation that runs without the GIL within a second."""
+import math
+import os
+import signal
+import threading
+import time
+
+import pytest
+
+import sillage as sl
+
+
+def sphere(n):
+    names = [f"x{i}" for i in range(n)]
+    return sl.Function(names, " + ".join(v + "^2" for v in names)), sl.IntervalVector([[-2, 2]] * n)
+
+
+def test_budget_objects():
+    b = sl.Budget()
+    assert b.max_boxes == 10_000_000 and b.max_bytes == 2**30 and b.max_seconds == 0 and not b.cancel.cancelled()
+    assert repr(sl.SiviaOptions()) == ("SiviaOptions(parallel=True, budget=Budget(max_boxes=10000000, "
+                                       "max_bytes=1073741824, max_seconds=0))")
+    o = sl.SiviaOptions(parallel=False, budget=sl.Budget(max_boxes=5, max_seconds=1.5))
+    assert (o.parallel, o.budget.max_boxes, o.budget.max_seconds) == (False, 5, 1.5)
+    o.budget.max_boxes = 7  # the options' own budget, not a copy
+    assert o.budget.max_boxes == 7
+    with pytest.raises(sl.Error, match=r"^Budget: budget.max_seconds must be >= 0 \(0: no limit\), got -1$"):
+        sl.Budget(max_seconds=-1)
+    assert issubclass(sl.BudgetExceeded, sl.Error) and issubclass(sl.Cancelled, KeyboardInterrupt)
+
+
+def test_sivia_budget_exceeded():
+    f, x0 = sphere(10)
+    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=20000))
+    with pytest.raises(sl.BudgetExceeded) as e:
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, o)
+    assert str(e.value) == ("sivia: budget exceeded: 20001 boxes > max_boxes = 20000; raise "
+                            "options.budget.max_boxes (0: no limit) or use a larger eps")
+    # Python callables count too (they run on the calling thread).
+    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=50))
+    with pytest.raises(sl.BudgetExceeded, match="51 boxes > max_boxes = 50"):
+        sl.sivia(sl.IntervalVector([[-2, 2], [-2, 2]]), lambda b: b[0] ** 2 + b[1] ** 2, sl.Interval(0, 1), 1e-3, o)
+    with pytest.raises(sl.BudgetExceeded, match=r"max_seconds = 0.10000000000000001 \(after \d+ boxes\)"):
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3,
+                 sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=0, max_seconds=0.1)))
+    with pytest.raises(sl.BudgetExceeded, match=r"^sivia: budget exceeded: 101 boxes of 168 bytes > max_bytes = 16800; "
+                                                r"raise options.budget.max_bytes \(0: no limit\) or use a larger eps$"):
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=16800)))
+
+
+def test_tplane_budget_exceeded():
+    td = sl.TDomain(0.3, 2 * math.pi - 0.3, 0.001)
+    v = sl.TubeVector(td, "(-sin(t) - 2*sin(2*t) + [-0.01,0.01], cos(t) + 2*cos(2*t) + [-0.01,0.01])")
+    tp = sl.TPlane(td)
+    with pytest.raises(sl.BudgetExceeded) as e:
+        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=1000))
+    assert str(e.value) == ("TPlane::compute_detections: budget exceeded: 1001 boxes > max_boxes = 1000; raise "
+                            "budget.max_boxes (0: no limit) or use a larger eps")
+    tp.compute_detections(0.05, v)
+    options = sl.ProofOptions()
+    options.budget.max_boxes = 2
+    with pytest.raises(sl.BudgetExceeded, match="^TPlane::compute_proofs: budget exceeded: 3 boxes"):
+        tp.compute_proofs(v, options)
+    tp.compute_proofs(v)
+    assert tp.nb_proofs() == 1
+
+
+def test_cancel_token_from_another_thread():
+    f, x0 = sphere(10)
+    token = sl.CancelToken()
+    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=0, cancel=token))
+    threading.Timer(0.2, token.cancel).start()
+    start = time.monotonic()
+    with pytest.raises(sl.Cancelled, match="^sivia: cancelled$"):
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, o)
+    assert time.monotonic() - start < 2
+    assert token.cancelled()
+    token.reset()
+    assert sl.sivia(sl.IntervalVector([[-2, 2]] * 2), sphere(2)[0], sl.Interval(0, 1), 0.5, o).nb_leaves() > 0
+
+
+def interrupt_after(seconds):
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    return timer
+
+
+@pytest.mark.parametrize("parallel", [True, False])
+def test_ctrl_c_stops_sivia(parallel):
+    f, x0 = sphere(10)
+    o = sl.SiviaOptions(parallel=parallel, budget=sl.Budget(max_boxes=0, max_bytes=0))  # unbounded but for Ctrl-C
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        sl.sivia(x0, f, sl.Interval(0, 1), 1e-3, o)
+    assert time.monotonic() - start < 2
+    # The module is usable afterwards.
+    assert sl.sivia(sl.IntervalVector([[-2, 2]] * 2), sphere(2)[0], sl.Interval(0, 1), 0.5).nb_leaves() > 0
+
+
+def test_ctrl_c_stops_tplane_detections():
+    td = sl.TDomain(0.3, 2 * math.pi - 0.3, 0.001)
+    v = sl.TubeVector(td, "(-sin(t) - 2*sin(2*t) + [-0.01,0.01], cos(t) + 2*cos(2*t) + [-0.01,0.01])")
+    tp = sl.TPlane(td)
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0, max_bytes=0))
+    assert time.monotonic() - start < 2
+    assert tp.nb_detections() == 0
