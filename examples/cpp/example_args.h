@@ -26,6 +26,7 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
       {"loops_plaza1", {"--data", "--eps-div=X"}},
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
       {"loops_utias", {"--data", "--robot"}},
+      {"outliers_ranges", {"--eps=X"}},
   };
   return table;
 }
