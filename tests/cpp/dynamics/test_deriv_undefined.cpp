@@ -20,8 +20,11 @@ bool direct_equals_network(const Tube& x, const Tube& v) {
   const ContractStats s = cn.contract();
   EXPECT_EQ(ok, !s.empty);
   EXPECT_EQ(ok, !direct.is_empty());
-  if (ok) EXPECT_EQ(*nx, direct);
-  if (!ok) EXPECT_TRUE(nx->is_empty() || nv->is_empty());
+  if (ok) {
+    EXPECT_EQ(*nx, direct);
+  } else {
+    EXPECT_TRUE(nx->is_empty() || nv->is_empty());
+  }
   return ok;
 }
 
