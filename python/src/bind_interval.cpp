@@ -24,6 +24,26 @@
 
 namespace sillage::python {
 
+bool is_int(const py::handle& h) {
+  return PyLong_Check(h.ptr()) || (!PyFloat_Check(h.ptr()) && PyIndex_Check(h.ptr()));
+}
+
+// Past the largest double, up to inf.
+Interval int_enclosure(const py::handle& h) {
+  const auto n = py::reinterpret_steal<py::int_>(PyNumber_Index(h.ptr()));
+  if (!n) throw py::error_already_set();
+  const bool positive = PyObject_RichCompareBool(n.ptr(), py::int_(0).ptr(), Py_GT) == 1;
+  const double d = PyLong_AsDouble(n.ptr());
+  if (d == -1.0 && PyErr_Occurred()) {  // beyond the largest double
+    PyErr_Clear();
+    return positive ? Interval(rounding::kMax, rounding::kInf) : Interval(-rounding::kInf, -rounding::kMax);
+  }
+  const auto back = py::reinterpret_steal<py::int_>(PyLong_FromDouble(d));
+  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_EQ) == 1) return Interval(d);
+  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_LT) == 1) return Interval(rounding::next_down(d), d);
+  return Interval(d, rounding::next_up(d));
+}
+
 namespace {
 
 constexpr double kInf = rounding::kInf;
@@ -46,26 +66,11 @@ Interval from_bounds(double lb, double ub) {
   return Interval(lb, ub);
 }
 
-// A Python int (of any size; numpy integers too) as the tightest interval:
-// itself when it is a double, else the two doubles around it (past the
-// largest double: up to inf).
-bool is_int(const py::handle& h) {
-  return PyLong_Check(h.ptr()) || (!PyFloat_Check(h.ptr()) && PyIndex_Check(h.ptr()));
-}
-
-Interval int_enclosure(const py::handle& h) {
-  const auto n = py::reinterpret_steal<py::int_>(PyNumber_Index(h.ptr()));
-  if (!n) throw py::error_already_set();
-  const bool positive = PyObject_RichCompareBool(n.ptr(), py::int_(0).ptr(), Py_GT) == 1;
-  const double d = PyLong_AsDouble(n.ptr());
-  if (d == -1.0 && PyErr_Occurred()) {  // beyond the largest double
-    PyErr_Clear();
-    return positive ? Interval(rounding::kMax, kInf) : Interval(-kInf, -rounding::kMax);
-  }
-  const auto back = py::reinterpret_steal<py::int_>(PyLong_FromDouble(d));
-  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_EQ) == 1) return Interval(d);
-  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_LT) == 1) return Interval(rounding::next_down(d), d);
-  return Interval(d, rounding::next_up(d));
+// A bound of [lb, ub]: a float as it is, an int rounded outward (lb down, ub up).
+double bound(const py::handle& b, bool upper, const std::string& where) {
+  if (!is_int(b)) return as_double(b, where);
+  const Interval e = int_enclosure(b);
+  return upper ? e.ub() : e.lb();
 }
 
 // Runs f, prefixing the message of a sillage::Error with `where`.
@@ -90,7 +95,7 @@ Interval to_interval(const py::handle& h, const std::string& where) {
     if (PySequence_Check(h.ptr())) {
       const auto s = py::reinterpret_borrow<py::sequence>(h);
       if (s.size() == 2) {
-        const double lb = as_double(s[0], where), ub = as_double(s[1], where);
+        const double lb = bound(s[0], false, where), ub = bound(s[1], true, where);
         return located(where, [=] { return from_bounds(lb, ub); });
       }
       throw DimensionError(where + ": a pair [lb, ub] has 2 bounds, got " + std::to_string(s.size()));
@@ -208,14 +213,10 @@ void init_interval_class(py::module_& m) {
            }),
            py::arg("x"), "[x, x] for a float; for an int, the tightest interval around it; a copy of an Interval.")
       .def(py::init([](const py::object& lb, const py::object& ub) {
-             auto bound = [](const py::object& b, bool upper) {
+             for (const py::object& b : {lb, ub})
                if (!PyNumber_Check(b.ptr()) || PySequence_Check(b.ptr()))
                  throw py::type_error("Interval(lb, ub): expected numbers, got " + type_name(b));
-               if (!is_int(b)) return as_double(b, "Interval(lb, ub)");
-               const Interval e = int_enclosure(b);
-               return upper ? e.ub() : e.lb();
-             };
-             const double l = bound(lb, false), u = bound(ub, true);
+             const double l = bound(lb, false, "Interval(lb, ub)"), u = bound(ub, true, "Interval(lb, ub)");
              return located("Interval(lb, ub)", [=] { return Interval(l, u); });
            }),
            py::arg("lb"), py::arg("ub"))

@@ -50,3 +50,20 @@ def test_bad_bounds_are_type_errors():
     import pytest
     with pytest.raises(TypeError):
         Interval("a", 1)
+
+
+def test_ints_in_pairs_and_expressions_are_enclosed_outward():
+    from sillage import ExprVar, IntervalVector
+    n = 2 ** 53
+    wide = Interval(float(n), float(n + 2))
+    assert IntervalVector([n + 1, [0, n + 1]]) == IntervalVector([wide, Interval(0, float(n + 2))])
+    x = ExprVar("x")
+    zero, one, m1 = [[0, 0]], [[1, 1]], [[-1, -1]]
+    assert Function([x], x + (n + 1)).eval(zero) == wide
+    assert Function([x], (n + 1) + x).eval(zero) == wide
+    assert Function([x], (n + 1) * x).eval(one) == wide
+    assert Function([x], x - (n + 1)).eval(zero) == -wide
+    # huge int exponents keep their parity
+    assert Function([x], x ** (n + 1)).eval(m1) == Interval(-1)
+    assert Function([x], x ** (2 ** 80)).eval(m1) == Interval(1)
+    assert Function([x], x ** (2 ** 80 + 1)).eval(m1) == Interval(-1)
