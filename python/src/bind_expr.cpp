@@ -20,6 +20,15 @@
 namespace sillage::python {
 namespace {
 
+// x^n for a Python int n of any size, as x^n for a double n: an integer power
+// ((x^2)^q x^r with n = 2q + r, down to an n that is a double, keeps the parity).
+Expr pow_py_int(const Expr& x, const py::int_& n) {
+  const Interval e = int_enclosure(n);
+  if (e.is_degenerate()) return pow(x, e.lb());
+  const Expr p = pow_py_int(sqr(x), n.attr("__rshift__")(1));
+  return PyObject_IsTrue(n.attr("__and__")(1).ptr()) == 1 ? x * p : p;
+}
+
 // An (N, n, 2) array of bounds -> N boxes. NaN or inverted bounds raise sillage.Error.
 std::vector<IntervalVector> boxes_from_array(const py::array_t<double, py::array::c_style | py::array::forcecast>& a,
                                              std::size_t n) {
@@ -104,7 +113,8 @@ Expr(c) is the constant c (a number or an Interval; a float is the degenerate
 interval [c, c]). Build with ExprVar, the operators + - * / ** (unary -) with
 numbers and Intervals on either side, and sillage.sqr, sqrt, pow, root, exp, log,
 sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
-  e.def(py::init<double>(), py::arg("c"))
+  e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"))  // exact or outward
+      .def(py::init<double>(), py::arg("c"))
       .def(py::init<const Interval&>(), py::arg("c"))
       .def("op", &Expr::op, "The operation of the root node.")
       .def("is_const", &Expr::is_const)
@@ -119,10 +129,12 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
       .def("__abs__", [](const Expr& x) { return abs(x); });
   // Binary operators with an Expr, a number or an Interval on either side (numbers
   // and Intervals become constants; x += y rebinds x, as the C++ x += y does).
+  // An int goes through Expr(int) (the (Expr, Expr) forms come first): enclosed, not rounded.
 #define SILLAGE_EXPR_BIN(name, rname, op)                                                 \
   e.def(name, [](const Expr& a, const Expr& b) { return a op b; }, py::is_operator())     \
       .def(name, [](const Expr& a, double b) { return a op Expr(b); }, py::is_operator()) \
       .def(name, [](const Expr& a, const Interval& b) { return a op Expr(b); }, py::is_operator()) \
+      .def(rname, [](const Expr& a, const Expr& b) { return b op a; }, py::is_operator())         \
       .def(rname, [](const Expr& a, double b) { return Expr(b) op a; }, py::is_operator())        \
       .def(rname, [](const Expr& a, const Interval& b) { return Expr(b) op a; }, py::is_operator());
   SILLAGE_EXPR_BIN("__add__", "__radd__", +)
@@ -133,6 +145,7 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   // x ** n: an int gives the integer power pow(x, n) (defined for x < 0), a float or
   // an Expr the real power (an integer-valued constant again gives pow(x, n)).
   e.def("__pow__", [](const Expr& x, int n) { return pow(x, n); }, py::is_operator())
+      .def("__pow__", [](const Expr& x, const py::int_& n) { return pow_py_int(x, n); }, py::is_operator())
       .def("__pow__", [](const Expr& x, double p) { return pow(x, p); }, py::is_operator())
       .def("__pow__", [](const Expr& x, const Expr& p) { return pow(x, p); }, py::is_operator())
       .def("__rpow__", [](const Expr& p, double x) { return pow(Expr(x), p); }, py::is_operator())

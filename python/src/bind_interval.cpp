@@ -24,6 +24,26 @@
 
 namespace sillage::python {
 
+bool is_int(const py::handle& h) {
+  return PyLong_Check(h.ptr()) || (!PyFloat_Check(h.ptr()) && PyIndex_Check(h.ptr()));
+}
+
+// Past the largest double, up to inf.
+Interval int_enclosure(const py::handle& h) {
+  const auto n = py::reinterpret_steal<py::int_>(PyNumber_Index(h.ptr()));
+  if (!n) throw py::error_already_set();
+  const bool positive = PyObject_RichCompareBool(n.ptr(), py::int_(0).ptr(), Py_GT) == 1;
+  const double d = PyLong_AsDouble(n.ptr());
+  if (d == -1.0 && PyErr_Occurred()) {  // beyond the largest double
+    PyErr_Clear();
+    return positive ? Interval(rounding::kMax, rounding::kInf) : Interval(-rounding::kInf, -rounding::kMax);
+  }
+  const auto back = py::reinterpret_steal<py::int_>(PyLong_FromDouble(d));
+  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_EQ) == 1) return Interval(d);
+  if (PyObject_RichCompareBool(n.ptr(), back.ptr(), Py_LT) == 1) return Interval(rounding::next_down(d), d);
+  return Interval(d, rounding::next_up(d));
+}
+
 namespace {
 
 constexpr double kInf = rounding::kInf;
@@ -46,6 +66,13 @@ Interval from_bounds(double lb, double ub) {
   return Interval(lb, ub);
 }
 
+// A bound of [lb, ub]: a float as it is, an int rounded outward (lb down, ub up).
+double bound(const py::handle& b, bool upper, const std::string& where) {
+  if (!is_int(b)) return as_double(b, where);
+  const Interval e = int_enclosure(b);
+  return upper ? e.ub() : e.lb();
+}
+
 // Runs f, prefixing the message of a sillage::Error with `where`.
 template <class F>
 auto located(const std::string& where, F f) {
@@ -60,6 +87,7 @@ auto located(const std::string& where, F f) {
 Interval to_interval(const py::handle& h, const std::string& where) {
   if (py::isinstance<Interval>(h)) return h.cast<Interval>();
   if (!py::isinstance<py::str>(h) && !py::isinstance<py::bytes>(h)) {
+    if (is_int(h)) return int_enclosure(h);
     if (PyNumber_Check(h.ptr()) && !PySequence_Check(h.ptr())) {
       const double v = as_double(h, where);
       return located(where, [v] { return Interval(v); });
@@ -67,7 +95,7 @@ Interval to_interval(const py::handle& h, const std::string& where) {
     if (PySequence_Check(h.ptr())) {
       const auto s = py::reinterpret_borrow<py::sequence>(h);
       if (s.size() == 2) {
-        const double lb = as_double(s[0], where), ub = as_double(s[1], where);
+        const double lb = bound(s[0], false, where), ub = bound(s[1], true, where);
         return located(where, [=] { return from_bounds(lb, ub); });
       }
       throw DimensionError(where + ": a pair [lb, ub] has 2 bounds, got " + std::to_string(s.size()));
@@ -174,10 +202,24 @@ void init_interval_class(py::module_& m) {
                                       "A closed interval [lb, ub] of reals, possibly empty or unbounded. "
                                       "Operations round outward: the exact result is always enclosed.");
   def_copy(c);
+  // An int that is not a double is enclosed by its two neighbours
+  // (Interval(2**53 + 1) = [2^53, 2^53 + 2]); in [lb, ub] lb rounds down, ub up.
   c.def(py::init<>(), "The whole real line.")
-      .def(py::init<double>(), py::arg("x"), "The degenerate interval [x, x].")
-      .def(py::init<double, double>(), py::arg("lb"), py::arg("ub"))
-      .def(py::init<const I&>(), py::arg("x"), "A copy.")
+      .def(py::init([](const py::object& x) {
+             if (py::isinstance<I>(x)) return x.cast<I>();
+             if (!PyNumber_Check(x.ptr()) || PySequence_Check(x.ptr()))
+               throw py::type_error("Interval(x): expected a number or an Interval, got " + type_name(x));
+             return is_int(x) ? int_enclosure(x) : I(as_double(x, "Interval(x)"));
+           }),
+           py::arg("x"), "[x, x] for a float; for an int, the tightest interval around it; a copy of an Interval.")
+      .def(py::init([](const py::object& lb, const py::object& ub) {
+             for (const py::object& b : {lb, ub})
+               if (!PyNumber_Check(b.ptr()) || PySequence_Check(b.ptr()))
+                 throw py::type_error("Interval(lb, ub): expected numbers, got " + type_name(b));
+             const double l = bound(lb, false, "Interval(lb, ub)"), u = bound(ub, true, "Interval(lb, ub)");
+             return located("Interval(lb, ub)", [=] { return Interval(l, u); });
+           }),
+           py::arg("lb"), py::arg("ub"))
       .def_static("empty", &I::empty)
       .def_static("all_reals", &I::all_reals)
       .def_static("pos_reals", &I::pos_reals)
@@ -228,9 +270,11 @@ void init_interval_class(py::module_& m) {
   c.attr("__array_ufunc__") = py::none();  // numpy defers to our reflected operators
 
   // Binary operators with an Interval or a float on either side; in-place forms modify self.
+  // An int goes through Interval(int) (the (I, I) forms come first): no rounding to nearest.
 #define SILLAGE_BIN(name, rname, iname, op)                                                              \
   c.def(name, [](const I& a, const I& b) { return a op b; }, py::is_operator())                         \
       .def(name, [](const I& a, double b) { return a op I(b); }, py::is_operator())                     \
+      .def(rname, [](const I& a, const I& b) { return b op a; }, py::is_operator())                     \
       .def(rname, [](const I& a, double b) { return I(b) op a; }, py::is_operator())                    \
       .def(iname, [](I& a, const I& b) -> I& { return a = a op b; }, py::is_operator(),                 \
            py::return_value_policy::reference)                                                          \
@@ -243,7 +287,13 @@ void init_interval_class(py::module_& m) {
   SILLAGE_BIN("__and__", "__rand__", "__iand__", &)
   SILLAGE_BIN("__or__", "__ror__", "__ior__", |)
 #undef SILLAGE_BIN
+  // An integral exponent is the integer power (x ** 2.0 == x ** 2), at any size.
   c.def("__pow__", [](const I& x, int n) { return pow(x, n); }, py::is_operator())
+      .def("__pow__", [](const I& x, const py::int_& n) {
+             const Interval e = int_enclosure(n);
+             if (e.is_degenerate()) return pow(x, e.lb());
+             return pow_big_int(x, e, PyObject_IsTrue(n.attr("__and__")(1).ptr()) == 1);
+           }, py::is_operator())
       .def("__pow__", [](const I& x, double p) { return pow(x, p); }, py::is_operator())
       .def("__pow__", [](const I& x, const I& p) { return pow(x, p); }, py::is_operator());
 }

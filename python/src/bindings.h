@@ -3,8 +3,17 @@
 // each lives in bind_<layer>.cpp.
 #include <pybind11/pybind11.h>
 
+namespace sillage {
+class Interval;
+}
+
 namespace sillage::python {
 namespace py = pybind11;
+
+// A Python int (any size; numpy integers too) as the tightest interval:
+// itself when it is a double, else the two doubles around it (bind_interval.cpp).
+bool is_int(const py::handle& h);
+Interval int_enclosure(const py::handle& h);
 
 // copy(), __copy__ and __deepcopy__ of a value type: a C++ copy.
 template <class Class>

@@ -83,6 +83,16 @@ def test_hc4_never_removes_a_solution():
                 assert x[0].contains(p[0]) and x[1].contains(p[1])
 
 
+def test_centered_eval_at_domain_boundary():
+    # f is defined there, its derivative is not: the natural form is kept.
+    assert Function(["y"], "sqrt(y)").centered_eval([[0, 0]])[0] == Interval(0)
+    assert Function(["x1", "x2"], RANGE).centered_eval([[1, 1], [2, 2]])[0] == Interval(0)
+    assert Function(["y"], "acos(y)").centered_eval([[1, 1]])[0] == Interval(0)
+    assert Function(["y"], "asin(y)").centered_eval([[1, 1]])[0].is_superset(Interval.half_pi())
+    assert Function(["y"], "root(y, 4)").centered_eval([[0, 0]])[0] == Interval(0)
+    assert Function(["y"], "log(1 + sqrt(y))").centered_eval([[0, 0]])[0] == Interval(0)
+
+
 def test_centered_eval():
     f = Function(["x1", "x2"], "x1 * x1 - 2 * x1 * x2 + x2 * x2")
     b = box((1, 1.01), (2, 2.01))

@@ -239,3 +239,32 @@ def test_copy_semantics():
     y.set(Interval(9), 0)
     assert x.slice(0) == Interval(0, 2)
     assert copy.deepcopy(x) == x
+
+
+def test_undefined_expression_gates_are_unknown_not_empty():
+    td = TDomain(0, 10, 0.1)
+    for e in ("sin(t)/t", "log(t)", "1/t", "t*log(t)", "atan2(t, t)"):
+        v = Tube(td, e)
+        assert not v.is_empty(), e
+        assert v.gate(0).is_all_reals() and not v(5.0).is_empty(), e
+        assert not v.integral(10.0).is_empty(), e
+        x, y = Tube(td), Tube(td)
+        consistent = sillage.CtcDeriv().contract(x, v)
+        cn = sillage.ContractorNetwork()
+        cn.add(sillage.CtcDeriv(), [y, v])
+        assert consistent and not cn.contract().empty and x == y, e
+
+
+def test_load_tube_rejects_trailing_bytes_directories_and_disjoint_gates(tmp_path):
+    td = TDomain([0.0, 1.0, 2.0])
+    x = Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(1), Interval(2)])
+    path = tmp_path / "x.tube"
+    sillage.save_tube(x, str(path))
+    size = path.stat().st_size
+    path.write_bytes(path.read_bytes() + b"\0")
+    with pytest.raises(sillage.Error, match=f"trailing bytes after the Tube, from byte {size}"):
+        sillage.load_tube(str(path))
+    with pytest.raises(sillage.Error, match="is a directory"):
+        sillage.load_tube(str(tmp_path))
+    with pytest.raises(sillage.Error, match=r"gate 1 = \[5, 5\] does not meet slice 0 = \[0, 1\]"):
+        Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(5), Interval(2)])

@@ -160,6 +160,15 @@ bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, 
 
 // Contracts slices first..last (checked); sets x empty and returns false on emptiness.
 bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
+  // The rule reads v's slices only, but an empty gate of v leaves no
+  // derivative at all: no x either (as a network with v as a domain finds).
+  const auto vg = v.gates();
+  for (std::size_t k = first; k <= last + 1; ++k) {
+    if (vg[k].is_empty()) {
+      set_empty(x);
+      return false;
+    }
+  }
   TubeData& dx = x.data();
   const Arrays d{x.tdomain()->times().data(), dx.slices.data(), dx.gates.data(), v.data().slices.data()};
   bool changed = false;

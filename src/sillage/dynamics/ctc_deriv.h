@@ -29,7 +29,7 @@
 // keeps x nondecreasing, v = (-inf, +inf) contracts nothing but the gates into
 // their slices).
 //
-// Empty: if a slice, a gate of x or a slice of v met by the sweep is empty,
+// Empty: if a slice, a gate of x or a slice or gate of v met by the sweep is empty,
 // or the contraction proves it, every slice and gate of x is set empty and
 // contract returns false.
 //

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <mutex>
 
 #include "sillage/expr/op_eval.h"
@@ -178,7 +179,8 @@ Expr fold_or_make(Op op, std::vector<Expr> args, int n = 0) {
 bool const_int(const Expr& e, int& n) {
   if (!e.is_const()) return false;
   const Interval& v = e.node().value;
-  if (!v.is_degenerate() || std::fabs(v.lb()) > 1e9 || v.lb() != std::floor(v.lb())) return false;
+  if (!v.is_degenerate() || std::fabs(v.lb()) > std::numeric_limits<int>::max() || v.lb() != std::floor(v.lb()))
+    return false;
   n = static_cast<int>(v.lb());
   return true;
 }
@@ -257,6 +259,12 @@ Expr pow(const Expr& x, double y) { return pow(x, Expr(y)); }
 Expr pow(const Expr& x, const Expr& y) {
   int n = 0;
   if (const_int(y, n)) return pow(x, n);
+  // An integer beyond the int range stays an integer power (x < 0 allowed):
+  // x^(2m) = (x^2)^m, x^(2m+1) = x * x^(2m), all exact in binary64.
+  if (y.is_const() && y.node().value.is_degenerate()) {
+    const double v = y.node().value.lb();
+    if (v == std::trunc(v)) return std::fmod(v, 2.0) == 0 ? pow(sqr(x), Expr(v / 2)) : x * pow(x, Expr(v - 1));
+  }
   return fold_or_make(Op::Pow, {x, y});
 }
 Expr root(const Expr& x, int n) {

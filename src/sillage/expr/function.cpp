@@ -206,8 +206,16 @@ IntervalVector Function::centered_eval(const IntervalVector& x) const {
   IntervalVector result(m);
   for (std::size_t i = 0; i < m; ++i) {
     Interval s = fc[i];
-    for (std::size_t j = 0; j < n; ++j) s += jac[i * n + j] * (x[j] - c[j]);
-    result[i] = s & natural[i];
+    bool usable = !s.is_empty();
+    for (std::size_t j = 0; j < n && usable; ++j) {
+      if (x[j].is_degenerate()) continue;  // x_j - c_j = 0: the segment keeps x_j fixed
+      const Interval& d = jac[i * n + j];
+      // Empty: f is defined but its derivative formula is not (sqrt at 0);
+      // unbounded: the form brings nothing. The natural form stays valid.
+      usable = !d.is_empty() && d.is_bounded();
+      s += d * (x[j] - c[j]);
+    }
+    result[i] = usable ? s & natural[i] : natural[i];
   }
   return result;
 }

@@ -67,7 +67,8 @@ class Function {
   IntervalVector jacobian_vector(const IntervalVector& x) const;
   // Mean-value form f(mid) + J([x])([x] - mid), intersected with the natural
   // one. Falls back to the natural form when [x] leaves the domain of some
-  // operation (there the mean-value theorem does not apply).
+  // operation (there the mean-value theorem does not apply), and for an
+  // output whose Jacobian row has an empty or unbounded entry (sqrt at 0).
   IntervalVector centered_eval(const IntervalVector& x) const;
 
   // Batch evaluation: one tape walk, inner loops over the boxes.

@@ -12,7 +12,10 @@ Interval exp(const Interval& x);
 Interval log(const Interval& x);          // natural logarithm on (0, inf)
 Interval pow(const Interval& x, int n);   // x^n, n any integer (x^0 = [1,1])
 Interval pow(const Interval& x, const Interval& y);  // exp(y log x), x > 0 (and 0^y = 0 for y > 0)
-Interval pow(const Interval& x, double y);           // interval exponent [y, y]
+Interval pow(const Interval& x, double y);           // pow(x, int(y)) if y is an integer, else pow(x, [y, y])
+// x^n for an integer n beyond the int range, known to lie in [n] (one sign)
+// and to be odd or even (a Python int of any size).
+Interval pow_big_int(const Interval& x, const Interval& n, bool odd);
 Interval root(const Interval& x, int n);  // the real n-th root (odd n: all reals)
 Interval sin(const Interval& x);
 Interval cos(const Interval& x);

@@ -46,9 +46,11 @@ Interval tanh(const Interval& x) {
   const double a = x.lb(), b = x.ub();
   double lo = a == 0 ? 0.0 : widen_down(std::tanh(a), kUlpsHyp);
   double hi = b == 0 ? 0.0 : widen_up(std::tanh(b), kUlpsHyp);
-  // |tanh x| <= min(|x|, 1).
+  // |tanh x| <= min(|x|, 1), with the sign of x.
   if (b >= 0) hi = std::min(hi, b);
   if (a <= 0) lo = std::max(lo, a);
+  if (a >= 0) lo = std::max(lo, 0.0);
+  if (b <= 0) hi = std::min(hi, 0.0);
   return make(std::max(lo, -1.0), std::min(hi, 1.0));
 }
 

@@ -10,6 +10,7 @@
 // [0,0] * [-inf,inf] = [0,0]. Infinite bounds are limits, never members.
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <iosfwd>
 #include <limits>
 #include <string>
@@ -26,6 +27,10 @@ class Interval {
   Interval() : lo_(-rounding::kInf), hi_(rounding::kInf) {}
   // The degenerate interval {x}; x must be a finite number.
   Interval(double x);  // NOLINT: implicit, so that 2.0 * [x] reads naturally
+  // The tightest interval around the integer n: {n} if n is a double, else
+  // the two doubles around it (not every integer beyond 2^53 is a double).
+  template <std::integral T>
+  Interval(T n);  // NOLINT: implicit, as Interval(double)
   // [lb, ub]; NaN bounds, lb > ub and [inf, inf] / [-inf, -inf] are errors.
   Interval(double lb, double ub);
 
@@ -115,6 +120,20 @@ class Interval {
 
   double lo_, hi_;
 };
+
+template <std::integral T>
+Interval::Interval(T n) : Interval(static_cast<double>(n)) {
+  if constexpr (std::numeric_limits<T>::digits > 53) {
+    const double d = lo_;  // n rounded to nearest
+    if (d >= std::ldexp(1.0, std::numeric_limits<T>::digits)) {  // beyond T: n < d
+      lo_ = rounding::next_down(d);
+    } else if (static_cast<T>(d) < n) {
+      hi_ = rounding::next_up(d);
+    } else if (static_cast<T>(d) > n) {
+      lo_ = rounding::next_down(d);
+    }
+  }
+}
 
 // ---- arithmetic (2.13)-(2.20): inline, they are the hot path ----
 

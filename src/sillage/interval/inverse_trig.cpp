@@ -22,8 +22,11 @@ Interval acos(const Interval& x) {
   const Interval d = x & make(-1.0, 1.0);
   if (d.is_empty()) return Interval::empty();
   const double a = d.lb(), b = d.ub();  // decreasing
-  const double lo = b == 1 ? 0.0 : b == -1 ? kPiLo : b == 0 ? kHalfPiLo : widen_down(std::acos(b), kUlpsBasic);
-  const double hi = a == -1 ? kPiHi : a == 1 ? 0.0 : a == 0 ? kHalfPiHi : widen_up(std::acos(a), kUlpsBasic);
+  double lo = b == 1 ? 0.0 : b == -1 ? kPiLo : b == 0 ? kHalfPiLo : widen_down(std::acos(b), kUlpsBasic);
+  double hi = a == -1 ? kPiHi : a == 1 ? 0.0 : a == 0 ? kHalfPiHi : widen_up(std::acos(a), kUlpsBasic);
+  // acos x <= pi/2 for x >= 0, >= pi/2 for x <= 0: the values given at 0.
+  if (a >= 0) hi = std::min(hi, kHalfPiHi);
+  if (b <= 0) lo = std::max(lo, kHalfPiLo);
   return make(std::max(lo, 0.0), std::min(hi, kPiHi));
 }
 
@@ -32,26 +35,33 @@ Interval atan(const Interval& x) {
   const double a = x.lb(), b = x.ub();
   double lo = a == 0 ? 0.0 : widen_down(std::atan(a), kUlpsBasic);  // atan(-inf) = -pi/2
   double hi = b == 0 ? 0.0 : widen_up(std::atan(b), kUlpsBasic);
-  // |atan x| <= |x|.
+  // |atan x| <= |x|, with the sign of x.
   if (b >= 0) hi = std::min(hi, b);
   if (a <= 0) lo = std::max(lo, a);
+  if (a >= 0) lo = std::max(lo, 0.0);
+  if (b <= 0) hi = std::min(hi, 0.0);
   return make(std::max(lo, -kHalfPiHi), std::min(hi, kHalfPiHi));
 }
 
 namespace {
 
 // Bounds of the angle of the point (x, y) != (0, 0), y = +0 on the negative x axis
-// (angle pi); infinite coordinates give the limit angles.
+// (angle pi); infinite coordinates give the limit angles. Inside a quadrant
+// the widened libm value is clipped to the quadrant's bounds, which are the
+// values given on the axes: a box reaching an axis then never gets a smaller
+// enclosure than one of its sub-boxes (inclusion monotonicity).
 double angle_down(double y, double x) {
   if (y == 0) return x > 0 ? 0.0 : kPiLo;
   if (x == 0) return y > 0 ? kHalfPiLo : -kHalfPiHi;
-  return widen_down(std::atan2(y, x), kUlpsBasic);
+  const double quadrant_lb = y > 0 ? (x > 0 ? 0.0 : kHalfPiLo) : (x > 0 ? -kHalfPiHi : -kPiHi);
+  return std::max(widen_down(std::atan2(y, x), kUlpsBasic), quadrant_lb);
 }
 
 double angle_up(double y, double x) {
   if (y == 0) return x > 0 ? 0.0 : kPiHi;
   if (x == 0) return y > 0 ? kHalfPiHi : -kHalfPiLo;
-  return widen_up(std::atan2(y, x), kUlpsBasic);
+  const double quadrant_ub = y > 0 ? (x > 0 ? kHalfPiHi : kPiHi) : (x > 0 ? 0.0 : -kHalfPiLo);
+  return std::min(widen_up(std::atan2(y, x), kUlpsBasic), quadrant_ub);
 }
 
 }  // namespace

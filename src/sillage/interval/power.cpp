@@ -1,4 +1,5 @@
 // Powers and roots: x^n (integer n), x^y (real y, x >= 0), the real n-th root.
+#include <limits>
 #include <string>
 
 #include "sillage/interval/elementary.h"
@@ -61,6 +62,23 @@ double pow_mul_down(double v, int n) {
   }
 }
 
+// Directed product chains for v^n, n != 0, n > INT_MIN (1 / chain for n < 0):
+// rigorous, and tight where the widened libm value is coarse.
+double chain_down(double v, int n) { return n > 0 ? pow_mul_down(v, n) : rounding::div_down(1.0, pow_mul_up(v, -n)); }
+double chain_up(double v, int n) {
+  if (n > 0) return pow_mul_up(v, n);
+  const double d = pow_mul_down(v, -n);
+  return d > 0 ? rounding::div_up(1.0, d) : kInf;
+}
+
+// The chain also serves for small |n| (a few products), and on overflow and
+// underflow: where the libm value is widened past a lower power's directed
+// bound (pow([1+u], 3) above pow([1+u], 2)), inclusion monotonicity of pow
+// over an exponent interval would fail.
+bool use_chain(int n, double r) {
+  return n != std::numeric_limits<int>::min() && (std::abs(n) <= 64 || r == kInf || r < 0x1p-1000);
+}
+
 // Bounds of v^n for v >= 0 (v may be +inf) and n != 0; 0^n = inf for n < 0.
 double pown_down(double v, int n) {
   if (v == 0) return n > 0 ? 0.0 : kInf;
@@ -72,9 +90,10 @@ double pown_down(double v, int n) {
   if (n == 2) return rounding::mul_down(v, v);
   if (n == -1) return rounding::div_down(1.0, v);
   const double r = std::pow(v, n);
-  // On overflow a directed product chain may still prove v^n > MAX.
-  if (r == kInf && n > 0) return std::max(widen_down(r, kUlpsTanPow), pow_mul_down(v, n));
-  return std::max(widen_down(r, kUlpsTanPow), 0.0);
+  // v^n >= v (v > 1, n >= 1) and >= 1 (v < 1, n < 0), as the exact v^1 and v^0.
+  const double floor = v > 1 && n > 0 ? v : v < 1 && n < 0 ? 1.0 : 0.0;
+  const double lo = std::max(widen_down(r, kUlpsTanPow), floor);
+  return use_chain(n, r) ? std::max(lo, chain_down(v, n)) : lo;
 }
 
 double pown_up(double v, int n) {
@@ -86,7 +105,11 @@ double pown_up(double v, int n) {
   if (pow_exact(v, m, p)) return n > 0 ? p : rounding::div_up(1.0, p);
   if (n == 2) return rounding::mul_up(v, v);
   if (n == -1) return rounding::div_up(1.0, v);
-  return widen_up(std::pow(v, n), kUlpsTanPow);
+  const double r = std::pow(v, n);
+  // v^n <= v (v < 1, n >= 1) and <= 1 (v > 1, n < 0).
+  const double ceil = v < 1 && n > 0 ? v : v > 1 && n < 0 ? 1.0 : kInf;
+  const double hi = std::min(widen_up(r, kUlpsTanPow), ceil);
+  return use_chain(n, r) ? std::min(hi, chain_up(v, n)) : hi;
 }
 
 // Signed bounds of v^n for odd n (v^n has the sign of v).
@@ -95,24 +118,45 @@ double podd_up(double v, int n) { return v >= 0 ? pown_up(v, n) : -pown_down(-v,
 
 bool is_small_int(double y) { return std::fabs(y) <= 0x1p30 && y == std::trunc(y); }
 
+// x^e for the exponents evaluated exactly (integers, 1/2).
+double exact_pow_down(double x, double e) { return e == 0.5 ? rounding::sqrt_down(x) : pown_down(x, static_cast<int>(e)); }
+double exact_pow_up(double x, double e) { return e == 0.5 ? rounding::sqrt_up(x) : pown_up(x, static_cast<int>(e)); }
+
+// The exactly evaluated exponents around a non-integer y (NaN where there is
+// none: beyond +-2^30 only the side towards 0): x^y lies between the powers
+// there (x^y is monotone in y). Clipping the widened libm value to them keeps
+// inclusion monotonicity when a box's corner exponent is one of them and a
+// sub-box's is not (pow([b], [1e-300]) ⊆ pow([b], [1e-300, 1])), underflow
+// and overflow included.
+void exact_neighbours(double y, double& below, double& above) {
+  constexpr double kBig = 0x1p30, kNaN = std::numeric_limits<double>::quiet_NaN();
+  const double n = std::floor(y);
+  below = n > kBig ? kBig : n < -kBig ? kNaN : (n == 0 && y > 0.5 ? 0.5 : n);
+  above = n >= kBig ? kNaN : n < -kBig ? -kBig : (n == 0 && y < 0.5 ? 0.5 : n + 1);
+}
+
 // Bounds of x^y for x >= 0 at a corner, with the C conventions 0^y = 0 (y > 0),
 // 0^y = inf (y < 0), x^0 = 1, which are the limits of x^y there.
 double powr_down(double x, double y) {
   if (y == 0 || x == 1) return 1.0;
-  if (y == 0.5) return rounding::sqrt_down(x);
-  if (is_small_int(y)) return pown_down(x, static_cast<int>(y));
+  if (y == 0.5 || is_small_int(y)) return exact_pow_down(x, y);
   const double r = std::pow(x, y);
   if (x == 0 || x == kInf || std::isinf(y)) return r;  // exact limits
-  return std::max(widen_down(r, kUlpsTanPow), 0.0);
+  double lo = std::max(widen_down(r, kUlpsTanPow), 0.0), e_lo, e_hi;
+  exact_neighbours(y, e_lo, e_hi);
+  const double e = x > 1 ? e_lo : e_hi;  // x^y >= x^e
+  return std::isnan(e) ? lo : std::max(lo, exact_pow_down(x, e));
 }
 
 double powr_up(double x, double y) {
   if (y == 0 || x == 1) return 1.0;
-  if (y == 0.5) return rounding::sqrt_up(x);
-  if (is_small_int(y)) return pown_up(x, static_cast<int>(y));
+  if (y == 0.5 || is_small_int(y)) return exact_pow_up(x, y);
   const double r = std::pow(x, y);
   if (x == 0 || x == kInf || std::isinf(y)) return r;  // exact limits
-  return widen_up(r, kUlpsTanPow);
+  double hi = widen_up(r, kUlpsTanPow), e_lo, e_hi;
+  exact_neighbours(y, e_lo, e_hi);
+  const double e = x > 1 ? e_hi : e_lo;  // x^y <= x^e
+  return std::isnan(e) ? hi : std::min(hi, exact_pow_up(x, e));
 }
 
 // A close approximation of the n-th root of w in [1, 2^n), n >= 3: there the
@@ -232,9 +276,20 @@ Interval pow(const Interval& x, const Interval& y) {
   return make(std::max(lo, 0.0), hi);
 }
 
+// |x|^n is monotone in n on each side of |x| = 1: the real pow over [n]
+// encloses it, the parity gives the sign.
+Interval pow_big_int(const Interval& x, const Interval& n, bool odd) {
+  const Interval pos = x & Interval::pos_reals(), neg = -(x & Interval::neg_reals());
+  if (!odd) return pow(pos | neg, n);
+  return pow(pos, n) | -pow(neg, n);
+}
+
+// An integral exponent is the integer power (defined for x < 0), as x^2.0 in an expression.
 Interval pow(const Interval& x, double y) {
   if (!std::isfinite(y)) throw Error("pow(x, y): the exponent y must be a finite number, got " + std::to_string(y));
-  return pow(x, Interval(y));
+  if (y != std::trunc(y)) return pow(x, Interval(y));
+  if (std::fabs(y) <= std::numeric_limits<int>::max()) return pow(x, static_cast<int>(y));
+  return pow_big_int(x, Interval(y), std::fmod(y, 2.0) != 0);
 }
 
 Interval root(const Interval& x, int n) {

@@ -7,6 +7,18 @@
 // an fma residual for *, / and sqrt. Where the residual could underflow (tiny
 // results) the operands are rescaled by powers of two, which is exact, so the
 // results stay optimal in the whole binary64 range, subnormals included.
+//
+// Every public header reaches this one. Fast-math is refused: reassociation
+// and dropped error terms defeat the error-free transformations (a consumer
+// would get Interval(0.1) + Interval(0.2) excluding the exact sum), and
+// finite-math-only drops the infinite bounds of unbounded and empty sets.
+#if defined(__FAST_MATH__)
+#error "sillage: -ffast-math breaks guaranteed enclosures; build code that includes sillage with -fno-fast-math"
+#endif
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "sillage: -ffinite-math-only breaks guaranteed enclosures (infinite bounds); use -fno-finite-math-only"
+#endif
+
 #include <bit>
 #include <cmath>
 #include <cstdint>

@@ -152,9 +152,12 @@ Interval sin(const Interval& x) {
     lo = crosses_out_of(2, qa, n) ? -1.0 : std::min(fa.lo, fb.lo);
     hi = crosses_out_of(0, qa, n) ? 1.0 : std::max(fa.hi, fb.hi);
   }
-  // |sin x| <= |x|, and |sin x| <= 1.
+  // |sin x| <= |x|, and |sin x| <= 1; sin x has the sign of x on [-3, 3]
+  // (the value 0 given at 0: widened values around a tiny x must not cross it).
   if (a >= 0) hi = std::min(hi, b);
   if (b <= 0) lo = std::max(lo, a);
+  if (a >= 0 && b <= 3) lo = std::max(lo, 0.0);
+  if (b <= 0 && a >= -3) hi = std::min(hi, 0.0);
   return make(std::max(lo, -1.0), std::min(hi, 1.0));
 }
 

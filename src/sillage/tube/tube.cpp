@@ -37,6 +37,21 @@ std::shared_ptr<TubeData> make_data(std::size_t n, const Interval& x) {
   return d;
 }
 
+// A continuous trajectory through gate k stays in the closed slices around
+// t_k: a non-empty gate disjoint from a non-empty neighbouring slice is an
+// inconsistent input, not an empty tube (that one has an empty slice or gate).
+void check_gates(const std::vector<Interval>& slices, const std::vector<Interval>& gates, const char* where) {
+  for (std::size_t k = 0; k < gates.size(); ++k) {
+    for (std::size_t s = k > 0 ? k - 1 : 0; s <= k && s < slices.size(); ++s) {
+      const Interval &g = gates[k], &x = slices[s];
+      if (!g.is_empty() && !x.is_empty() && !g.intersects(x)) {
+        throw Error(std::string(where) + ": gate " + std::to_string(k) + " = " + g.str() + " does not meet slice " +
+                    std::to_string(s) + " = " + x.str() + " (a gate must meet its neighbouring slices)");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Tube::Tube(std::shared_ptr<TDomain> td, const Interval& x)
@@ -67,6 +82,7 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices, con
                          std::to_string(gates.size()) + " gates given, the TDomain needs " + std::to_string(n) +
                          " and " + std::to_string(n + 1));
   }
+  check_gates(slices, gates, "Tube(td, slices, gates)");
   data_ = std::make_shared<TubeData>();
   data_->slices = slices;
   data_->gates = gates;
@@ -76,6 +92,27 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices, con
 Tube::Tube(std::shared_ptr<TDomain> td, const std::string& expr_of_t)
     : Tube(std::move(td), Function({"t"}, expr_of_t)) {}
 
+namespace detail {
+
+std::vector<std::vector<Interval>> eval_over_tdomain(const TDomain& td, const Function& f) {
+  // One batch: the N slice domains then the N+1 gate times.
+  const std::size_t n = td.nb_slices(), m = f.image_dim();
+  std::vector<Interval> in(2 * n + 1);
+  const auto times = td.times();
+  for (std::size_t k = 0; k < n; ++k) in[k] = Interval(times[k], times[k + 1]);
+  for (std::size_t k = 0; k <= n; ++k) in[n + k] = Interval(times[k]);
+  std::vector<std::vector<Interval>> out(m, std::vector<Interval>(in.size()));
+  std::vector<Interval*> ys(m);
+  for (std::size_t i = 0; i < m; ++i) ys[i] = out[i].data();
+  const Interval* xs[1] = {in.data()};
+  f.eval_batch(std::span<const Interval* const>(xs, 1), in.size(), std::span<Interval* const>(ys));
+  for (auto& o : out)
+    for (Interval& y : o) y = unknown_where_undefined(y);
+  return out;
+}
+
+}  // namespace detail
+
 Tube::Tube(std::shared_ptr<TDomain> td, const Function& f) : td_(std::move(td)) {
   const std::size_t n = checked(td_, "Tube(td, f)")->nb_slices();
   if (f.nb_vars() != 1 || f.image_dim() != 1) {
@@ -83,14 +120,7 @@ Tube::Tube(std::shared_ptr<TDomain> td, const Function& f) : td_(std::move(td)) 
                          std::to_string(f.nb_vars()) + " variable(s) and " + std::to_string(f.image_dim()) +
                          " output(s)");
   }
-  // One batch: the N slice domains then the N+1 gate times.
-  std::vector<Interval> in(2 * n + 1), out(2 * n + 1);
-  const auto times = td_->times();
-  for (std::size_t k = 0; k < n; ++k) in[k] = Interval(times[k], times[k + 1]);
-  for (std::size_t k = 0; k <= n; ++k) in[n + k] = Interval(times[k]);
-  const Interval* xs[1] = {in.data()};
-  Interval* ys[1] = {out.data()};
-  f.eval_batch(std::span<const Interval* const>(xs, 1), in.size(), std::span<Interval* const>(ys, 1));
+  const std::vector<Interval> out = std::move(detail::eval_over_tdomain(*td_, f).front());
   data_ = std::make_shared<TubeData>();
   data_->slices.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n));
   data_->gates.assign(out.begin() + static_cast<std::ptrdiff_t>(n), out.end());

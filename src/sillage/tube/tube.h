@@ -31,12 +31,18 @@ class Tube {
   // Slice codomains given (size N, DimensionError otherwise); gate k is the
   // intersection of the two slices around t_k, the end gates the end slices.
   Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices);
-  // Slices (size N) and gates (size N+1) given.
+  // Slices (size N) and gates (size N+1) given. Error if a non-empty gate k
+  // is disjoint from a non-empty slice k-1 or k (no continuous trajectory
+  // could cross it: the message names the gate, the slice and their values).
   Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices,
        const std::vector<Interval>& gates);
   // From an expression of the single variable t, e.g.
   // "-9/20*cos(t/5) + [-0.001,0.001]": slice k = [f]([t_k, t_{k+1}]),
-  // gate k = [f]([t_k, t_k]); one batch evaluation (one DAG walk).
+  // gate k = [f]([t_k, t_k]); one batch evaluation (one DAG walk). The
+  // natural form encloses f over the part of its argument where f is
+  // defined; where f is defined nowhere (sin(t)/t, log(t), 1/t at t = 0, or
+  // a whole slice outside f's domain) nothing is known: the whole line, so
+  // such an expression never makes the tube empty (docs/tubes.md).
   Tube(std::shared_ptr<TDomain> td, const std::string& expr_of_t);
   // Same from a scalar Function of one variable (DimensionError otherwise).
   Tube(std::shared_ptr<TDomain> td, const Function& f);
@@ -140,5 +146,14 @@ class Tube {
 };
 
 std::ostream& operator<<(std::ostream& os, const Tube& x);
+
+namespace detail {
+// The enclosure of a function where it is defined nowhere: the whole line
+// (nothing is known there), not the empty set.
+inline Interval unknown_where_undefined(const Interval& y) { return y.is_empty() ? Interval() : y; }
+// f (one variable t, m outputs) over the N slices then the N+1 gates of td,
+// one batch evaluation; with unknown_where_undefined applied.
+std::vector<std::vector<Interval>> eval_over_tdomain(const TDomain& td, const Function& f);
+}  // namespace detail
 
 }  // namespace sillage

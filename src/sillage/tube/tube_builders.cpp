@@ -91,8 +91,9 @@ Tube tube_from_data(std::shared_ptr<TDomain> td, const Trajectory& d, double err
   check_covers(*td, d, "tube_from_data(td, d, error)");
   const Interval e(-error, error);
   std::vector<Interval> slices(td->nb_slices()), gates(td->nb_slices() + 1);
-  for (std::size_t k = 0; k < slices.size(); ++k) slices[k] = d(td->slice_domain(k)) + e;
-  for (std::size_t k = 0; k < gates.size(); ++k) gates[k] = d(td->t(k)) + e;
+  // An analytic d undefined somewhere: nothing known there (as Tube(td, f)).
+  for (std::size_t k = 0; k < slices.size(); ++k) slices[k] = detail::unknown_where_undefined(d(td->slice_domain(k)) + e);
+  for (std::size_t k = 0; k < gates.size(); ++k) gates[k] = detail::unknown_where_undefined(d(td->t(k)) + e);
   return Tube(std::move(td), slices, gates);
 }
 

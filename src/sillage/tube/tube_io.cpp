@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <ostream>
@@ -101,6 +102,7 @@ class Reader {
 struct Loaded {
   std::shared_ptr<TDomain> td;
   std::vector<Tube> tubes;
+  std::size_t end = 0;  // bytes read
 };
 
 Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<TDomain> td) {
@@ -139,11 +141,17 @@ Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<T
   Loaded out{td, {}};
   const std::size_t ns = td->nb_slices();
   for (std::uint64_t i = 0; i < n; ++i) {
+    const std::size_t at = r.offset();
     std::vector<Interval> slices, gates;
     for (std::size_t k = 0; k < ns; ++k) slices.push_back(r.interval("a slice"));
     for (std::size_t k = 0; k <= ns; ++k) gates.push_back(r.interval("a gate"));
-    out.tubes.emplace_back(td, slices, gates);
+    try {
+      out.tubes.emplace_back(td, slices, gates);
+    } catch (const Error& e) {  // a gate disjoint from its slices
+      throw Error("load tube: component " + std::to_string(i) + " (from byte " + std::to_string(at) + "): " + e.what());
+    }
   }
+  out.end = r.offset();
   return out;
 }
 
@@ -153,9 +161,22 @@ std::ofstream open_out(const std::string& path) {
   return os;
 }
 std::ifstream open_in(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Error("load tube: '" + path + "' is a directory, not a tube file");
   std::ifstream is(path, std::ios::binary);
-  if (!is) throw Error("load tube: cannot open '" + path + "'");
+  if (!is) throw Error("load tube: cannot open '" + path + "' for reading");
   return is;
+}
+
+// A file holds one object: bytes after it are an error (a stream may go on).
+Loaded read_file(const std::string& path, std::uint32_t kind, std::shared_ptr<TDomain> td) {
+  auto is = open_in(path);
+  Loaded out = read_all(is, kind, std::move(td));
+  if (is.peek() != std::ifstream::traits_type::eof()) {
+    throw Error("load tube: '" + path + "' has trailing bytes after the " +
+                (kind == kKindTube ? "Tube" : "TubeVector") + ", from byte " + std::to_string(out.end));
+  }
+  return out;
 }
 
 }  // namespace
@@ -186,12 +207,10 @@ TubeVector load_tube_vector(std::istream& is, std::shared_ptr<TDomain> td) {
 }
 
 Tube load_tube(const std::string& path, std::shared_ptr<TDomain> td) {
-  auto is = open_in(path);
-  return load_tube(is, std::move(td));
+  return std::move(read_file(path, kKindTube, std::move(td)).tubes.front());
 }
 TubeVector load_tube_vector(const std::string& path, std::shared_ptr<TDomain> td) {
-  auto is = open_in(path);
-  return load_tube_vector(is, std::move(td));
+  return TubeVector(read_file(path, kKindTubeVector, std::move(td)).tubes);
 }
 
 }  // namespace sillage

@@ -8,8 +8,10 @@
 // as (lb, ub) float64 pairs (the empty set is (+inf, -inf)).
 //
 // Loading checks everything: magic, version, kind, sizes, time points, bound
-// pairs; a truncated or foreign file throws Error saying what and at which
-// byte offset. When a TDomain is passed, the stored time points must equal
+// pairs, gates meeting their neighbouring slices; a truncated or foreign file
+// throws Error saying what and at which byte offset. A file holds one object:
+// trailing bytes are an Error (giving the byte where they start), a directory
+// or unreadable path too. A stream is read up to the end of the object only. When a TDomain is passed, the stored time points must equal
 // its own (DimensionError otherwise) and the result is attached to it;
 // otherwise a new TDomain is created.
 #include <iosfwd>

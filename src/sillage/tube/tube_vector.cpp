@@ -26,15 +26,7 @@ std::vector<Tube> function_tubes(const std::shared_ptr<TDomain>& td, const Funct
                          std::to_string(f.nb_vars()));
   }
   const std::size_t n = td->nb_slices(), m = f.image_dim();
-  std::vector<Interval> in(2 * n + 1);
-  const auto times = td->times();
-  for (std::size_t k = 0; k < n; ++k) in[k] = Interval(times[k], times[k + 1]);
-  for (std::size_t k = 0; k <= n; ++k) in[n + k] = Interval(times[k]);
-  std::vector<std::vector<Interval>> out(m, std::vector<Interval>(in.size()));
-  std::vector<Interval*> ys(m);
-  for (std::size_t i = 0; i < m; ++i) ys[i] = out[i].data();
-  const Interval* xs[1] = {in.data()};
-  f.eval_batch(std::span<const Interval* const>(xs, 1), in.size(), std::span<Interval* const>(ys));
+  const auto out = detail::eval_over_tdomain(*td, f);
   std::vector<Tube> r;
   r.reserve(m);
   for (std::size_t i = 0; i < m; ++i) {

@@ -20,8 +20,12 @@ const double kInf = rounding::kInf;
 std::shared_ptr<TDomain> unit() { return TDomain::create(std::vector<double>{0.0, 1.0}); }
 
 // One slice of width 1: slice s, gates a and b.
+// Gates a, b set as given, even off the slice s (the constructor would refuse).
 Tube slice_tube(const Interval& a, const Interval& s, const Interval& b) {
-  return Tube(unit(), std::vector<Interval>{s}, std::vector<Interval>{a, b});
+  Tube x(unit(), std::vector<Interval>{s});
+  x.set_gate(0, a);
+  x.set_gate(1, b);
+  return x;
 }
 
 struct SliceCase {

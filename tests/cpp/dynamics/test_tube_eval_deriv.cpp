@@ -86,7 +86,9 @@ TEST(TubeEvalDeriv, UnboundedAndEmpty) {
   // Empty derivative or gate: no trajectory.
   EXPECT_TRUE(x.eval(0.5, Tube(td, Interval::empty())).is_empty());
   EXPECT_TRUE(x.inverse(Interval(0), Tube(td, Interval::empty())).is_empty());
-  Tube y(td, std::vector<Interval>{Interval(-3, 3)}, std::vector<Interval>{Interval(0), Interval(5)});
+  Tube y(td, std::vector<Interval>{Interval(-3, 3)});
+  y.set_gate(0, Interval(0));
+  y.set_gate(1, Interval(5));  // off the slice: no trajectory
   EXPECT_TRUE(y.eval(0.5, Tube(td, Interval(-1, 1))).is_empty());
   // Errors.
   EXPECT_THROW(x.eval(0.5, Tube(TDomain::create(0.0, 1.0, 0.5))), DimensionError);

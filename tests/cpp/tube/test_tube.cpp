@@ -79,8 +79,9 @@ TEST(Tube, EvalOverIntervalWithTightGates) {
   auto td = td0123();
   // gates narrower than slices: x([1,2]) must use slice 1 and gates 1, 2 but
   // not the neighbouring slices
-  Tube x(td, {Interval(0, 10), Interval(4, 5), Interval(-10, 0)},
-         {Interval(0, 10), Interval(4, 4), Interval(5, 5), Interval(-10, 0)});
+  Tube x(td, {Interval(0, 10), Interval(4, 5), Interval(-10, 0)});
+  x.set_gate(1, Interval(4));  // set_gate takes any value: gate 2 is even off slice 2
+  x.set_gate(2, Interval(5));
   EXPECT_EQ(x(Interval(1, 2)), Interval(4, 5));
   EXPECT_EQ(x(Interval(0.9, 2)), Interval(0, 10));
 }
@@ -164,8 +165,8 @@ TEST(Tube, InversionComponents) {
   EXPECT_EQ(c[0], Interval(0, 1));
   EXPECT_EQ(c[1], Interval(2, 3));
   // a gate alone: a degenerate component
-  Tube z(td, {Interval(0, 1), Interval(0, 4), Interval(0, 1)},
-         {Interval(0, 1), Interval(0, 1), Interval(5, 5), Interval(0, 1)});
+  Tube z(td, {Interval(0, 1), Interval(0, 4), Interval(0, 1)});
+  z.set_gate(2, Interval(5));  // off its slices: only set_gate takes that
   EXPECT_EQ(z.inverse(Interval(5, 5), c), Interval(2, 2));
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0], Interval(2, 2));

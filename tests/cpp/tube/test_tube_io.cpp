@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
 #include <sstream>
 
 #include "sillage/error.h"
@@ -84,4 +85,43 @@ TEST(TubeIo, RejectsForeignAndTruncatedFiles) {
   EXPECT_THROW(load_tube(t), Error);
   std::istringstream other(s);
   EXPECT_THROW(load_tube(other, TDomain::create(0.0, 2.0, 0.5)), DimensionError);
+}
+
+namespace {
+
+std::string load_error(const std::string& path) {
+  try {
+    load_tube(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string temp_file(const std::string& name, const std::string& bytes) {
+  const std::string path = testing::TempDir() + name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+}  // namespace
+
+TEST(TubeIo, RejectsTrailingBytesDirectoriesAndDisjointGates) {
+  const std::string s = bytes_of(sample_tube());
+  const Tube x = sample_tube();
+  EXPECT_EQ(load_tube(temp_file("sillage_exact.tube", s), x.tdomain()), x);
+  const std::string trailing = temp_file("sillage_trailing.tube", s + "xyz");
+  EXPECT_EQ(load_error(trailing),
+            "load tube: '" + trailing + "' has trailing bytes after the Tube, from byte " + std::to_string(s.size()));
+  EXPECT_EQ(load_error("/tmp"), "load tube: '/tmp' is a directory, not a tube file");
+  // gate 1 := [5, 5], disjoint from slice 0 = [0, 1] (slice 1 is empty).
+  std::string disjoint = s;
+  const std::size_t gate1 = 8 + 4 + 4 + 8 + 4 * 8 + 8 + 3 * 16 + 16;
+  const double five = 5.0;
+  std::memcpy(&disjoint[gate1], &five, 8);
+  std::memcpy(&disjoint[gate1 + 8], &five, 8);
+  const std::string msg = load_error(temp_file("sillage_disjoint.tube", disjoint));
+  EXPECT_EQ(msg, "load tube: component 0 (from byte " + std::to_string(gate1 - 3 * 16 - 16) +
+                     "): Tube(td, slices, gates): gate 1 = [5, 5] does not meet slice 0 = [0, 1] "
+                     "(a gate must meet its neighbouring slices)");
 }

@@ -22,10 +22,12 @@ Tube random_tube(std::mt19937_64& rng) {
     const double m = c(rng), w = r(rng);
     return Interval(m - w, m + w);
   };
-  std::vector<Interval> slices, gates;
+  std::vector<Interval> slices;
   for (int i = 0; i < n; ++i) slices.push_back(random_interval());
-  for (int i = 0; i <= n; ++i) gates.push_back(random_interval());
-  return Tube(td, slices, gates);
+  // Gates independent of the slices (set_gate does not check them, the constructor would).
+  Tube x(td, slices);
+  for (int i = 0; i <= n; ++i) x.set_gate(static_cast<std::size_t>(i), random_interval());
+  return x;
 }
 
 }  // namespace
