@@ -23,7 +23,12 @@ std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVect
   return p;
 }
 
+void ContractorNetwork::check_not_contracting(const char* where) const {
+  if (contracting_) throw Error(std::string("ContractorNetwork::") + where + ": called during contract()");
+}
+
 std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain) {
+  check_not_contracting("add_domain");
   if (!domain) throw Error("ContractorNetwork: null domain");
   const auto it = index_.find(domain->key());
   if (it != index_.end()) {
@@ -55,6 +60,7 @@ std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& d
 }
 
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
+  check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
   add_bound(domains, [&](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
     std::vector<AtomRange> ranges;
@@ -72,6 +78,7 @@ void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<Do
 }
 
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
+  check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
   add_bound(domains, [&](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
 }
@@ -95,6 +102,7 @@ void ContractorNetwork::add_bound(
 }
 
 void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
+  check_not_contracting("add_node");
   if (!node) throw Error("ContractorNetwork::add_node: null node");
   for (const auto& a : node->ranges()) {
     if (a.domain >= domains_.size() || a.first > domains_[a.domain]->nb_atoms() ||
@@ -140,7 +148,13 @@ void sort_unique(std::vector<std::size_t>& v, std::size_t n, std::vector<char>& 
 }  // namespace
 
 ContractStats ContractorNetwork::contract() {
+  check_not_contracting("contract");
   const auto start = std::chrono::steady_clock::now();
+  struct Running {
+    bool& flag;
+    explicit Running(bool& f) : flag(f) { flag = true; }
+    ~Running() { flag = false; }
+  } running(contracting_);
   ContractStats stats;
   const auto finish = [&] {
     stats.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

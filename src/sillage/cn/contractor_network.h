@@ -101,6 +101,10 @@ class ContractorNetwork {
   std::vector<Watchers> watchers_;  // per domain
   std::vector<std::shared_ptr<const CnNode>> nodes_;
   double ratio_ = 0.01;
+  // True during contract(): a contractor calling back into the network (a
+  // Python one may) must not grow the arrays contract() is walking.
+  bool contracting_ = false;
+  void check_not_contracting(const char* where) const;
 };
 
 }  // namespace sillage

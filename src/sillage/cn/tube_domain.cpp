@@ -4,8 +4,10 @@
 
 namespace sillage {
 
-TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)), nb_slices_(x_ ? x_->nb_slices() : 0) {
+TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)) {
   if (!x_) throw Error("ContractorNetwork: null Tube domain");
+  nb_slices_ = x_->nb_slices();
+  td_ = x_->tdomain();
 }
 
 Interval TubeDomain::atom(std::size_t i) const {
@@ -26,6 +28,10 @@ void TubeDomain::check_layout(const std::string& label) const {
     throw DimensionError("ContractorNetwork: " + label + " was registered with " + std::to_string(nb_slices_) +
                          " slices but now has " + std::to_string(x_->nb_slices()) +
                          " (sample the TDomain before building the network)");
+  }
+  if (x_->tdomain() != td_) {
+    throw DimensionError("ContractorNetwork: " + label +
+                         " was registered on another TDomain (assign tubes of the same TDomain)");
   }
 }
 

@@ -5,9 +5,10 @@
 // gate on its own.
 //
 // The identity (key()) is the Tube object, which the domain keeps alive: a
-// std::shared_ptr<Tube>, or a component of a shared TubeVector (aliasing
-// pointer). Refining the TDomain after registration changes the layout:
-// check_layout() then throws, as for a resized box.
+// std::shared_ptr<Tube>, or a component of a TubeVector (a heap object of
+// its own, TubeComponentDomain). Refining the TDomain after registration
+// changes the layout, and assigning a tube of another TDomain changes the
+// times of the slices: check_layout() then throws, as for a resized box.
 #include <memory>
 
 #include "sillage/cn/domain.h"
@@ -32,6 +33,7 @@ class TubeDomain : public Domain {
  private:
   std::shared_ptr<Tube> x_;
   std::size_t nb_slices_;
+  std::shared_ptr<TDomain> td_;  // at registration (kept alive: never a reused address)
 };
 
 }  // namespace sillage
