@@ -11,16 +11,26 @@
 
 namespace sillage {
 
-std::shared_ptr<Interval> ContractorNetwork::create_dom(const Interval& x) {
+std::shared_ptr<Interval> ContractorNetwork::create_dom(const Interval& x, const std::string& name) {
   auto p = std::make_shared<Interval>(x);
   add_domain(std::make_shared<IntervalDomain>(p));
+  if (!name.empty()) set_name(p, name);
   return p;
 }
 
-std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVector& x) {
+std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVector& x, const std::string& name) {
   auto p = std::make_shared<IntervalVector>(x);
   add_domain(std::make_shared<BoxDomain>(p));
+  if (!name.empty()) set_name(p, name);
   return p;
+}
+
+void ContractorNetwork::set_name(const DomainRef& d, const std::string& name) {
+  if (name.empty()) throw Error("ContractorNetwork::set_name: empty name");
+  const auto& parts = d.parts();
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    names_[add_domain(parts[i].domain)] = parts.size() == 1 ? name : name + "[" + std::to_string(i) + "]";
+  }
 }
 
 void ContractorNetwork::check_not_contracting(const char* where) const {
@@ -37,6 +47,7 @@ std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain)
   }
   const std::size_t d = domains_.size();
   domains_.push_back(domain);
+  names_.emplace_back();
   watchers_.emplace_back(domain->nb_atoms());
   index_.emplace(domain->key(), d);
   return d;
@@ -95,6 +106,7 @@ void ContractorNetwork::add_bound(
     while (domains_.size() > nb_before) {
       index_.erase(domains_.back()->key());
       domains_.pop_back();
+      names_.pop_back();
       watchers_.pop_back();
     }
     throw;
@@ -126,6 +138,62 @@ void ContractorNetwork::set_ratio(double ratio) {
 
 std::string ContractorNetwork::label(std::size_t d) const {
   return "domain " + std::to_string(d) + " (" + domains_[d]->kind() + ")";
+}
+
+std::string ContractorNetwork::noun(std::size_t d) const {
+  return names_[d].empty() ? label(d) : domains_[d]->noun() + " '" + names_[d] + "'";
+}
+
+std::size_t ContractorNetwork::first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const {
+  for (std::size_t a = first; a < first + count; ++a) {
+    if (domains_[d]->atom(a).is_empty()) return a;
+  }
+  return kNoAtom;
+}
+
+void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
+                                      const Interval& time) const {
+  s.empty = true;
+  s.empty_domain = label(d);
+  s.empty_domain_index = d;
+  s.empty_domain_name = names_[d];
+  s.empty_contractor = by;
+  const AtomPlace place = a == kNoAtom ? AtomPlace{} : domains_[d]->place(a);
+  s.empty_atom = place.kind;
+  s.empty_atom_index = place.index;
+  s.empty_time = place.time;
+  const std::string at = place.kind.empty() ? "" : " at " + place.str();
+  if (by.empty()) {
+    s.emptiness = noun(d) + " was empty on input" + at;
+    return;
+  }
+  s.emptiness = by + " emptied " + noun(d) + at;
+  if (!time.is_empty()) {
+    s.emptiness += " for t in " + time.str();
+    if (place.kind.empty()) s.empty_time = time;
+  }
+}
+
+void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const {
+  if (node.ranges().empty()) {
+    s.empty = true;
+    s.empty_contractor = node.describe();
+    s.emptiness = node.describe() + " found no solution";
+    return;
+  }
+  // The atom the node names, else its first empty atom, else its first domain.
+  std::size_t g = 0, a = kNoAtom;
+  if (run.empty_at < node.nb_atoms()) {
+    g = node.range_of(run.empty_at);
+    a = node.ranges()[g].first + run.empty_at - node.offset(g);
+  } else {
+    for (g = 0; g < node.ranges().size(); ++g) {
+      const AtomRange& r = node.ranges()[g];
+      if ((a = first_empty_atom(r.domain, r.first, r.count)) != kNoAtom) break;
+    }
+    if (g == node.ranges().size()) g = 0;
+  }
+  explain_empty(s, node.ranges()[g].domain, a, node.describe(), run.empty_time);
 }
 
 namespace {
@@ -163,8 +231,7 @@ ContractStats ContractorNetwork::contract() {
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     domains_[d]->check_layout(label(d));
     if (domains_[d]->is_empty() && !stats.empty) {
-      stats.empty = true;
-      stats.empty_domain = label(d);
+      explain_empty(stats, d, first_empty_atom(d, 0, domains_[d]->nb_atoms()), "", Interval::empty());
     }
   }
   if (stats.empty) return finish();
@@ -189,19 +256,12 @@ ContractStats ContractorNetwork::contract() {
       const bool ok = node.run(run);
       dirty.clear();
       if (!ok) {
-        stats.empty = true;
-        for (const auto& a : node.ranges()) {
-          if (domains_[a.domain]->is_empty()) {
-            stats.empty_domain = label(a.domain);
-            break;
-          }
-        }
+        explain_node_empty(stats, node, run);
         return finish();
       }
       for (const std::size_t k : changed) {
         // The range holding position k, then the atom it is.
-        std::size_t g = node.ranges().size() - 1;
-        while (node.offset(g) > k) --g;
+        const std::size_t g = node.range_of(k);
         const AtomRange& a = node.ranges()[g];
         watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t pos) {
           if (w == i) return;

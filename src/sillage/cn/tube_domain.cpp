@@ -21,6 +21,13 @@ void TubeDomain::set_atom(std::size_t i, const Interval& x) {
   d.touch();
 }
 
+AtomPlace TubeDomain::place(std::size_t i) const {
+  const auto t = x_->tdomain()->times();
+  const std::size_t k = i / 2;
+  if (i & 1) return {"slice", k, Interval(t[k], t[k + 1])};
+  return {"gate", k, Interval(t[k])};
+}
+
 std::string TubeDomain::kind() const { return "Tube(" + std::to_string(nb_slices_) + " slices)"; }
 
 void TubeDomain::check_layout(const std::string& label) const {

@@ -26,6 +26,8 @@ class TubeDomain : public Domain {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  std::string noun() const override { return "tube"; }
+  AtomPlace place(std::size_t i) const override;
 
   Tube& tube() const { return *x_; }
   const std::shared_ptr<Tube>& object() const { return x_; }
