@@ -62,3 +62,19 @@ def test_no_data_is_skipped_not_ok(tmp_path):
     assert run_demo.status_of({"check": True, "result": "skipped: no data"}) == "skipped"  # C++ examples
     assert run_demo.status_of({"check": True, "result": "3 loops"}) == "ok"
     assert run_demo.status_of({"check": False, "result": "3 loops"}) == "FAILED"
+
+
+def test_truth_checks_refuse_empty_or_unbounded_enclosures():
+    sys.path.insert(0, str(EXAMPLES))
+    import example_args
+    from sillage import Interval, IntervalVector, TDomain, Tube, TubeVector
+    td = TDomain(0.0, 1.0, 0.5)
+    assert example_args.enclosure_ok(Interval(0, 1), IntervalVector([[0, 1], [2, 3]]), Tube(td, Interval(0, 1)))
+    assert not example_args.enclosure_ok(Interval())  # unbounded: "inside" proves nothing
+    assert not example_args.enclosure_ok(Interval.empty())
+    assert not example_args.enclosure_ok(IntervalVector([[0, 1], [2, float("inf")]]))
+    assert not example_args.enclosure_ok(TubeVector(td, 2))
+    empty = TubeVector(td, 2, Interval(0, 1))
+    empty[1] = Tube(td, Interval.empty())
+    assert not example_args.enclosure_ok(empty)
+    assert example_args.bound(Interval(2, 4)) == Interval(2, 4)  # no SILLAGE_EXAMPLE_TIGHTEN here
