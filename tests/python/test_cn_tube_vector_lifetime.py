@@ -68,3 +68,22 @@ def test_python_contractor_cannot_grow_the_network_during_contract():
         cn.contract()
     cn.create_dom(Interval(2, 3))  # allowed again after
     assert cn.nb_dom() == 2
+
+
+def test_sampling_the_tdomain_during_contract_is_an_error():
+    td = TDomain(0.0, 1.0, 0.5)
+    tv = TubeVector(td, 2, Interval(-10, 10))
+
+    class Sampler(sillage.Ctc):
+        def __init__(self):
+            super().__init__(1)
+
+        def contract(self, box):
+            if td.nb_slices() == 2:
+                td.sample(0.25)
+
+    cn = sillage.ContractorNetwork()
+    cn.add(equal(), [tv])
+    cn.add(Sampler(), [Interval(0, 1)])
+    with pytest.raises(sillage.DimensionError, match="changed during contract"):
+        cn.contract()

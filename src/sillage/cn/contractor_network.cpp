@@ -174,6 +174,13 @@ void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size
   }
 }
 
+void ContractorNetwork::check_layouts_after(const CnNode& node) const {
+  for (const auto& a : node.ranges()) {
+    const Domain& d = *domains_[a.domain];
+    if (d.layout_changed()) d.check_layout(label(a.domain) + ", changed during contract() (" + node.describe() + "),");
+  }
+}
+
 void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const {
   if (node.ranges().empty()) {
     s.empty = true;
@@ -229,7 +236,7 @@ ContractStats ContractorNetwork::contract() {
     return stats;
   };
   for (std::size_t d = 0; d < domains_.size(); ++d) {
-    domains_[d]->check_layout(label(d));
+    if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d));
     if (domains_[d]->is_empty() && !stats.empty) {
       explain_empty(stats, d, first_empty_atom(d, 0, domains_[d]->nb_atoms()), "", Interval::empty());
     }
@@ -255,6 +262,7 @@ ContractStats ContractorNetwork::contract() {
       ++stats.contractor_calls;
       const bool ok = node.run(run);
       dirty.clear();
+      check_layouts_after(node);
       if (!ok) {
         explain_node_empty(stats, node, run);
         return finish();
@@ -275,6 +283,9 @@ ContractStats ContractorNetwork::contract() {
     }
     round.swap(next);
     next.clear();
+  }
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d) + ", changed during contract(),");
   }
   return finish();
 }

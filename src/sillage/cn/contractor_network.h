@@ -116,6 +116,10 @@ class ContractorNetwork {
   // by `by` (a node's describe(); "" for empty on input).
   void explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
                      const Interval& time) const;
+  // A contractor (a Python one may) that resized a domain or sampled its
+  // TDomain during contract() made the nodes' layouts stale: DimensionError
+  // rather than a result computed on the wrong atoms.
+  void check_layouts_after(const CnNode& node) const;
   // Same for a node whose run() returned false.
   void explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const;
   // The first empty atom of domain d in [first, first + count), or kNoAtom.

@@ -41,6 +41,8 @@ class Domain {
   // Throws DimensionError (naming `label`) when the object no longer has the
   // layout it had when registered (a box resized behind the network's back).
   virtual void check_layout(const std::string& label) const { (void)label; }
+  // True when check_layout would throw (cheap: checked after every node run).
+  virtual bool layout_changed() const { return false; }
   // The word for this kind of domain in reports: "interval", "box", "tube".
   virtual std::string noun() const { return "domain"; }
   // Where atom i lies (kind "" by default).
@@ -77,6 +79,7 @@ class BoxDomain : public Domain {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  bool layout_changed() const override { return x_->size() != size_; }
   std::string noun() const override { return "box"; }
   AtomPlace place(std::size_t i) const override;
   const std::shared_ptr<IntervalVector>& object() const { return x_; }

@@ -24,6 +24,10 @@ std::string TubeComponentDomain::kind() const {
   return TubeDomain::kind() + ", component " + std::to_string(index_) + " of a TubeVector";
 }
 
+bool TubeComponentDomain::layout_changed() const {
+  return vector_->size() != size_ || &(*vector_)[index_] != &tube() || TubeDomain::layout_changed();
+}
+
 void TubeComponentDomain::check_layout(const std::string& label) const {
   if (vector_->size() != size_) {
     throw DimensionError("ContractorNetwork: " + label + " was registered in a TubeVector of " + std::to_string(size_) +

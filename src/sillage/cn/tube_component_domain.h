@@ -19,6 +19,7 @@ class TubeComponentDomain : public TubeDomain {
   TubeComponentDomain(std::shared_ptr<TubeVector> x, std::size_t i);
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  bool layout_changed() const override;
 
  private:
   std::shared_ptr<TubeVector> vector_;

@@ -26,6 +26,7 @@ class TubeDomain : public Domain {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  bool layout_changed() const override { return x_->nb_slices() != nb_slices_ || x_->tdomain() != td_; }
   std::string noun() const override { return "tube"; }
   AtomPlace place(std::size_t i) const override;
 

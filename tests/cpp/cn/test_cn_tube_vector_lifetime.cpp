@@ -115,3 +115,32 @@ TEST(ContractorNetworkTubeVector, ComponentAndSharedComponentAreOneDomain) {
   EXPECT_FALSE(cn.contract().empty);
   EXPECT_EQ(x->codomain(), (IntervalVector{{0, 1}, {0, 1}}));  // y reached component 1 through component 0
 }
+
+namespace {
+
+// A contractor that samples the TDomain of the tubes while the network runs.
+class Sampler : public Ctc {
+ public:
+  explicit Sampler(std::shared_ptr<TDomain> td) : Ctc(1), td_(std::move(td)) {}
+  void contract(IntervalVector&) const override {
+    if (td_->nb_slices() == 2) td_->sample(0.25);
+  }
+  std::string name() const override { return "Sampler"; }
+
+ private:
+  std::shared_ptr<TDomain> td_;
+};
+
+}  // namespace
+
+TEST(ContractorNetworkTubeVector, LayoutChangedDuringContractIsAnError) {
+  auto td = TDomain::create(0.0, 1.0, 0.5);
+  auto x = std::make_shared<TubeVector>(td, 2, Interval(-10, 10));
+  ContractorNetwork cn;
+  cn.add(equal(), {x});
+  cn.add(std::make_shared<Sampler>(td), {cn.create_dom(Interval(0, 1))});
+  expect_layout_error(cn,
+                      "ContractorNetwork: domain 0 (Tube(2 slices), component 0 of a TubeVector), changed during "
+                      "contract(), was registered with 2 slices but now has 3 (sample the TDomain before building "
+                      "the network)");
+}
