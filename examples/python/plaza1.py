@@ -50,7 +50,7 @@ def solve(d, with_ranges):
     heading = sillage.ContractorNetwork()
     heading.add(CtcIncrement(), [psi, slice_tube(td, dpsi)])
     heading.add(CtcDeriv(), [psi, Tube(td, Interval(-TURN_MAX, TURN_MAX))])
-    heading.contract()
+    check_stats(heading.contract(), "heading")  # empty: psi is empty, and cn says so on input
     # increments of p per slice, slice by slice
     inc = TubeVector([slice_tube(td, [dist[k] * sillage.cos(psi.slice(k)) for k in range(n)]),
                       slice_tube(td, [dist[k] * sillage.sin(psi.slice(k)) for k in range(n)])])
