@@ -4,7 +4,9 @@ OUT/index.html and prints a summary table (example, result, check, time).
 
 Each example takes `--out DIR`, writes its figures there and ends its output
 with one line `RESULT {"name": ..., "result": ..., "check": true/false,
-"figures": [[file, caption], ...]}`.
+"figures": [[file, caption], ...]}`, and exits non-zero when its check fails.
+An example without its data (the real data sets live in ../shared/data beside
+the repository) reports "skipped: no data": it is marked skipped, not ok.
 """
 import argparse
 import html
@@ -46,6 +48,8 @@ EXAMPLES = [
     ("loops_plaza1", "py", "loops_plaza1.py"),
     ("loops_utias", "cpp", "example_loops_utias"),
     ("loops_lissajous", "py", "loops_lissajous.py"),
+    ("outliers_ranges", "cpp", "example_outliers_ranges"),
+    ("outliers_ranges", "py", "outliers_ranges.py"),
 ]
 
 
@@ -61,13 +65,25 @@ def run_one(kind, program, build, out):
     for line in proc.stdout.splitlines():
         if line.startswith("RESULT "):
             result = json.loads(line[len("RESULT "):])
-    if proc.returncode != 0 or result is None:
+    if result is None:
         result = {"name": program, "result": f"FAILED (exit {proc.returncode})", "check": False, "figures": []}
+    if proc.returncode != 0:  # a failed check (with its RESULT line) or a crash
+        result["check"] = False
         sys.stderr.write(proc.stdout + proc.stderr)
+    result["status"] = status_of(result)
     result["time"] = elapsed
     result["kind"] = kind
     result["log"] = proc.stdout
     return result
+
+
+def status_of(result):
+    """ok, FAILED or skipped (an example without its data proves nothing: never ok)."""
+    if not result["check"]:
+        return "FAILED"
+    if result.get("skipped") or str(result["result"]).startswith("skipped"):
+        return "skipped"
+    return "ok"
 
 
 def write_index(results, out):
@@ -80,7 +96,7 @@ def write_index(results, out):
              "<th>check</th><th>time (s)</th></tr>"]
     for r in results:
         parts.append(f"<tr><td>{html.escape(r['name'])}</td><td>{r['kind']}</td>"
-                     f"<td>{html.escape(str(r['result']))}</td><td>{'ok' if r['check'] else 'FAILED'}</td>"
+                     f"<td>{html.escape(str(r['result']))}</td><td>{r['status']}</td>"
                      f"<td>{r['time']:.3f}</td></tr>")
     parts.append("</table>")
     for r in results:
@@ -107,13 +123,14 @@ def main():
     write_index(results, out)
 
     w = max(len(r["name"]) for r in results)
-    print(f"\n{'example':<{w}}  lang  {'check':<6} {'time':>8}  result")
+    print(f"\n{'example':<{w}}  lang  {'check':<7} {'time':>8}  result")
     print("-" * (w + 60))
     for r in results:
-        print(f"{r['name']:<{w}}  {r['kind']:<4}  {'ok' if r['check'] else 'FAILED':<6} {r['time']:>7.3f}s  "
-              f"{r['result']}")
-    print(f"\nfigures: {out / 'index.html'}")
-    return 0 if all(r["check"] for r in results) else 1
+        print(f"{r['name']:<{w}}  {r['kind']:<4}  {r['status']:<7} {r['time']:>7.3f}s  {r['result']}")
+    counts = {s: sum(r["status"] == s for r in results) for s in ("ok", "skipped", "FAILED")}
+    print(f"\n{counts['ok']} ok, {counts['skipped']} skipped (no data), {counts['FAILED']} failed")
+    print(f"figures: {out / 'index.html'}")
+    return 0 if counts["FAILED"] == 0 else 1
 
 
 if __name__ == "__main__":

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/figures/figure.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
   }
 
   const ContractStats stats = cn.contract();
-  const bool ok = !stats.empty && x->contains({0.0, 0.0});
+  const bool ok = example::check_stats(stats) && example::enclosure_ok(*x) && x->contains({0.0, 0.0});
   std::printf("Static range-only localization, thesis Table 2.1 (robot at (0, 0))\n");
   std::printf("  final box:   %s\n", x->str().c_str());
   std::printf("  contains (0, 0): %s\n", ok ? "yes" : "NO");

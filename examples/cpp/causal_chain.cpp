@@ -19,6 +19,7 @@
 
 #include "causal_chain_network.h"
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
@@ -140,7 +141,8 @@ int main(int argc, char** argv) {
       }
     }
     std::printf("  truth inside: %s\n", excess(*r.x, paths[0].second) <= 1e-9 ? "yes" : "NO");
-    ok = ok && !r.stats.empty;
+    ok = example::check_stats(r.stats, final_box ? "with the final box" : "from x0 only") &&
+         example::enclosure_ok(*r.x) && ok;
     const std::string tag = final_box ? "final" : "x0";
     const Trajectory t1 = component(*td, paths[0].second, 0), t2 = component(*td, paths[0].second, 1);
     tube_vector_figure(*r.x, 0, 1,

@@ -26,6 +26,7 @@
 
 #include "drifting_clock_network.h"
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
   std::printf("  fixed point verified (a second contract() changes nothing): %s\n", fixed ? "yes" : "NO");
 
   const Trajectory h_true(kH, td->t0_tf());
-  bool ok = !s.empty && (fixed || ratio > 0) && p.h->contains(h_true);  // a ratio > 0 stops earlier
+  bool ok = example::check_stats(s) && example::enclosure_ok(*p.h) && (fixed || ratio > 0) &&
+            p.h->contains(h_true);  // a ratio > 0 stops earlier
   const Trajectory b1("90 + 100*cos(t)", td->t0_tf()), b2("20 + 100*sin(t)", td->t0_tf());
   const Trajectory y_true("sqrt((90 + 100*cos(t))^2 + (20 + 100*sin(t))^2 + 100)", td->t0_tf());
   const bool boat_in = p.x->contains({b1, b2}) && p.y->contains(y_true);

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -196,7 +197,7 @@ int main(int argc, char** argv) {
     }
     double worst_nominal = path_excess(*r.x, paths[0], h), worst = worst_nominal;
     for (std::size_t p = 1; p < paths.size(); ++p) worst = std::max(worst, path_excess(*r.x, paths[p], h));
-    const bool inside = !r.stats.empty && worst <= 1e-9;
+    const bool inside = example::check_stats(r.stats) && example::enclosure_ok(*r.x) && worst <= 1e-9;
     ok = ok && inside;
     const IntervalVector p0 = r.x->gate(0).subvector(0, 1), p37 = r.x->gate(r.k37).subvector(0, 1),
                          pf = r.x->gate(N).subvector(0, 1);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -84,7 +85,8 @@ int main(int argc, char** argv) {
   for (const double dt : {0.01, 0.001, 0.0001}) {
     const Run r = solve(dt);
     const std::size_t N = r.x->nb_slices();
-    const bool inside = !r.stats.empty && r.x->contains(x_true) && r.dx->contains(dx_true) &&
+    const bool inside = example::check_stats(r.stats) && example::enclosure_ok(*r.x) && example::enclosure_ok(*r.dx) &&
+                        example::enclosure_ok(*r.ddx) && r.x->contains(x_true) && r.dx->contains(dx_true) &&
                         r.ddx->contains(ddx_true);
     ok = ok && inside;
     const double w1 = (*r.x)[0].max_thickness(), w2 = (*r.x)[1].max_thickness();

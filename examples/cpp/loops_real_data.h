@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <ctime>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -96,8 +97,10 @@ inline std::vector<std::pair<std::size_t, std::size_t>> check_pairs(const Path& 
 }
 
 namespace detail {
-// Distance from the interval d to the integral [I], 0 if inside.
+// Distance from the interval d to the integral [I], 0 if inside; infinite
+// when [I] is empty or unbounded (being inside it proves nothing).
 inline double gap(const Interval& integral, const Interval& d) {
+  if (integral.is_empty() || integral.is_unbounded()) return std::numeric_limits<double>::infinity();
   return std::max({0.0, integral.lb() - d.ub(), d.lb() - integral.ub()});
 }
 }  // namespace detail

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_check.h"
 #include "lowcost_beacons_network.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/cn/tube_domain.h"
@@ -222,7 +223,8 @@ int main(int argc, char** argv) {
   const double h = dt / 10;  // RK4 step of the truth
   const auto path = simulate(h, static_cast<std::size_t>(std::llround(kTf / h)));
   const double e = excess(*p.x, path, h);
-  bool ok = !s.empty && (fixed || ratio > 0) && e <= 1e-7;  // a ratio > 0 stops before the fixed point
+  bool ok = example::check_stats(s) && example::enclosure_ok(*p.x) && (fixed || ratio > 0) &&
+            e <= 1e-7;  // a ratio > 0 stops before the fixed point
 
   std::printf("  measurements: [t_i] (Table 5.2) -> contracted [t_i] ; [z_i] -> contracted [z_i] ; truth times\n");
   for (std::size_t i = 0; i < kMeasurements.size(); ++i) {

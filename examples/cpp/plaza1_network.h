@@ -15,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "example_check.h"
 #include "plaza1_data.h"
 #include "slice_tube.h"
 #include "sillage/cn/contractor_network.h"
@@ -80,7 +81,8 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   ContractorNetwork heading;
   heading.add(std::make_shared<CtcIncrement>(), {psi, dpsi_t});
   heading.add(std::make_shared<CtcDeriv>(), {psi, omega});
-  heading.contract();
+  // Empty: psi is empty, and the position network reports it empty on input.
+  example::check_stats(heading.contract(), "heading");
   // Increments of p over each slice: per-slice quantities, not values of a
   // continuous function of time, so computed slice by slice (not as a tube
   // constraint, whose gates would tie neighbouring slices together).

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -151,7 +152,7 @@ int main(int argc, char** argv) {
     for (const Run* r : {&dec, &dir}) {
       const Interval xf = r->x->gate(N);
       const double excess = truth_excess(*r->x, truth);
-      const bool inside = !r->stats.empty && excess <= 1e-9;
+      const bool inside = example::check_stats(r->stats) && example::enclosure_ok(*r->x) && excess <= 1e-9;
       ok = ok && inside;
       std::printf("delta = %-6g %-15s x(10) in %-26s width %.3g (%.2g x the reference width), contains it: %s; "
                   "thicker than 0.1 from t = %.2f; %zu iterations, %zu calls, %.3f s CPU; "

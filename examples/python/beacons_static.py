@@ -6,13 +6,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import out_dir, print_result  # noqa: E402
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result  # noqa: E402
 from sillage import ContractorNetwork, CtcFunction, Function, Interval, IntervalVector  # noqa: E402
 from sillage import plot  # noqa: E402
 
-BEACONS = [((-0.5, 4.0), Interval(3.63, 4.43)),
-           ((-2.5, -2.5), Interval(3.13, 3.93)),
-           ((2.5, -0.5), Interval(2.15, 2.95))]
+BEACONS = [((-0.5, 4.0), bound(Interval(3.63, 4.43))),
+           ((-2.5, -2.5), bound(Interval(3.13, 3.93))),
+           ((2.5, -0.5), bound(Interval(2.15, 2.95)))]
 
 
 def main():
@@ -25,7 +25,7 @@ def main():
         rhos.append(Interval(rho.lb(), rho.ub()))
         cn.add(CtcFunction(g), [x, rhos[-1]])
     stats = cn.contract()
-    ok = not stats.empty and x.contains([0.0, 0.0])
+    ok = check_stats(stats) and enclosure_ok(x) and x.contains([0.0, 0.0])
 
     print("Static range-only localization, thesis Table 2.1 (robot at (0, 0))")
     print(f"  final box:   {x}")

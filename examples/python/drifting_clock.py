@@ -11,7 +11,7 @@ import math
 import time
 
 import sillage
-from example_args import out_dir_and_step, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Function, Interval,
                      IntervalVector, Style, TDomain, Trajectory, Tube, TubeStyle, TubeVector)
 
@@ -49,7 +49,7 @@ def build(td, ratio=0.0):
     t, z, tau = [], [], []
     for i in range(len(TAU)):
         t.append(td.t0_tf())  # unknown reference time
-        z.append(cents(*Z[i]))
+        z.append(bound(cents(*Z[i])))
         tau.append(cents(TAU[i], TAU[i]))
         cn.add(CtcEval(), [t[i], tau[i], h, phi])  # tau_i = h(t_i)
         cn.add(CtcEval(), [t[i], z[i], y, w])  # z_i = y(t_i)
@@ -98,7 +98,7 @@ def main():
     y_true = Trajectory("sqrt((90 + 100*cos(t))^2 + (20 + 100*sin(t))^2 + 100)", dom)
     h_in = p["h"].contains(h_true)
     boat_in = p["x"].contains([b1, b2]) and p["y"].contains(y_true)
-    ok = not s.empty and (fixed or args.ratio > 0) and h_in and boat_in  # a ratio > 0 stops earlier
+    ok = check_stats(s) and enclosure_ok(p["h"]) and (fixed or args.ratio > 0) and h_in and boat_in  # a ratio > 0 stops earlier
     print("  i  tau_i  a priori [h]^-1(tau_i)  contracted [t_i]       true t_i  contracted [z_i]")
     w0 = w1 = 0.0
     for i, tau in enumerate(TAU):

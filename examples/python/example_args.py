@@ -1,7 +1,18 @@
-"""Shared helpers of the Python examples: the --out folder and the RESULT line
-that examples/run_demo.py reads."""
+"""Shared helpers of the Python examples: the --out folder, the RESULT line
+that examples/run_demo.py reads, the exit status, and the checks.
+
+Every example exits non-zero when its check fails (print_result). An empty
+network is an answer, never a success: check_stats prints why it is empty
+(stats.emptiness), and a truth check on an empty or unbounded enclosure fails
+(enclosure_ok). SILLAGE_EXAMPLE_TIGHTEN=f (default 1) tightens the stated
+error bounds that an example passes through bound(): with f = 0.001 the bounds
+are too tight for the truth, so the check must fail (tests/python prove that
+each example then exits non-zero)."""
 import argparse
 import json
+import math
+import os
+import sys
 from pathlib import Path
 
 
@@ -40,15 +51,69 @@ def out_dir_and_data(description, dataset, name, extra_args=None):
     out, folder = Path(args.out), Path(args.data)
     out.mkdir(parents=True, exist_ok=True)
     if not (folder / "odometry.csv").exists():
-        print(f"no {dataset} data at {folder} (pass --data DIR)")
-        print_result(name, "skipped: no data", True)
+        print(f"no {dataset} data at {folder} (pass --data DIR; the data sets live in ../shared/data "
+              "beside the repository)")
+        print_result(name, "skipped: no data", True, skipped=True)
         return None
     return out, folder, args
 
 
-def print_result(name, result, check, figures=()):
-    print("RESULT " + json.dumps({"name": name, "result": result, "check": bool(check),
+def print_result(name, result, check, figures=(), skipped=False):
+    """Prints the RESULT line; exits with status 1 when the check failed."""
+    print("RESULT " + json.dumps({"name": name, "result": result, "check": bool(check), "skipped": bool(skipped),
                                   "figures": [list(f) for f in figures]}))
+    if not check:
+        sys.stdout.flush()
+        print(f"{name}: check FAILED", file=sys.stderr)
+        sys.exit(1)
+
+
+def tighten_factor():
+    """SILLAGE_EXAMPLE_TIGHTEN (default 1): the factor bound() applies."""
+    return float(os.environ.get("SILLAGE_EXAMPLE_TIGHTEN", "1"))
+
+
+def bound(x):
+    """A stated error bound, tightened by f = SILLAGE_EXAMPLE_TIGHTEN: a number (a radius, an
+    error magnitude) times f, or an Interval [a, b] reduced to [a, a + f (b - a)] (from one end,
+    not about the middle, where the truth often is)."""
+    f = tighten_factor()
+    if f == 1:
+        return x
+    if hasattr(x, "lb") and hasattr(x, "ub"):
+        if x.lb() == x.ub():
+            return type(x).empty()  # a point bound cannot be tighter: nothing is left
+        return type(x)(x.lb(), x.lb() + f * (x.ub() - x.lb()))
+    return x * f
+
+
+def check_stats(stats, label=""):
+    """True if the network is not empty; otherwise prints why (stats.emptiness): no solution
+    fits the data and the bounds, which is a failure of the example's check."""
+    if not stats.empty:
+        return True
+    print(f"  {label + ': ' if label else ''}EMPTY: {stats.emptiness or stats.empty_domain} "
+          "(no solution: the bounds or the data are inconsistent)")
+    return False
+
+
+def _flat(xs):
+    for x in xs:
+        yield from (_flat(x) if isinstance(x, (list, tuple)) else [x])
+
+
+def enclosure_ok(*xs):
+    """True if every enclosure (Interval, IntervalVector, Tube, TubeVector) is non-empty and
+    bounded: a truth check is meaningful only on such enclosures ("100 % inside" an empty or
+    unbounded one proves nothing)."""
+    for x in xs:
+        if x.is_empty():
+            return False
+        c = x.codomain() if hasattr(x, "codomain") else x
+        bounds = [c.lb(), c.ub()]  # floats (Interval) or lists (IntervalVector)
+        if not all(math.isfinite(b) for b in _flat(bounds)):
+            return False
+    return True
 
 
 def rk4(f, x0, h, n):

@@ -16,11 +16,11 @@ import time
 import numpy as np
 
 import sillage
-from example_args import out_dir, print_result, rk4
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, rk4
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF, TM = 64.0, 37.0
-M1, M2 = Interval(5925, 6125) / Interval(100), Interval(3616, 3816) / Interval(100)  # (4.30), outward
+M1, M2 = bound(Interval(5925, 6125) / Interval(100)), bound(Interval(3616, 3816) / Interval(100))  # (4.30), outward
 
 
 def initial_box(heading_speed_known=True):
@@ -128,7 +128,7 @@ def main(deltas=(0.05, 0.01, 0.005), out=None):
                   f"{'inside' if inside37 else 'NOT inside'} the measurement box [59.25, 61.25] x [36.16, 38.16]")
         worst_nominal = max_excess(x, paths[:, :1])
         worst = max_excess(x, paths)
-        ok = ok and not stats.empty and worst <= 1e-9
+        ok = check_stats(stats, f"delta = {dt}") and enclosure_ok(x) and worst <= 1e-9 and ok
         p0, p37, pf = x.gate(0).subvector(0, 1), x.gate(k37).subvector(0, 1), x.gate(n).subvector(0, 1)
         results[dt] = (diagonal(p0), diagonal(p37), diagonal(pf))
         print(f"delta = {dt:<5g} ({n:5d} slices): thickness d (box diagonal) at t = 0: {diagonal(p0):.3f}, "

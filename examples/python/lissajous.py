@@ -10,7 +10,7 @@ import math
 import time
 
 import sillage
-from example_args import out_dir, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF = 2 * math.pi  # the double just below 2 pi: one period
@@ -24,7 +24,7 @@ def solve(dt):
     ddx[0] = Tube(td, "-10*cos(t) + [-0.001, 0.001]")  # constraint 1
     dx.set_gate(0, IntervalVector([Interval(0), Interval(10)]))
     # [9.8, 10.2] x [-0.2, 0.2], enclosing the decimal bounds (outward division)
-    x.set_gate(0, IntervalVector([Interval(98, 102) / Interval(10), Interval(-2, 2) / Interval(10)]))
+    x.set_gate(0, IntervalVector([bound(Interval(98, 102) / Interval(10)), bound(Interval(-2, 2) / Interval(10))]))
     cn = sillage.ContractorNetwork()
     cn.add(CtcFunction(Function(["a2", "v1", "a1"], "a2 + 0.4*v1*a1")), [ddx[1], dx[0], ddx[0]])  # constraint 2
     cn.add(sillage.CtcDeriv(), [dx, ddx])
@@ -53,7 +53,8 @@ def main(deltas=(0.01, 0.001, 0.0001), out=None):
         x, dx, ddx, stats = solve(dt)
         cpu = time.process_time() - t0
         n = x.nb_slices()
-        inside = (not stats.empty and x.contains(x_true) and dx.contains(dx_true) and ddx.contains(ddx_true))
+        inside = (check_stats(stats, f"delta = {dt}") and enclosure_ok(x, dx, ddx) and x.contains(x_true)
+                  and dx.contains(dx_true) and ddx.contains(ddx_true))
         ok = ok and inside
         w1, w2 = x[0].max_thickness(), x[1].max_thickness()
         results[dt] = (x.gate(n), w1, w2)

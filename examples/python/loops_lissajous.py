@@ -24,8 +24,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import sillage
-from example_args import out_dir, print_result
-from sillage import TDomain, TPlane, TubeVector
+from example_args import bound, out_dir, print_result
+from sillage import Interval, TDomain, TPlane, TubeVector
 from sillage.plot_loops import plot_loops_map, plot_tplane
 
 A, B, FA, FB, PHI = 100.0, 70.0, 0.013, 0.021, 1.1  # m, m, rad/s, rad/s, rad
@@ -43,8 +43,9 @@ def r(x):
 
 def tubes(td):
     """[v] = p' + [-E, E], and [p] = p + [-1, 1] (POS0 + POS_RATE t): both hold the truth."""
-    v = TubeVector(td, f"({r(A * FA)}*cos({r(FA)}*t) + [-{r(E)}, {r(E)}], "
-                       f"{r(B * FB)}*cos({r(FB)}*t + {r(PHI)}) + [-{r(E)}, {r(E)}])")
+    e = bound(Interval(-E, E))
+    v = TubeVector(td, f"({r(A * FA)}*cos({r(FA)}*t) + [{r(e.lb())}, {r(e.ub())}], "
+                       f"{r(B * FB)}*cos({r(FB)}*t + {r(PHI)}) + [{r(e.lb())}, {r(e.ub())}])")
     err = f"[-1, 1]*({r(POS0)} + {r(POS_RATE)}*t)"
     p = TubeVector(td, f"({r(A)}*sin({r(FA)}*t) + {err}, {r(B)}*sin({r(FB)}*t + {r(PHI)}) + {err})")
     return v, p

@@ -22,7 +22,7 @@ import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
 
 import sillage
-from example_args import out_dir_and_data, print_result
+from example_args import bound, out_dir_and_data, print_result
 from sillage import CsvTable, Interval, TDomain, TPlane, Tube, TubeAnalysis, TubeVector
 from sillage.plot_loops import LOOP_COLOURS, plot_tplane
 
@@ -125,14 +125,18 @@ def check_integrals(v, td, d, pairs, crossings):
         lo = np.concatenate([[0.0], np.cumsum(s[:, 0] * widths)])
         hi = np.concatenate([[0.0], np.cumsum(s[:, 1] * widths)])
         disp = truth[j] - truth[i]
-        gaps = np.maximum(gaps, np.maximum(0.0, np.maximum(lo[j] - lo[i] - disp, disp - (hi[j] - hi[i]))))
+        g = np.maximum(0.0, np.maximum(lo[j] - lo[i] - disp, disp - (hi[j] - hi[i])))
+        # an empty or unbounded integral proves nothing: never "inside"
+        g[~(np.isfinite(lo[j] - lo[i]) & np.isfinite(hi[j] - hi[i]))] = np.inf
+        gaps = np.maximum(gaps, g)
     analyses = [TubeAnalysis(v[0]), TubeAnalysis(v[1])]
     cross_gaps = []
     for c in crossings:
         g = 0.0
         for a in analyses:
             integral = a.integral(Interval(c.t1), Interval(c.t2))
-            g = max(g, integral.lb(), -integral.ub())
+            bounded = not integral.is_empty() and math.isfinite(integral.lb()) and math.isfinite(integral.ub())
+            g = max(g, integral.lb(), -integral.ub()) if bounded else math.inf
         cross_gaps.append(g)
     times = np.asarray(td.times())
     all_gaps = np.concatenate([gaps, cross_gaps])
@@ -281,6 +285,8 @@ def main():
 
     ok, summary, figures = True, "", []
     for tag, name, speed_bounds, heading_bounds in MODELS:
+        speed_bounds = tuple(bound(e) for e in speed_bounds)
+        heading_bounds = heading_bounds[:1] + tuple(bound(e) for e in heading_bounds[1:])
         v = velocity_tube(d, td, speed_bounds, heading_bounds)
         ic = check_integrals(v, td, d, pairs, crossings)
         wall0, cpu0 = time.perf_counter(), time.process_time()

@@ -12,7 +12,7 @@ import time
 import numpy as np
 
 import sillage
-from example_args import out_dir_and_step, print_result, rk4
+from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result, rk4
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Figure, Function, Interval,
                      IntervalVector, Style, TDomain, ThicknessMeasure, Tube, TubeStyle, TubeVector)
 
@@ -86,7 +86,7 @@ def build(td, ratio=0.0, split=False):
     ts, zs = [], []
     for k, t, z in MEASUREMENTS:
         ts.append(cents(*t))
-        zs.append(cents(*z))
+        zs.append(bound(cents(*z)))
         cn.add(CtcEval(), [ts[-1], zs[-1], ys[k], ws[k]])
     return dict(cn=cn, x=x, v=v, y=ys, w=ws, t=ts, z=zs)
 
@@ -179,7 +179,7 @@ def main():
     h = args.dt / 10  # RK4 step of the truth
     path = truth(h, round(TF / h))
     e = excess(p["x"], path, h)
-    ok = not s.empty and (fixed or args.ratio > 0) and e <= 1e-7  # a ratio > 0 stops before the fixed point
+    ok = check_stats(s) and enclosure_ok(p["x"]) and (fixed or args.ratio > 0) and e <= 1e-7  # ratio > 0: stops earlier
     print("  measurements: [t_i] (Table 5.2) -> contracted [t_i] ; [z_i] -> contracted [z_i] ; truth times")
     for i, (k, t, z) in enumerate(MEASUREMENTS):
         tt = truth_times(path, h, k, t, z)

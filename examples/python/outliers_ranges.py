@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import out_dir, print_result  # noqa: E402
+from example_args import bound, out_dir, print_result  # noqa: E402
 from sillage import CtcFunction, CtcInter, Function, Interval, IntervalVector, gomne, sivia  # noqa: E402
 from sillage import plot  # noqa: E402
 
@@ -23,7 +23,8 @@ EPS = 0.1
 
 
 def ring(b):
-    return Interval(b[2] - 0.1, b[2] + 0.1)
+    e = bound(0.1)  # the stated range error of the simulated sensor
+    return Interval(b[2] - e, b[2] + e)
 
 
 def draw(ax, r):

@@ -8,16 +8,16 @@ import math
 import time
 
 import sillage
-from example_args import out_dir_and_data, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir_and_data, print_result
 from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcIncrement, Function, Interval,
                      IntervalVector, TDomain, Tube, TubeVector)
 
 # The error model (see the C++ example for the reasons of each value).
 POS0, HEADING0 = 0.1, 0.05            # m, rad: the start, from the ground truth
-GYRO_BIAS, TURN_MAX = 5e-4, 0.8       # rad/s
-DIST_REL, DIST_OVER, DIST_UNDER = 0.02, 0.07, 0.001
+GYRO_BIAS, TURN_MAX = bound(5e-4), 0.8  # rad/s
+DIST_REL, DIST_OVER, DIST_UNDER = bound(0.02), bound(0.07), bound(0.001)
 SPEED_MAX = 5.0                       # m/s
-RANGE_ERR = (-1.0, 7.0)               # measured - true, m: ranges biased long
+RANGE_ERR = (bound(-1.0), bound(7.0))  # measured - true, m: ranges biased long
 TIME_ERR = 0.2                        # s
 
 
@@ -50,7 +50,7 @@ def solve(d, with_ranges):
     heading = sillage.ContractorNetwork()
     heading.add(CtcIncrement(), [psi, slice_tube(td, dpsi)])
     heading.add(CtcDeriv(), [psi, Tube(td, Interval(-TURN_MAX, TURN_MAX))])
-    heading.contract()
+    check_stats(heading.contract(), "heading")  # empty: psi is empty, and cn says so on input
     # increments of p per slice, slice by slice
     inc = TubeVector([slice_tube(td, [dist[k] * sillage.cos(psi.slice(k)) for k in range(n)]),
                       slice_tube(td, [dist[k] * sillage.sin(psi.slice(k)) for k in range(n)])])
@@ -62,6 +62,9 @@ def solve(d, with_ranges):
     cn.add(CtcFunction(Function(["a", "s", "h"], "a - s*sin(h)")), [v[1], speed, psi])
     cn.add(CtcIncrement(), [p, inc])
     cn.add(CtcDeriv(), [p, v])
+    cn.set_name(p, "p")
+    cn.set_name(v, "v")
+    cn.set_name(psi, "psi")
     keep = []  # the measurement domains (the network holds them too)
     if with_ranges:
         ev = CtcEval()
@@ -72,6 +75,7 @@ def solve(d, with_ranges):
             rng = Interval(r - RANGE_ERR[1], r - RANGE_ERR[0]) & Interval(0, math.inf)
             cn.add(ev, [t, q, p, v])
             cn.add(CtcFunction(Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)"), rng), [q])
+            cn.set_name(q, f"q{len(keep)} (beacon {int(bid)} seen at t = {tj:.2f})")
             keep.append((t, q))
     stats = cn.contract()
     cpu = time.process_time() - t0
@@ -96,7 +100,7 @@ def main():
         print(f"{label}: {nr} ranges, {stats.iterations} rounds, {stats.contractor_calls} contractor runs, "
               f"{cpu:.2f} s CPU; truth inside at {inside}/{n} time points; box diameter mean {mean_d:.2f} m, "
               f"max {max_d:.2f} m")
-        ok = ok and inside == n and not stats.empty
+        ok = check_stats(stats, label) and enclosure_ok(p) and inside == n and ok
         summary += f"{label}: truth inside {100 * inside / n:.1f} %, mean/max diameter {mean_d:.2f}/{max_d:.2f} m; "
         tag = "ranges" if with_ranges else "odometry"
         fig = sillage.tube_vector_figure(p, 0, 1, f"plaza1 (Python): {label}", sillage.TubeStyle(), *truth)

@@ -3,7 +3,7 @@ confident wrong answer; interval arithmetic encloses the exact value
 -0.827396059946821368... and its width warns that the double result is meaningless."""
 from fractions import Fraction
 
-from example_args import out_dir, print_result
+from example_args import bound, out_dir, print_result
 from sillage import Function, IntervalVector
 
 
@@ -16,7 +16,7 @@ def main():
     f_double = rump(77617.0, 33096.0)
     exact = rump(Fraction(77617), Fraction(33096), Fraction(1335, 4), Fraction(11, 2))  # = -54767/66192
     f = Function(["x", "y"], "333.75*y^6 + x^2*(11*x^2*y^2 - y^6 - 121*y^4 - 2) + 5.5*y^8 + x/(2*y)")
-    enclosure = f.eval(IntervalVector([[77617, 77617], [33096, 33096]]))
+    enclosure = bound(f.eval(IntervalVector([[77617, 77617], [33096, 33096]])))
     ok = Fraction(enclosure.lb()) <= exact <= Fraction(enclosure.ub())
     print("Rump's expression f(77617, 33096), thesis (2.2)")
     print(f"  double:    {f_double!r}")

@@ -11,7 +11,7 @@ fixed point. Same computations and printed figures as examples/cpp/sin_ivp.cpp."
 import time
 
 import sillage
-from example_args import out_dir, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube
 
 TF = 10.0
@@ -22,7 +22,7 @@ TRUTH = "2*atan(tan(1/2)*exp(-t))"
 def solve_decomposition(td):
     """CN of (4.23): a = sin(x), b' = a with b(0) = 0, x = 1 - b."""
     x, a, b = Tube(td), Tube(td), Tube(td)
-    b.set_gate(0, Interval(0))
+    b.set_gate(0, bound(Interval(0)))
     cn = sillage.ContractorNetwork()
     cn.set_ratio(0)  # the exact fixed point
     cn.add(CtcFunction(Function(["a", "x"], "a - sin(x)")), [a, x])
@@ -34,7 +34,7 @@ def solve_decomposition(td):
 def solve_direct(td):
     """The equivalent CN: x' = v, v = -sin(x), x(0) = 1."""
     x, v = Tube(td), Tube(td)
-    x.set_gate(0, Interval(1))
+    x.set_gate(0, bound(Interval(1)))
     cn = sillage.ContractorNetwork()
     cn.set_ratio(0)
     cn.add(CtcFunction(Function(["v", "x"], "v + sin(x)")), [v, x])
@@ -104,7 +104,7 @@ def main(deltas=(0.1, 0.01, 0.001, 0.0001), out=None):
             cpu = time.process_time() - t0
             xf = x.gate(n)
             excess = truth_excess(x, truth)
-            inside = not stats.empty and excess <= 1e-9
+            inside = check_stats(stats, f"delta = {dt} {label}") and enclosure_ok(x) and excess <= 1e-9
             ok = ok and inside
             results[(dt, label)] = xf
             print(f"delta = {dt:<6g} {label:<15s} x(10) in {fmt(xf):<26s} width {xf.diam():.3g} "

@@ -8,8 +8,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import out_dir, print_result  # noqa: E402
-from sillage import Function, IntervalVector, PavingTag, SepFunction, sivia  # noqa: E402
+from example_args import bound, out_dir, print_result  # noqa: E402
+from sillage import Function, Interval, IntervalVector, PavingTag, SepFunction, sivia  # noqa: E402
 from sillage import plot  # noqa: E402
 
 
@@ -17,7 +17,7 @@ def main():
     out = out_dir(__doc__)
     x0 = IntervalVector([[-10, 14], [-10, 10]])
     g = Function(["x1", "x2"], "(sqrt((x1 - 8)^2 + (x2 - 5)^2), sqrt((x1 - 7)^2 + (x2 - 2.2)^2))")
-    y = IntervalVector([[9.03, 9.83], [6.94, 7.74]])
+    y = IntervalVector([bound(Interval(9.03, 9.83)), bound(Interval(6.94, 7.74))])
     mirror = (11.0230, -3.9367)  # (0, 0) reflected across the beacons' line
 
     runs = []

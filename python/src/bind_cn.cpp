@@ -33,7 +33,7 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
 void init_cn(py::module_& m) {
   py::class_<NetworkCtc, std::shared_ptr<NetworkCtc>>(
       m, "NetworkCtc", "A contractor on whole tubes that a ContractorNetwork binds (CtcDeriv, CtcEval).")
-      .def("name", &NetworkCtc::name);
+      .def("name", &NetworkCtc::name, "The class name, e.g. 'CtcEval'.");
 
   py::class_<DomainRef>(m, "DomainRef", "A part of a box given to ContractorNetwork.add.")
       .def_static("component", py::overload_cast<std::shared_ptr<IntervalVector>, std::size_t>(&DomainRef::component),
@@ -44,22 +44,45 @@ void init_cn(py::module_& m) {
       .def("first", &DomainRef::first)
       .def("count", &DomainRef::count);
 
-  py::class_<ContractStats>(m, "ContractStats")
-      .def_readonly("iterations", &ContractStats::iterations)
+  py::class_<ContractStats>(m, "ContractStats",
+                            "What contract() did. An empty network is an answer (no solution), explained by\n"
+                            "emptiness and the empty_* fields.")
+      .def_readonly("iterations", &ContractStats::iterations, "Rounds of the propagation queue.")
       .def_readonly("contractor_calls", &ContractStats::contractor_calls)
-      .def_readonly("time", &ContractStats::time)
-      .def_readonly("empty", &ContractStats::empty)
-      .def_readonly("empty_domain", &ContractStats::empty_domain)
+      .def_readonly("time", &ContractStats::time, "Wall-clock seconds.")
+      .def_readonly("empty", &ContractStats::empty, "A domain became (or was) empty: no solution.")
+      .def_readonly("empty_domain", &ContractStats::empty_domain, "Which one, e.g. 'domain 2 (Interval)'.")
+      .def_readonly("emptiness", &ContractStats::emptiness,
+                    "Why, e.g. \"CtcEval emptied tube 'x' at slice 412 [41.2, 41.3] for t in [...]\"; '' if not empty.")
+      .def_readonly("empty_contractor", &ContractStats::empty_contractor,
+                    "The contractor that emptied it (e.g. 'CtcDeriv'); '' if it was empty on input.")
+      .def_readonly("empty_domain_index", &ContractStats::empty_domain_index)
+      .def_readonly("empty_domain_name", &ContractStats::empty_domain_name, "Its name (set_name), '' if none.")
+      .def_readonly("empty_atom", &ContractStats::empty_atom,
+                    "'slice', 'gate', 'component' or '' (the whole domain).")
+      .def_readonly("empty_atom_index", &ContractStats::empty_atom_index)
+      .def_readonly("empty_time", &ContractStats::empty_time, "Time of the slice or gate (empty otherwise).")
       .def("__repr__", [](const ContractStats& s) {
         return "ContractStats(iterations=" + std::to_string(s.iterations) +
                ", contractor_calls=" + std::to_string(s.contractor_calls) + ", time=" + std::to_string(s.time) +
-               ", empty=" + (s.empty ? "True" : "False") + ")";
+               ", empty=" + (s.empty ? "True, emptiness='" + s.emptiness + "'" : std::string("False")) + ")";
       });
 
   py::class_<ContractorNetwork>(m, "ContractorNetwork")
       .def(py::init<>())
-      .def("create_dom", py::overload_cast<const Interval&>(&ContractorNetwork::create_dom), py::arg("x"))
-      .def("create_dom", py::overload_cast<const IntervalVector&>(&ContractorNetwork::create_dom), py::arg("x"))
+      .def("create_dom", py::overload_cast<const Interval&, const std::string&>(&ContractorNetwork::create_dom),
+           py::arg("x"), py::arg("name") = "", "A new domain (a copy of x), optionally named.")
+      .def("create_dom",
+           py::overload_cast<const IntervalVector&, const std::string&>(&ContractorNetwork::create_dom), py::arg("x"),
+           py::arg("name") = "")
+      .def(
+          "set_name",
+          [](ContractorNetwork& cn, const py::object& domain, const std::string& name) {
+            cn.set_name(to_domain_ref(domain, 0), name);
+          },
+          py::arg("domain"), py::arg("name"),
+          "Names a domain for the reports (stats.emptiness); a TubeVector's components become name[i].")
+      .def("domain_name", &ContractorNetwork::domain_name, py::arg("d"), "The name of domain number d ('' if none).")
       .def(
           "add",
           [](ContractorNetwork& cn, const py::object& ctc, const py::iterable& domains) {
@@ -73,7 +96,8 @@ void init_cn(py::module_& m) {
           },
           py::arg("ctc"), py::arg("domains"))
       .def("contract", &ContractorNetwork::contract,
-           "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats.")
+           "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
+           "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.")
       .def("nb_ctc", &ContractorNetwork::nb_ctc)
       .def("nb_dom", &ContractorNetwork::nb_dom)
       .def("ratio", &ContractorNetwork::ratio)

@@ -116,6 +116,7 @@ void init_ctc(py::module_& m) {
           py::arg("x"), "Contracts x in place and returns it.")
       .def("nb_vars", &Ctc::nb_vars)
       .def("name", &Ctc::name)
+      .def("describe", &Ctc::describe, "The name and what tells this contractor from others, e.g. 'CtcFunction(x - y)'.")
       .def("__and__", [](const py::object& a, const py::object& b) {
         return std::make_shared<CtcInter>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
       })

@@ -232,12 +232,10 @@ void init_tube_vector(py::module_& m) {
       .def("__len__", &V::size)
       .def("tdomain", &V::tdomain)
       .def("nb_slices", &V::nb_slices)
-      // An aliasing pointer: the component, keeping its vector alive (a live
-      // reference that ContractorNetwork can hold).
-      .def("__getitem__",
-           [](const std::shared_ptr<V>& v, long long i) {
-             return std::shared_ptr<Tube>(v, &(*v)[py_index(i, v->size())]);
-           },
+      // The component itself (a heap object of its own, shared): a live
+      // reference that stays valid whatever happens to the vector, and that
+      // ContractorNetwork identifies with the component of DomainRef.component.
+      .def("__getitem__", [](V& v, long long i) { return v.shared_component(py_index(i, v.size())); },
            py::arg("i"))
       .def("__setitem__",
            [](V& v, long long i, const Tube& x) {

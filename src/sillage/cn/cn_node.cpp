@@ -13,6 +13,12 @@ CnNode::CnNode(std::vector<AtomRange> ranges) : ranges_(std::move(ranges)), watc
   }
 }
 
+std::size_t CnNode::range_of(std::size_t pos) const {
+  std::size_t g = ranges_.size() - 1;
+  while (offsets_[g] > pos) --g;
+  return g;
+}
+
 void CnNode::watch_only(std::size_t r, std::size_t first, std::size_t count) {
   const AtomRange& a = ranges_.at(r);
   if (first < a.first || count > a.count || first - a.first > a.count - count) {
@@ -49,7 +55,10 @@ bool CtcNode::run(NodeRun& r) const {
       const Interval cur = d.atom(g.first + a);
       const Interval now = cur & box[k];
       if (now != cur) d.set_atom(g.first + a, now);
-      if (now.is_empty()) return false;
+      if (now.is_empty()) {
+        r.empty_at = k;
+        return false;
+      }
       if (shrank(before[k], now, r.ratio)) r.changed.push_back(k);
     }
   }

@@ -26,6 +26,9 @@ struct AtomRange {
   std::size_t count;
 };
 
+// "No atom" (NodeRun::empty_at).
+inline constexpr std::size_t kNoAtom = static_cast<std::size_t>(-1);
+
 // What one run of a node gets from the network, and gives back.
 struct NodeRun {
   const std::vector<std::shared_ptr<Domain>>& domains;
@@ -38,6 +41,11 @@ struct NodeRun {
   // Out: positions of the atoms this run shrank by more than `ratio`
   // (shrink.h); duplicates allowed.
   std::vector<std::size_t>& changed;
+  // Out, when run() returns false, if the node knows it: the position of the
+  // atom where it found the emptiness (else the network reports the first
+  // empty atom of the node), and the time it concerns (CtcEval's [t]).
+  std::size_t empty_at = kNoAtom;
+  Interval empty_time = Interval::empty();
 };
 
 class CnNode {
@@ -45,10 +53,14 @@ class CnNode {
   explicit CnNode(std::vector<AtomRange> ranges);
   virtual ~CnNode() = default;
   virtual std::string name() const = 0;
+  // For reports (emptiness): the name and what tells this node from others.
+  virtual std::string describe() const { return name(); }
   const std::vector<AtomRange>& ranges() const { return ranges_; }
   std::size_t nb_atoms() const { return nb_atoms_; }
   // Position of the first atom of range r.
   std::size_t offset(std::size_t r) const { return offsets_[r]; }
+  // The range holding position pos (< nb_atoms()).
+  std::size_t range_of(std::size_t pos) const;
   // The atoms whose shrinking wakes this node: its ranges, unless narrowed
   // by watch_only (one entry per range, a sub-range of it; count 0: none).
   const std::vector<AtomRange>& watched() const { return watched_; }
@@ -75,6 +87,7 @@ class CtcNode : public CnNode {
  public:
   CtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges);
   std::string name() const override { return ctc_->name(); }
+  std::string describe() const override { return ctc_->describe(); }
   bool run(NodeRun& r) const override;
   const std::shared_ptr<const Ctc>& ctc() const { return ctc_; }
 

@@ -11,19 +11,34 @@
 
 namespace sillage {
 
-std::shared_ptr<Interval> ContractorNetwork::create_dom(const Interval& x) {
+std::shared_ptr<Interval> ContractorNetwork::create_dom(const Interval& x, const std::string& name) {
   auto p = std::make_shared<Interval>(x);
   add_domain(std::make_shared<IntervalDomain>(p));
+  if (!name.empty()) set_name(p, name);
   return p;
 }
 
-std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVector& x) {
+std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVector& x, const std::string& name) {
   auto p = std::make_shared<IntervalVector>(x);
   add_domain(std::make_shared<BoxDomain>(p));
+  if (!name.empty()) set_name(p, name);
   return p;
+}
+
+void ContractorNetwork::set_name(const DomainRef& d, const std::string& name) {
+  if (name.empty()) throw Error("ContractorNetwork::set_name: empty name");
+  const auto& parts = d.parts();
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    names_[add_domain(parts[i].domain)] = parts.size() == 1 ? name : name + "[" + std::to_string(i) + "]";
+  }
+}
+
+void ContractorNetwork::check_not_contracting(const char* where) const {
+  if (contracting_) throw Error(std::string("ContractorNetwork::") + where + ": called during contract()");
 }
 
 std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain) {
+  check_not_contracting("add_domain");
   if (!domain) throw Error("ContractorNetwork: null domain");
   const auto it = index_.find(domain->key());
   if (it != index_.end()) {
@@ -32,6 +47,7 @@ std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain)
   }
   const std::size_t d = domains_.size();
   domains_.push_back(domain);
+  names_.emplace_back();
   watchers_.emplace_back(domain->nb_atoms());
   index_.emplace(domain->key(), d);
   return d;
@@ -55,6 +71,7 @@ std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& d
 }
 
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
+  check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
   add_bound(domains, [&](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
     std::vector<AtomRange> ranges;
@@ -72,6 +89,7 @@ void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<Do
 }
 
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
+  check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
   add_bound(domains, [&](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
 }
@@ -88,6 +106,7 @@ void ContractorNetwork::add_bound(
     while (domains_.size() > nb_before) {
       index_.erase(domains_.back()->key());
       domains_.pop_back();
+      names_.pop_back();
       watchers_.pop_back();
     }
     throw;
@@ -95,6 +114,7 @@ void ContractorNetwork::add_bound(
 }
 
 void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
+  check_not_contracting("add_node");
   if (!node) throw Error("ContractorNetwork::add_node: null node");
   for (const auto& a : node->ranges()) {
     if (a.domain >= domains_.size() || a.first > domains_[a.domain]->nb_atoms() ||
@@ -120,6 +140,69 @@ std::string ContractorNetwork::label(std::size_t d) const {
   return "domain " + std::to_string(d) + " (" + domains_[d]->kind() + ")";
 }
 
+std::string ContractorNetwork::noun(std::size_t d) const {
+  return names_[d].empty() ? label(d) : domains_[d]->noun() + " '" + names_[d] + "'";
+}
+
+std::size_t ContractorNetwork::first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const {
+  for (std::size_t a = first; a < first + count; ++a) {
+    if (domains_[d]->atom(a).is_empty()) return a;
+  }
+  return kNoAtom;
+}
+
+void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
+                                      const Interval& time) const {
+  s.empty = true;
+  s.empty_domain = label(d);
+  s.empty_domain_index = d;
+  s.empty_domain_name = names_[d];
+  s.empty_contractor = by;
+  const AtomPlace place = a == kNoAtom ? AtomPlace{} : domains_[d]->place(a);
+  s.empty_atom = place.kind;
+  s.empty_atom_index = place.index;
+  s.empty_time = place.time;
+  const std::string at = place.kind.empty() ? "" : " at " + place.str();
+  if (by.empty()) {
+    s.emptiness = noun(d) + " was empty on input" + at;
+    return;
+  }
+  s.emptiness = by + " emptied " + noun(d) + at;
+  if (!time.is_empty()) {
+    s.emptiness += " for t in " + time.str();
+    if (place.kind.empty()) s.empty_time = time;
+  }
+}
+
+void ContractorNetwork::check_layouts_after(const CnNode& node) const {
+  for (const auto& a : node.ranges()) {
+    const Domain& d = *domains_[a.domain];
+    if (d.layout_changed()) d.check_layout(label(a.domain) + ", changed during contract() (" + node.describe() + "),");
+  }
+}
+
+void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const {
+  if (node.ranges().empty()) {
+    s.empty = true;
+    s.empty_contractor = node.describe();
+    s.emptiness = node.describe() + " found no solution";
+    return;
+  }
+  // The atom the node names, else its first empty atom, else its first domain.
+  std::size_t g = 0, a = kNoAtom;
+  if (run.empty_at < node.nb_atoms()) {
+    g = node.range_of(run.empty_at);
+    a = node.ranges()[g].first + run.empty_at - node.offset(g);
+  } else {
+    for (g = 0; g < node.ranges().size(); ++g) {
+      const AtomRange& r = node.ranges()[g];
+      if ((a = first_empty_atom(r.domain, r.first, r.count)) != kNoAtom) break;
+    }
+    if (g == node.ranges().size()) g = 0;
+  }
+  explain_empty(s, node.ranges()[g].domain, a, node.describe(), run.empty_time);
+}
+
 namespace {
 
 // Sorts v and drops duplicates; v holds positions < n. A long list is
@@ -140,17 +223,22 @@ void sort_unique(std::vector<std::size_t>& v, std::size_t n, std::vector<char>& 
 }  // namespace
 
 ContractStats ContractorNetwork::contract() {
+  check_not_contracting("contract");
   const auto start = std::chrono::steady_clock::now();
+  struct Running {
+    bool& flag;
+    explicit Running(bool& f) : flag(f) { flag = true; }
+    ~Running() { flag = false; }
+  } running(contracting_);
   ContractStats stats;
   const auto finish = [&] {
     stats.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   };
   for (std::size_t d = 0; d < domains_.size(); ++d) {
-    domains_[d]->check_layout(label(d));
+    if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d));
     if (domains_[d]->is_empty() && !stats.empty) {
-      stats.empty = true;
-      stats.empty_domain = label(d);
+      explain_empty(stats, d, first_empty_atom(d, 0, domains_[d]->nb_atoms()), "", Interval::empty());
     }
   }
   if (stats.empty) return finish();
@@ -174,20 +262,14 @@ ContractStats ContractorNetwork::contract() {
       ++stats.contractor_calls;
       const bool ok = node.run(run);
       dirty.clear();
+      check_layouts_after(node);
       if (!ok) {
-        stats.empty = true;
-        for (const auto& a : node.ranges()) {
-          if (domains_[a.domain]->is_empty()) {
-            stats.empty_domain = label(a.domain);
-            break;
-          }
-        }
+        explain_node_empty(stats, node, run);
         return finish();
       }
       for (const std::size_t k : changed) {
         // The range holding position k, then the atom it is.
-        std::size_t g = node.ranges().size() - 1;
-        while (node.offset(g) > k) --g;
+        const std::size_t g = node.range_of(k);
         const AtomRange& a = node.ranges()[g];
         watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t pos) {
           if (w == i) return;
@@ -201,6 +283,9 @@ ContractStats ContractorNetwork::contract() {
     }
     round.swap(next);
     next.clear();
+  }
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d) + ", changed during contract(),");
   }
   return finish();
 }

@@ -32,6 +32,12 @@
 // queued again). The propagation stops when a round wakes nobody, or at once
 // when a domain becomes empty (that domain is set empty, the others keep their
 // last values, which remain valid enclosures; ContractStats::empty tells).
+//
+// Emptiness is an answer (no trajectory, no solution fits the data and the
+// bounds), never a success: ContractStats says which contractor emptied which
+// domain, and where (the slice or gate of a tube, and its time), in words
+// (emptiness) and field by field. Name the domains (set_name, create_dom) to
+// read "tube 'x'" rather than "domain 3 (Tube(100 slices))".
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -55,6 +61,16 @@ struct ContractStats {
   double time = 0.0;                 // wall-clock seconds of this contract()
   bool empty = false;                // a domain became (or was) empty: no solution
   std::string empty_domain;          // which one, e.g. "domain 2 (Interval)"
+  // Why, e.g. "CtcEval emptied tube 'x' at slice 412 [41.2, 41.3] for t in
+  // [41.22, 41.28]", "CtcFunction(x - y) emptied interval 'y'", "box 'p' was
+  // empty on input at component 1"; "" when not empty.
+  std::string emptiness;
+  std::string empty_contractor;          // describe() of the contractor; "" if empty on input
+  std::size_t empty_domain_index = 0;    // the domain's index in the network
+  std::string empty_domain_name;         // its name, "" if it has none
+  std::string empty_atom;                // "slice", "gate", "component" or "" (the whole domain)
+  std::size_t empty_atom_index = 0;      // the slice, gate or component
+  Interval empty_time = Interval::empty();  // time of the slice or gate; CtcEval: also its [t]
 };
 
 class ContractorNetwork {
@@ -63,9 +79,15 @@ class ContractorNetwork {
   ContractorNetwork(const ContractorNetwork&) = delete;
   ContractorNetwork& operator=(const ContractorNetwork&) = delete;
 
-  // New shared domains owned together by the caller and the network.
-  std::shared_ptr<Interval> create_dom(const Interval& x);
-  std::shared_ptr<IntervalVector> create_dom(const IntervalVector& x);
+  // New shared domains owned together by the caller and the network,
+  // optionally named (see set_name).
+  std::shared_ptr<Interval> create_dom(const Interval& x, const std::string& name = "");
+  std::shared_ptr<IntervalVector> create_dom(const IntervalVector& x, const std::string& name = "");
+  // Names the domain(s) of d for the reports (registering them if new): a
+  // tube vector's components become name[0], name[1], ... Error if empty.
+  void set_name(const DomainRef& d, const std::string& name);
+  // The name of domain number d ("" if none).
+  const std::string& domain_name(std::size_t d) const { return names_.at(d); }
 
   // Binds ctc to the concatenation of the domains (registered on first use);
   // applied at every time if a domain is a tube (see above).
@@ -88,6 +110,20 @@ class ContractorNetwork {
 
  private:
   std::string label(std::size_t d) const;
+  // "tube 'x'" when named, else label(d).
+  std::string noun(std::size_t d) const;
+  // Fills the emptiness fields of s: domain d, atom a (kNoAtom: none), found
+  // by `by` (a node's describe(); "" for empty on input).
+  void explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
+                     const Interval& time) const;
+  // A contractor (a Python one may) that resized a domain or sampled its
+  // TDomain during contract() made the nodes' layouts stale: DimensionError
+  // rather than a result computed on the wrong atoms.
+  void check_layouts_after(const CnNode& node) const;
+  // Same for a node whose run() returned false.
+  void explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const;
+  // The first empty atom of domain d in [first, first + count), or kNoAtom.
+  std::size_t first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const;
   // Registers the parts of the references; validates first, so that a failed
   // add leaves the network unchanged.
   std::vector<BoundDomain> bind(const std::vector<DomainRef>& domains);
@@ -97,10 +133,15 @@ class ContractorNetwork {
                  const std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>& make);
 
   std::vector<std::shared_ptr<Domain>> domains_;
+  std::vector<std::string> names_;  // per domain, "" if unnamed
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
   std::vector<std::shared_ptr<const CnNode>> nodes_;
   double ratio_ = 0.01;
+  // True during contract(): a contractor calling back into the network (a
+  // Python one may) must not grow the arrays contract() is walking.
+  bool contracting_ = false;
+  void check_not_contracting(const char* where) const;
 };
 
 }  // namespace sillage

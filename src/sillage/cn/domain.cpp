@@ -20,6 +20,19 @@ void BoxDomain::set_atom(std::size_t i, const Interval& x) {
   }
 }
 
+std::string AtomPlace::str() const {
+  if (kind.empty()) return "";
+  std::string s = kind + " " + std::to_string(index);
+  if (kind == "slice") s.append(" ").append(time.str());
+  if (kind == "gate") s.append(" (t = ").append(number_text(time.lb())).append(")");
+  return s;
+}
+
+AtomPlace BoxDomain::place(std::size_t i) const {
+  if (size_ == 1) return {};
+  return {"component", i, Interval::empty()};
+}
+
 std::string BoxDomain::kind() const { return "IntervalVector(" + std::to_string(size_) + ")"; }
 
 void BoxDomain::check_layout(const std::string& label) const {

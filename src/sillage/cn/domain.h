@@ -16,6 +16,16 @@
 
 namespace sillage {
 
+// Where an atom lies in its domain, for reports: a component of a box, a
+// slice or gate of a tube (with its time); kind "" for a one-atom domain.
+struct AtomPlace {
+  std::string kind;  // "component", "slice", "gate" or ""
+  std::size_t index = 0;
+  Interval time = Interval::empty();  // tubes: the slice's time interval, the gate's time
+  // "slice 4 [0.4, 0.5]", "gate 2 (t = 0.2)", "component 1" or "".
+  std::string str() const;
+};
+
 class Domain {
  public:
   virtual ~Domain() = default;
@@ -31,6 +41,15 @@ class Domain {
   // Throws DimensionError (naming `label`) when the object no longer has the
   // layout it had when registered (a box resized behind the network's back).
   virtual void check_layout(const std::string& label) const { (void)label; }
+  // True when check_layout would throw (cheap: checked after every node run).
+  virtual bool layout_changed() const { return false; }
+  // The word for this kind of domain in reports: "interval", "box", "tube".
+  virtual std::string noun() const { return "domain"; }
+  // Where atom i lies (kind "" by default).
+  virtual AtomPlace place(std::size_t i) const {
+    (void)i;
+    return {};
+  }
 };
 
 class IntervalDomain : public Domain {
@@ -42,6 +61,7 @@ class IntervalDomain : public Domain {
   bool is_empty() const override { return x_->is_empty(); }
   const void* key() const override { return x_.get(); }
   std::string kind() const override { return "Interval"; }
+  std::string noun() const override { return "interval"; }
   const std::shared_ptr<Interval>& object() const { return x_; }
 
  private:
@@ -59,6 +79,9 @@ class BoxDomain : public Domain {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  bool layout_changed() const override { return x_->size() != size_; }
+  std::string noun() const override { return "box"; }
+  AtomPlace place(std::size_t i) const override;
   const std::shared_ptr<IntervalVector>& object() const { return x_; }
 
  private:

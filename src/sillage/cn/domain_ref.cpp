@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "sillage/cn/tube_component_domain.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/error.h"
 
@@ -32,6 +33,7 @@ DomainRef::DomainRef(std::shared_ptr<Tube> x) {
 
 DomainRef::DomainRef(std::shared_ptr<TubeVector> x) {
   if (!x) throw Error("DomainRef: null TubeVector");
+  parts_.reserve(x->size());
   for (std::size_t i = 0; i < x->size(); ++i) {
     const DomainRef c = component(x, i);
     parts_.push_back(c.parts_.front());
@@ -56,13 +58,9 @@ DomainRef DomainRef::subvector(std::shared_ptr<IntervalVector> x, std::size_t i,
 }
 
 DomainRef DomainRef::component(std::shared_ptr<TubeVector> x, std::size_t i) {
-  if (!x) throw Error("DomainRef::component: null TubeVector");
-  if (i >= x->size()) {
-    throw DimensionError("DomainRef::component: component " + std::to_string(i) + " out of range for a TubeVector of " +
-                         std::to_string(x->size()) + " components");
-  }
-  // Aliasing pointer: the component, keeping its tube vector alive.
-  return DomainRef(std::shared_ptr<Tube>(x, &(*x)[i]));
+  auto d = std::make_shared<TubeComponentDomain>(std::move(x), i);
+  const std::size_t n = d->nb_atoms();
+  return DomainRef(std::move(d), 0, n);
 }
 
 }  // namespace sillage

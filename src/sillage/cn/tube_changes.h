@@ -17,6 +17,8 @@ class TubeSnapshot {
   // gate of `after` that shrank by more than `ratio` since take() (shrink.h);
   // nothing at all when the tube was not modified (same version).
   void report(const Tube& after, std::size_t offset, double ratio, std::vector<std::size_t>& changed) const;
+  // The tube as it was at take(), on td (its TDomain then).
+  Tube restore(const std::shared_ptr<TDomain>& td) const { return Tube(td, slices_, gates_); }
 
  private:
   std::vector<Interval> slices_, gates_;

@@ -144,6 +144,9 @@ bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& ato
         }
         if (!ok) {
           touch();
+          for (std::size_t g = 0; g < tubes_.size() && r.empty_at == kNoAtom; ++g) {
+            if (tubes_[g]) r.empty_at = offset(g) + i;
+          }
           return false;
         }
       }

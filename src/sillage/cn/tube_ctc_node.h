@@ -33,6 +33,7 @@ class TubeCtcNode : public CnNode {
   TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
               std::vector<std::shared_ptr<TubeDomain>> tubes);
   std::string name() const override { return ctc_->name(); }
+  std::string describe() const override { return ctc_->describe(); }
   bool run(NodeRun& r) const override;
 
  private:

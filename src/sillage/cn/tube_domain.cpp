@@ -4,8 +4,10 @@
 
 namespace sillage {
 
-TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)), nb_slices_(x_ ? x_->nb_slices() : 0) {
+TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)) {
   if (!x_) throw Error("ContractorNetwork: null Tube domain");
+  nb_slices_ = x_->nb_slices();
+  td_ = x_->tdomain();
 }
 
 Interval TubeDomain::atom(std::size_t i) const {
@@ -19,6 +21,13 @@ void TubeDomain::set_atom(std::size_t i, const Interval& x) {
   d.touch();
 }
 
+AtomPlace TubeDomain::place(std::size_t i) const {
+  const auto t = x_->tdomain()->times();
+  const std::size_t k = i / 2;
+  if (i & 1) return {"slice", k, Interval(t[k], t[k + 1])};
+  return {"gate", k, Interval(t[k])};
+}
+
 std::string TubeDomain::kind() const { return "Tube(" + std::to_string(nb_slices_) + " slices)"; }
 
 void TubeDomain::check_layout(const std::string& label) const {
@@ -26,6 +35,10 @@ void TubeDomain::check_layout(const std::string& label) const {
     throw DimensionError("ContractorNetwork: " + label + " was registered with " + std::to_string(nb_slices_) +
                          " slices but now has " + std::to_string(x_->nb_slices()) +
                          " (sample the TDomain before building the network)");
+  }
+  if (x_->tdomain() != td_) {
+    throw DimensionError("ContractorNetwork: " + label +
+                         " was registered on another TDomain (assign tubes of the same TDomain)");
   }
 }
 

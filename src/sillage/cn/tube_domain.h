@@ -5,9 +5,10 @@
 // gate on its own.
 //
 // The identity (key()) is the Tube object, which the domain keeps alive: a
-// std::shared_ptr<Tube>, or a component of a shared TubeVector (aliasing
-// pointer). Refining the TDomain after registration changes the layout:
-// check_layout() then throws, as for a resized box.
+// std::shared_ptr<Tube>, or a component of a TubeVector (a heap object of
+// its own, TubeComponentDomain). Refining the TDomain after registration
+// changes the layout, and assigning a tube of another TDomain changes the
+// times of the slices: check_layout() then throws, as for a resized box.
 #include <memory>
 
 #include "sillage/cn/domain.h"
@@ -25,6 +26,9 @@ class TubeDomain : public Domain {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
+  bool layout_changed() const override { return x_->nb_slices() != nb_slices_ || x_->tdomain() != td_; }
+  std::string noun() const override { return "tube"; }
+  AtomPlace place(std::size_t i) const override;
 
   Tube& tube() const { return *x_; }
   const std::shared_ptr<Tube>& object() const { return x_; }
@@ -32,6 +36,7 @@ class TubeDomain : public Domain {
  private:
   std::shared_ptr<Tube> x_;
   std::size_t nb_slices_;
+  std::shared_ptr<TDomain> td_;  // at registration (kept alive: never a reused address)
 };
 
 }  // namespace sillage

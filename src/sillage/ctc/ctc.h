@@ -20,6 +20,9 @@ class Ctc {
   std::size_t nb_vars() const { return nb_vars_; }
   // A short human-readable name, used in error messages ("CtcFunction", ...).
   virtual std::string name() const { return "Ctc"; }
+  // The name and what tells this contractor from others of its class, for
+  // reports such as a network's emptiness explanation ("CtcFunction(x - y)").
+  virtual std::string describe() const { return name(); }
 
  protected:
   // Throws DimensionError naming this contractor when x.size() != nb_vars().

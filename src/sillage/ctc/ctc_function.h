@@ -18,6 +18,7 @@ class CtcFunction : public Ctc {
 
   void contract(IntervalVector& x) const override;
   std::string name() const override { return "CtcFunction"; }
+  std::string describe() const override { return "CtcFunction(" + f_.expr_str() + ")"; }
   const Function& function() const { return f_; }
   const IntervalVector& image() const { return y_; }
 

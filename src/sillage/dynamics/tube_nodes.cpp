@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "sillage/cn/empty_prefix.h"
 #include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/ctc/shrink.h"
@@ -61,9 +62,16 @@ class PairNode : public CnNode {
     for (std::size_t i = 0; i < x_.size(); ++i) {
       Tube& x = x_[i]->tube();
       before_.take(x);
-      const bool ok = ctc_.contract(x, v_[i]->tube());
+      const Tube& v = v_[i]->tube();
+      const bool ok = ctc_.contract(x, v);
       before_.report(x, offset(i), r.ratio, r.changed);
-      if (!ok) return false;
+      if (!ok) {
+        // x is now empty everywhere: find from its former value where it stopped being consistent.
+        const std::size_t a =
+            first_empty_prefix(before_.restore(x.tdomain()), [&](Tube& y) { return ctc_.contract(y, v); });
+        if (a < x_[i]->nb_atoms()) r.empty_at = offset(i) + a;
+        return false;
+      }
     }
     return true;
   }
@@ -141,10 +149,22 @@ class EvalNode : public CnNode {
     for (std::size_t i = 0; i < y_.size(); ++i) {
       for (const std::size_t a : changed[i]) r.changed.push_back(offset(1 + z_args_ + i) + a);
     }
+    if (!ok) locate_empty(r, t0);
     return ok;
   }
 
  private:
+  // An observation found inconsistent: report y's first slice meeting [t].
+  void locate_empty(NodeRun& r, const Interval& t0) const {
+    const TDomain& td = *y_.front()->tube().tdomain();
+    const Interval t = t0 & td.t0_tf();
+    r.empty_time = t0;
+    if (t.is_empty()) return;
+    std::size_t first = 0, last = 0;
+    slice_range(td, t, first, last, "ContractorNetwork(CtcEval)");
+    r.empty_at = offset(1 + z_args_) + 2 * first + 1;
+  }
+
   CtcEval ctc_;
   std::size_t nb_z_ = 0, z_args_ = 0;
   std::vector<std::shared_ptr<TubeDomain>> y_, w_;

@@ -73,6 +73,11 @@ Tube& TubeVector::operator[](std::size_t i) {
 
 const Tube& TubeVector::operator[](std::size_t i) const { return const_cast<TubeVector&>(*this)[i]; }
 
+std::shared_ptr<Tube> TubeVector::shared_component(std::size_t i) {
+  (void)(*this)[i];  // DimensionError when out of range
+  return x_.shared(i);
+}
+
 TubeVector TubeVector::subvector(std::size_t i, std::size_t j) const {
   if (i > j || j >= size()) {
     throw DimensionError("TubeVector::subvector: invalid range [" + std::to_string(i) + ", " + std::to_string(j) +

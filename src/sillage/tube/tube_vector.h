@@ -2,7 +2,9 @@
 // TubeVector: n scalar tubes on one TDomain, an enclosure of vector
 // trajectories x : [t_0, t_N] -> IR^n (thesis 3.2.2). Component i is a Tube,
 // returned by reference (operator[]) so that it can be read and contracted in
-// place. Value semantics like Tube.
+// place. Value semantics like Tube. Each component is a heap object of its
+// own (TubeComponents): references to it stay valid when a new value is
+// assigned to the vector, which is what a ContractorNetwork relies on.
 #include <cstddef>
 #include <iosfwd>
 #include <memory>
@@ -11,6 +13,7 @@
 
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/trajectory.h"
+#include "sillage/tube/tube_components.h"
 #include "sillage/tube/tube.h"
 
 namespace sillage {
@@ -35,6 +38,9 @@ class TubeVector {
   // Component i, a live reference (Error if i >= size()).
   Tube& operator[](std::size_t i);
   const Tube& operator[](std::size_t i) const;
+  // Component i shared: the same object as (*this)[i], alive as long as
+  // someone holds it (Error if i >= size()).
+  std::shared_ptr<Tube> shared_component(std::size_t i);
   // Components i..j (inclusive, like IntervalVector::subvector), copied.
   TubeVector subvector(std::size_t i, std::size_t j) const;
 
@@ -62,7 +68,7 @@ class TubeVector {
 
  private:
   void check_size(std::size_t n, const char* where) const;
-  std::vector<Tube> x_;
+  TubeComponents x_;
 };
 
 std::ostream& operator<<(std::ostream& os, const TubeVector& x);

@@ -1,0 +1,29 @@
+#pragma once
+// Shared checks of the C++ examples. An empty network is an answer (no
+// solution fits the bounds and the data), printed with its explanation, never
+// a success; a truth check proves something only on a non-empty, bounded
+// enclosure ("100 % inside" an empty or unbounded tube proves nothing).
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "sillage/cn/contractor_network.h"
+
+namespace example {
+
+// True if the network is not empty; otherwise prints why (stats.emptiness).
+inline bool check_stats(const sillage::ContractStats& s, const std::string& label = "") {
+  if (!s.empty) return true;
+  std::printf("  %sEMPTY: %s (no solution: the bounds or the data are inconsistent)\n",
+              label.empty() ? "" : (label + ": ").c_str(), s.emptiness.c_str());
+  return false;
+}
+
+inline bool enclosure_ok(const sillage::IntervalVector& x) { return !x.is_empty() && !x.is_unbounded(); }
+inline bool enclosure_ok(const sillage::Tube& x) {
+  const sillage::Interval c = x.codomain();
+  return !x.is_empty() && std::isfinite(c.lb()) && std::isfinite(c.ub());
+}
+inline bool enclosure_ok(const sillage::TubeVector& x) { return !x.is_empty() && enclosure_ok(x.codomain()); }
+
+}  // namespace example

@@ -1,0 +1,28 @@
+#include "sillage/cn/empty_prefix.h"
+
+namespace sillage {
+
+std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& contract) {
+  const std::size_t nb_atoms = 2 * x.nb_slices() + 1;
+  // Atoms after `last` released to the whole line.
+  const auto empty_up_to = [&](std::size_t last) {
+    Tube y = x;
+    TubeData& d = y.data();
+    for (std::size_t a = last + 1; a < nb_atoms; ++a) ((a & 1) ? d.slices[a / 2] : d.gates[a / 2]) = Interval();
+    y.touch();
+    return !contract(y);
+  };
+  if (!empty_up_to(nb_atoms - 1)) return nb_atoms;
+  std::size_t lo = 0, hi = nb_atoms - 1;  // empty_up_to(hi) holds
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (empty_up_to(mid)) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  return hi;
+}
+
+}  // namespace sillage
