@@ -31,7 +31,7 @@ void BM_Plaza1(benchmark::State& state) {
   }
   const bool with_ranges = state.range(0) == 1;
   plaza1::Solution s;
-  for (auto _ : state) s = plaza1::solve(*data(), plaza1::Bounds{}, with_ranges);
+  for (auto _ : state) s = plaza1::solve(*data(), plaza1::with_start({}, *data()), with_ranges);
   state.counters["iterations"] = static_cast<double>(s.stats.iterations);
   state.counters["calls"] = static_cast<double>(s.stats.contractor_calls);
   state.counters["ranges"] = static_cast<double>(s.nb_ranges);

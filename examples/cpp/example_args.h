@@ -13,6 +13,9 @@
 #include <utility>
 #include <vector>
 
+// The bound options of the plaza1 examples (plaza1_bounds.h checks that its table matches).
+#define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-bias=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X"
+
 namespace example {
 
 // The options of each example beyond --out, by program name (without the
@@ -22,8 +25,8 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
   static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
       {"drifting_clock", {"--dt=X", "--ratio=X"}},
       {"lowcost_beacons", {"--dt=X", "--ratio=X"}},
-      {"plaza1", {"--data"}},
-      {"loops_plaza1", {"--data", "--eps-div=X"}},
+      {"plaza1", {"--data", PLAZA1_BOUND_OPTIONS}},
+      {"loops_plaza1", {"--data", "--eps-div=X", "--track-err=X", "--reverse-below=X", "--glitch-above=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
       {"loops_utias", {"--data", "--robot"}},
       {"outliers_ranges", {"--eps=X"}},

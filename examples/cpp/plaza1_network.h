@@ -9,13 +9,14 @@
 //   p(t_{k+1}) − p(t_k) ∈ i(k)                       (CtcIncrement)
 //   v = s (cos ψ, sin ψ), s ∈ [0, s_max]; p' = v     (pointwise; CtcDeriv: slices)
 //   for each range j: q_j = p(t_j), t_j ∈ stamp ± τ  (CtcEval)
-//                     |q_j − beacon| ∈ r_j − [e⁻, e⁺] (pointwise on the box q_j)
+//                     |q_j − beacon| ∈ r_j − [−e_short, e_long] (pointwise on the box q_j)
 // ∫ d cos ψ over a slice lies in d_k cos([ψ](k)) since the speed is >= 0.
 #include <cmath>
 #include <memory>
 #include <vector>
 
 #include "example_check.h"
+#include "plaza1_bounds.h"
 #include "plaza1_data.h"
 #include "slice_tube.h"
 #include "sillage/cn/contractor_network.h"
@@ -29,23 +30,7 @@ namespace plaza1 {
 
 using namespace sillage;
 
-// The error model, and why.
-struct Bounds {
-  double pos0 = 0.1;        // m: the start is the ground-truth origin
-  double heading0 = 0.05;   // rad: initial heading from the ground truth
-  double gyro_bias = 5e-4;  // rad/s: the heading of the odometry drifts by -0.35 mrad/s on average
-  double turn_max = 0.8;    // rad/s: the odometry turn rates stay within [-0.71, 0.60]
-  double dist_rel = 0.02;   // odometer scale error (the total distance is within 0.12 % of the truth)
-  // m per period: the odometry may count distance the robot did not travel. Standing still at the
-  // start it counts 0.17 m in 229 periods, up to 7 cm in one, while the ground truth moves by 7 mm
-  // (wheel slip); so the true distance may be up to dist_over less than counted, never negative.
-  double dist_over = 0.07, dist_under = 0.001;
-  double speed_max = 5.0;   // m/s: the robot's speed (mean per period <= 4.4 m/s, time-stamp jitter included)
-  // Range error measured - true in [err_lo, err_hi]: the radio ranges are biased long by about 2.8 m; over
-  // this run the error spans [-0.63, 6.57] m (antenna offset and timing included), widened by 0.4 m.
-  double range_err_lo = -1.0, range_err_hi = 7.0;
-  double time_err = 0.2;  // s: range time stamps (the best time shift is 0 to within 0.25 s)
-};
+// The error model: plaza1_bounds.h (the table of bounds and their sources).
 
 // The position tube at the fixed point, and what it took.
 struct Solution {
@@ -68,14 +53,14 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
               Interval(0, INFINITY);
   }
   auto psi = std::make_shared<Tube>(td);
-  psi->set_gate(0, Interval(d.heading[0]) + Interval(-b.heading0, b.heading0));
+  psi->set_gate(0, Interval(b.start_heading) + Interval(-b.heading0, b.heading0));
   auto dpsi_t = std::make_shared<Tube>(slice_tube(td, dpsi));
   auto omega = std::make_shared<Tube>(td, Interval(-b.turn_max, b.turn_max));
   auto speed = std::make_shared<Tube>(td, Interval(0, b.speed_max));
   auto v = std::make_shared<TubeVector>(td, 2);
   Solution s;
   s.p = std::make_shared<TubeVector>(td, 2);
-  s.p->set_gate(0, IntervalVector{{d.x[0] - b.pos0, d.x[0] + b.pos0}, {d.y[0] - b.pos0, d.y[0] + b.pos0}});
+  s.p->set_gate(0, IntervalVector{{b.start_x - b.pos0, b.start_x + b.pos0}, {b.start_y - b.pos0, b.start_y + b.pos0}});
 
   // The heading first: nothing flows back to it from the positions.
   ContractorNetwork heading;
@@ -107,7 +92,7 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
       const Interval tj = Interval(d.rt[j] - b.time_err, d.rt[j] + b.time_err) & td->t0_tf();
       if (tj.is_empty()) continue;
       const auto [bx, by] = d.beacons.at(static_cast<int>(d.rid[j]));
-      const Interval range = Interval(d.r[j] - b.range_err_hi, d.r[j] - b.range_err_lo) & Interval(0, INFINITY);
+      const Interval range = Interval(d.r[j] - b.range_long, d.r[j] + b.range_short) & Interval(0, INFINITY);
       const Function dist_to_beacon({"q1", "q2"}, "sqrt((q1 - " + number_text(bx) + ")^2 + (q2 - " +
                                                       number_text(by) + ")^2)");
       const auto q = std::make_shared<IntervalVector>(2);

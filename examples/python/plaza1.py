@@ -2,24 +2,18 @@
 to point elsewhere). Dead reckoning from the odometry (distance and drifting
 heading change per period), then the same plus the 3529 radio ranges to 4
 beacons, each at an uncertain time (CtcEval). The same network and stated error
-bounds as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
+bounds (plaza1_bounds.py, the table of examples/cpp/plaza1_bounds.h; each one an
+option) as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
 the position tube. Figures: the map (tube, truth, beacons) and the thickness."""
 import math
 import time
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir_and_data, print_result
+import plaza1_bounds
+from bound_audit import print_audit
+from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
 from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcIncrement, Function, Interval,
                      IntervalVector, TDomain, Tube, TubeVector)
-
-# The error model (see the C++ example for the reasons of each value).
-POS0, HEADING0 = 0.1, 0.05            # m, rad: the start, from the ground truth
-GYRO_BIAS, TURN_MAX = bound(5e-4), 0.8  # rad/s
-DIST_REL, DIST_OVER, DIST_UNDER = bound(0.02), bound(0.07), bound(0.001)
-SPEED_MAX = 5.0                       # m/s
-RANGE_ERR = (bound(-1.0), bound(7.0))  # measured - true, m: ranges biased long
-TIME_ERR = 0.2                        # s
-
 
 def load(folder):
     gt, odo = CsvTable.read(str(folder / "ground_truth.csv")), CsvTable.read(str(folder / "odometry.csv"))
@@ -37,26 +31,28 @@ def slice_tube(td, slices):
     return Tube(td, slices, gates)
 
 
-def solve(d, with_ranges):
+def solve(d, with_ranges, b=None):
+    """The position tube at the fixed point with the bounds b (default: the table)."""
+    b = b or plaza1_bounds.bounds(None, d)
     t0 = time.process_time()
     td = TDomain(list(d["t"]))
     n = td.nb_slices()
     widths = [td.slice_width(k) for k in range(n)]
-    dpsi = [Interval(d["dpsi"][k]) + widths[k] * Interval(-GYRO_BIAS, GYRO_BIAS) for k in range(n)]
-    dist = [(Interval(d["dist"][k]) * Interval(1 - DIST_REL, 1 + DIST_REL) + Interval(-DIST_OVER, DIST_UNDER))
+    dpsi = [Interval(d["dpsi"][k]) + widths[k] * Interval(-b.gyro_bias, b.gyro_bias) for k in range(n)]
+    dist = [(Interval(d["dist"][k]) * Interval(1 - b.dist_rel, 1 + b.dist_rel) + Interval(-b.dist_over, b.dist_under))
             & Interval(0, math.inf) for k in range(n)]
     psi = Tube(td)
-    psi.set_gate(0, Interval(d["heading"][0]) + Interval(-HEADING0, HEADING0))
+    psi.set_gate(0, Interval(b.start_heading) + Interval(-b.heading0, b.heading0))
     heading = sillage.ContractorNetwork()
     heading.add(CtcIncrement(), [psi, slice_tube(td, dpsi)])
-    heading.add(CtcDeriv(), [psi, Tube(td, Interval(-TURN_MAX, TURN_MAX))])
+    heading.add(CtcDeriv(), [psi, Tube(td, Interval(-b.turn_max, b.turn_max))])
     check_stats(heading.contract(), "heading")  # empty: psi is empty, and cn says so on input
     # increments of p per slice, slice by slice
     inc = TubeVector([slice_tube(td, [dist[k] * sillage.cos(psi.slice(k)) for k in range(n)]),
                       slice_tube(td, [dist[k] * sillage.sin(psi.slice(k)) for k in range(n)])])
-    speed, v, p = Tube(td, Interval(0, SPEED_MAX)), TubeVector(td, 2), TubeVector(td, 2)
-    p.set_gate(0, IntervalVector([Interval(d["x"][0] - POS0, d["x"][0] + POS0),
-                                  Interval(d["y"][0] - POS0, d["y"][0] + POS0)]))
+    speed, v, p = Tube(td, Interval(0, b.speed_max)), TubeVector(td, 2), TubeVector(td, 2)
+    p.set_gate(0, IntervalVector([Interval(b.start_x - b.pos0, b.start_x + b.pos0),
+                                  Interval(b.start_y - b.pos0, b.start_y + b.pos0)]))
     cn = sillage.ContractorNetwork()
     cn.add(CtcFunction(Function(["a", "s", "h"], "a - s*cos(h)")), [v[0], speed, psi])
     cn.add(CtcFunction(Function(["a", "s", "h"], "a - s*sin(h)")), [v[1], speed, psi])
@@ -69,10 +65,10 @@ def solve(d, with_ranges):
     if with_ranges:
         ev = CtcEval()
         for tj, bid, r in zip(d["rt"], d["rid"], d["r"]):
-            t = Interval(tj - TIME_ERR, tj + TIME_ERR) & td.t0_tf()
+            t = Interval(tj - b.time_err, tj + b.time_err) & td.t0_tf()
             bx, by = d["beacons"][int(bid)]
             q = IntervalVector(2)
-            rng = Interval(r - RANGE_ERR[1], r - RANGE_ERR[0]) & Interval(0, math.inf)
+            rng = Interval(r - b.range_long, r + b.range_short) & Interval(0, math.inf)
             cn.add(ev, [t, q, p, v])
             cn.add(CtcFunction(Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)"), rng), [q])
             cn.set_name(q, f"q{len(keep)} (beacon {int(bid)} seen at t = {tj:.2f})")
@@ -86,15 +82,18 @@ def solve(d, with_ranges):
 
 
 def main():
-    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1")
+    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1", plaza1_bounds.add_options)
     if parsed is None:
         return
-    out, folder, _ = parsed
+    out, folder, args = parsed
     d = load(folder)
-    ok, summary, figures = True, "", []
+    b = plaza1_bounds.bounds(args, d)
+    # The audit reports; it changes no bound. A bound the truth violates voids the guarantee,
+    # even if the truth happens to stay inside: a failure.
+    ok, summary, figures = print_audit("plaza1", plaza1_bounds.audit(d, b)), "", []
     truth = (sillage.Trajectory(list(d["t"]), list(d["x"])), sillage.Trajectory(list(d["t"]), list(d["y"])))
     for with_ranges in (False, True):
-        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges)
+        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b)
         n = len(d["t"])
         label = "odometry + ranges" if with_ranges else "odometry only"
         print(f"{label}: {nr} ranges, {stats.iterations} rounds, {stats.contractor_calls} contractor runs, "

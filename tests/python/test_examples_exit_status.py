@@ -15,7 +15,8 @@ ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples" / "python"
 DATA = ROOT.parent / "shared" / "data"
 NEEDS_DATA = {"plaza1.py": "plaza1", "loops_plaza1.py": "plaza1"}
-ALL = sorted(p.name for p in EXAMPLES.glob("*.py") if p.name != "example_args.py")
+HELPERS = {"example_args.py", "bound_audit.py", "plaza1_bounds.py"}  # modules of the examples, not examples
+ALL = sorted(p.name for p in EXAMPLES.glob("*.py") if p.name not in HELPERS)
 
 
 def run(name, tmp_path, *args, tighten=None):
