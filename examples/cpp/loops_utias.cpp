@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "bound_audit.h"
 #include "loops_figures.h"
 #include "loops_real_data.h"
 #include "sillage/io/csv.h"
@@ -79,7 +80,13 @@ double interpolate(const std::vector<double>& ts, const std::vector<double>& xs,
   return xs[i - 1] + (xs[i] - xs[i - 1]) * (t - ts[i - 1]) / (ts[i] - ts[i - 1]);
 }
 
-TubeVector utias_velocity(const Robot& r, const std::shared_ptr<TDomain>& td, const Bounds& b) {
+// The velocity tube; with `audit`, also how much of the heading bound the
+// Vicon truth used (bound_audit.h; it changes no bound). The speed bound is
+// not audited per slice: the Vicon reference point is off the wheel axis and
+// moves while a robot turns on the spot (the 2 cm tolerance of the check).
+TubeVector utias_velocity(const Robot& r, const std::shared_ptr<TDomain>& td, const Bounds& b,
+                          std::vector<example::AuditLine>* audit = nullptr) {
+  double heading_used = 0;
   const std::size_t n = td->nb_slices();
   std::vector<Interval> speed(n), heading(n);
   // ψ̂ is piecewise linear (commands held): over a slice its hull is that of
@@ -106,6 +113,14 @@ TubeVector utias_velocity(const Robot& r, const std::shared_ptr<TDomain>& td, co
     double vmax = 0;
     for (; i < r.ct.size() && r.ct[i] < end; ++i) vmax = std::max(vmax, r.v[i]);
     speed[k] = Interval(0, (Interval(vmax) * (1 + b.speed_rel) + b.speed_abs).ub());
+    if (audit) {
+      const double err = std::abs(interpolate(r.truth.t, r.heading, end) - psi.mid()) - b.heading_start;
+      heading_used = std::max(heading_used, err / (end - td->t0()));
+    }
+  }
+  if (audit) {
+    audit->push_back({"heading drift", "rad/s", b.heading_rate, heading_used,
+                      "(|commanded heading - Vicon| - start error) / (t - t0), at the slice ends"});
   }
   return example::velocity_tube(td, speed, heading);
 }
@@ -155,7 +170,9 @@ int main(int argc, char** argv) {
     // Crossings counted as in the data README: points at least 5 cm apart.
     const example::Path thin = example::thinned(truth, 0.05);
     const auto crossings = self_crossings(thin.t, thin.x, thin.y);
-    const TubeVector v = utias_velocity(r, td, b);
+    std::vector<example::AuditLine> audit;
+    const TubeVector v = utias_velocity(r, td, b, &audit);
+    ok = example::print_audit("loops_utias robot " + std::to_string(id), audit) && ok;
     const auto ic = example::check_integrals(v, truth, example::check_pairs(truth, 100, 5.0, 10), crossings, tol_m);
     const example::LoopRun run = example::run_loops(td, eps, v, crossings, tol_s);
     const sillage::TPlane& tp = run.tplane;
