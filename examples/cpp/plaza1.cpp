@@ -31,6 +31,8 @@ struct Result {
   ContractStats stats;
   double cpu = 0;
   std::size_t inside = 0, nb_ranges = 0;
+  std::shared_ptr<Tube> psi;
+  std::size_t feedback_rounds = 0, feedback_gates = 0;
   double mean_diam = 0, max_diam = 0;
 };
 
@@ -41,6 +43,8 @@ Result solve_and_check(const Plaza1Data& d, const Bounds& b, bool with_ranges) {
   res.p = sol.p;
   res.stats = sol.stats;
   res.nb_ranges = sol.nb_ranges;
+  res.psi = sol.psi;
+  res.feedback_rounds = sol.feedback_rounds, res.feedback_gates = sol.feedback_gates;
   res.cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
 
   // Ground truth at every time point, and the size of the position boxes.
@@ -84,6 +88,25 @@ int main(int argc, char** argv) {
     std::printf("  ground truth inside at %zu / %zu time points (%.1f %%); position box diameter mean %.2f m, max %.2f m\n",
                 r.inside, n, 100.0 * static_cast<double>(r.inside) / static_cast<double>(n), r.mean_diam, r.max_diam);
     ok = ok && answered && r.inside == n;
+    if (r.feedback_rounds > 0) {
+      std::printf("  heading from positions: %zu rounds, %zu heading gates contracted\n", r.feedback_rounds,
+                  r.feedback_gates);
+    }
+    // Over time: the box diameter, and when the heading is first known to +-0.1 rad.
+    std::printf("  position box diameter at t0 +");
+    for (const double dt : {0.0, 10.0, 30.0, 60.0, 120.0, 300.0, 600.0, 1200.0}) {
+      const std::size_t k = static_cast<std::size_t>(std::lower_bound(d.t.begin(), d.t.end(), d.t[0] + dt) - d.t.begin());
+      if (k < n) std::printf(" %.0f s: %.1f m;", dt, r.p->gate(k).max_diam());
+    }
+    std::size_t known = 0;
+    double first_known = NAN, narrowest = INFINITY;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (r.psi->gate(k).diam() <= 0.2) ++known, first_known = std::isnan(first_known) ? d.t[k] - d.t[0] : first_known;
+      if (d.t[k] >= d.t[0] + 60) narrowest = std::min(narrowest, r.psi->gate(k).diam());
+    }
+    std::printf("\n  heading known to +-0.1 rad at %zu of %zu time points", known, n);
+    if (known > 0) std::printf(", first at t0 + %.1f s", first_known);
+    std::printf("; narrowest heading after t0 + 60 s: +-%.2f rad\n", narrowest / 2);
     char buf[200];
     std::snprintf(buf, sizeof buf, "%s: truth inside %.1f %%, mean/max box diameter %.2f/%.2f m, %.2f s; ", label,
                   100.0 * static_cast<double>(r.inside) / static_cast<double>(n), r.mean_diam, r.max_diam, r.cpu);

@@ -32,6 +32,14 @@ struct Bounds {
   double range_short = 1.5; // m: measured - true >= -range_short
   double range_long = 10.0; // m: measured - true <= range_long
   double time_err = 0.2;    // s: time stamps of the ranges
+  double track = 0.05;      // rad: direction of travel vs heading
+  double turn_accel = 10.0; // rad/s^2
+  // Heading from positions (plaza1_network.h): windows of feedback_window
+  // seconds (0: off), every feedback_stride slices, cells of feedback_cell.
+  double feedback_window = 0;  // s
+  std::size_t feedback_stride = 5;
+  double feedback_cell = 0.01;  // rad
+  int feedback_rounds = 10;
 };
 
 struct BoundSpec {
@@ -70,6 +78,13 @@ inline const std::vector<BoundSpec>& bound_table() {
        "plaza"},
       {"--time-jitter", "time-stamp error", "s", &Bounds::time_err,
        "logging PC (not real-time): reports of a serial radio reach it up to 0.2 s late or early"},
+      {"--track-err", "track error", "rad", &Bounds::track,
+       "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"},
+      // Used by the heading from positions only (C++, --heading-window).
+      {"--turn-accel", "turn acceleration", "rad/s^2", &Bounds::turn_accel,
+       "traction-limited wheels (<= 5 m/s^2) on a 1 m track: at most 2 * 5 / 1 rad/s^2"},
+      {"--heading-window", "heading-from-positions window", "s", &Bounds::feedback_window,
+       "not a bound: 0 = off; windows of this length give the heading from the positions (C++ only)"},
   };
   return t;
 }
@@ -89,8 +104,20 @@ inline Bounds with_start(Bounds b, const example::Plaza1Data& d) {
   return b;
 }
 
+// An unknown start: anywhere within 10 m of the beacons' bounding box (the
+// area they were set around), any heading.
+inline Bounds unknown_start(Bounds b, const example::Plaza1Data& d) {
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const auto& [id, xy] : d.beacons) {
+    x0 = std::min(x0, xy.first), x1 = std::max(x1, xy.first), y0 = std::min(y0, xy.second), y1 = std::max(y1, xy.second);
+  }
+  b.start_x = (x0 + x1) / 2, b.start_y = (y0 + y1) / 2, b.pos0 = std::max(x1 - x0, y1 - y0) / 2 + 10;
+  b.start_heading = 0, b.heading0 = M_PI;
+  return b;
+}
+
 // The bounds, each overridden by its option; the start defaults to the first
-// ground-truth sample.
+// ground-truth sample (--unknown-start 1: unknown_start).
 inline Bounds bounds_from_args(int argc, char** argv, const example::Plaza1Data& d) {
   Bounds b;
   const auto accepted = example::accepted_options(example::program_name(argc > 0 ? argv[0] : nullptr));
@@ -100,6 +127,7 @@ inline Bounds bounds_from_args(int argc, char** argv, const example::Plaza1Data&
     }
     b.*s.field = example::option_number(argc, argv, s.option, b.*s.field);
   }
+  if (example::option_number(argc, argv, "--unknown-start", 0) != 0) b = unknown_start(b, d);
   return with_start(b, d);
 }
 

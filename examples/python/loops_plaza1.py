@@ -32,7 +32,6 @@ from sillage.plot_loops import LOOP_COLOURS, plot_tplane
 # The bounds of the loops models beyond plaza1_bounds.py (each an option; the same as
 # LoopsBounds of the C++ example): (option, attribute, value, source).
 LOOPS_TABLE = [
-    ("--track-err", "track", 0.05, "rad: direction of travel vs heading, side slip and INS heading error class (3 deg)"),
     ("--reverse-below", "reverse_below", 0.5,
      "m/s: the odometer distance is unsigned; below this speed the robot may go either way (backing up is slow)"),
     ("--glitch-above", "glitch_above", 2.0,
@@ -47,13 +46,13 @@ def models(b, args):
     the tolerance TOL_M."""
     table = (b.dist_rel, b.dist_over, b.dist_under)
     return [
-        ("ins_wide", f"(a) INS heading +-{args.track:g} rad, odometer d (1 +- {100 * b.dist_rel:g} %) - "
-                     f"{b.dist_over:g} m", False, table, (True, args.track, 0.0, 0.0)),
+        ("ins_wide", f"(a) INS heading +-{b.track:g} rad, odometer d (1 +- {100 * b.dist_rel:g} %) - "
+                     f"{b.dist_over:g} m", False, table, (True, b.track, 0.0, 0.0)),
         ("ins_tight", "(a) calibrated on this run: INS heading +-0.01 rad, odometer d (1 +- 0.5 %) - 5 mm", False,
          (bound(0.005), bound(0.005), bound(0.001)), (True, bound(0.01), 0.0, 0.0)),
-        ("gyro", f"(b) drifting heading +-({args.track + b.heading0:g} + {b.gyro_bias:g} t) rad, odometer d "
+        ("gyro", f"(b) drifting heading +-({b.track + b.heading0:g} + {b.gyro_bias:g} t) rad, odometer d "
                  f"(1 +- {100 * b.dist_rel:g} %) - {b.dist_over:g} m", True, table,
-         (False, args.track, b.heading0, b.gyro_bias)),
+         (False, b.track, b.heading0, b.gyro_bias)),
     ]
 
 
@@ -309,11 +308,11 @@ def main():
           "(path thinned to 0.2 m)")
 
     b = plaza1_bounds.bounds(args, d)
-    args.track = bound(args.track)
     # The audit reports; it changes no bound. A bound of the honest model (b) that the truth
-    # violates is a failure; the track bound is used by the (a) models only (the heading of the truth).
+    # violates is a failure. The track audit compares the truth with its own heading, the heading of
+    # the (a) models, which are not checked exactly: it is printed, not counted.
     ok, summary, figures = print_audit("loops_plaza1", plaza1_bounds.audit(d, b)), "", []
-    print("  (models (a) only) " + plaza1_bounds.track_audit(d, args.track, args.reverse_below,
+    print("  (models (a) only) " + plaza1_bounds.track_audit(d, b.track, args.reverse_below,
                                                              args.glitch_above).text())
     for tag, name, honest, speed_bounds, heading_bounds in models(b, args):
         v = velocity_tube(d, td, speed_bounds, heading_bounds, b.start_heading, args.reverse_below,

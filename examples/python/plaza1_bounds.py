@@ -40,11 +40,16 @@ TABLE = [
      "plaza"),
     ("--time-jitter", "time_err", "time-stamp error", "s", 0.2,
      "logging PC (not real-time): reports of a serial radio reach it up to 0.2 s late or early"),
+    ("--track-err", "track", "track error", "rad", 0.05,
+     "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"),
 ]
+# The C++ table has two more, used by its heading from positions only: --turn-accel, --heading-window.
 
 
 def add_options(ap):
-    """One --option per bound (argparse)."""
+    """One --option per bound (argparse), and --unknown-start."""
+    ap.add_argument("--unknown-start", type=float, default=0, metavar="X",
+                    help="1: start anywhere within 10 m of the beacons' bounding box, any heading")
     for option, attr, name, unit, value, source in TABLE:
         ap.add_argument(option, dest=attr, type=float, default=value, metavar="X",
                         help=f"{name} [{unit or '1'}] (default {value:g}): {source}".replace("%", "%%"))
@@ -60,6 +65,11 @@ def bounds(args, d):
         setattr(b, attr, default if value is None else value)
         if not attr.startswith("start_"):
             setattr(b, attr, bound(getattr(b, attr)))
+    if args is not None and getattr(args, "unknown_start", 0):
+        bx, by = [p[0] for p in d["beacons"].values()], [p[1] for p in d["beacons"].values()]
+        b.start_x, b.start_y = (min(bx) + max(bx)) / 2, (min(by) + max(by)) / 2
+        b.pos0 = max(max(bx) - min(bx), max(by) - min(by)) / 2 + 10
+        b.start_heading, b.heading0 = 0.0, math.pi
     b.start_x = d["x"][0] if math.isnan(b.start_x) else b.start_x
     b.start_y = d["y"][0] if math.isnan(b.start_y) else b.start_y
     b.start_heading = d["heading"][0] if math.isnan(b.start_heading) else b.start_heading

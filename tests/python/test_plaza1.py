@@ -44,3 +44,28 @@ def test_ten_times_the_drift_stays_inside():
     _, stats0, _, inside0, _, _, _ = plaza1.solve(d, False, fitted)
     _, stats1, _, _, _, _, _ = plaza1.solve(d, True, fitted)
     assert inside0 < len(t) and stats1.empty
+
+
+@pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
+def test_unknown_start_keeps_the_truth(tmp_path):
+    """--unknown-start 1: anywhere within 10 m of the beacons' bounding box, any heading. The truth
+    stays inside (Python); in C++ also with the heading from positions (--heading-window 20)."""
+    import argparse
+    import subprocess
+    import plaza1_bounds
+    import sillage
+    d = plaza1.load(DATA)
+    ap = argparse.ArgumentParser()
+    plaza1_bounds.add_options(ap)
+    b = plaza1_bounds.bounds(ap.parse_args(["--unknown-start", "1"]), d)
+    assert b.heading0 == pytest.approx(3.14159, abs=1e-4) and b.pos0 > 40
+    _, stats, _, inside, mean1, _, _ = plaza1.solve(d, True, b)
+    assert not stats.empty and inside == len(d["t"]) and mean1 < 30
+    exe = Path(sillage.__file__).resolve().parents[2] / "examples" / "example_plaza1"
+    if not exe.exists():
+        pytest.skip(f"{exe} is not built")
+    r = subprocess.run([str(exe), "--out", str(tmp_path), "--unknown-start", "1", "--heading-window", "20"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stdout[-2000:]
+    assert "heading from positions:" in r.stdout
+    assert r.stdout.count("ground truth inside at 9658 / 9658") == 2
