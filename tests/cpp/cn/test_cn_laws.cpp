@@ -61,10 +61,18 @@ kit::OrderedContract tube_network(double ratio) {
     const auto eval = std::make_shared<CtcEval>();
     for (std::size_t part : order) {
       switch (part) {
-        case 0: cn.add(std::make_shared<CtcDeriv>(), {x, v}); break;
-        case 1: cn.add(eval, {t1, z1, x, v}); break;
-        case 2: cn.add(eval, {t2, z2, x, v}); break;
-        default: cn.add(std::make_shared<CtcFunction>(Function({"x", "y"}, "y - x^2")), {x, y}); break;
+        case 0:
+          cn.add(std::make_shared<CtcDeriv>(), {x, v});
+          break;
+        case 1:
+          cn.add(eval, {t1, z1, x, v});
+          break;
+        case 2:
+          cn.add(eval, {t2, z2, x, v});
+          break;
+        default:
+          cn.add(std::make_shared<CtcFunction>(Function({"x", "y"}, "y - x^2")), {x, y});
+          break;
       }
     }
     const ContractStats s = cn.contract();
@@ -118,9 +126,15 @@ kit::OrderedContract box_network(double ratio) {
     cn.set_ratio(ratio);
     for (std::size_t part : order) {
       switch (part) {
-        case 0: cn.add(std::make_shared<CtcFunction>(Function({"a", "b", "c"}, "a + b - c")), {v[0], v[1], v[2]}); break;
-        case 1: cn.add(std::make_shared<CtcFunction>(Function({"c", "d"}, "c * d - 1")), {v[2], v[3]}); break;
-        default: cn.add(std::make_shared<CtcFunction>(Function({"a", "b"}, "b - sin(a)")), {v[0], v[1]}); break;
+        case 0:
+          cn.add(std::make_shared<CtcFunction>(Function({"a", "b", "c"}, "a + b - c")), {v[0], v[1], v[2]});
+          break;
+        case 1:
+          cn.add(std::make_shared<CtcFunction>(Function({"c", "d"}, "c * d - 1")), {v[2], v[3]});
+          break;
+        default:
+          cn.add(std::make_shared<CtcFunction>(Function({"a", "b"}, "b - sin(a)")), {v[0], v[1]});
+          break;
       }
     }
     cn.contract();

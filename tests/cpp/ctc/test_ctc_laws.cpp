@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <memory>
-#include <string>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "kit/contractor_kit.h"
@@ -110,7 +110,8 @@ void ranges_contract(kit::Domains& d) {
   std::vector<CtcPtr> list;
   for (std::size_t i = 1; i < d.size(); ++i) {
     const auto& b = std::get<IntervalVector>(d[i]);
-    const Function f({"x", "y"}, "sqrt((x - " + std::to_string(b[0].lb()) + ")^2 + (y - " + std::to_string(b[1].lb()) + ")^2)");
+    const Function f({"x", "y"},
+                     "sqrt((x - " + std::to_string(b[0].lb()) + ")^2 + (y - " + std::to_string(b[1].lb()) + ")^2)");
     list.push_back(std::make_shared<CtcFunction>(f, b[2]));
   }
   CtcQInter(list, 1).contract(std::get<IntervalVector>(d[0]));

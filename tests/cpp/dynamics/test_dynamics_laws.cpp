@@ -81,6 +81,17 @@ TEST(DynamicsLaws, CtcDerivRestricted) {
   EXPECT_TRUE(kit::check_laws(contract, deriv_case, o));
 }
 
+TEST(DynamicsLaws, CtcDerivOverATimeInterval) {
+  const auto contract = [](kit::Domains& d) {
+    // Inside [t_0, t_N]: at least 30 slices of 0.05 at least.
+    CtcDeriv().contract(std::get<Tube>(d[0]), std::get<Tube>(d[1]), Interval(0.7, 1.4));
+  };
+  auto o = deriv_options(kit::Idempotence::Exact);
+  o.outputs = {};  // an empty v outside [0.7, 1.4] is not read
+  o.empty_inputs = false;
+  EXPECT_TRUE(kit::check_laws(contract, deriv_case, o));
+}
+
 TEST(DynamicsLaws, CtcDerivVector) {
   const auto gen = [](std::mt19937_64& rng) {
     const SineSum f(rng), g(rng);
@@ -136,6 +147,47 @@ TEST(DynamicsLaws, CtcEvalSamplingTheTDomain) {
   o.idempotence = kit::Idempotence::ContractionOnly;
   o.outputs = {0, 1, 2};
   EXPECT_TRUE(kit::check_laws(eval(true), eval_case, o));
+}
+
+TEST(DynamicsLaws, CtcEvalWithoutDerivative) {
+  // Only [t], [z] and the gate at a time point t are contracted.
+  const auto contract = [](kit::Domains& d) {
+    CtcEval().contract(std::get<Interval>(d[0]), std::get<Interval>(d[1]), std::get<Tube>(d[2]));
+  };
+  kit::Options o;
+  o.cases = 30;
+  o.idempotence = kit::Idempotence::ContractionOnly;
+  o.outputs = {0, 1, 2};
+  o.skip_empty = o.skip_unbounded = {3};  // w is not used
+  EXPECT_TRUE(kit::check_laws(contract, eval_case, o));
+}
+
+TEST(DynamicsLaws, CtcEvalVector) {
+  // z = y(t) in 2-d with one t: domains t, z, y, w.
+  const auto gen = [](std::mt19937_64& rng) {
+    const SineSum f(rng), g(rng);
+    const auto td = kit::random_tdomain(rng, 20);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double ts = td->t(0) + u(rng) * (td->t(td->nb_slices()) - td->t(0));
+    const IntervalVector z{f.x(Interval(ts)), g.x(Interval(ts))};
+    kit::Case c;
+    c.domains = {kit::around(Interval(ts), rng, 1.0),
+                 IntervalVector{kit::around(z[0], rng, 0.3), kit::around(z[1], rng, 0.3)},
+                 TubeVector({kit::tube_around(td, pos(f), rng, 0.5, 0.4), kit::tube_around(td, pos(g), rng, 0.5, 0.4)}),
+                 TubeVector({kit::tube_around(td, vel(f), rng, 0.5), kit::tube_around(td, vel(g), rng, 0.5)})};
+    c.truth = {Interval(ts), z, std::vector<kit::Trajectory1>{pos(f), pos(g)},
+               std::vector<kit::Trajectory1>{vel(f), vel(g)}};
+    return c;
+  };
+  const auto contract = [](kit::Domains& d) {
+    CtcEval().contract(std::get<Interval>(d[0]), std::get<IntervalVector>(d[1]), std::get<TubeVector>(d[2]),
+                       std::get<TubeVector>(d[3]));
+  };
+  kit::Options o;
+  o.cases = 20;
+  o.idempotence = kit::Idempotence::ContractionOnly;
+  o.outputs = {0, 1, 2};
+  EXPECT_TRUE(kit::check_laws(contract, gen, o));
 }
 
 // x(t_{k+1}) - x(t_k) ∈ [i](k): domains x, i (the increments' tube, whose

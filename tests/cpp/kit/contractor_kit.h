@@ -75,8 +75,8 @@ using Generator = std::function<Case(std::mt19937_64&)>;
 enum class Idempotence { Exact, ContractionOnly, None };
 
 struct Options {
-  int cases = 40;                // random cases
-  int samples = 4;               // times sampled inside each slice (besides its ends)
+  int cases = 40;   // random cases
+  int samples = 4;  // times sampled inside each slice (besides its ends)
   std::uint64_t seed = 20170101;
   Idempotence idempotence = Idempotence::Exact;
   bool threads = true;           // law (e)
@@ -117,17 +117,16 @@ template <class F>
   if (after.index() != before.index()) return ::testing::AssertionFailure() << "domain kind changed";
   auto tube_atoms = [&](const Tube& a, const Tube& b, const std::string& pre) -> ::testing::AssertionResult {
     if (a.nb_slices() != b.nb_slices()) {
-      return ::testing::AssertionFailure() << pre << "number of slices changed: " << b.nb_slices() << " -> "
-                                           << a.nb_slices();
+      return ::testing::AssertionFailure()
+             << pre << "number of slices changed: " << b.nb_slices() << " -> " << a.nb_slices();
     }
     for (std::size_t k = 0; k <= a.nb_slices(); ++k) {
-      auto r = f(pre + "gate " + std::to_string(k) + " (t = " + std::to_string(a.tdomain()->t(k)) + ")",
-                 a.gate(k), b.gate(k));
+      auto r = f(pre + "gate " + std::to_string(k) + " (t = " + std::to_string(a.tdomain()->t(k)) + ")", a.gate(k),
+                 b.gate(k));
       if (!r) return r;
     }
     for (std::size_t k = 0; k < a.nb_slices(); ++k) {
-      auto r = f(pre + "slice " + std::to_string(k) + " " + str(a.tdomain()->slice_domain(k)), a.slice(k),
-                 b.slice(k));
+      auto r = f(pre + "slice " + std::to_string(k) + " " + str(a.tdomain()->slice_domain(k)), a.slice(k), b.slice(k));
       if (!r) return r;
     }
     return ::testing::AssertionSuccess();
@@ -192,10 +191,11 @@ inline ::testing::AssertionResult contracted(const Domains& after, const Domains
   for (std::size_t d = 0; d < after.size(); ++d) {
     auto r = for_atoms(after[d], before[d], [&](const std::string& where, const Interval& a, const Interval& b) {
       const std::string at = where.empty() ? "" : " " + where;
-      if (has_nan(a)) return ::testing::AssertionFailure() << law << ": NaN bound in domain " << d << at << ": " << str(a);
+      if (has_nan(a))
+        return ::testing::AssertionFailure() << law << ": NaN bound in domain " << d << at << ": " << str(a);
       if (a.is_subset(b)) return ::testing::AssertionSuccess();
-      return ::testing::AssertionFailure() << law << ": domain " << d << at << " grew from " << str(b) << " to "
-                                           << str(a);
+      return ::testing::AssertionFailure()
+             << law << ": domain " << d << at << " grew from " << str(b) << " to " << str(a);
     });
     if (!r) return r;
   }
@@ -221,18 +221,18 @@ inline ::testing::AssertionResult identical(const Domains& a, const Domains& b, 
 // of each slice for tubes. The truth is an enclosure: it must meet the domain
 // (a disjoint enclosure proves the true value lost).
 inline ::testing::AssertionResult keeps_truth(const Domains& doms, const std::vector<Truth>& truth, int samples) {
-  auto meets = [](const Interval& t, const Interval& y, std::size_t d, const std::string& where)
-      -> ::testing::AssertionResult {
+  auto meets = [](const Interval& t, const Interval& y, std::size_t d,
+                  const std::string& where) -> ::testing::AssertionResult {
     if (t.intersects(y)) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "truth kept: domain " << d << (where.empty() ? "" : " ") << where
                                          << ": true value " << str(t) << " not in " << str(y);
   };
-  auto tube = [&](const Tube& x, const Trajectory1& f, std::size_t d, const std::string& pre)
-      -> ::testing::AssertionResult {
+  auto tube = [&](const Tube& x, const Trajectory1& f, std::size_t d,
+                  const std::string& pre) -> ::testing::AssertionResult {
     const auto& td = *x.tdomain();
     for (std::size_t k = 0; k <= td.nb_slices(); ++k) {
-      auto r = meets(f(Interval(td.t(k))), x.gate(k), d, pre + "gate " + std::to_string(k) + " (t = " +
-                                                                 std::to_string(td.t(k)) + ")");
+      auto r = meets(f(Interval(td.t(k))), x.gate(k), d,
+                     pre + "gate " + std::to_string(k) + " (t = " + std::to_string(td.t(k)) + ")");
       if (!r) return r;
     }
     for (std::size_t k = 0; k < td.nb_slices(); ++k) {
@@ -264,7 +264,8 @@ inline ::testing::AssertionResult keeps_truth(const Domains& doms, const std::ve
     } else {
       const auto& tv = std::get<3>(x);
       const auto& fs = std::get<std::vector<Trajectory1>>(t);
-      for (std::size_t i = 0; i < tv.size() && r; ++i) r = tube(tv[i], fs[i], d, "component " + std::to_string(i) + ", ");
+      for (std::size_t i = 0; i < tv.size() && r; ++i)
+        r = tube(tv[i], fs[i], d, "component " + std::to_string(i) + ", ");
     }
     if (!r) return r;
   }
@@ -444,8 +445,10 @@ inline Tube tube_around(const std::shared_ptr<TDomain>& td, const Trajectory1& f
                         double p_unknown = 0.0) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Interval> s(td->nb_slices()), g(td->nb_slices() + 1);
-  for (std::size_t k = 0; k < s.size(); ++k) s[k] = u(rng) < p_unknown ? Interval() : around(f(td->slice_domain(k)), rng, w);
-  for (std::size_t k = 0; k < g.size(); ++k) g[k] = u(rng) < p_unknown ? Interval() : around(f(Interval(td->t(k))), rng, w);
+  for (std::size_t k = 0; k < s.size(); ++k)
+    s[k] = u(rng) < p_unknown ? Interval() : around(f(td->slice_domain(k)), rng, w);
+  for (std::size_t k = 0; k < g.size(); ++k)
+    g[k] = u(rng) < p_unknown ? Interval() : around(f(Interval(td->t(k))), rng, w);
   return Tube(td, s, g);
 }
 
