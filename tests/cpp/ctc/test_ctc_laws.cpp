@@ -129,6 +129,15 @@ TEST(CtcLaws, QInterWithOneOutlier) {
   EXPECT_TRUE(kit::check_laws(ranges_contract, ranges_case, o));
 }
 
+// (g) One HC4 pass and the q-relaxed intersection of monotone contractors are
+// monotone: X ⊆ Y ⇒ C(X) ⊆ C(Y).
+TEST(CtcLaws, FunctionAndQInterAreMonotone) {
+  kit::Options o;
+  o.cases = 100;
+  EXPECT_TRUE(kit::check_monotone(function_contract, function_case, o));
+  EXPECT_TRUE(kit::check_monotone(ranges_contract, ranges_case, o));
+}
+
 }  // namespace
 
 // The kit itself catches a broken contractor, and says which law and where.
