@@ -29,7 +29,8 @@ when one of these fails on ``cases`` random cases:
     to all reals (no exception, no NaN, contraction and the truth kept).
 
 (d) order independence is checked by ``check_order_independent`` on a
-contract that takes an insertion order.
+contract that takes an insertion order, and (g) monotonicity by
+``check_monotone`` (not a law of every contractor).
 """
 import math
 import random
@@ -295,6 +296,57 @@ def check_order_independent(contract, generate, order1, order2, same_fixed_point
             check_truth(b, case.truth, samples)
             if same_fixed_point:
                 check_identical(b, a, "order independence", "order 2", "order 1")
+        except AssertionError as e:
+            raise AssertionError(f"case {i} (seed {s}): {e}") from None
+
+
+def _shrink_atom(y, rng):
+    if y.is_empty() or y.is_unbounded():
+        return y
+    w = y.diam()
+    a, b = y.lb() + rng.uniform(0, 0.3) * w, y.ub() - rng.uniform(0, 0.3) * w
+    return Interval(a, b) & y if a <= b else y
+
+
+def shrunk(dom, rng):
+    """A random sub-domain: each bounded atom shrunk by up to 30% per side.
+    Tubes: the slices and gates are shrunk on their own; a gate disjoint
+    from a shrunk slice (Tube refuses it) is replaced by its intersection
+    with the slices around it, empty if need be."""
+    if isinstance(dom, Interval):
+        return _shrink_atom(dom, rng)
+    if isinstance(dom, IntervalVector):
+        return IntervalVector([_shrink_atom(dom[i], rng) for i in range(len(dom))])
+    if isinstance(dom, Tube):
+        return _shrunk_tube(dom, rng)
+    return TubeVector([_shrunk_tube(dom[i], rng) for i in range(len(dom))])
+
+
+def _shrunk_tube(x, rng):
+    n = x.nb_slices()
+    s = [_shrink_atom(x.slice(k), rng) for k in range(n)]
+    g = [_shrink_atom(x.gate(k), rng) for k in range(n + 1)]
+    for k in range(n + 1):
+        for j in (k - 1, k):
+            if 0 <= j < n and not g[k].is_empty() and not s[j].is_empty() and not g[k].intersects(s[j]):
+                g[k] = Interval.empty()
+    return Tube(x.tdomain(), s, g)
+
+
+def check_monotone(contract, generate, *, cases=20, seed=20170101):
+    """(g) X ⊆ Y => C(X) ⊆ C(Y), Y the case's input, X a random sub-domain.
+    Not a law of every contractor: what makes a network's fixed point
+    independent of the order."""
+    for i in range(cases):
+        s = seed + i
+        case = generate(random.Random(s))
+        rng = random.Random(s ^ 0x5EED)
+        big = copy_domains(case.domains)
+        small = [shrunk(d, rng) for d in case.domains]
+        try:
+            _run(contract, big, "monotonicity (C(Y))")
+            _run(contract, small, "monotonicity (C(X))")
+            check_contracted(small, big, "monotonicity: X ⊆ Y but C(X) ⊄ C(Y)")
         except AssertionError as e:
             raise AssertionError(f"case {i} (seed {s}): {e}") from None
 

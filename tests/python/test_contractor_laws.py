@@ -185,6 +185,11 @@ def test_network_of_tubes_two_orders():
     kit.check_order_independent(network, network_case, [0, 1, 2, 3], [3, 2, 1, 0], False, cases=6)
 
 
+def test_monotone_contractors():
+    kit.check_monotone(lambda d: CtcDeriv().contract(d[0], d[1]), deriv_case, cases=8)
+    kit.check_monotone(lambda d: CtcFunction(F, d[1]).contract(d[0]), function_case, cases=15)
+
+
 def test_the_kit_names_the_broken_law():
     def grows(d):
         b = d[0]
