@@ -11,7 +11,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "dynamics/deriv_test_util.h"
 #include "kit/contractor_kit.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
@@ -19,7 +18,7 @@
 #include "sillage/dynamics/ctc_eval.h"
 
 using namespace sillage;
-using sillage::test::SineSum;
+using sillage::kit::SineSum;
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The generic contractor laws (tests/cpp/kit/contractor_kit.h) on the tube
 // contractors: CtcDeriv (each sweep, scalar and vector, restricted), CtcEval,
 // CtcIncrement, CtcQEval. True trajectories: sums of sines with their exact
-// derivative (deriv_test_util.h). The thesis values stay in each
+// derivative (kit::SineSum). The thesis values stay in each
 // contractor's own tests.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,6 @@
 #include <random>
 #include <vector>
 
-#include "deriv_test_util.h"
 #include "kit/contractor_kit.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
@@ -17,16 +16,12 @@
 #include "sillage/dynamics/ctc_qeval.h"
 
 using namespace sillage;
-using sillage::test::SineSum;
+using sillage::kit::SineSum;
 
 namespace {
 
-kit::Trajectory1 pos(const SineSum& f) {
-  return [f](const Interval& t) { return f.x(t); };
-}
-kit::Trajectory1 vel(const SineSum& f) {
-  return [f](const Interval& t) { return f.v(t); };
-}
+const auto pos = kit::position;
+const auto vel = kit::velocity;
 
 // x' = v: x around f with many unknown slices and gates, v around f'.
 kit::Case deriv_case(std::mt19937_64& rng) {

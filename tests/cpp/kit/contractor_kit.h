@@ -46,6 +46,7 @@
 #include <variant>
 #include <vector>
 
+#include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tdomain.h"
@@ -406,7 +407,8 @@ inline Dom shrunk(const Dom& d, std::mt19937_64& rng) {
   return r;
 }
 
-inline ::testing::AssertionResult check_monotone(const Contract& contract, const Generator& gen, const Options& o = {}) {
+inline ::testing::AssertionResult check_monotone(const Contract& contract, const Generator& gen,
+                                                 const Options& o = {}) {
   for (int i = 0; i < o.cases; ++i) {
     const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
     std::mt19937_64 rng(seed);
@@ -496,6 +498,42 @@ inline Tube tube_around(const std::shared_ptr<TDomain>& td, const Trajectory1& f
   for (std::size_t k = 0; k < g.size(); ++k)
     g[k] = u(rng) < p_unknown ? Interval() : around(f(Interval(td->t(k))), rng, w);
   return Tube(td, s, g);
+}
+
+// x(t) = sum of a_i sin(w_i t + p_i), with x' = sum of a_i w_i cos(w_i t + p_i),
+// evaluated in interval arithmetic: X(t) and V(t) contain the exact values
+// (and, for an interval t, the exact ranges).
+struct SineSum {
+  std::vector<double> a, w, p;
+
+  explicit SineSum(std::mt19937_64& rng, int terms = 3) {
+    std::uniform_real_distribution<double> ua(-1.5, 1.5), uw(0.3, 3.0), up(-3.0, 3.0);
+    for (int i = 0; i < terms; ++i) {
+      a.push_back(ua(rng));
+      w.push_back(uw(rng));
+      p.push_back(up(rng));
+    }
+  }
+  Interval x(const Interval& t) const {
+    Interval r(0.0);
+    for (std::size_t i = 0; i < a.size(); ++i) r += Interval(a[i]) * sin(Interval(w[i]) * t + Interval(p[i]));
+    return r;
+  }
+  Interval v(const Interval& t) const {
+    Interval r(0.0);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      r += Interval(a[i]) * Interval(w[i]) * cos(Interval(w[i]) * t + Interval(p[i]));
+    }
+    return r;
+  }
+};
+
+// The trajectory t ↦ x(t) of f and its derivative, for a Case's truth.
+inline Trajectory1 position(const SineSum& f) {
+  return [f](const Interval& t) { return f.x(t); };
+}
+inline Trajectory1 velocity(const SineSum& f) {
+  return [f](const Interval& t) { return f.v(t); };
 }
 
 // Random increasing time points from t0, n slices of widths in [0.05, 0.5].
