@@ -24,13 +24,12 @@ const auto pos = kit::position;
 const auto vel = kit::velocity;
 
 // x' = v: x around f with many unknown slices and gates, v around f'.
-kit::Case deriv_case(std::mt19937_64& rng) {
-  const SineSum f(rng);
+// (The example of docs/contractors.md, "Testing a contractor".)
+kit::Case deriv_case(std::mt19937_64& rng) {  // x' = v around a known trajectory f
+  const kit::SineSum f(rng);
   const auto td = kit::random_tdomain(rng, 30);
-  kit::Case c;
-  c.domains = {kit::tube_around(td, pos(f), rng, 0.3, 0.5), kit::tube_around(td, vel(f), rng, 0.5)};
-  c.truth = {pos(f), vel(f)};
-  return c;
+  const kit::Trajectory1 x = kit::position(f), v = kit::velocity(f);
+  return {{kit::tube_around(td, x, rng, 0.3, 0.5), kit::tube_around(td, v, rng, 0.5)}, {x, v}};
 }
 
 kit::Contract deriv(TimePropag p) {
