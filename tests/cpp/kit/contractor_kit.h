@@ -9,7 +9,7 @@
 //     one true value per domain (an enclosure of a real, of a vector, or a
 //     trajectory t -> enclosure of x(t)) that satisfies the constraint and lies
 //     in the input domains;
-// and calls check_laws(name, contract, generator, options), which runs, on
+// and calls check_laws(contract, generator, options), which runs, on
 // options.cases random cases:
 //   (a) contraction: every output ⊆ its input, component by component, slice
 //       by slice and gate by gate;
@@ -23,11 +23,15 @@
 //       threads on copies (contract must be const and stateless), gives the
 //       same result bit for bit;
 //   (f) empty and unbounded inputs: each domain in turn replaced by the empty
-//       set (then every domain in options.outputs must come out empty, no
-//       exception) or by all the reals (no exception, no NaN bound, contraction
-//       and the truth kept).
-// (d) order independence is a property of a composition; check_order_independent
+//       set (then every domain in options.outputs must come out empty -- or
+//       one domain, options.empty_any, for a network -- and no exception) or
+//       by all the reals (no exception, no NaN bound, contraction and the
+//       truth kept).
+// (d) order independence is a property of a composition: check_order_independent
 // runs a Contract that takes an insertion order with two orders and compares.
+// (g) monotonicity (X ⊆ Y ⇒ C(X) ⊆ C(Y)) is not a law of every contractor:
+// check_monotone tests it for those that have it.
+// docs/contractors.md ("Testing a contractor") says how to use the kit.
 // Every failure names the law, the case, the domain, the slice/gate index and
 // the values (GoogleTest AssertionResult messages).
 #include <gtest/gtest.h>
