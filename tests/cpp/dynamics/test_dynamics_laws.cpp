@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "deriv_test_util.h"
 #include "kit/contractor_kit.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
@@ -43,7 +44,11 @@ kit::Options deriv_options(kit::Idempotence idem) {
   return o;
 }
 
-TEST(DynamicsLaws, CtcDerivFwdBwd) {
+// Under both rounding policies of the slice rule (deriv_test_util.h).
+class DynamicsLawsRounding : public sillage::test::BothRoundings {};
+INSTANTIATE_TEST_SUITE_P(Rounding, DynamicsLawsRounding, ::testing::Bool(), sillage::test::rounding_name);
+
+TEST_P(DynamicsLawsRounding, CtcDerivFwdBwd) {
   // FWD_BWD claims the fixed point bit for bit (ctc_deriv.h).
   EXPECT_TRUE(kit::check_laws(deriv(TimePropag::FWD_BWD), deriv_case, deriv_options(kit::Idempotence::Exact)));
 }
