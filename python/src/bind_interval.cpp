@@ -495,7 +495,7 @@ void init_functions(py::module_& m) {
   m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"), "Componentwise absolute value of a box.");
   m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"), "{min(a, b) : a in x, b in y}.");
   m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"), "{max(a, b) : a in x, b in y}.");
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "Sign: [-1, 1] hull of the signs of the elements of x (sign(0) = 0).");
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "The hull of the signs of the elements of x, within [-1, 1] (sign(0) = 0).");
   m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), "The smallest interval containing x and y.");
   m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
         py::arg("y"), "The smallest box containing x and y.");

@@ -97,7 +97,7 @@ void init_paving(py::module_& m) {
              py::list r;
              for (const auto& v : l.vertices()) r.append(point(v));
              return r;
-           }, "The vertices in order, as an (k, 2) numpy array.")
+           }, "The vertices in order, a list of points (x, y).")
       .def("length", &ContourLoop::length, "The perimeter of the loop.")
       .def("__len__", [](const ContourLoop& l) { return l.edges.size(); })
       .def("__repr__", [](const ContourLoop& l) { return "<ContourLoop " + l.str() + ">"; });

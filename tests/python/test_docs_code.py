@@ -155,3 +155,31 @@ def test_cpp_blocks_compile_and_run(name, source, tmp_path):
 
 if __name__ == "__main__":
     sys.exit(pytest.main([__file__, "-q"]))
+
+
+def python_spans(path):
+    """Inline `code` of the prose and the python blocks of a file (C++ blocks left out)."""
+    text = open(path, encoding="utf-8").read()
+    prose = re.sub(r"^```.*?^```", "", text, flags=re.S | re.M)
+    return re.findall(r"`([^`\n]+)`", prose) + [code for lang, code, _, _ in blocks(path) if lang == "python"]
+
+
+def test_docs_name_what_the_module_has():
+    """`sillage.x` / `sl.x` and `Class.attr` of a sillage class, in the docs, exist in the module."""
+    import inspect
+
+    import sillage
+    from sillage import _sillage
+
+    submodules = {"plot", "plot_tube", "plot_loops", "_sillage", "h", "py", "cpp"}  # and file names
+    missing = []
+    for path in DOC_FILES:
+        for span in python_spans(path):
+            for name in re.findall(r"(?<![/\w.])(?:sl|sillage)\.([A-Za-z_]\w*)\b(?!/)", span):
+                if name not in submodules and not hasattr(sillage, name):
+                    missing.append(f"{rel(path)}: sillage.{name}")
+            for cls, attr in re.findall(r"\b([A-Z][A-Za-z0-9]+)\.([a-z_]\w*)", span):
+                obj = getattr(_sillage, cls, None)
+                if inspect.isclass(obj) and not hasattr(obj, attr):
+                    missing.append(f"{rel(path)}: {cls}.{attr}")
+    assert not missing, "names in the docs that the module does not have:\n  " + "\n  ".join(sorted(set(missing)))
