@@ -24,7 +24,7 @@ void init_dynamics(py::module_& m) {
   using C = CtcDeriv;
   py::class_<C, NetworkCtc, std::shared_ptr<C>>(
       m, "CtcDeriv",
-      "The differential contractor of x' = v (thesis 4.2, Alg. 3-5). contract(x, v) contracts the Tube\n"
+      "The differential contractor C_d/dt of x' = v (thesis 4.2, (4.4), Prop. 4.1, Alg. 3-5). contract(x, v) contracts the Tube\n"
       "(or TubeVector) x in place and returns False if it is now empty; v is not changed. Optional\n"
       "restrictions: a slice range (first, last) or a time interval t.")
       .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD, "The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4, (4.17)) or FWD_BWD (Alg. 5, the default).")

@@ -93,7 +93,10 @@ void init_loops(py::module_& m) {
       .def_readwrite("budget", &ProofOptions::budget, "For the whole call (sillage.Budget).");
 
   const py::call_guard<py::gil_scoped_release> nogil;
-  py::class_<TPlane>(m, "TPlane", "Loop detections (Alg. 6) and proofs (Alg. 7-10) in the t-plane.")
+  py::class_<TPlane>(m, "TPlane", "Loops of a planar trajectory in the t-plane [t0, tf]^2 (thesis ch. 6). compute_detections: Alg. 6,\n"
+                                 "a paving of {(t1, t2) | t1 < t2, 0 in [f](t1, t2)} with [f] = integral of [v] over [t1] -> [t2]\n"
+                                 "(6.6) (or (7.28) from positions), Outside by (6.8)-(6.9), Inner by (6.10); its connected\n"
+                                 "components are the detections. compute_proofs: degree test, Newton test, count (Alg. 7-10).")
       .def(py::init<const Interval&>(), py::arg("tdomain"), "The t-plane tdomain^2; tdomain bounded with lb < ub (Error otherwise).")
       .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), "The t-plane [t0, tf]^2 of a TDomain.")
       .def("domain", &TPlane::domain, "The square [t0, tf]^2.")
