@@ -12,7 +12,8 @@ namespace {
 // A Python exception class named `name` in m, with the given bases.
 py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases, const char* doc) {
   const std::string full = std::string(PyModule_GetName(m.ptr())) + "." + name;
-  py::object type = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
+  py::object type =
+      py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
   if (!type) throw py::error_already_set();
   m.attr(name) = type;
   return type.release();  // one reference kept for the translator, for the life of the process
@@ -49,7 +50,8 @@ void init_errors(py::module_& m) {
   budget = new_exception(m, "BudgetExceeded", py::make_tuple(error),
                          "A computation went past its Budget (boxes, bytes or seconds).");
   cancelled = new_exception(m, "Cancelled", py::make_tuple(py::handle(PyExc_KeyboardInterrupt)),
-                            "A computation stopped by its CancelToken or by Ctrl-C (a KeyboardInterrupt, not an Error).");
+                            "A computation stopped by its CancelToken or by Ctrl-C (a KeyboardInterrupt, not an "
+                            "Error).");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -113,7 +113,8 @@ Expr(c) is the constant c (a number or an Interval; a float is the degenerate
 interval [c, c]). Build with ExprVar, the operators + - * / ** (unary -) with
 numbers and Intervals on either side, and sillage.sqr, sqrt, pow, root, exp, log,
 sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
-  e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"), "The constant c: an int exactly, or the tightest interval around it.")  // exact or outward
+  e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"),
+        "The constant c: an int exactly, or the tightest interval around it.")  // exact or outward
       .def(py::init<double>(), py::arg("c"), "The constant [c, c].")
       .def(py::init<const Interval&>(), py::arg("c"), "The constant interval c.")
       .def("op", &Expr::op, "The operation of the root node.")
@@ -169,10 +170,13 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"), "The expression sqrt(x).");
   m.def("exp", static_cast<E1>(&exp), py::arg("x"), "The expression exp(x).");
   m.def("log", static_cast<E1>(&log), py::arg("x"), "The expression log(x) (natural logarithm).");
-  m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"), "The expression x^n, n an integer.");
-  m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"), "The expression x^p, p a real constant.");
+  m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"),
+        "The expression x^n, n an integer.");
+  m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "The expression x^p, p a real constant.");
   m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"), "The expression x^p, p an expression.");
-  m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"), "The expression root(x, n), the n-th root.");
+  m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"),
+        "The expression root(x, n), the n-th root.");
   m.def("sin", static_cast<E1>(&sin), py::arg("x"), "The expression sin(x).");
   m.def("cos", static_cast<E1>(&cos), py::arg("x"), "The expression cos(x).");
   m.def("tan", static_cast<E1>(&tan), py::arg("x"), "The expression tan(x).");
@@ -200,9 +204,13 @@ written "(e1, e2, ...)". Or from the builder: Function([x1, x2], expr) or
 Function([x1, x2], [e1, e2]) with x1 = ExprVar("x1"), ... Every evaluation
 encloses the exact real result (decimal constants such as 0.1 in a text are
 enclosed rigorously; a float in the builder is the degenerate interval).)doc")
-      .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"), "f from the variable names and the expression text; ParseError on a bad text (the message points at the column).")
-      .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"), "A scalar function of the builder variables vars.")
-      .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"), "A vector function (e1, ..., em) of the builder variables vars.")
+      .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"),
+           "f from the variable names and the expression text; ParseError on a bad text (the message points at the "
+           "column).")
+      .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"),
+           "A scalar function of the builder variables vars.")
+      .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"),
+           "A vector function (e1, ..., em) of the builder variables vars.")
       .def("nb_vars", &Function::nb_vars, "Input dimension n.")
       .def("image_dim", &Function::image_dim, "Output dimension m (1 for a scalar function).")
       .def("var_names", &Function::var_names, "The names of the n variables, in order.")

@@ -219,7 +219,9 @@ void init_interval_class(py::module_& m) {
              const double l = bound(lb, false, "Interval(lb, ub)"), u = bound(ub, true, "Interval(lb, ub)");
              return located("Interval(lb, ub)", [=] { return Interval(l, u); });
            }),
-           py::arg("lb"), py::arg("ub"), "[lb, ub]; a float bound is taken as it is, an int bound rounded outward. Interval(inf, -inf) is the empty set; Error if lb > ub.")
+           py::arg("lb"), py::arg("ub"),
+           "[lb, ub]; a float bound is taken as it is, an int bound rounded outward. Interval(inf, -inf) is the "
+           "empty set; Error if lb > ub.")
       .def_static("empty", &I::empty, "The empty interval.")
       .def_static("all_reals", &I::all_reals, "The real line [-inf, inf].")
       .def_static("pos_reals", &I::pos_reals, "[0, inf].")
@@ -234,7 +236,8 @@ void init_interval_class(py::module_& m) {
       .def("width", &I::width, "Same as diam().")
       .def("rad", &I::rad, "The smallest r with [mid - r, mid + r] containing x (NaN for the empty set).")
       .def("mag", &I::mag, "The magnitude: the largest |v| for v in the interval (NaN for the empty set).")
-      .def("mig", &I::mig, "The mignitude: the smallest |v| for v in the interval (0 if it contains 0; NaN for the empty set).")
+      .def("mig", &I::mig,
+           "The mignitude: the smallest |v| for v in the interval (0 if it contains 0; NaN for the empty set).")
       .def("volume", &I::volume, "diam(), 0 for the empty set.")
       .def("is_empty", &I::is_empty, "True for the empty set.")
       .def("is_degenerate", &I::is_degenerate, "True when lb == ub (False for the empty set).")
@@ -244,7 +247,8 @@ void init_interval_class(py::module_& m) {
       .def("contains", &I::contains, py::arg("x"), "True when the real x is in the interval.")
       .def("interior_contains", &I::interior_contains, py::arg("x"), "True when x is in the interior (lb < x < ub).")
       .def("is_subset", &I::is_subset, py::arg("y"), "True when self is a subset of y.")
-      .def("is_strict_subset", &I::is_strict_subset, py::arg("y"), "True when self is a subset of y and differs from it.")
+      .def("is_strict_subset", &I::is_strict_subset, py::arg("y"),
+           "True when self is a subset of y and differs from it.")
       .def("is_interior_subset", &I::is_interior_subset, py::arg("y"), "True when self is in the interior of y.")
       .def("is_superset", &I::is_superset, py::arg("y"), "True when y is a subset of self.")
       .def("intersects", &I::intersects, py::arg("y"), "True when self and y have a common point.")
@@ -308,7 +312,8 @@ void init_vector_class(py::module_& m) {
         "pairs [lb, ub], or from an (n, 2) array of bounds.")
       .def(py::init([](std::size_t n, const py::object& x) { return V(n, to_interval(x, "IntervalVector(n, x)")); }),
            py::arg("n"), py::arg("x"), "n copies of the interval x.")
-      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"), "The degenerate box of the point p.")
+      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"),
+                  "The degenerate box of the point p.")
       .def_static("empty", &V::empty, py::arg("n"), "The empty box of dimension n.")
       .def("size", &V::size, "The dimension n.")
       .def("__len__", &V::size)
@@ -328,7 +333,8 @@ void init_vector_class(py::module_& m) {
            })
       .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
       .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i to j inclusive.")
-      .def("put", &V::put, py::arg("start"), py::arg("x"), "Writes the box x into components start, start + 1, ... in place.")
+      .def("put", &V::put, py::arg("start"), py::arg("x"),
+           "Writes the box x into components start, start + 1, ... in place.")
       .def("lb", &V::lb, "The lower bounds, as a list of floats.")
       .def("ub", &V::ub, "The upper bounds, as a list of floats.")
       .def("mid", &V::mid, "The midpoint, as a list of floats.")
@@ -339,13 +345,15 @@ void init_vector_class(py::module_& m) {
       .def("volume", &V::volume, "The product of the widths.")
       .def("max_diam", &V::max_diam, "The largest width of a component.")
       .def("min_diam", &V::min_diam, "The smallest width of a component.")
-      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true, "Index of the widest component (largest=True) or of the narrowest one.")
+      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true,
+           "Index of the widest component (largest=True) or of the narrowest one.")
       .def("is_empty", &V::is_empty, "True when a component is empty.")
       .def("is_unbounded", &V::is_unbounded, "True when a component is unbounded.")
       .def("is_degenerate", &V::is_degenerate, "True when every component is degenerate (a point).")
       .def("contains", &V::contains, py::arg("p"), "True when the point p is in the box.")
       .def("is_subset", &V::is_subset, py::arg("y"), "True when self is a subset of y.")
-      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"), "True when self is a subset of y and differs from it.")
+      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"),
+           "True when self is a subset of y and differs from it.")
       .def("is_interior_subset", &V::is_interior_subset, py::arg("y"), "True when self is in the interior of y.")
       .def("intersects", &V::intersects, py::arg("y"), "True when self and y have a common point.")
       .def("bisect", py::overload_cast<double>(&V::bisect, py::const_), py::arg("ratio") = 0.5,
@@ -392,13 +400,15 @@ void init_matrix_class(py::module_& m) {
   c.def(py::init([](std::size_t r, std::size_t k, const py::object& x) {
           return M(r, k, x.is_none() ? Interval() : to_interval(x, "IntervalMatrix(rows, cols, x)"));
         }),
-        py::arg("rows"), py::arg("cols"), py::arg("x") = py::none(), "A rows x cols matrix whose entries are all x (default: the real line).")
+        py::arg("rows"), py::arg("cols"), py::arg("x") = py::none(),
+        "A rows x cols matrix whose entries are all x (default: the real line).")
       .def(py::init([](const py::object& obj) { return matrix_from(obj); }), py::arg("x"),
            "From a list of rows (each a list of intervals / numbers / pairs, or an IntervalVector), "
            "an (n, m, 2) array of bounds or an (n, m) array of points.")
       .def_static("identity", &M::identity, py::arg("n"), "The n x n identity matrix.")
       .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"), "The empty matrix of the given shape.")
-      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"), "The degenerate interval matrix of the real matrix p.")
+      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"),
+                  "The degenerate interval matrix of the real matrix p.")
       .def("rows", &M::rows, "Number of rows.")
       .def("cols", &M::cols, "Number of columns.")
       .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); }, "(rows, cols).")
@@ -430,7 +440,8 @@ void init_matrix_class(py::module_& m) {
       .def("is_degenerate", &M::is_degenerate, "True when every entry is a point.")
       .def("contains", &M::contains, py::arg("p"), "True when the real matrix p is in the interval matrix.")
       .def("is_subset", &M::is_subset, py::arg("y"), "True when every entry is a subset of the entry of y.")
-      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"), "True when every entry is in the interior of the entry of y.")
+      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"),
+           "True when every entry is in the interior of the entry of y.")
       .def("intersects", &M::intersects, py::arg("y"), "True when every entry meets the entry of y.")
       .def("inflate", &M::inflate, py::arg("r"), "Each entry inflated by r (a new matrix).")
       .def("set_empty", &M::set_empty, "Makes this matrix empty, in place.")
@@ -478,9 +489,12 @@ void init_functions(py::module_& m) {
   m.def("exp", static_cast<F1>(&exp), py::arg("x"), "Exponential.");
   m.def("log", static_cast<F1>(&log), py::arg("x"), "Natural logarithm (on the part of x above 0).");
   m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"), "x^n for an integer n.");
-  m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"), "x^p for a real p = exp(p log(x)), on the part of x above 0 (integral p: the integer power).");
-  m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"), "x^p = exp(p log(x)) for an interval p, on the part of x above 0.");
-  m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"), "The n-th root (odd n: also of negative numbers).");
+  m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "x^p for a real p = exp(p log(x)), on the part of x above 0 (integral p: the integer power).");
+  m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"),
+        "x^p = exp(p log(x)) for an interval p, on the part of x above 0.");
+  m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"),
+        "The n-th root (odd n: also of negative numbers).");
   m.def("sin", static_cast<F1>(&sin), py::arg("x"), "Sine.");
   m.def("cos", static_cast<F1>(&cos), py::arg("x"), "Cosine.");
   m.def("tan", static_cast<F1>(&tan), py::arg("x"), "Tangent (the real line when x meets a pole).");
@@ -495,7 +509,8 @@ void init_functions(py::module_& m) {
   m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"), "Componentwise absolute value of a box.");
   m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"), "{min(a, b) : a in x, b in y}.");
   m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"), "{max(a, b) : a in x, b in y}.");
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "The hull of the signs of the elements of x, within [-1, 1] (sign(0) = 0).");
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"),
+        "The hull of the signs of the elements of x, within [-1, 1] (sign(0) = 0).");
   m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), "The smallest interval containing x and y.");
   m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
         py::arg("y"), "The smallest box containing x and y.");

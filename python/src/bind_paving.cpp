@@ -123,7 +123,8 @@ void init_paving(py::module_& m) {
       .def("dim", &Paving::dim, "The dimension of the boxes.")
       .def("is_empty", &Paving::is_empty, "True for the paving of an empty initial box (no node).")
       .def("domain", &Paving::domain, "The initial box.")
-      .def("boxes", &Paving::boxes, py::arg("tag"), "The leaves of a tag, in pre-order ('left before right', independent of threads).")
+      .def("boxes", &Paving::boxes, py::arg("tag"),
+           "The leaves of a tag, in pre-order ('left before right', independent of threads).")
       .def("inner", &Paving::inner, "Boxes proven in X (the inner approximation).")
       .def("boundary", &Paving::boundary, "Undetermined boxes.")
       .def("outer", &Paving::outer, "The outer approximation: inner and boundary boxes.")
@@ -132,18 +133,22 @@ void init_paving(py::module_& m) {
       .def("nb_nodes", &Paving::nb_nodes, "The number of nodes of the tree (leaves and internal nodes).")
       .def("nb_leaves", &Paving::nb_leaves, "The number of leaves.")
       .def("count", &Paving::count, py::arg("tag"), "The number of leaves with this tag.")
-      .def("volume", &Paving::volume, py::arg("tag"), "Sum of the leaf volumes of a tag (a floating-point measure, not a set).")
+      .def("volume", &Paving::volume, py::arg("tag"),
+           "Sum of the leaf volumes of a tag (a floating-point measure, not a set).")
       .def("outer_volume", &Paving::outer_volume, "Volume of the outer approximation X+ = inner & boundary leaves.")
       .def("hull", &Paving::hull, "Hull of the outer approximation.")
       .def("tag_at", &Paving::tag_at, py::arg("point"), "Tag at a point, None outside the initial box.")
-      .def("components", &Paving::components, "Connected components of the outer approximation X+, in a deterministic order.")
-      .def("node_box", &Paving::node_box, py::arg("i"), "The box of node i (pre-order index; the left child of i is i + 1).")
+      .def("components", &Paving::components,
+           "Connected components of the outer approximation X+, in a deterministic order.")
+      .def("node_box", &Paving::node_box, py::arg("i"),
+           "The box of node i (pre-order index; the left child of i is i + 1).")
       .def("is_leaf", &Paving::is_leaf, py::arg("i"), "True when node i is a leaf.")
       .def("left", &Paving::left, py::arg("i"), "Index of the left child of the internal node i.")
       .def("right", &Paving::right, py::arg("i"), "Index of the right child of the internal node i.")
       .def("tag", &Paving::tag, py::arg("i"), "Tag of the leaf i; Error for an internal node.")
       .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"), "Pre-order indices of the leaves with the given tag.")
-      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"), "Indices of the leaves whose closed box intersects box (tree descent).")
+      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"),
+           "Indices of the leaves whose closed box intersects box (tree descent).")
       .def("__eq__", &Paving::operator==)
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
@@ -155,7 +160,8 @@ void init_paving(py::module_& m) {
              if (budget) o.budget = *budget;
              return o;
            }),
-           py::arg("parallel") = true, py::arg("budget") = nullptr, "Options: parallel (oneTBB tasks, default True) and a Budget (default: 10^7 boxes, 1 GiB).")
+           py::arg("parallel") = true, py::arg("budget") = nullptr,
+           "Options: parallel (oneTBB tasks, default True) and a Budget (default: 10^7 boxes, 1 GiB).")
       .def_readwrite("parallel", &SiviaOptions::parallel,
                      "Grow subtrees as oneTBB tasks (default True). The paving does not depend on it.")
       .def_readwrite("budget", &SiviaOptions::budget,
@@ -181,7 +187,8 @@ void init_paving(py::module_& m) {
       [](const IntervalVector& x0, const Function& f, const Interval& y, double eps, const SiviaOptions& o) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(), "SIVIA (Alg. 1) for a scalar f: paving of x0 for X = f^-1([y]).");
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
+      "SIVIA (Alg. 1) for a scalar f: paving of x0 for X = f^-1([y]).");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
@@ -196,7 +203,8 @@ void init_paving(py::module_& m) {
          const SiviaOptions& o) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, IntervalVector{y}, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(), "SIVIA coupled with a contractor (Fig. 2.13) for a scalar f and an interval y.");
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
+      "SIVIA coupled with a contractor (Fig. 2.13) for a scalar f and an interval y.");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
@@ -209,7 +217,8 @@ void init_paving(py::module_& m) {
       [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions& o) {
         return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(), "SIVIA with a Python inclusion function f(box) -> Interval for X = f^-1([y]); always sequential.");
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
+      "SIVIA with a Python inclusion function f(box) -> Interval for X = f^-1([y]); always sequential.");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) {

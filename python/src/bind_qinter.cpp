@@ -44,7 +44,8 @@ that satisfies at least m - q of the m constraints ("at most q are wrong"):
 x & q_inter([c.contract(copy of x) for c in ctcs], q). q = 0 is CtcInter; q >= m
 leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
       .def(py::init([](const py::iterable& ctcs, int q) { return std::make_shared<CtcQInter>(hold_ctcs(ctcs), q); }),
-           py::arg("ctcs"), py::arg("q"), "The q-relaxed intersection of the contractors ctcs (all on the same variables); 0 <= q (else Error).")
+           py::arg("ctcs"), py::arg("q"),
+           "The q-relaxed intersection of the contractors ctcs (all on the same variables); 0 <= q (else Error).")
       .def("q", &CtcQInter::q, "The number of constraints allowed to be wrong.");
 
   py::class_<GomneResult>(m, "GomneResult", "What gomne proved; see gomne.")
@@ -92,7 +93,8 @@ ctc = CtcFunction(|z - b|, r).)doc")
       .def(py::init([](const Interval& t, const IntervalVector& z, const py::object& ctc) {
              return TubeObservation{t, z, ctc.is_none() ? nullptr : hold_ctc(ctc)};
            }),
-           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(), "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint).")
+           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(),
+           "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint).")
       .def_readwrite("t", &TubeObservation::t, "The time interval of the fix.")
       .def_readwrite("z", &TubeObservation::z, "The box of the fix (contracted by ctc).")
       .def("__repr__", [](const TubeObservation& o) {
