@@ -37,18 +37,19 @@ void init_cn(py::module_& m) {
 
   py::class_<DomainRef>(m, "DomainRef", "A part of a box given to ContractorNetwork.add.")
       .def_static("component", py::overload_cast<std::shared_ptr<IntervalVector>, std::size_t>(&DomainRef::component),
-                  py::arg("x"), py::arg("i"))
+                  py::arg("x"), py::arg("i"), "Component i of the box x, live: the network contracts x[i] itself.")
       .def_static("component", py::overload_cast<std::shared_ptr<TubeVector>, std::size_t>(&DomainRef::component),
                   py::arg("x"), py::arg("i"), "Component i of a tube vector, live.")
-      .def_static("subvector", &DomainRef::subvector, py::arg("x"), py::arg("i"), py::arg("j"))
-      .def("first", &DomainRef::first)
-      .def("count", &DomainRef::count);
+      .def_static("subvector", &DomainRef::subvector, py::arg("x"), py::arg("i"), py::arg("j"),
+                  "Components i to j (inclusive) of the box x, live.")
+      .def("first", &DomainRef::first, "Index of the first component referred to.")
+      .def("count", &DomainRef::count, "Number of components referred to.");
 
   py::class_<ContractStats>(m, "ContractStats",
                             "What contract() did. An empty network is an answer (no solution), explained by\n"
                             "emptiness and the empty_* fields.")
       .def_readonly("iterations", &ContractStats::iterations, "Rounds of the propagation queue.")
-      .def_readonly("contractor_calls", &ContractStats::contractor_calls)
+      .def_readonly("contractor_calls", &ContractStats::contractor_calls, "Calls of Ctc.contract (node runs).")
       .def_readonly("time", &ContractStats::time, "Wall-clock seconds.")
       .def_readonly("empty", &ContractStats::empty, "A domain became (or was) empty: no solution.")
       .def_readonly("empty_domain", &ContractStats::empty_domain, "Which one, e.g. 'domain 2 (Interval)'.")
@@ -56,11 +57,13 @@ void init_cn(py::module_& m) {
                     "Why, e.g. \"CtcEval emptied tube 'x' at slice 412 [41.2, 41.3] for t in [...]\"; '' if not empty.")
       .def_readonly("empty_contractor", &ContractStats::empty_contractor,
                     "The contractor that emptied it (e.g. 'CtcDeriv'); '' if it was empty on input.")
-      .def_readonly("empty_domain_index", &ContractStats::empty_domain_index)
+      .def_readonly("empty_domain_index", &ContractStats::empty_domain_index,
+                    "The emptied domain's index in the network.")
       .def_readonly("empty_domain_name", &ContractStats::empty_domain_name, "Its name (set_name), '' if none.")
       .def_readonly("empty_atom", &ContractStats::empty_atom,
                     "'slice', 'gate', 'component' or '' (the whole domain).")
-      .def_readonly("empty_atom_index", &ContractStats::empty_atom_index)
+      .def_readonly("empty_atom_index", &ContractStats::empty_atom_index,
+                    "Index of the slice, gate or component that became empty.")
       .def_readonly("empty_time", &ContractStats::empty_time, "Time of the slice or gate (empty otherwise).")
       .def("__repr__", [](const ContractStats& s) {
         return "ContractStats(iterations=" + std::to_string(s.iterations) +
@@ -68,13 +71,17 @@ void init_cn(py::module_& m) {
                ", empty=" + (s.empty ? "True, emptiness='" + s.emptiness + "'" : std::string("False")) + ")";
       });
 
-  py::class_<ContractorNetwork>(m, "ContractorNetwork")
-      .def(py::init<>())
+  py::class_<ContractorNetwork>(m, "ContractorNetwork",
+                                "Variables (domains) linked by contractors, propagated to a fixed point (thesis "
+                                "2.3.1). Domains are the caller's own objects (Interval, IntervalVector, Tube, "
+                                "TubeVector or a DomainRef part), contracted in place. A contractor on a tube argument "
+                                "is applied at every time; CtcDeriv and CtcEval act on whole tubes.")
+      .def(py::init<>(), "An empty network.")
       .def("create_dom", py::overload_cast<const Interval&, const std::string&>(&ContractorNetwork::create_dom),
            py::arg("x"), py::arg("name") = "", "A new domain (a copy of x), optionally named.")
       .def("create_dom",
            py::overload_cast<const IntervalVector&, const std::string&>(&ContractorNetwork::create_dom), py::arg("x"),
-           py::arg("name") = "")
+           py::arg("name") = "", "A new box domain (a copy of x), optionally named.")
       .def(
           "set_name",
           [](ContractorNetwork& cn, const py::object& domain, const std::string& name) {
@@ -94,14 +101,19 @@ void init_cn(py::module_& m) {
               cn.add(hold_ctc(ctc), refs);
             }
           },
-          py::arg("ctc"), py::arg("domains"))
+          py::arg("ctc"), py::arg("domains"),
+          "Adds the contractor ctc (a Ctc or a NetworkCtc) on the concatenation of the domains (Interval, "
+          "IntervalVector, Tube, TubeVector, DomainRef); their sizes must add up to ctc.nb_vars() (DimensionError "
+          "otherwise).")
       .def("contract", &ContractorNetwork::contract,
            "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
            "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.")
-      .def("nb_ctc", &ContractorNetwork::nb_ctc)
-      .def("nb_dom", &ContractorNetwork::nb_dom)
-      .def("ratio", &ContractorNetwork::ratio)
-      .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"));
+      .def("nb_ctc", &ContractorNetwork::nb_ctc, "Number of contractors added.")
+      .def("nb_dom", &ContractorNetwork::nb_dom, "Number of domains known to the network.")
+      .def("ratio", &ContractorNetwork::ratio,
+           "The shrink ratio above which a contracted atom wakes its other contractors (default 0.01).")
+      .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"),
+           "Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on it.");
 }
 
 }  // namespace sillage::python

@@ -24,18 +24,23 @@ void init_dynamics(py::module_& m) {
   using C = CtcDeriv;
   py::class_<C, NetworkCtc, std::shared_ptr<C>>(
       m, "CtcDeriv",
-      "The differential contractor of x' = v (thesis 4.2, Alg. 3-5). contract(x, v) contracts the Tube\n"
-      "(or TubeVector) x in place and returns False if it is now empty; v is not changed. Optional\n"
+      "The differential contractor C_d/dt of x' = v (thesis 4.2, (4.4), Prop. 4.1, Alg. 3-5).\n"
+      "contract(x, v) contracts the Tube (or TubeVector) x in place and returns False if it is now\n"
+      "empty; v is not changed. Optional\n"
       "restrictions: a slice range (first, last) or a time interval t.")
-      .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD)
-      .def("time_propag", &C::time_propag)
+      .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD,
+           "The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4, (4.17)) or "
+           "FWD_BWD (Alg. 5, the default).")
+      .def("time_propag", &C::time_propag, "The direction of the sweeps.")
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v);
           },
-          py::arg("x"), py::arg("v"))
+          py::arg("x"), py::arg("v"),
+          "Contracts the tube x with x' in v (Alg. 3-5, (4.4)), in place; v is not changed (Lemma 4.1). Returns "
+          "False if x is now empty.")
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
@@ -57,21 +62,23 @@ void init_dynamics(py::module_& m) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v);
           },
-          py::arg("x"), py::arg("v"))
+          py::arg("x"), py::arg("v"),
+          "Contracts the tube vector x with x' in v, component by component; returns False if x is now empty.")
       .def(
           "contract",
           [](const C& c, TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v, first, last);
           },
-          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"))
+          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
+          "Only slices first..last and gates first..last+1 of each component are read or changed.")
       .def(
           "contract",
           [](const C& c, TubeVector& x, const TubeVector& v, const Interval& t) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v, t);
           },
-          py::arg("x"), py::arg("v"), py::arg("t"))
+          py::arg("x"), py::arg("v"), py::arg("t"), "Only the slices meeting the time interval t.")
       .def("__repr__", [](const C& c) {
         switch (c.time_propag()) {
           case TimePropag::FORWARD:

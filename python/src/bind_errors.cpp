@@ -10,9 +10,10 @@ namespace sillage::python {
 namespace {
 
 // A Python exception class named `name` in m, with the given bases.
-py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases) {
+py::handle new_exception(py::module_& m, const char* name, const py::tuple& bases, const char* doc) {
   const std::string full = std::string(PyModule_GetName(m.ptr())) + "." + name;
-  py::object type = py::reinterpret_steal<py::object>(PyErr_NewException(full.c_str(), bases.ptr(), nullptr));
+  py::object type =
+      py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(full.c_str(), doc, bases.ptr(), nullptr));
   if (!type) throw py::error_already_set();
   m.attr(name) = type;
   return type.release();  // one reference kept for the translator, for the life of the process
@@ -34,13 +35,23 @@ void raise(py::handle type, const char* what) {
 // exceptions map as pybind11 maps them; every message is made valid UTF-8.
 void init_errors(py::module_& m) {
   static py::handle error, dimension, parse, type, range, budget, cancelled;
-  error = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_ValueError)));
-  dimension = new_exception(m, "DimensionError", py::make_tuple(error));
-  parse = new_exception(m, "ParseError", py::make_tuple(error));
-  type = new_exception(m, "ArgumentTypeError", py::make_tuple(error, py::handle(PyExc_TypeError)));
-  range = new_exception(m, "OutOfRangeError", py::make_tuple(error, py::handle(PyExc_IndexError)));
-  budget = new_exception(m, "BudgetExceeded", py::make_tuple(error));
-  cancelled = new_exception(m, "Cancelled", py::make_tuple(py::handle(PyExc_KeyboardInterrupt)));
+  error = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_ValueError)),
+                        "Invalid input (a ValueError); the message says what is wrong and where.\n"
+                        "An empty set is a result, not an error.");
+  dimension = new_exception(m, "DimensionError", py::make_tuple(error),
+                            "Sizes that do not agree (box dimensions, matrix shapes, argument counts).");
+  parse = new_exception(m, "ParseError", py::make_tuple(error),
+                        "A text that cannot be parsed (expressions, data files).");
+  type = new_exception(m, "ArgumentTypeError", py::make_tuple(error, py::handle(PyExc_TypeError)),
+                       "A value of the wrong type where sillage expected another (a callable returning a str\n"
+                       "instead of a box, a lambda instead of a contractor); also a TypeError.");
+  range = new_exception(m, "OutOfRangeError", py::make_tuple(error, py::handle(PyExc_IndexError)),
+                        "An index or a time out of the valid range (a row, a slice, a component); also an IndexError.");
+  budget = new_exception(m, "BudgetExceeded", py::make_tuple(error),
+                         "A computation went past its Budget (boxes, bytes or seconds).");
+  cancelled = new_exception(m, "Cancelled", py::make_tuple(py::handle(PyExc_KeyboardInterrupt)),
+                            "A computation stopped by its CancelToken or by Ctrl-C (a KeyboardInterrupt, not an "
+                            "Error).");
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -113,11 +113,12 @@ Expr(c) is the constant c (a number or an Interval; a float is the degenerate
 interval [c, c]). Build with ExprVar, the operators + - * / ** (unary -) with
 numbers and Intervals on either side, and sillage.sqr, sqrt, pow, root, exp, log,
 sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
-  e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"))  // exact or outward
-      .def(py::init<double>(), py::arg("c"))
-      .def(py::init<const Interval&>(), py::arg("c"))
+  e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"),
+        "The constant c: an int exactly, or the tightest interval around it.")  // exact or outward
+      .def(py::init<double>(), py::arg("c"), "The constant [c, c].")
+      .def(py::init<const Interval&>(), py::arg("c"), "The constant interval c.")
       .def("op", &Expr::op, "The operation of the root node.")
-      .def("is_const", &Expr::is_const)
+      .def("is_const", &Expr::is_const, "True when the expression has no variable.")
       .def("__str__", &Expr::str)
       .def("__repr__", [](const Expr& x) { return "Expr(" + x.str() + ")"; })
       // Node identity, which hash-consing makes structural equality (C++ operator==).
@@ -152,8 +153,8 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
       .def("__rpow__", [](const Expr& p, const Interval& x) { return pow(Expr(x), p); }, py::is_operator());
 
   py::class_<ExprVar, Expr>(m, "ExprVar", "A scalar variable of the builder, known by its name: ExprVar(\"x1\").")
-      .def(py::init<const std::string&>(), py::arg("name"))
-      .def("name", &ExprVar::name)
+      .def(py::init<const std::string&>(), py::arg("name"), "The scalar variable called name.")
+      .def("name", &ExprVar::name, "The variable's name.")
       .def("__repr__", [](const ExprVar& v) { return "ExprVar(" + py::repr(py::str(v.name())).cast<std::string>() + ")"; });
   m.attr("Variable") = m.attr("ExprVar");  // C++: using Variable = ExprVar
 
@@ -165,28 +166,31 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   m.def("expr_pi", &expr_pi, "A rigorous enclosure of pi, as a constant expression.");
   using E1 = Expr (*)(const Expr&);
   using E2 = Expr (*)(const Expr&, const Expr&);
-  m.def("sqr", static_cast<E1>(&sqr), py::arg("x"));
-  m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"));
-  m.def("exp", static_cast<E1>(&exp), py::arg("x"));
-  m.def("log", static_cast<E1>(&log), py::arg("x"));
-  m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"));
-  m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"));
-  m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"));
-  m.def("sin", static_cast<E1>(&sin), py::arg("x"));
-  m.def("cos", static_cast<E1>(&cos), py::arg("x"));
-  m.def("tan", static_cast<E1>(&tan), py::arg("x"));
-  m.def("asin", static_cast<E1>(&asin), py::arg("x"));
-  m.def("acos", static_cast<E1>(&acos), py::arg("x"));
-  m.def("atan", static_cast<E1>(&atan), py::arg("x"));
-  m.def("atan2", static_cast<E2>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("sinh", static_cast<E1>(&sinh), py::arg("x"));
-  m.def("cosh", static_cast<E1>(&cosh), py::arg("x"));
-  m.def("tanh", static_cast<E1>(&tanh), py::arg("x"));
-  m.def("abs", static_cast<E1>(&abs), py::arg("x"));
-  m.def("min", static_cast<E2>(&min), py::arg("x"), py::arg("y"));
-  m.def("max", static_cast<E2>(&max), py::arg("x"), py::arg("y"));
-  m.def("sign", static_cast<E1>(&sign), py::arg("x"));
+  m.def("sqr", static_cast<E1>(&sqr), py::arg("x"), "The expression x^2.");
+  m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"), "The expression sqrt(x).");
+  m.def("exp", static_cast<E1>(&exp), py::arg("x"), "The expression exp(x).");
+  m.def("log", static_cast<E1>(&log), py::arg("x"), "The expression log(x) (natural logarithm).");
+  m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"),
+        "The expression x^n, n an integer.");
+  m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "The expression x^p, p a real constant.");
+  m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"), "The expression x^p, p an expression.");
+  m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"),
+        "The expression root(x, n), the n-th root.");
+  m.def("sin", static_cast<E1>(&sin), py::arg("x"), "The expression sin(x).");
+  m.def("cos", static_cast<E1>(&cos), py::arg("x"), "The expression cos(x).");
+  m.def("tan", static_cast<E1>(&tan), py::arg("x"), "The expression tan(x).");
+  m.def("asin", static_cast<E1>(&asin), py::arg("x"), "The expression asin(x).");
+  m.def("acos", static_cast<E1>(&acos), py::arg("x"), "The expression acos(x).");
+  m.def("atan", static_cast<E1>(&atan), py::arg("x"), "The expression atan(x).");
+  m.def("atan2", static_cast<E2>(&atan2), py::arg("y"), py::arg("x"), "The expression atan2(y, x), y first.");
+  m.def("sinh", static_cast<E1>(&sinh), py::arg("x"), "The expression sinh(x).");
+  m.def("cosh", static_cast<E1>(&cosh), py::arg("x"), "The expression cosh(x).");
+  m.def("tanh", static_cast<E1>(&tanh), py::arg("x"), "The expression tanh(x).");
+  m.def("abs", static_cast<E1>(&abs), py::arg("x"), "The expression abs(x).");
+  m.def("min", static_cast<E2>(&min), py::arg("x"), py::arg("y"), "The expression min(x, y).");
+  m.def("max", static_cast<E2>(&max), py::arg("x"), py::arg("y"), "The expression max(x, y).");
+  m.def("sign", static_cast<E1>(&sign), py::arg("x"), "The expression sign(x).");
 }
 
 }  // namespace
@@ -200,12 +204,16 @@ written "(e1, e2, ...)". Or from the builder: Function([x1, x2], expr) or
 Function([x1, x2], [e1, e2]) with x1 = ExprVar("x1"), ... Every evaluation
 encloses the exact real result (decimal constants such as 0.1 in a text are
 enclosed rigorously; a float in the builder is the degenerate interval).)doc")
-      .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"))
-      .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"))
-      .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"))
+      .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"),
+           "f from the variable names and the expression text; ParseError on a bad text (the message points at the "
+           "column).")
+      .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"),
+           "A scalar function of the builder variables vars.")
+      .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"),
+           "A vector function (e1, ..., em) of the builder variables vars.")
       .def("nb_vars", &Function::nb_vars, "Input dimension n.")
       .def("image_dim", &Function::image_dim, "Output dimension m (1 for a scalar function).")
-      .def("var_names", &Function::var_names)
+      .def("var_names", &Function::var_names, "The names of the n variables, in order.")
       .def("exprs", &Function::exprs, "The m output expressions (Expr).")
       .def("tape_size", &Function::tape_size, "Number of distinct nodes in the DAG.")
       .def(
@@ -264,7 +272,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           "Evaluates many boxes at once: xs is a list of IntervalVector or an (N, n, 2) array of bounds; returns "
           "an (N, m, 2) array of bounds, (nan, nan) for an empty interval.")
       .def("__getitem__", &Function::operator[], py::arg("i"), "The i-th component, a scalar Function.")
-      .def("expr_str", &Function::expr_str)
+      .def("expr_str", &Function::expr_str, "The expression as text (it parses back to the same function).")
       .def("__str__", &Function::str)
       .def("__repr__", [](const Function& f) { return "Function(" + f.str() + ")"; });
 }

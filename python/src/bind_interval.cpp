@@ -219,39 +219,43 @@ void init_interval_class(py::module_& m) {
              const double l = bound(lb, false, "Interval(lb, ub)"), u = bound(ub, true, "Interval(lb, ub)");
              return located("Interval(lb, ub)", [=] { return Interval(l, u); });
            }),
-           py::arg("lb"), py::arg("ub"))
-      .def_static("empty", &I::empty)
-      .def_static("all_reals", &I::all_reals)
-      .def_static("pos_reals", &I::pos_reals)
-      .def_static("neg_reals", &I::neg_reals)
+           py::arg("lb"), py::arg("ub"),
+           "[lb, ub]; a float bound is taken as it is, an int bound rounded outward. Interval(inf, -inf) is the "
+           "empty set; Error if lb > ub.")
+      .def_static("empty", &I::empty, "The empty interval.")
+      .def_static("all_reals", &I::all_reals, "The real line [-inf, inf].")
+      .def_static("pos_reals", &I::pos_reals, "[0, inf].")
+      .def_static("neg_reals", &I::neg_reals, "[-inf, 0].")
       .def_static("pi", &I::pi, "A tight enclosure of pi.")
-      .def_static("half_pi", &I::half_pi)
-      .def_static("two_pi", &I::two_pi)
-      .def("lb", &I::lb)
-      .def("ub", &I::ub)
-      .def("mid", &I::mid)
-      .def("diam", &I::diam)
-      .def("width", &I::width)
-      .def("rad", &I::rad)
-      .def("mag", &I::mag)
-      .def("mig", &I::mig)
-      .def("volume", &I::volume)
-      .def("is_empty", &I::is_empty)
-      .def("is_degenerate", &I::is_degenerate)
-      .def("is_unbounded", &I::is_unbounded)
-      .def("is_bounded", &I::is_bounded)
-      .def("is_all_reals", &I::is_all_reals)
-      .def("contains", &I::contains, py::arg("x"))
-      .def("interior_contains", &I::interior_contains, py::arg("x"))
-      .def("is_subset", &I::is_subset, py::arg("y"))
-      .def("is_strict_subset", &I::is_strict_subset, py::arg("y"))
-      .def("is_interior_subset", &I::is_interior_subset, py::arg("y"))
-      .def("is_superset", &I::is_superset, py::arg("y"))
-      .def("intersects", &I::intersects, py::arg("y"))
-      .def("is_disjoint", &I::is_disjoint, py::arg("y"))
+      .def_static("half_pi", &I::half_pi, "A tight enclosure of pi / 2.")
+      .def_static("two_pi", &I::two_pi, "A tight enclosure of 2 pi.")
+      .def("lb", &I::lb, "The lower bound (inf for the empty set).")
+      .def("ub", &I::ub, "The upper bound (-inf for the empty set).")
+      .def("mid", &I::mid, "The midpoint (a finite value for an unbounded interval; NaN for the empty set).")
+      .def("diam", &I::diam, "The width ub - lb, rounded up (NaN for the empty set).")
+      .def("width", &I::width, "Same as diam().")
+      .def("rad", &I::rad, "The smallest r with [mid - r, mid + r] containing x (NaN for the empty set).")
+      .def("mag", &I::mag, "The magnitude: the largest |v| for v in the interval (NaN for the empty set).")
+      .def("mig", &I::mig,
+           "The mignitude: the smallest |v| for v in the interval (0 if it contains 0; NaN for the empty set).")
+      .def("volume", &I::volume, "diam(), 0 for the empty set.")
+      .def("is_empty", &I::is_empty, "True for the empty set.")
+      .def("is_degenerate", &I::is_degenerate, "True when lb == ub (False for the empty set).")
+      .def("is_unbounded", &I::is_unbounded, "True when a bound is infinite.")
+      .def("is_bounded", &I::is_bounded, "True when both bounds are finite.")
+      .def("is_all_reals", &I::is_all_reals, "True for [-inf, inf].")
+      .def("contains", &I::contains, py::arg("x"), "True when the real x is in the interval.")
+      .def("interior_contains", &I::interior_contains, py::arg("x"), "True when x is in the interior (lb < x < ub).")
+      .def("is_subset", &I::is_subset, py::arg("y"), "True when self is a subset of y.")
+      .def("is_strict_subset", &I::is_strict_subset, py::arg("y"),
+           "True when self is a subset of y and differs from it.")
+      .def("is_interior_subset", &I::is_interior_subset, py::arg("y"), "True when self is in the interior of y.")
+      .def("is_superset", &I::is_superset, py::arg("y"), "True when y is a subset of self.")
+      .def("intersects", &I::intersects, py::arg("y"), "True when self and y have a common point.")
+      .def("is_disjoint", &I::is_disjoint, py::arg("y"), "True when self and y have no common point.")
       .def("bisect", &I::bisect, py::arg("ratio") = 0.5, "Two halves split at lb + ratio * diam.")
-      .def("inflate", &I::inflate, py::arg("r"))
-      .def("set_empty", &I::set_empty)
+      .def("inflate", &I::inflate, py::arg("r"), "[lb - r, ub + r], rounded outward (a new interval).")
+      .def("set_empty", &I::set_empty, "Makes this interval empty, in place.")
       .def("__contains__", &I::contains)
       .def(py::pickle([](const I& x) { return bounds_state(x); },
                       [](const py::tuple& t) {
@@ -307,10 +311,11 @@ void init_vector_class(py::module_& m) {
         "IntervalVector(n) (n copies of the real line), or from a list of intervals / numbers / "
         "pairs [lb, ub], or from an (n, 2) array of bounds.")
       .def(py::init([](std::size_t n, const py::object& x) { return V(n, to_interval(x, "IntervalVector(n, x)")); }),
-           py::arg("n"), py::arg("x"))
-      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"))
-      .def_static("empty", &V::empty, py::arg("n"))
-      .def("size", &V::size)
+           py::arg("n"), py::arg("x"), "n copies of the interval x.")
+      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"),
+                  "The degenerate box of the point p.")
+      .def_static("empty", &V::empty, py::arg("n"), "The empty box of dimension n.")
+      .def("size", &V::size, "The dimension n.")
       .def("__len__", &V::size)
       .def("__getitem__", [](const V& v, long long i) { return v[check_index(i, v.size())]; })
       .def("__getitem__",
@@ -328,32 +333,35 @@ void init_vector_class(py::module_& m) {
            })
       .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
       .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i to j inclusive.")
-      .def("put", &V::put, py::arg("start"), py::arg("x"))
-      .def("lb", &V::lb)
-      .def("ub", &V::ub)
-      .def("mid", &V::mid)
-      .def("diam", &V::diam)
-      .def("rad", &V::rad)
-      .def("mag", &V::mag)
-      .def("mig", &V::mig)
-      .def("volume", &V::volume)
-      .def("max_diam", &V::max_diam)
-      .def("min_diam", &V::min_diam)
-      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true)
-      .def("is_empty", &V::is_empty)
-      .def("is_unbounded", &V::is_unbounded)
-      .def("is_degenerate", &V::is_degenerate)
-      .def("contains", &V::contains, py::arg("p"))
-      .def("is_subset", &V::is_subset, py::arg("y"))
-      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"))
-      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"))
-      .def("intersects", &V::intersects, py::arg("y"))
+      .def("put", &V::put, py::arg("start"), py::arg("x"),
+           "Writes the box x into components start, start + 1, ... in place.")
+      .def("lb", &V::lb, "The lower bounds, as a list of floats.")
+      .def("ub", &V::ub, "The upper bounds, as a list of floats.")
+      .def("mid", &V::mid, "The midpoint, as a list of floats.")
+      .def("diam", &V::diam, "The widths of the components, as a list of floats.")
+      .def("rad", &V::rad, "Half the widths, as a list of floats.")
+      .def("mag", &V::mag, "The magnitudes of the components, as a list of floats.")
+      .def("mig", &V::mig, "The mignitudes of the components, as a list of floats.")
+      .def("volume", &V::volume, "The product of the widths.")
+      .def("max_diam", &V::max_diam, "The largest width of a component.")
+      .def("min_diam", &V::min_diam, "The smallest width of a component.")
+      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true,
+           "Index of the widest component (largest=True) or of the narrowest one.")
+      .def("is_empty", &V::is_empty, "True when a component is empty.")
+      .def("is_unbounded", &V::is_unbounded, "True when a component is unbounded.")
+      .def("is_degenerate", &V::is_degenerate, "True when every component is degenerate (a point).")
+      .def("contains", &V::contains, py::arg("p"), "True when the point p is in the box.")
+      .def("is_subset", &V::is_subset, py::arg("y"), "True when self is a subset of y.")
+      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"),
+           "True when self is a subset of y and differs from it.")
+      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"), "True when self is in the interior of y.")
+      .def("intersects", &V::intersects, py::arg("y"), "True when self and y have a common point.")
       .def("bisect", py::overload_cast<double>(&V::bisect, py::const_), py::arg("ratio") = 0.5,
            "Splits the largest component at lb + ratio * diam.")
       .def("bisect", py::overload_cast<std::size_t, double>(&V::bisect, py::const_), py::arg("i"),
-           py::arg("ratio") = 0.5)
-      .def("inflate", &V::inflate, py::arg("r"))
-      .def("set_empty", &V::set_empty)
+           py::arg("ratio") = 0.5, "Splits component i at lb + ratio * diam; returns the two halves.")
+      .def("inflate", &V::inflate, py::arg("r"), "Each component inflated by r (a new box).")
+      .def("set_empty", &V::set_empty, "Makes this box empty, in place.")
       .def("to_numpy", &vector_to_numpy, "An (n, 2) array of bounds (an empty component gives inf, -inf).")
       .def("__array__", [](const V& v, const py::object& dtype, const py::object&) {
              return as_array(vector_to_numpy(v), dtype);
@@ -392,16 +400,18 @@ void init_matrix_class(py::module_& m) {
   c.def(py::init([](std::size_t r, std::size_t k, const py::object& x) {
           return M(r, k, x.is_none() ? Interval() : to_interval(x, "IntervalMatrix(rows, cols, x)"));
         }),
-        py::arg("rows"), py::arg("cols"), py::arg("x") = py::none())
+        py::arg("rows"), py::arg("cols"), py::arg("x") = py::none(),
+        "A rows x cols matrix whose entries are all x (default: the real line).")
       .def(py::init([](const py::object& obj) { return matrix_from(obj); }), py::arg("x"),
            "From a list of rows (each a list of intervals / numbers / pairs, or an IntervalVector), "
            "an (n, m, 2) array of bounds or an (n, m) array of points.")
-      .def_static("identity", &M::identity, py::arg("n"))
-      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"))
-      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"))
-      .def("rows", &M::rows)
-      .def("cols", &M::cols)
-      .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); })
+      .def_static("identity", &M::identity, py::arg("n"), "The n x n identity matrix.")
+      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"), "The empty matrix of the given shape.")
+      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"),
+                  "The degenerate interval matrix of the real matrix p.")
+      .def("rows", &M::rows, "Number of rows.")
+      .def("cols", &M::cols, "Number of columns.")
+      .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); }, "(rows, cols).")
       .def("__len__", &M::rows)
       .def("__getitem__", [](const M& a, std::pair<long long, long long> ij) {
              return a(check_index(ij.first, a.rows()), check_index(ij.second, a.cols()));
@@ -414,26 +424,27 @@ void init_matrix_class(py::module_& m) {
       .def("__setitem__", [](M& a, long long i, const py::object& r) {
              a.set_row(check_index(i, a.rows()), vector_from(r));
            })
-      .def("row", &M::row, py::arg("i"))
-      .def("col", &M::col, py::arg("j"))
-      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"))
-      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"))
-      .def("transpose", &M::transpose)
-      .def_property_readonly("T", &M::transpose)
-      .def("lb", &M::lb)
-      .def("ub", &M::ub)
-      .def("mid", &M::mid)
-      .def("diam", &M::diam)
-      .def("max_diam", &M::max_diam)
-      .def("is_empty", &M::is_empty)
-      .def("is_unbounded", &M::is_unbounded)
-      .def("is_degenerate", &M::is_degenerate)
-      .def("contains", &M::contains, py::arg("p"))
-      .def("is_subset", &M::is_subset, py::arg("y"))
-      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"))
-      .def("intersects", &M::intersects, py::arg("y"))
-      .def("inflate", &M::inflate, py::arg("r"))
-      .def("set_empty", &M::set_empty)
+      .def("row", &M::row, py::arg("i"), "Row i, a copy as an IntervalVector.")
+      .def("col", &M::col, py::arg("j"), "Column j, a copy as an IntervalVector.")
+      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"), "Replaces row i by the box r.")
+      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"), "Replaces column j by the box c.")
+      .def("transpose", &M::transpose, "The transpose (a new matrix).")
+      .def_property_readonly("T", &M::transpose, "The transpose (a new matrix).")
+      .def("lb", &M::lb, "The lower bounds, as a list of rows.")
+      .def("ub", &M::ub, "The upper bounds, as a list of rows.")
+      .def("mid", &M::mid, "The midpoints, as a list of rows.")
+      .def("diam", &M::diam, "The widths of the entries, as a list of rows.")
+      .def("max_diam", &M::max_diam, "The largest width of an entry.")
+      .def("is_empty", &M::is_empty, "True when an entry is empty.")
+      .def("is_unbounded", &M::is_unbounded, "True when an entry is unbounded.")
+      .def("is_degenerate", &M::is_degenerate, "True when every entry is a point.")
+      .def("contains", &M::contains, py::arg("p"), "True when the real matrix p is in the interval matrix.")
+      .def("is_subset", &M::is_subset, py::arg("y"), "True when every entry is a subset of the entry of y.")
+      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"),
+           "True when every entry is in the interior of the entry of y.")
+      .def("intersects", &M::intersects, py::arg("y"), "True when every entry meets the entry of y.")
+      .def("inflate", &M::inflate, py::arg("r"), "Each entry inflated by r (a new matrix).")
+      .def("set_empty", &M::set_empty, "Makes this matrix empty, in place.")
       .def("to_numpy", &matrix_to_numpy, "An (n, m, 2) array of bounds.")
       .def("__array__", [](const M& a, const py::object& dtype, const py::object&) {
              return as_array(matrix_to_numpy(a), dtype);
@@ -473,33 +484,37 @@ void init_functions(py::module_& m) {
   using I = Interval;
   using F1 = I (*)(const I&);
   using F2 = I (*)(const I&, const I&);
-  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"));
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"));
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"));
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "x^2, tighter than x * x (the two factors are the same variable).");
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "Square root, on the part of x above 0 (empty if x < 0).");
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "Exponential.");
   m.def("log", static_cast<F1>(&log), py::arg("x"), "Natural logarithm (on the part of x above 0).");
-  m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"));
-  m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"));
-  m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"));
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"));
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"));
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"));
-  m.def("asin", static_cast<F1>(&asin), py::arg("x"));
-  m.def("acos", static_cast<F1>(&acos), py::arg("x"));
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"));
+  m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"), "x^n for an integer n.");
+  m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "x^p for a real p = exp(p log(x)), on the part of x above 0 (integral p: the integer power).");
+  m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"),
+        "x^p = exp(p log(x)) for an interval p, on the part of x above 0.");
+  m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"),
+        "The n-th root (odd n: also of negative numbers).");
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "Sine.");
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "Cosine.");
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "Tangent (the real line when x meets a pole).");
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"), "Arcsine, on the part of x in [-1, 1].");
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"), "Arccosine, on the part of x in [-1, 1].");
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "Arctangent.");
   m.def("atan2", static_cast<F2>(&atan2), py::arg("y"), py::arg("x"), "atan2(y, x), y first; range [-pi, pi].");
-  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"));
-  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"));
-  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"));
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"));
-  m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"));
-  m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"));
-  m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"));
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"));
-  m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"));
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), "Hyperbolic sine.");
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), "Hyperbolic cosine.");
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), "Hyperbolic tangent.");
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "Absolute value {|v| : v in x}.");
+  m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"), "Componentwise absolute value of a box.");
+  m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"), "{min(a, b) : a in x, b in y}.");
+  m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"), "{max(a, b) : a in x, b in y}.");
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"),
+        "The hull of the signs of the elements of x, within [-1, 1] (sign(0) = 0).");
+  m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), "The smallest interval containing x and y.");
   m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
-        py::arg("y"));
-  m.def("dot", &dot, py::arg("x"), py::arg("y"));
+        py::arg("y"), "The smallest box containing x and y.");
+  m.def("dot", &dot, py::arg("x"), py::arg("y"), "Dot product of two boxes (a rigorous interval sum of products).");
   m.def("norm", &norm, py::arg("x"), "Euclidean norm of a box.");
   m.def("div2", &div2, py::arg("c"), py::arg("b"),
         "Relational division {z : z * b' in c for some b' in b} as two intervals, lower piece first.");

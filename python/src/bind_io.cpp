@@ -13,10 +13,13 @@ namespace sillage::python {
 void init_io(py::module_& m) {
   py::class_<CsvTable>(m, "CsvTable",
                        "A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.")
-      .def_static("read", &CsvTable::read, py::arg("path"))
-      .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>")
-      .def("columns", &CsvTable::columns)
-      .def("nb_rows", &CsvTable::nb_rows)
+      .def_static("read", &CsvTable::read, py::arg("path"),
+                  "Reads the file at path (comma-separated; blank lines and lines starting with '#' are skipped; a "
+                  "UTF-8 byte order mark is skipped). ParseError on a bad cell, Error if the file cannot be read.")
+      .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>",
+                  "Parses text already in memory; source names it in error messages.")
+      .def("columns", &CsvTable::columns, "The header names, in order.")
+      .def("nb_rows", &CsvTable::nb_rows, "Number of data rows.")
       .def(
           "row",
           [](const CsvTable& t, py::ssize_t i) {  // signed: row(-1) is an OutOfRangeError, not a cast error
@@ -25,9 +28,10 @@ void init_io(py::module_& m) {
             }
             return t.row(static_cast<std::size_t>(i));
           },
-          py::arg("i"))
-      .def("has_column", &CsvTable::has_column, py::arg("name"))
-      .def("column", &CsvTable::column, py::arg("name"))
+          py::arg("i"), "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()).")
+      .def("has_column", &CsvTable::has_column, py::arg("name"), "True if a column is called name.")
+      .def("column", &CsvTable::column, py::arg("name"),
+           "Index of the column called name; Error naming the file and the columns it has.")
       .def(
           "values",
           [](const CsvTable& t, const std::string& name) {

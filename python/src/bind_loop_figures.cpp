@@ -27,15 +27,19 @@ void init_loop_figures(py::module_& m) {
       .value("Proven", LoopStatus::Proven)
       .value("Unproven", LoopStatus::Unproven)
       .value("Partial", LoopStatus::Partial);
-  m.def("loop_status", &loop_status, py::arg("loop"));
+  m.def("loop_status", &loop_status, py::arg("loop"),
+        "The status of a detection: Proven (by the degree test T), Unproven (complete, not proven) or Partial (not "
+        "complete).");
   m.def("loop_style", &loop_style, py::arg("status"), "Fill and stroke of a status in the figures.");
 
-  py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions")
-      .def(py::init<>())
-      .def_readwrite("min_leaf_px", &TPlaneFigureOptions::min_leaf_px)
-      .def_readwrite("marker_px", &TPlaneFigureOptions::marker_px)
-      .def_readwrite("crossing_px", &TPlaneFigureOptions::crossing_px)
-      .def_readwrite("show_diagonal", &TPlaneFigureOptions::show_diagonal);
+  py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions", "Drawing options of tplane_figure.")
+      .def(py::init<>(), "Defaults: min_leaf_px 2, marker_px 3, crossing_px 2, show_diagonal True.")
+      .def_readwrite("min_leaf_px", &TPlaneFigureOptions::min_leaf_px,
+                     "Leaves smaller than this (pixels, both sides) are covered by the outline of their component.")
+      .def_readwrite("marker_px", &TPlaneFigureOptions::marker_px,
+                     "Radius of the disk marker of components smaller than 2 * marker_px.")
+      .def_readwrite("crossing_px", &TPlaneFigureOptions::crossing_px, "Radius of the true-crossing points.")
+      .def_readwrite("show_diagonal", &TPlaneFigureOptions::show_diagonal, "Draw the diagonal t1 = t2.");
   m.def(
       "tplane_figure",
       [](const TPlane& tp, const std::optional<std::vector<PathCrossing>>& crossings, const std::string& title,
@@ -46,13 +50,15 @@ void init_loop_figures(py::module_& m) {
       py::arg("width_px") = 600.0, py::arg("options") = TPlaneFigureOptions{},
       "The t-plane (Fig. 6.13): paving, detections by status, diagonal, true crossings; view zooms.");
 
-  py::class_<LoopsMapOptions>(m, "LoopsMapOptions")
-      .def(py::init<>())
-      .def_readwrite("show_partial", &LoopsMapOptions::show_partial)
-      .def_readwrite("boxes", &LoopsMapOptions::boxes)
-      .def_readwrite("projections", &LoopsMapOptions::projections)
-      .def_readwrite("path_px", &LoopsMapOptions::path_px)
-      .def_readwrite("crossing_px", &LoopsMapOptions::crossing_px);
+  py::class_<LoopsMapOptions>(m, "LoopsMapOptions", "Drawing options of loops_map_figure.")
+      .def(py::init<>(), "Defaults: show_partial, boxes and projections True, path_px 0.5, crossing_px 2.5.")
+      .def_readwrite("show_partial", &LoopsMapOptions::show_partial, "Draw the partial detections too.")
+      .def_readwrite("boxes", &LoopsMapOptions::boxes, "Draw the map boxes.")
+      .def_readwrite("projections", &LoopsMapOptions::projections,
+                     "Draw the path over [t1] and [t2] (needs the path times).")
+      .def_readwrite("path_px", &LoopsMapOptions::path_px,
+                     "The path polyline keeps a point when it moved this far (pixels) from the last kept one.")
+      .def_readwrite("crossing_px", &LoopsMapOptions::crossing_px, "Radius of the true crossing points.");
   m.def(
       "loops_map_figure",
       [](const TPlane& tp, const std::optional<std::vector<Vector>>& path,

@@ -82,21 +82,33 @@ void init_loops(py::module_& m) {
       .def("__repr__", &loop_repr);
 
   py::class_<ProofOptions>(m, "ProofOptions", "Tuning of TPlane.compute_proofs (lengths as fractions of eps).")
-      .def(py::init<>())
-      .def_readwrite("degree_edge_fraction", &ProofOptions::degree_edge_fraction)
-      .def_readwrite("degree_max_evaluations", &ProofOptions::degree_max_evaluations)
-      .def_readwrite("count_width_fraction", &ProofOptions::count_width_fraction)
-      .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes)
-      .def_readwrite("newton", &ProofOptions::newton)
-      .def_readwrite("newton_inflation", &ProofOptions::newton_inflation)
-      .def_readwrite("count", &ProofOptions::count)
+      .def(py::init<>(), "The default tuning (see the fields); newton and count on.")
+      .def_readwrite("degree_edge_fraction", &ProofOptions::degree_edge_fraction,
+                     "Boundary edges of a detection are bisected for the degree down to this fraction of eps.")
+      .def_readwrite("degree_max_evaluations", &ProofOptions::degree_max_evaluations,
+                     "Cap on the evaluations of [f] for one degree.")
+      .def_readwrite("count_width_fraction", &ProofOptions::count_width_fraction,
+                     "zeta of Remark 6.1 as a fraction of eps: boxes are bisected for the Jacobian down to this width.")
+      .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes, "Cap on the refined boxes of one count.")
+      .def_readwrite("newton", &ProofOptions::newton, "Run the interval Newton test N (default True).")
+      .def_readwrite("newton_inflation", &ProofOptions::newton_inflation,
+                     "When N fails on the hull, it is retried on the hull widened by this fraction of its radius (then "
+                     "2, 4, 8 times it) while the box stays inside the square, above the diagonal, away from other "
+                     "components; 0: the hull only.")
+      .def_readwrite("count", &ProofOptions::count, "Run the count of loops, Alg. 10 (default True).")
       .def_readwrite("budget", &ProofOptions::budget, "For the whole call (sillage.Budget).");
 
   const py::call_guard<py::gil_scoped_release> nogil;
-  py::class_<TPlane>(m, "TPlane", "Loop detections (Alg. 6) and proofs (Alg. 7-10) in the t-plane.")
-      .def(py::init<const Interval&>(), py::arg("tdomain"))
-      .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"))
-      .def("domain", &TPlane::domain)
+  py::class_<TPlane>(m, "TPlane",
+                     "Loops of a planar trajectory in the t-plane [t0, tf]^2 (thesis ch. 6).\n"
+                     "compute_detections: Alg. 6, a paving of {(t1, t2) | t1 < t2, 0 in [f](t1, t2)} with\n"
+                     "[f] = integral of [v] over [t1] -> [t2] (6.6) (or (7.28) from positions), Outside by\n"
+                     "(6.8)-(6.9), Inner by (6.10); its connected components are the detections.\n"
+                     "compute_proofs: degree test, Newton test, count (Alg. 7-10).")
+      .def(py::init<const Interval&>(), py::arg("tdomain"),
+           "The t-plane tdomain^2; tdomain bounded with lb < ub (Error otherwise).")
+      .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), "The t-plane [t0, tf]^2 of a TDomain.")
+      .def("domain", &TPlane::domain, "The square [t0, tf]^2.")
       .def(
           "compute_detections",
           [](TPlane& tp, double eps, const TubeVector& v, const Budget& b) {
@@ -117,22 +129,30 @@ void init_loops(py::module_& m) {
           [](TPlane& tp, const TubeVector& v, const ProofOptions& o) {
             run_interruptible(o.budget.cancel, [&](const CancelToken& t) { tp.compute_proofs(v, with_token(o, t)); });
           },
-          py::arg("v"), py::arg("options") = ProofOptions{})
+          py::arg("v"), py::arg("options") = ProofOptions{},
+          "Degree test T (Theorem 6.1), Newton test N (6.18) and loop count (Alg. 10) on each complete detection, "
+          "and the map box of every detection, from the 2-D velocity tube v. Error before compute_detections; "
+          "replaces the previous proofs.")
       .def(
           "compute_proofs",
           [](TPlane& tp, const TubeVector& p, const TubeVector& w, const ProofOptions& o) {
             run_interruptible(o.budget.cancel,
                               [&](const CancelToken& t) { tp.compute_proofs(p, w, with_token(o, t)); });
           },
-          py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{})
-      .def("eps", &TPlane::eps)
-      .def("paving", &TPlane::paving, py::return_value_policy::reference_internal)
-      .def("nb_detections", &TPlane::nb_detections)
-      .def("nb_complete_detections", &TPlane::nb_complete_detections)
-      .def("nb_proofs", &TPlane::nb_proofs)
-      .def("nb_newton_proofs", &TPlane::nb_newton_proofs)
-      .def("detections", &TPlane::detections)
-      .def("proofs", &TPlane::proofs);
+          py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{},
+          "The same proofs from positions p and velocities w (7.28).")
+      .def("eps", &TPlane::eps, "The eps of the last detections (0 before).")
+      .def("paving", &TPlane::paving, py::return_value_policy::reference_internal,
+           "The t-plane paving (6.8)-(6.10): Outside, Inner and Boundary t-boxes.")
+      .def("nb_detections", &TPlane::nb_detections, "Number of detections (connected components), complete or not.")
+      .def("nb_complete_detections", &TPlane::nb_complete_detections,
+           "Number of detections strictly inside the square and above its diagonal.")
+      .def("nb_proofs", &TPlane::nb_proofs, "Complete detections proven a loop by the degree test T.")
+      .def("nb_newton_proofs", &TPlane::nb_newton_proofs,
+           "Complete detections proven a unique loop by the Newton test N.")
+      .def("detections", &TPlane::detections,
+           "The detections (Loop), ordered by the lower corner of their hull: chronologically by the first passage.")
+      .def("proofs", &TPlane::proofs, "The detections proven by T.");
 
   // The tubes must outlive the LoopFunction and stay unmodified (queries
   // throw otherwise): keep_alive holds them as long as the Python object.
@@ -142,29 +162,39 @@ void init_loops(py::module_& m) {
            "From a 2-D velocity tube: [f] = integral of [v] over [t1] -> [t2] (6.6).")
       .def(py::init<const TubeVector&, const TubeVector&>(), py::arg("p"), py::arg("w"), py::keep_alive<1, 2>(),
            py::keep_alive<1, 3>(), "From 2-D positions p and velocities w: [f] of (7.28).")
-      .def("has_positions", &LoopFunction::has_positions)
+      .def("has_positions", &LoopFunction::has_positions,
+           "True when built from positions p and velocities w (7.28), False from v alone (6.6).")
       .def("is_empty", &LoopFunction::is_empty, "Some tube has an empty slice: no trajectory, no loop.")
-      .def("time_domain", &LoopFunction::time_domain)
+      .def("time_domain", &LoopFunction::time_domain,
+           "[t0, tf] where every tube is defined: the t-plane is its square.")
       .def("__call__", &LoopFunction::operator(), py::arg("t"), "[f]([t1], [t2]).")
-      .def("velocity_form", &LoopFunction::velocity_form, py::arg("t"))
+      .def("velocity_form", &LoopFunction::velocity_form, py::arg("t"),
+           "The velocity form: the integral of [v] from [t1] to [t2] alone (equal to f without positions).")
       .def("jacobian", &LoopFunction::jacobian, py::arg("t"), "[J_f]([t]) = (-[v]([t1]) | [v]([t2])) (6.18).")
-      .def("velocity", &LoopFunction::velocity, py::arg("t"))
+      .def("velocity", &LoopFunction::velocity, py::arg("t"),
+           "[v]([t]), the velocity hull over the times [t] (within time_domain(), Error otherwise).")
       .def("position", &LoopFunction::position, py::arg("t"),
            "[p]([t]); from v alone, relative to the start of v's time domain.")
       .def("integral_bounds", &LoopFunction::integral_bounds, py::arg("t1"), py::arg("t2"),
            "(ranges of the integral of v^-, of v^+) over t1 in [t1], t2 in [t2] (6.11).");
 
-  py::class_<DegreeOptions>(m, "DegreeOptions")
-      .def(py::init<>())
-      .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length)
-      .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations)
-      .def_readwrite("budget", &DegreeOptions::budget);
-  py::class_<DegreeResult>(m, "DegreeResult")
-      .def_readonly("degree", &DegreeResult::degree)
-      .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations)
-      .def_readonly("nb_pieces", &DegreeResult::nb_pieces)
-      .def_readonly("nb_unresolved", &DegreeResult::nb_unresolved)
-      .def("proves_zero", &DegreeResult::proves_zero)
+  py::class_<DegreeOptions>(m, "DegreeOptions", "Tuning of topological_degree.")
+      .def(py::init<>(), "Defaults: min_edge_length 1e-9, max_evaluations 2^20.")
+      .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length,
+                     "Boundary pieces are bisected until they exclude 0 or are shorter than this.")
+      .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations,
+                     "Cap on the evaluations of [f] for one degree (an inconclusive result, not an error).")
+      .def_readwrite("budget", &DegreeOptions::budget, "Cancellation and time (sillage.Budget); exceeding it raises.");
+  py::class_<DegreeResult>(m, "DegreeResult", "The result of topological_degree.")
+      .def_readonly("degree", &DegreeResult::degree,
+                    "The degree when every boundary piece excludes 0; None otherwise (inconclusive: nothing proven or "
+                    "disproven).")
+      .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations, "Calls of [f].")
+      .def_readonly("nb_pieces", &DegreeResult::nb_pieces, "Boundary pieces of the final cover.")
+      .def_readonly("nb_unresolved", &DegreeResult::nb_unresolved,
+                    "Pieces with 0 in [f] at the floor, or left unevaluated once max_evaluations was spent.")
+      .def("proves_zero", &DegreeResult::proves_zero,
+           "True when the degree is known and non-zero: f has a zero in the region.")
       .def("__repr__", [](const DegreeResult& r) {
         return "<DegreeResult degree " + optional_str(r.degree) + ", " + std::to_string(r.nb_evaluations) +
                " evaluations, " + std::to_string(r.nb_unresolved) + " unresolved>";
@@ -178,7 +208,8 @@ void init_loops(py::module_& m) {
           return topological_degree(boxes, f.function(), with_token(o, t));
         });
       },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{});
+      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
+      "Degree of the LoopFunction f over a union of 2-D boxes, from [f] on its refined boundary (Theorem 6.1).");
   m.def(
       "topological_degree",
       [](const std::vector<ContourLoop>& loops, const LoopFunction& f, const DegreeOptions& o) {
@@ -186,7 +217,9 @@ void init_loops(py::module_& m) {
           return topological_degree(loops, f.function(), with_token(o, t));
         });
       },
-      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{});
+      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
+      "Degree of the LoopFunction f over the region bounded by oriented contour loops (contour orientation: holes "
+      "clockwise).");
   m.def(
       "topological_degree",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
@@ -199,15 +232,16 @@ void init_loops(py::module_& m) {
       [](const std::vector<ContourLoop>& loops, const py::function& f, const DegreeOptions& o) {
         return topological_degree(loops, plane_function(f), o);
       },
-      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{});
+      py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
+      "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
-  py::class_<NewtonOptions>(m, "NewtonOptions")
-      .def(py::init<>())
-      .def_readwrite("max_iterations", &NewtonOptions::max_iterations);
-  py::class_<NewtonResult>(m, "NewtonResult")
-      .def_readonly("proven", &NewtonResult::proven)
-      .def_readonly("box", &NewtonResult::box)
-      .def_readonly("nb_iterations", &NewtonResult::nb_iterations)
+  py::class_<NewtonOptions>(m, "NewtonOptions", "Tuning of newton_test.")
+      .def(py::init<>(), "Defaults: max_iterations 20.")
+      .def_readwrite("max_iterations", &NewtonOptions::max_iterations, "Newton contractions [t] &= N([t]) at most.");
+  py::class_<NewtonResult>(m, "NewtonResult", "The result of newton_test.")
+      .def_readonly("proven", &NewtonResult::proven, "True when a unique zero of every f enclosed exists in box.")
+      .def_readonly("box", &NewtonResult::box, "The contracted box.")
+      .def_readonly("nb_iterations", &NewtonResult::nb_iterations, "Newton contractions done.")
       .def("__repr__", [](const NewtonResult& r) {
         return std::string("<NewtonResult ") + (r.proven ? "proven" : "not proven") + ", box " + r.box.str() + ">";
       });
@@ -226,14 +260,17 @@ void init_loops(py::module_& m) {
       py::arg("box"), py::arg("f"), py::arg("jacobian"), py::arg("options") = NewtonOptions{},
       "Interval Newton test: proven when N([t]) lies in the interior of [t].");
 
-  py::class_<CountOptions>(m, "CountOptions")
-      .def(py::init<>())
-      .def_readwrite("min_width", &CountOptions::min_width)
-      .def_readwrite("max_boxes", &CountOptions::max_boxes)
-      .def_readwrite("budget", &CountOptions::budget);
-  py::class_<CountResult>(m, "CountResult")
-      .def_readonly("count", &CountResult::count)
-      .def_readonly("nb_boxes", &CountResult::nb_boxes)
+  py::class_<CountOptions>(m, "CountOptions", "Tuning of count_zeros.")
+      .def(py::init<>(), "Defaults: min_width 1e-9, max_boxes 2^16.")
+      .def_readwrite("min_width", &CountOptions::min_width,
+                     "zeta of Remark 6.1: boxes are not bisected below this width.")
+      .def_readwrite("max_boxes", &CountOptions::max_boxes,
+                     "Cap on the refined boxes (an inconclusive result, not an error).")
+      .def_readwrite("budget", &CountOptions::budget,
+                     "Cancellation and time (sillage.Budget); each box counts; exceeding it raises.");
+  py::class_<CountResult>(m, "CountResult", "The result of count_zeros.")
+      .def_readonly("count", &CountResult::count, "Exact number of zeros in the region when proven, else None.")
+      .def_readonly("nb_boxes", &CountResult::nb_boxes, "Boxes after the refinement.")
       .def("__repr__", [](const CountResult& r) {
         return "<CountResult count " + (r.count ? std::to_string(*r.count) : std::string("None")) + ", " +
                std::to_string(r.nb_boxes) + " boxes>";
@@ -255,12 +292,12 @@ void init_loops(py::module_& m) {
       "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
-      .def_readonly("t1", &PathCrossing::t1)
-      .def_readonly("t2", &PathCrossing::t2)
-      .def_readonly("x", &PathCrossing::x)
-      .def_readonly("y", &PathCrossing::y)
-      .def_readonly("segment1", &PathCrossing::segment1)
-      .def_readonly("segment2", &PathCrossing::segment2)
+      .def_readonly("t1", &PathCrossing::t1, "The first passage time (t1 < t2).")
+      .def_readonly("t2", &PathCrossing::t2, "The second passage time.")
+      .def_readonly("x", &PathCrossing::x, "x of the crossing point.")
+      .def_readonly("y", &PathCrossing::y, "y of the crossing point.")
+      .def_readonly("segment1", &PathCrossing::segment1, "The segment [k, k+1] of the samples holding t1.")
+      .def_readonly("segment2", &PathCrossing::segment2, "The segment [k, k+1] holding t2 (segment1 + 1 < segment2).")
       .def("__repr__", [](const PathCrossing& c) {
         return "<PathCrossing t1=" + std::to_string(c.t1) + " t2=" + std::to_string(c.t2) + ">";
       });

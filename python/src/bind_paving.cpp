@@ -79,10 +79,10 @@ void init_paving(py::module_& m) {
       .value("Outside", PavingTag::Outside, "proven outside X (blue)");
 
   py::class_<ContourEdge>(m, "ContourEdge", "An oriented edge from a to b; the region lies on its left.")
-      .def_property_readonly("a", [](const ContourEdge& e) { return point(e.a); })
-      .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); })
+      .def_property_readonly("a", [](const ContourEdge& e) { return point(e.a); }, "The start point (x, y).")
+      .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); }, "The end point (x, y).")
       .def("box", &ContourEdge::box, "The edge as a degenerate box [b].")
-      .def("length", &ContourEdge::length)
+      .def("length", &ContourEdge::length, "The Euclidean length of the edge.")
       .def("__repr__", [](const ContourEdge& e) {
         return "<ContourEdge " + py::repr(point(e.a)).cast<std::string>() + " -> " +
                py::repr(point(e.b)).cast<std::string>() + ">";
@@ -90,26 +90,26 @@ void init_paving(py::module_& m) {
 
   py::class_<ContourLoop>(m, "ContourLoop",
                           "A closed loop of the boundary: counter-clockwise (outer) or clockwise (hole).")
-      .def_readonly("edges", &ContourLoop::edges)
-      .def_readonly("is_hole", &ContourLoop::is_hole)
+      .def_readonly("edges", &ContourLoop::edges, "The oriented edges, in order around the loop.")
+      .def_readonly("is_hole", &ContourLoop::is_hole, "True for a clockwise loop around a hole.")
       .def("vertices",
            [](const ContourLoop& l) {
              py::list r;
              for (const auto& v : l.vertices()) r.append(point(v));
              return r;
-           })
-      .def("length", &ContourLoop::length)
+           }, "The vertices in order, a list of points (x, y).")
+      .def("length", &ContourLoop::length, "The perimeter of the loop.")
       .def("__len__", [](const ContourLoop& l) { return l.edges.size(); })
       .def("__repr__", [](const ContourLoop& l) { return "<ContourLoop " + l.str() + ">"; });
 
   py::class_<Component>(m, "Component", "A connected component of the outer approximation (corners connect).")
-      .def_readonly("boxes", &Component::boxes)
-      .def_readonly("tags", &Component::tags)
-      .def_readonly("hull", &Component::hull)
-      .def_readonly("volume", &Component::volume)
-      .def("size", &Component::size)
+      .def_readonly("boxes", &Component::boxes, "The leaves of the component.")
+      .def_readonly("tags", &Component::tags, "The tag of each leaf (PavingTag).")
+      .def_readonly("hull", &Component::hull, "The hull of the leaves.")
+      .def_readonly("volume", &Component::volume, "The sum of the leaf volumes.")
+      .def("size", &Component::size, "The number of leaves.")
       .def("__len__", &Component::size)
-      .def("count", &Component::count, py::arg("tag"))
+      .def("count", &Component::count, py::arg("tag"), "The number of leaves with this tag.")
       .def("contour", &Component::contour, "Oriented boundary loops (2-D components).")
       .def("__repr__", [](const Component& c) {
         return "<Component of " + std::to_string(c.size()) + " boxes, hull " + c.hull.str() + ">";
@@ -120,30 +120,35 @@ void init_paving(py::module_& m) {
         py::arg("tags") = std::vector<PavingTag>{}, "Connected components of a list of boxes.");
 
   py::class_<Paving>(m, "Paving", "Result of a set inversion: a binary tree of boxes whose leaves are tagged.")
-      .def("dim", &Paving::dim)
-      .def("is_empty", &Paving::is_empty)
+      .def("dim", &Paving::dim, "The dimension of the boxes.")
+      .def("is_empty", &Paving::is_empty, "True for the paving of an empty initial box (no node).")
       .def("domain", &Paving::domain, "The initial box.")
-      .def("boxes", &Paving::boxes, py::arg("tag"))
+      .def("boxes", &Paving::boxes, py::arg("tag"),
+           "The leaves of a tag, in pre-order ('left before right', independent of threads).")
       .def("inner", &Paving::inner, "Boxes proven in X (the inner approximation).")
       .def("boundary", &Paving::boundary, "Undetermined boxes.")
       .def("outer", &Paving::outer, "The outer approximation: inner and boundary boxes.")
       .def("outside", &Paving::outside, "Boxes proven outside X.")
       .def("boxes_array", &boxes_array, py::arg("tag"), "Leaves of a tag as a numpy array (k, dim, 2).")
-      .def("nb_nodes", &Paving::nb_nodes)
-      .def("nb_leaves", &Paving::nb_leaves)
-      .def("count", &Paving::count, py::arg("tag"))
-      .def("volume", &Paving::volume, py::arg("tag"))
-      .def("outer_volume", &Paving::outer_volume)
+      .def("nb_nodes", &Paving::nb_nodes, "The number of nodes of the tree (leaves and internal nodes).")
+      .def("nb_leaves", &Paving::nb_leaves, "The number of leaves.")
+      .def("count", &Paving::count, py::arg("tag"), "The number of leaves with this tag.")
+      .def("volume", &Paving::volume, py::arg("tag"),
+           "Sum of the leaf volumes of a tag (a floating-point measure, not a set).")
+      .def("outer_volume", &Paving::outer_volume, "Volume of the outer approximation X+ = inner & boundary leaves.")
       .def("hull", &Paving::hull, "Hull of the outer approximation.")
       .def("tag_at", &Paving::tag_at, py::arg("point"), "Tag at a point, None outside the initial box.")
-      .def("components", &Paving::components)
-      .def("node_box", &Paving::node_box, py::arg("i"))
-      .def("is_leaf", &Paving::is_leaf, py::arg("i"))
-      .def("left", &Paving::left, py::arg("i"))
-      .def("right", &Paving::right, py::arg("i"))
-      .def("tag", &Paving::tag, py::arg("i"))
-      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"))
-      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"))
+      .def("components", &Paving::components,
+           "Connected components of the outer approximation X+, in a deterministic order.")
+      .def("node_box", &Paving::node_box, py::arg("i"),
+           "The box of node i (pre-order index; the left child of i is i + 1).")
+      .def("is_leaf", &Paving::is_leaf, py::arg("i"), "True when node i is a leaf.")
+      .def("left", &Paving::left, py::arg("i"), "Index of the left child of the internal node i.")
+      .def("right", &Paving::right, py::arg("i"), "Index of the right child of the internal node i.")
+      .def("tag", &Paving::tag, py::arg("i"), "Tag of the leaf i; Error for an internal node.")
+      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"), "Pre-order indices of the leaves with the given tag.")
+      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"),
+           "Indices of the leaves whose closed box intersects box (tree descent).")
       .def("__eq__", &Paving::operator==)
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
@@ -155,7 +160,8 @@ void init_paving(py::module_& m) {
              if (budget) o.budget = *budget;
              return o;
            }),
-           py::arg("parallel") = true, py::arg("budget") = nullptr)
+           py::arg("parallel") = true, py::arg("budget") = nullptr,
+           "Options: parallel (oneTBB tasks, default True) and a Budget (default: 10^7 boxes, 1 GiB).")
       .def_readwrite("parallel", &SiviaOptions::parallel,
                      "Grow subtrees as oneTBB tasks (default True). The paving does not depend on it.")
       .def_readwrite("budget", &SiviaOptions::budget,
@@ -181,7 +187,8 @@ void init_paving(py::module_& m) {
       [](const IntervalVector& x0, const Function& f, const Interval& y, double eps, const SiviaOptions& o) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
+      "SIVIA (Alg. 1) for a scalar f: paving of x0 for X = f^-1([y]).");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
@@ -196,7 +203,8 @@ void init_paving(py::module_& m) {
          const SiviaOptions& o) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, IntervalVector{y}, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts());
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
+      "SIVIA coupled with a contractor (Fig. 2.13) for a scalar f and an interval y.");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
@@ -209,7 +217,8 @@ void init_paving(py::module_& m) {
       [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions& o) {
         return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
+      "SIVIA with a Python inclusion function f(box) -> Interval for X = f^-1([y]); always sequential.");
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) {

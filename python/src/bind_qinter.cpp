@@ -44,8 +44,9 @@ that satisfies at least m - q of the m constraints ("at most q are wrong"):
 x & q_inter([c.contract(copy of x) for c in ctcs], q). q = 0 is CtcInter; q >= m
 leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
       .def(py::init([](const py::iterable& ctcs, int q) { return std::make_shared<CtcQInter>(hold_ctcs(ctcs), q); }),
-           py::arg("ctcs"), py::arg("q"))
-      .def("q", &CtcQInter::q);
+           py::arg("ctcs"), py::arg("q"),
+           "The q-relaxed intersection of the contractors ctcs (all on the same variables); 0 <= q (else Error).")
+      .def("q", &CtcQInter::q, "The number of constraints allowed to be wrong.");
 
   py::class_<GomneResult>(m, "GomneResult", "What gomne proved; see gomne.")
       .def_readonly("q", &GomneResult::q,
@@ -55,7 +56,7 @@ leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
       .def_readonly("outliers", &GomneResult::outliers,
                     "Indices of the measurements violated on the whole q-relaxed set (proven wrong if at most q are).")
       .def_readonly("leaves", &GomneResult::leaves, "The boxes of the paving of the q-relaxed set.")
-      .def("is_empty", &GomneResult::is_empty)
+      .def("is_empty", &GomneResult::is_empty, "True when no box is left (more than q_max constraints are wrong).")
       .def("__repr__", [](const GomneResult& r) {
         return "<GomneResult q=" + std::to_string(r.q) + " box=" + r.box.str() + " outliers=" +
                py::repr(py::cast(r.outliers)).cast<std::string>() + ">";
@@ -92,9 +93,10 @@ ctc = CtcFunction(|z - b|, r).)doc")
       .def(py::init([](const Interval& t, const IntervalVector& z, const py::object& ctc) {
              return TubeObservation{t, z, ctc.is_none() ? nullptr : hold_ctc(ctc)};
            }),
-           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none())
-      .def_readwrite("t", &TubeObservation::t)
-      .def_readwrite("z", &TubeObservation::z)
+           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(),
+           "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint).")
+      .def_readwrite("t", &TubeObservation::t, "The time interval of the fix.")
+      .def_readwrite("z", &TubeObservation::z, "The box of the fix (contracted by ctc).")
       .def("__repr__", [](const TubeObservation& o) {
         return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + ">";
       });
@@ -106,8 +108,8 @@ then intersects x, gate by gate and slice by slice, with the q-relaxed
 intersection of the copies: a trajectory satisfying m - q fixes is kept. Returns
 the indices of the fixes no trajectory of the input x satisfies (wrong, if at
 most q are). The TDomain is never sampled.)doc")
-      .def(py::init<int>(), py::arg("q"))
-      .def("q", &CtcQEval::q)
+      .def(py::init<int>(), py::arg("q"), "At most q fixes are wrong; q >= 0 (else Error).")
+      .def("q", &CtcQEval::q, "The number of fixes allowed to be wrong.")
       .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
            "Contracts x in place; obs is a list of TubeObservation.");
 

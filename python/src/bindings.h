@@ -19,7 +19,7 @@ Interval int_enclosure(const py::handle& h);
 template <class Class>
 void def_copy(Class& cls) {
   using T = typename Class::type;
-  cls.def("copy", [](const T& x) { return T(x); })
+  cls.def("copy", [](const T& x) { return T(x); }, "An independent copy (copy.copy and copy.deepcopy give the same).")
       .def("__copy__", [](const T& x) { return T(x); })
       .def("__deepcopy__", [](const T& x, py::dict) { return T(x); });
 }
