@@ -21,13 +21,13 @@ void init_ctc_eval(py::module_& m) {
           [](const CtcEval& c, Interval& t, Interval& z, Tube& y, const Tube* w) {
             return w ? c.contract(t, z, y, *w) : c.contract(t, z, y);
           },
-          py::arg("t"), py::arg("z"), py::arg("y"), py::arg("w") = nullptr)
+          py::arg("t").noconvert(), py::arg("z").noconvert(), py::arg("y"), py::arg("w") = nullptr)
       .def(
           "contract",
           [](const CtcEval& c, Interval& t, IntervalVector& z, TubeVector& y, const TubeVector* w) {
             return w ? c.contract(t, z, y, *w) : c.contract(t, z, y);
           },
-          py::arg("t"), py::arg("z"), py::arg("y"), py::arg("w") = nullptr);
+          py::arg("t").noconvert(), py::arg("z").noconvert(), py::arg("y"), py::arg("w") = nullptr);
 
   py::class_<CtcIncrement, NetworkCtc, std::shared_ptr<CtcIncrement>>(
       m, "CtcIncrement",

@@ -17,39 +17,27 @@ constexpr int kMaxParamPasses = 64;
 // Boxes contracted together (one HC4 batch); their rows stay in cache.
 constexpr std::size_t kChunk = 256;
 
-Interval& time_atom(TubeData& d, std::size_t i) { return (i & 1) ? d.slices[i / 2] : d.gates[i / 2]; }
+}  // namespace
+
+namespace {
+
+std::string name_of(const std::shared_ptr<const Ctc>& ctc) {
+  if (!ctc) throw Error("ContractorNetwork::add: null contractor");
+  return ctc->name();
+}
 
 }  // namespace
 
-TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
-                         std::vector<std::shared_ptr<TubeDomain>> tubes)
-    : CnNode(std::move(ranges)), ctc_(std::move(ctc)), tubes_(std::move(tubes)) {
-  if (!ctc_) throw Error("ContractorNetwork::add: null contractor");
-  const std::string where = "ContractorNetwork::add(" + ctc_->name() + ")";
-  if (tubes_.size() != this->ranges().size()) throw Error(where + ": one entry per range expected");
+TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<BoundDomain>& args)
+    : TubeNode(name_of(ctc), args), ctc_(std::move(ctc)) {
   std::size_t nb_vars = 0;
-  const TDomain* td = nullptr;
-  for (std::size_t g = 0; g < tubes_.size(); ++g) {
-    const AtomRange& a = this->ranges()[g];
-    if (!tubes_[g]) {
-      nb_vars += a.count;
-      nb_params_ += a.count;
-      continue;
-    }
-    ++nb_vars;
-    const Tube& x = tubes_[g]->tube();
-    if (a.first != 0 || a.count != tubes_[g]->nb_atoms()) {
-      throw DimensionError(where + ": argument " + std::to_string(g) +
-                           " must be a whole tube (all its slices and gates)");
-    }
-    if (td && x.tdomain().get() != td) {
-      throw DimensionError(where + ": the tubes are not on one TDomain (argument " + std::to_string(g) + ")");
-    }
-    td = x.tdomain().get();
-    nb_time_atoms_ = tubes_[g]->nb_atoms();
+  for (std::size_t g = 0; g < nb_args(); ++g) {
+    tubes_.push_back(tube(g) ? whole_tubes(g, 1, "tube arguments").front() : nullptr);
+    nb_vars += tube(g) ? 1 : ranges()[g].count;
+    if (!tube(g)) nb_params_ += ranges()[g].count;
   }
   if (nb_vars != ctc_->nb_vars()) {
-    throw DimensionError(where + ": the contractor acts on " + std::to_string(ctc_->nb_vars()) +
+    throw DimensionError(where() + ": the contractor acts on " + std::to_string(ctc_->nb_vars()) +
                          " variables but the domains given make " + std::to_string(nb_vars) +
                          " (a tube counts as one variable)");
   }
@@ -81,7 +69,7 @@ bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& ato
   const std::size_t chunk = nb_params_ > 0 ? 1 : kChunk;
   std::vector<Interval> before(n * chunk), box;
   std::vector<std::size_t> ids;  // the time atoms of the chunk
-  const std::size_t last = nb_time_atoms_ - 1;
+  const std::size_t last = nb_time_atoms() - 1;
   std::vector<char> touched(tubes_.size(), 0);
   const auto touch = [&] {
     for (std::size_t g = 0; g < tubes_.size(); ++g)
@@ -111,7 +99,7 @@ bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& ato
             if (i > 0) h &= d.slices[i / 2 - 1];
             if (i < last) h &= d.slices[i / 2];
             if (h != x) {
-              if (shrank(x, h, r.ratio)) r.changed.push_back(offset(g) + i);
+              changes(r, g).atom(i, x, h);
               x = h;
               touched[g] = 1;
             }
@@ -136,7 +124,7 @@ bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& ato
           Interval& x = time_atom(tubes_[g]->tube().data(), i);
           const Interval now = ok ? (x & box[v * c + j]) : Interval::empty();
           if (now != x) {
-            if (shrank(before[v * c + j], now, r.ratio)) r.changed.push_back(offset(g) + i);
+            changes(r, g).atom(i, before[v * c + j], now);
             x = now;
             touched[g] = 1;
           }
@@ -157,42 +145,14 @@ bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& ato
 }
 
 bool TubeCtcNode::run(NodeRun& r) const {
-  // The time atoms to contract.
-  std::vector<std::size_t> atoms;
-  bool all = r.all;
-  if (!all) {
-    // A changed slice brings its two gates. Several tubes interleave their
-    // atoms: a short list is sorted, a long one merged through flags.
-    const bool long_list = 3 * r.dirty.size() > nb_time_atoms_ / 16;
-    std::vector<char> mark(long_list ? nb_time_atoms_ : 0, 0);
-    for (const std::size_t pos : r.dirty) {
-      const std::size_t g = static_cast<std::size_t>(
-          std::upper_bound(ranges().begin(), ranges().end(), pos,
-                           [&](std::size_t p, const AtomRange& a) { return p < offset(&a - ranges().data()); }) -
-          ranges().begin() - 1);
-      if (!tubes_[g]) {  // a constant changed: every time element may shrink
-        all = true;
-        break;
-      }
-      const std::size_t i = pos - offset(g);
-      const std::size_t first = (i & 1) ? i - 1 : i, last = (i & 1) ? i + 1 : i;
-      for (std::size_t j = first; j <= last; ++j) {
-        if (long_list) mark[j] = 1;
-        else atoms.push_back(j);
-      }
-    }
-    if (!long_list) {
-      std::sort(atoms.begin(), atoms.end());
-      atoms.erase(std::unique(atoms.begin(), atoms.end()), atoms.end());
-    } else if (!all) {
-      for (std::size_t j = 0; j < nb_time_atoms_; ++j)
-        if (mark[j]) atoms.push_back(j);
-    }
-  }
-  if (all) {
-    atoms.resize(nb_time_atoms_);
-    for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
-  }
+  // The time atoms to contract: all when a constant changed.
+  bool constants = false;
+  std::vector<std::size_t> atoms = dirty_time_atoms(r, constants);
+  const auto all_atoms = [&] {
+    atoms.resize(nb_time_atoms());
+    for (std::size_t i = 0; i < nb_time_atoms(); ++i) atoms[i] = i;
+  };
+  if (constants) all_atoms();
 
   // Constants: read, intersect with every contracted time element, write back.
   IntervalVector params(std::max<std::size_t>(nb_params_, 1));
@@ -230,10 +190,7 @@ bool TubeCtcNode::run(NodeRun& r) const {
   }
   for (int pass = 0; write_params() && pass < kMaxParamPasses; ++pass) {
     if (params.is_empty()) return false;
-    if (atoms.size() != nb_time_atoms_) {
-      atoms.resize(nb_time_atoms_);
-      for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
-    }
+    if (atoms.size() != nb_time_atoms()) all_atoms();
     read_params();
     if (!contract_atoms(r, atoms, params)) {
       write_params();

@@ -19,20 +19,17 @@
 #include <memory>
 #include <vector>
 
-#include "sillage/cn/cn_node.h"
-#include "sillage/cn/tube_domain.h"
+#include "sillage/cn/tube_node.h"
 #include "sillage/expr/function.h"
 
 namespace sillage {
 
-class TubeCtcNode : public CnNode {
+class TubeCtcNode : public TubeNode {
  public:
-  // `tubes[r]`: the TubeDomain of range r, or null for a constant range
-  // (Interval or box atoms). Every tube range must cover its whole tube, and
-  // all tubes must share one TDomain (DimensionError otherwise).
-  TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
-              std::vector<std::shared_ptr<TubeDomain>> tubes);
-  std::string name() const override { return ctc_->name(); }
+  // `args`: tubes (one variable each) and constants (Interval or box atoms).
+  // Every tube argument must be a whole tube, and all tubes must share one
+  // TDomain (DimensionError otherwise).
+  TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<BoundDomain>& args);
   std::string describe() const override { return ctc_->describe(); }
   bool run(NodeRun& r) const override;
 
@@ -46,8 +43,7 @@ class TubeCtcNode : public CnNode {
   std::shared_ptr<const Ctc> ctc_;
   const Function* f_ = nullptr;        // fast path: HC4 of a CtcFunction
   const IntervalVector* image_ = nullptr;
-  std::vector<std::shared_ptr<TubeDomain>> tubes_;
-  std::size_t nb_time_atoms_ = 0;      // 2N+1
+  std::vector<std::shared_ptr<TubeDomain>> tubes_;  // per argument, null for a constant
   std::size_t nb_params_ = 0;
 };
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <type_traits>
 
+#include "sillage/cn/tube_pair_node.h"
 #include "sillage/dynamics/deriv_rounding.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
 #include "sillage/dynamics/slice_deriv.h"
-#include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -236,7 +236,7 @@ void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::
 }
 
 std::shared_ptr<const CnNode> CtcDeriv::make_node(const std::vector<BoundDomain>& args) const {
-  return make_deriv_node(*this, args);
+  return make_tube_pair_node(*this, args);
 }
 
 bool CtcDeriv::contract(Tube& x, const Tube& v) const {

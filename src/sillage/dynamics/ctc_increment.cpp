@@ -1,6 +1,6 @@
 #include "sillage/dynamics/ctc_increment.h"
 
-#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/cn/tube_pair_node.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -42,7 +42,7 @@ bool CtcIncrement::contract(TubeVector& x, const TubeVector& i) const {
 }
 
 std::shared_ptr<const CnNode> CtcIncrement::make_node(const std::vector<BoundDomain>& args) const {
-  return make_increment_node(*this, args);
+  return make_tube_pair_node(*this, args);
 }
 
 }  // namespace sillage
