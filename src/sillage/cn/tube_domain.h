@@ -9,6 +9,7 @@
 // its own, TubeComponentDomain). Refining the TDomain after registration
 // changes the layout, and assigning a tube of another TDomain changes the
 // times of the slices: check_layout() then throws, as for a resized box.
+#include <cstddef>
 #include <memory>
 
 #include "sillage/cn/domain.h"
@@ -16,7 +17,20 @@
 
 namespace sillage {
 
-class TubeDomain : public Domain {
+// The atom encoding of a tube, defined once: TubeDomain, TubeNode and every
+// tube contractor node inherit it.
+struct TubeAtoms {
+  static constexpr std::size_t gate_atom(std::size_t k) { return 2 * k; }
+  static constexpr std::size_t slice_atom(std::size_t k) { return 2 * k + 1; }
+  static constexpr bool is_slice(std::size_t a) { return (a & 1) != 0; }
+  static constexpr std::size_t time_index(std::size_t a) { return a / 2; }  // the slice or gate number
+  static Interval& time_atom(TubeData& d, std::size_t a) { return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2]; }
+  static const Interval& time_atom(const TubeData& d, std::size_t a) {
+    return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2];
+  }
+};
+
+class TubeDomain : public Domain, public TubeAtoms {
  public:
   explicit TubeDomain(std::shared_ptr<Tube> x);
   std::size_t nb_atoms() const override { return 2 * nb_slices_ + 1; }

@@ -41,19 +41,11 @@
 
 namespace sillage {
 
-class TubeNode : public CnNode {
+// The atom encoding (gate_atom, slice_atom, is_slice, time_index, time_atom)
+// is TubeAtoms' (tube_domain.h).
+class TubeNode : public CnNode, public TubeAtoms {
  public:
   std::string name() const override { return name_; }
-
-  // The atom encoding of a tube domain (TubeDomain): 2N+1 atoms.
-  static constexpr std::size_t gate_atom(std::size_t k) { return 2 * k; }
-  static constexpr std::size_t slice_atom(std::size_t k) { return 2 * k + 1; }
-  static constexpr bool is_slice(std::size_t a) { return (a & 1) != 0; }
-  static constexpr std::size_t time_index(std::size_t a) { return a / 2; }  // the slice or gate number
-  static Interval& time_atom(TubeData& d, std::size_t a) { return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2]; }
-  static const Interval& time_atom(const TubeData& d, std::size_t a) {
-    return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2];
-  }
 
  protected:
   // `name`: the contractor's, for errors and reports; `args`: the bound

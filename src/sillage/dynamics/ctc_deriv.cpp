@@ -83,13 +83,6 @@ bool backward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& 
   return ok;
 }
 
-void set_empty(Tube& x) {
-  TubeData& d = x.data();
-  std::fill(d.slices.begin(), d.slices.end(), Interval::empty());
-  std::fill(d.gates.begin(), d.gates.end(), Interval::empty());
-  x.touch();
-}
-
 void check_pair(const Tube& x, const Tube& v, const char* where) {
   if (x.tdomain() != v.tdomain()) {
     throw DimensionError(std::string(where) + ": x and v are not on the same TDomain (" +
@@ -165,7 +158,7 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
   const auto vg = v.gates();
   for (std::size_t k = first; k <= last + 1; ++k) {
     if (vg[k].is_empty()) {
-      set_empty(x);
+      x.set(Interval::empty());
       return false;
     }
   }
@@ -179,7 +172,7 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
   const bool ok = sweeps<deriv::SoftRounding>(p, d, first, last, changed);
 #endif
   if (!ok) {
-    set_empty(x);
+    x.set(Interval::empty());
     return false;
   }
   if (changed) x.touch();
@@ -205,7 +198,7 @@ bool each_component(TubeVector& x, F f) {
   bool ok = true;
   for (std::size_t i = 0; i < x.size() && ok; ++i) ok = f(i);
   if (!ok) {
-    for (std::size_t i = 0; i < x.size(); ++i) set_empty(x[i]);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
   }
   return ok;
 }

@@ -12,13 +12,6 @@ namespace sillage {
 
 namespace {
 
-void set_tube_empty(Tube& y) {
-  TubeData& d = y.data();
-  for (Interval& v : d.slices) v.set_empty();
-  for (Interval& v : d.gates) v.set_empty();
-  y.touch();
-}
-
 void check_domains(const Tube& y, const Tube* w, const char* where) {
   if (w && w->tdomain() != y.tdomain()) {
     throw DimensionError(std::string(where) + ": y and w are not on one TDomain");
@@ -184,7 +177,7 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
   if (!ok) {
     t.set_empty();
     z.set_empty();
-    for (Tube* yi : y) set_tube_empty(*yi);
+    for (Tube* yi : y) yi->set(Interval::empty());
   }
   return ok;
 }
