@@ -1,6 +1,6 @@
 #include "sillage/cn/empty_prefix.h"
 
-#include "sillage/cn/tube_domain.h"
+#include "sillage/tube/tube_atoms.h"
 
 namespace sillage {
 

@@ -14,21 +14,9 @@
 
 #include "sillage/cn/domain.h"
 #include "sillage/tube/tube.h"
+#include "sillage/tube/tube_atoms.h"
 
 namespace sillage {
-
-// The atom encoding of a tube, defined once: TubeDomain, TubeNode and every
-// tube contractor node inherit it.
-struct TubeAtoms {
-  static constexpr std::size_t gate_atom(std::size_t k) { return 2 * k; }
-  static constexpr std::size_t slice_atom(std::size_t k) { return 2 * k + 1; }
-  static constexpr bool is_slice(std::size_t a) { return (a & 1) != 0; }
-  static constexpr std::size_t time_index(std::size_t a) { return a / 2; }  // the slice or gate number
-  static Interval& time_atom(TubeData& d, std::size_t a) { return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2]; }
-  static const Interval& time_atom(const TubeData& d, std::size_t a) {
-    return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2];
-  }
-};
 
 class TubeDomain : public Domain, public TubeAtoms {
  public:

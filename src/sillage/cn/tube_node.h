@@ -42,7 +42,7 @@
 namespace sillage {
 
 // The atom encoding (gate_atom, slice_atom, is_slice, time_index, time_atom)
-// is TubeAtoms' (tube_domain.h).
+// is TubeAtoms' (tube/tube_atoms.h).
 class TubeNode : public CnNode, public TubeAtoms {
  public:
   std::string name() const override { return name_; }
