@@ -40,15 +40,17 @@ TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<Bound
 
 bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const {
   std::vector<TimeVar> vars(var_range_.size());
+  std::vector<TubeChanges> out(var_range_.size());
   std::size_t p = 0;
   for (std::size_t v = 0; v < vars.size(); ++v) {
     const auto& t = tube(var_range_[v]);
     vars[v] = t ? TimeVar{&t->tube(), 0} : TimeVar{nullptr, p++};
+    out[v] = changes(r, var_range_[v]);
   }
   const std::size_t empty = contract_time_elements(
       *ctc_, vars, atoms, params,
-      [&](std::size_t v, std::size_t i, const Interval& before, const Interval& after) {
-        changes(r, var_range_[v]).atom(i, before, after);
+      [&out](std::size_t v, std::size_t i, const Interval& before, const Interval& after) {
+        out[v].atom(i, before, after);
       });
   if (empty == kNoTimeAtom) return true;
   for (std::size_t g = 0; g < nb_args() && r.empty_at == kNoAtom; ++g) {
