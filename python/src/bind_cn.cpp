@@ -14,6 +14,8 @@
 namespace sillage::python {
 
 std::shared_ptr<const Ctc> hold_ctc(const py::handle& h);  // bind_ctc.cpp
+bool is_tube_ctc(const py::handle& h);                     // bind_tube_node.cpp
+std::shared_ptr<const NetworkCtc> bind_tube_ctc(const py::handle& ctc, const py::list& domains);
 
 namespace {
 
@@ -93,19 +95,22 @@ void init_cn(py::module_& m) {
       .def(
           "add",
           [](ContractorNetwork& cn, const py::object& ctc, const py::iterable& domains) {
+            const py::list items(domains);
             std::vector<DomainRef> refs;
-            for (const auto& h : domains) refs.push_back(to_domain_ref(h, refs.size()));
-            if (py::isinstance<NetworkCtc>(ctc)) {
+            for (const auto& h : items) refs.push_back(to_domain_ref(h, refs.size()));
+            if (is_tube_ctc(ctc)) {
+              cn.add(bind_tube_ctc(ctc, items), refs);
+            } else if (py::isinstance<NetworkCtc>(ctc)) {
               cn.add(std::shared_ptr<const NetworkCtc>(ctc.cast<std::shared_ptr<NetworkCtc>>()), refs);
             } else {
               cn.add(hold_ctc(ctc), refs);
             }
           },
           py::arg("ctc"), py::arg("domains"),
-          "Adds the contractor ctc (a Ctc or a NetworkCtc) on the concatenation of the domains (Interval, "
-          "IntervalVector, Tube, TubeVector, DomainRef); their sizes must add up to ctc.nb_vars() (DimensionError "
-          "otherwise).")
-      .def("contract", &ContractorNetwork::contract,
+          "Adds the contractor ctc (a Ctc, a NetworkCtc or a TubeCtc subclass) on the concatenation of the domains "
+          "(Interval, IntervalVector, Tube, TubeVector, DomainRef); their sizes must add up to ctc.nb_vars() "
+          "(DimensionError otherwise).")
+      .def("contract", &ContractorNetwork::contract, py::call_guard<py::gil_scoped_release>(),
            "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
            "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.")
       .def("nb_ctc", &ContractorNetwork::nb_ctc, "Number of contractors added.")

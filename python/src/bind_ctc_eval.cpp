@@ -23,7 +23,7 @@ void init_ctc_eval(py::module_& m) {
           [](const CtcEval& c, Interval& t, Interval& z, Tube& y, const Tube* w) {
             return w ? c.contract(t, z, y, *w) : c.contract(t, z, y);
           },
-          py::arg("t"), py::arg("z"), py::arg("y"), py::arg("w") = nullptr,
+          py::arg("t").noconvert(), py::arg("z").noconvert(), py::arg("y"), py::arg("w") = nullptr,
           "Contracts t, z and the tube y for z = y(t), y' = w (Prop. 5.1, (5.6)): t &= y^-1(z), z &= y(t), y &= "
           "the trajectories through z at a time of t; in place. Without w only t, z and (for a time point t) its "
           "gate are contracted. Returns False when inconsistent (Lemma 5.1: t, z and y are then set empty).")
@@ -32,7 +32,7 @@ void init_ctc_eval(py::module_& m) {
           [](const CtcEval& c, Interval& t, IntervalVector& z, TubeVector& y, const TubeVector* w) {
             return w ? c.contract(t, z, y, *w) : c.contract(t, z, y);
           },
-          py::arg("t"), py::arg("z"), py::arg("y"), py::arg("w") = nullptr,
+          py::arg("t").noconvert(), py::arg("z").noconvert(), py::arg("y"), py::arg("w") = nullptr,
           "The same for a tube vector y with values z (a box): one time t for every component. Returns False when "
           "inconsistent.");
 

@@ -29,6 +29,7 @@ void init_interval(py::module_& m);
 void init_expr(py::module_& m);
 void init_ctc(py::module_& m);
 void init_cn(py::module_& m);
+void init_tube_node(py::module_& m);
 void init_paving(py::module_& m);
 void init_tube(py::module_& m);
 void init_tube_analysis(py::module_& m);

@@ -6,8 +6,10 @@
 // atoms shrank by more than the ratio.
 //
 // Atoms of a node are numbered by position: the concatenation of its ranges.
-// CtcNode binds a box contractor (Ctc) on few atoms; TubeCtcNode applies one
-// at every slice and gate of tubes; dynamics/ adds CtcDeriv and CtcEval nodes.
+// CtcNode binds a box contractor (Ctc) on few atoms; nodes on tubes derive
+// from TubeNode (tube_node.h): TubeCtcNode applies a box contractor at every
+// slice and gate, TubePairNode runs CtcDeriv and CtcIncrement, and
+// dynamics/ adds the CtcEval node.
 #include <cstddef>
 #include <memory>
 #include <span>

@@ -75,15 +75,13 @@ void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<Do
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
   add_bound(domains, [&](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
     std::vector<AtomRange> ranges;
-    std::vector<std::shared_ptr<TubeDomain>> tubes;
     bool any_tube = false;
     for (const auto& b : bound) {
       ranges.push_back(b.range);
-      tubes.push_back(std::dynamic_pointer_cast<TubeDomain>(b.domain));
-      any_tube = any_tube || tubes.back();
+      any_tube = any_tube || std::dynamic_pointer_cast<TubeDomain>(b.domain);
     }
     // The node constructors check the arguments (DimensionError naming ctc).
-    if (any_tube) return std::make_shared<TubeCtcNode>(ctc, std::move(ranges), std::move(tubes));
+    if (any_tube) return std::make_shared<TubeCtcNode>(ctc, bound);
     return std::make_shared<CtcNode>(ctc, std::move(ranges));
   });
 }

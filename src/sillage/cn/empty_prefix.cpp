@@ -1,5 +1,7 @@
 #include "sillage/cn/empty_prefix.h"
 
+#include "sillage/tube/tube_atoms.h"
+
 namespace sillage {
 
 std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& contract) {
@@ -8,7 +10,7 @@ std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& 
   const auto empty_up_to = [&](std::size_t last) {
     Tube y = x;
     TubeData& d = y.data();
-    for (std::size_t a = last + 1; a < nb_atoms; ++a) ((a & 1) ? d.slices[a / 2] : d.gates[a / 2]) = Interval();
+    for (std::size_t a = last + 1; a < nb_atoms; ++a) TubeAtoms::time_atom(d, a) = Interval();
     y.touch();
     return !contract(y);
   };

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "sillage/ctc/ctc_function.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
+#include "sillage/tube/time_box_ctc.h"
 
 namespace sillage {
 
@@ -14,192 +14,67 @@ namespace {
 // (each pass is a valid contraction: stopping early loses no solution).
 constexpr int kMaxParamPasses = 64;
 
-// Boxes contracted together (one HC4 batch); their rows stay in cache.
-constexpr std::size_t kChunk = 256;
-
-Interval& time_atom(TubeData& d, std::size_t i) { return (i & 1) ? d.slices[i / 2] : d.gates[i / 2]; }
+std::string name_of(const std::shared_ptr<const Ctc>& ctc) {
+  if (!ctc) throw Error("ContractorNetwork::add: null contractor");
+  return ctc->name();
+}
 
 }  // namespace
 
-TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
-                         std::vector<std::shared_ptr<TubeDomain>> tubes)
-    : CnNode(std::move(ranges)), ctc_(std::move(ctc)), tubes_(std::move(tubes)) {
-  if (!ctc_) throw Error("ContractorNetwork::add: null contractor");
-  const std::string where = "ContractorNetwork::add(" + ctc_->name() + ")";
-  if (tubes_.size() != this->ranges().size()) throw Error(where + ": one entry per range expected");
+TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<BoundDomain>& args)
+    : TubeNode(name_of(ctc), args), ctc_(std::move(ctc)) {
   std::size_t nb_vars = 0;
-  const TDomain* td = nullptr;
-  for (std::size_t g = 0; g < tubes_.size(); ++g) {
-    const AtomRange& a = this->ranges()[g];
-    if (!tubes_[g]) {
-      nb_vars += a.count;
-      nb_params_ += a.count;
-      continue;
-    }
-    ++nb_vars;
-    const Tube& x = tubes_[g]->tube();
-    if (a.first != 0 || a.count != tubes_[g]->nb_atoms()) {
-      throw DimensionError(where + ": argument " + std::to_string(g) +
-                           " must be a whole tube (all its slices and gates)");
-    }
-    if (td && x.tdomain().get() != td) {
-      throw DimensionError(where + ": the tubes are not on one TDomain (argument " + std::to_string(g) + ")");
-    }
-    td = x.tdomain().get();
-    nb_time_atoms_ = tubes_[g]->nb_atoms();
+  for (std::size_t g = 0; g < nb_args(); ++g) {
+    if (tube(g)) whole_tubes(g, 1, "tube arguments");
+    const std::size_t count = tube(g) ? 1 : ranges()[g].count;
+    var_range_.insert(var_range_.end(), count, g);
+    nb_vars += count;
+    if (!tube(g)) nb_params_ += count;
   }
   if (nb_vars != ctc_->nb_vars()) {
-    throw DimensionError(where + ": the contractor acts on " + std::to_string(ctc_->nb_vars()) +
+    throw DimensionError(where() + ": the contractor acts on " + std::to_string(ctc_->nb_vars()) +
                          " variables but the domains given make " + std::to_string(nb_vars) +
                          " (a tube counts as one variable)");
-  }
-  if (const auto* cf = dynamic_cast<const CtcFunction*>(ctc_.get())) {
-    f_ = &cf->function();
-    image_ = &cf->image();
-  }
-}
-
-void TubeCtcNode::contract_boxes(std::vector<Interval>& box, std::size_t count) const {
-  const std::size_t n = ctc_->nb_vars();
-  if (f_) {
-    std::vector<Interval*> cols(n);
-    for (std::size_t v = 0; v < n; ++v) cols[v] = box.data() + v * count;
-    f_->hc4_revise_batch(cols, count, *image_);
-    return;
-  }
-  IntervalVector b(n);
-  for (std::size_t j = 0; j < count; ++j) {
-    for (std::size_t v = 0; v < n; ++v) b[v] = box[v * count + j];
-    ctc_->contract(b);
-    for (std::size_t v = 0; v < n; ++v) box[v * count + j] = b[v];
   }
 }
 
 bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const {
-  const std::size_t n = ctc_->nb_vars();
-  // With constants, a chunk is one box: each box sees them as narrowed by the previous ones.
-  const std::size_t chunk = nb_params_ > 0 ? 1 : kChunk;
-  std::vector<Interval> before(n * chunk), box;
-  std::vector<std::size_t> ids;  // the time atoms of the chunk
-  const std::size_t last = nb_time_atoms_ - 1;
-  std::vector<char> touched(tubes_.size(), 0);
-  const auto touch = [&] {
-    for (std::size_t g = 0; g < tubes_.size(); ++g)
-      if (touched[g]) tubes_[g]->tube().touch();
-  };
-  // Slices first, then gates (which are intersected with their slices).
-  for (const int parity : {1, 0}) {
-    for (auto next = atoms.begin(); next != atoms.end();) {
-      ids.clear();
-      for (; next != atoms.end() && ids.size() < chunk; ++next)
-        if (static_cast<int>(*next & 1) == parity) ids.push_back(*next);
-      if (ids.empty()) break;
-      const std::size_t c = ids.size();
-      // Gather: box j in column layout, variable v at v * c + j.
-      for (std::size_t j = 0; j < c; ++j) {
-        const std::size_t i = ids[j];
-        std::size_t v = 0, p = 0;
-        for (std::size_t g = 0; g < tubes_.size(); ++g) {
-          if (!tubes_[g]) {
-            for (std::size_t k = 0; k < ranges()[g].count; ++k) before[v++ * c + j] = params[p++];
-            continue;
-          }
-          TubeData& d = tubes_[g]->tube().data();
-          Interval& x = time_atom(d, i);
-          if (parity == 0) {  // x(t_k) lies in both neighbouring slices
-            Interval h = x;
-            if (i > 0) h &= d.slices[i / 2 - 1];
-            if (i < last) h &= d.slices[i / 2];
-            if (h != x) {
-              if (shrank(x, h, r.ratio)) r.changed.push_back(offset(g) + i);
-              x = h;
-              touched[g] = 1;
-            }
-          }
-          before[v++ * c + j] = x;
-        }
-      }
-      box.assign(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(n * c));
-      contract_boxes(box, c);
-      // Scatter, in order: a box proven empty stops the run there.
-      for (std::size_t j = 0; j < c; ++j) {
-        const std::size_t i = ids[j];
-        bool ok = true;
-        for (std::size_t v = 0; v < n; ++v) ok = ok && !box[v * c + j].is_empty();
-        std::size_t v = 0, p = 0;
-        for (std::size_t g = 0; g < tubes_.size(); ++g) {
-          if (!tubes_[g]) {
-            for (std::size_t k = 0; k < ranges()[g].count; ++k, ++v)
-              params[p++] &= ok ? box[v * c + j] : Interval::empty();
-            continue;
-          }
-          Interval& x = time_atom(tubes_[g]->tube().data(), i);
-          const Interval now = ok ? (x & box[v * c + j]) : Interval::empty();
-          if (now != x) {
-            if (shrank(before[v * c + j], now, r.ratio)) r.changed.push_back(offset(g) + i);
-            x = now;
-            touched[g] = 1;
-          }
-          ++v;
-        }
-        if (!ok) {
-          touch();
-          for (std::size_t g = 0; g < tubes_.size() && r.empty_at == kNoAtom; ++g) {
-            if (tubes_[g]) r.empty_at = offset(g) + i;
-          }
-          return false;
-        }
-      }
-    }
+  std::vector<TimeVar> vars(var_range_.size());
+  std::vector<TubeChanges> out(var_range_.size());
+  std::size_t p = 0;
+  for (std::size_t v = 0; v < vars.size(); ++v) {
+    const auto& t = tube(var_range_[v]);
+    vars[v] = t ? TimeVar{&t->tube(), 0} : TimeVar{nullptr, p++};
+    out[v] = changes(r, var_range_[v]);
   }
-  touch();
-  return true;
+  const std::size_t empty = contract_time_elements(
+      *ctc_, vars, atoms, params,
+      [&out](std::size_t v, std::size_t i, const Interval& before, const Interval& after) {
+        out[v].atom(i, before, after);
+      });
+  if (empty == kNoTimeAtom) return true;
+  for (std::size_t g = 0; g < nb_args() && r.empty_at == kNoAtom; ++g) {
+    if (tube(g)) r.empty_at = offset(g) + empty;
+  }
+  return false;
 }
 
 bool TubeCtcNode::run(NodeRun& r) const {
-  // The time atoms to contract.
-  std::vector<std::size_t> atoms;
-  bool all = r.all;
-  if (!all) {
-    // A changed slice brings its two gates. Several tubes interleave their
-    // atoms: a short list is sorted, a long one merged through flags.
-    const bool long_list = 3 * r.dirty.size() > nb_time_atoms_ / 16;
-    std::vector<char> mark(long_list ? nb_time_atoms_ : 0, 0);
-    for (const std::size_t pos : r.dirty) {
-      const std::size_t g = static_cast<std::size_t>(
-          std::upper_bound(ranges().begin(), ranges().end(), pos,
-                           [&](std::size_t p, const AtomRange& a) { return p < offset(&a - ranges().data()); }) -
-          ranges().begin() - 1);
-      if (!tubes_[g]) {  // a constant changed: every time element may shrink
-        all = true;
-        break;
-      }
-      const std::size_t i = pos - offset(g);
-      const std::size_t first = (i & 1) ? i - 1 : i, last = (i & 1) ? i + 1 : i;
-      for (std::size_t j = first; j <= last; ++j) {
-        if (long_list) mark[j] = 1;
-        else atoms.push_back(j);
-      }
-    }
-    if (!long_list) {
-      std::sort(atoms.begin(), atoms.end());
-      atoms.erase(std::unique(atoms.begin(), atoms.end()), atoms.end());
-    } else if (!all) {
-      for (std::size_t j = 0; j < nb_time_atoms_; ++j)
-        if (mark[j]) atoms.push_back(j);
-    }
-  }
-  if (all) {
-    atoms.resize(nb_time_atoms_);
-    for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
-  }
+  // The time atoms to contract: all when a constant changed.
+  bool constants = false;
+  std::vector<std::size_t> atoms = dirty_time_atoms(r, constants);
+  const auto all_atoms = [&] {
+    atoms.resize(nb_time_atoms());
+    for (std::size_t i = 0; i < nb_time_atoms(); ++i) atoms[i] = i;
+  };
+  if (constants) all_atoms();
 
   // Constants: read, intersect with every contracted time element, write back.
   IntervalVector params(std::max<std::size_t>(nb_params_, 1));
   const auto read_params = [&] {
     std::size_t p = 0;
-    for (std::size_t g = 0; g < tubes_.size(); ++g) {
-      if (tubes_[g]) continue;
+    for (std::size_t g = 0; g < nb_args(); ++g) {
+      if (tube(g)) continue;
       for (std::size_t c = 0; c < ranges()[g].count; ++c) params[p++] = r.domains[ranges()[g].domain]->atom(ranges()[g].first + c);
     }
   };
@@ -207,8 +82,8 @@ bool TubeCtcNode::run(NodeRun& r) const {
   const auto write_params = [&] {
     bool moved = false;
     std::size_t p = 0;
-    for (std::size_t g = 0; g < tubes_.size(); ++g) {
-      if (tubes_[g]) continue;
+    for (std::size_t g = 0; g < nb_args(); ++g) {
+      if (tube(g)) continue;
       Domain& d = *r.domains[ranges()[g].domain];
       for (std::size_t c = 0; c < ranges()[g].count; ++c, ++p) {
         const Interval cur = d.atom(ranges()[g].first + c);
@@ -230,10 +105,7 @@ bool TubeCtcNode::run(NodeRun& r) const {
   }
   for (int pass = 0; write_params() && pass < kMaxParamPasses; ++pass) {
     if (params.is_empty()) return false;
-    if (atoms.size() != nb_time_atoms_) {
-      atoms.resize(nb_time_atoms_);
-      for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
-    }
+    if (atoms.size() != nb_time_atoms()) all_atoms();
     read_params();
     if (!contract_atoms(r, atoms, params)) {
       write_params();

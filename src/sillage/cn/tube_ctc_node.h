@@ -9,7 +9,8 @@
 // slice (a gate lies in both neighbouring slices, and is intersected with
 // them first). Atom i of every tube is the same time element (all tubes are
 // on one TDomain), so the box of atom i gathers atom i of each tube. The
-// boxes go by chunks: the HC4 of a CtcFunction walks its tape once per chunk.
+// contraction of the boxes is contract_time_elements (tube/time_box_ctc.h),
+// the one shared with contract(ctc, tubes).
 //
 // Constant variables p hold at every t: each contracted time element gives a
 // valid contraction of p, and p is intersected with all of them. When p
@@ -19,35 +20,26 @@
 #include <memory>
 #include <vector>
 
-#include "sillage/cn/cn_node.h"
-#include "sillage/cn/tube_domain.h"
-#include "sillage/expr/function.h"
+#include "sillage/cn/tube_node.h"
 
 namespace sillage {
 
-class TubeCtcNode : public CnNode {
+class TubeCtcNode : public TubeNode {
  public:
-  // `tubes[r]`: the TubeDomain of range r, or null for a constant range
-  // (Interval or box atoms). Every tube range must cover its whole tube, and
-  // all tubes must share one TDomain (DimensionError otherwise).
-  TubeCtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges,
-              std::vector<std::shared_ptr<TubeDomain>> tubes);
-  std::string name() const override { return ctc_->name(); }
+  // `args`: tubes (one variable each) and constants (Interval or box atoms).
+  // Every tube argument must be a whole tube, and all tubes must share one
+  // TDomain (DimensionError otherwise).
+  TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<BoundDomain>& args);
   std::string describe() const override { return ctc_->describe(); }
   bool run(NodeRun& r) const override;
 
  private:
-  // Contracts the time atoms `atoms` (sorted); false if proven empty.
+  // Contracts the time atoms `atoms` (sorted) by contract_time_elements
+  // (tube/time_box_ctc.h); false if proven empty.
   bool contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const;
-  // Contracts the boxes j < count stored by columns: variable v of box j
-  // at box[v * count + j] (empty in every variable if proven inconsistent).
-  void contract_boxes(std::vector<Interval>& box, std::size_t count) const;
 
   std::shared_ptr<const Ctc> ctc_;
-  const Function* f_ = nullptr;        // fast path: HC4 of a CtcFunction
-  const IntervalVector* image_ = nullptr;
-  std::vector<std::shared_ptr<TubeDomain>> tubes_;
-  std::size_t nb_time_atoms_ = 0;      // 2N+1
+  std::vector<std::size_t> var_range_;  // per variable of ctc_, its argument
   std::size_t nb_params_ = 0;
 };
 

@@ -11,20 +11,19 @@ TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)) {
 }
 
 Interval TubeDomain::atom(std::size_t i) const {
-  const TubeData& d = x_->data();
-  return (i & 1) ? d.slices[i / 2] : d.gates[i / 2];
+  return time_atom(x_->data(), i);
 }
 
 void TubeDomain::set_atom(std::size_t i, const Interval& x) {
   TubeData& d = x_->data();
-  ((i & 1) ? d.slices[i / 2] : d.gates[i / 2]) = x;
+  time_atom(d, i) = x;
   d.touch();
 }
 
 AtomPlace TubeDomain::place(std::size_t i) const {
   const auto t = x_->tdomain()->times();
-  const std::size_t k = i / 2;
-  if (i & 1) return {"slice", k, Interval(t[k], t[k + 1])};
+  const std::size_t k = time_index(i);
+  if (is_slice(i)) return {"slice", k, Interval(t[k], t[k + 1])};
   return {"gate", k, Interval(t[k])};
 }
 

@@ -9,14 +9,16 @@
 // its own, TubeComponentDomain). Refining the TDomain after registration
 // changes the layout, and assigning a tube of another TDomain changes the
 // times of the slices: check_layout() then throws, as for a resized box.
+#include <cstddef>
 #include <memory>
 
 #include "sillage/cn/domain.h"
 #include "sillage/tube/tube.h"
+#include "sillage/tube/tube_atoms.h"
 
 namespace sillage {
 
-class TubeDomain : public Domain {
+class TubeDomain : public Domain, public TubeAtoms {
  public:
   explicit TubeDomain(std::shared_ptr<Tube> x);
   std::size_t nb_atoms() const override { return 2 * nb_slices_ + 1; }

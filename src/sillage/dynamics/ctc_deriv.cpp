@@ -6,10 +6,10 @@
 #include <string>
 #include <type_traits>
 
+#include "sillage/cn/tube_pair_node.h"
 #include "sillage/dynamics/deriv_rounding.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
 #include "sillage/dynamics/slice_deriv.h"
-#include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -81,13 +81,6 @@ bool backward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& 
   ch |= store(d.g[first], blo, bhi);
   changed |= ch != 0;
   return ok;
-}
-
-void set_empty(Tube& x) {
-  TubeData& d = x.data();
-  std::fill(d.slices.begin(), d.slices.end(), Interval::empty());
-  std::fill(d.gates.begin(), d.gates.end(), Interval::empty());
-  x.touch();
 }
 
 void check_pair(const Tube& x, const Tube& v, const char* where) {
@@ -165,7 +158,7 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
   const auto vg = v.gates();
   for (std::size_t k = first; k <= last + 1; ++k) {
     if (vg[k].is_empty()) {
-      set_empty(x);
+      x.set(Interval::empty());
       return false;
     }
   }
@@ -179,7 +172,7 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
   const bool ok = sweeps<deriv::SoftRounding>(p, d, first, last, changed);
 #endif
   if (!ok) {
-    set_empty(x);
+    x.set(Interval::empty());
     return false;
   }
   if (changed) x.touch();
@@ -205,7 +198,7 @@ bool each_component(TubeVector& x, F f) {
   bool ok = true;
   for (std::size_t i = 0; i < x.size() && ok; ++i) ok = f(i);
   if (!ok) {
-    for (std::size_t i = 0; i < x.size(); ++i) set_empty(x[i]);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
   }
   return ok;
 }
@@ -236,7 +229,7 @@ void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::
 }
 
 std::shared_ptr<const CnNode> CtcDeriv::make_node(const std::vector<BoundDomain>& args) const {
-  return make_deriv_node(*this, args);
+  return make_tube_pair_node(*this, args);
 }
 
 bool CtcDeriv::contract(Tube& x, const Tube& v) const {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "sillage/ctc/shrink.h"
+#include "sillage/cn/tube_changes.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
@@ -11,13 +11,6 @@
 namespace sillage {
 
 namespace {
-
-void set_tube_empty(Tube& y) {
-  TubeData& d = y.data();
-  for (Interval& v : d.slices) v.set_empty();
-  for (Interval& v : d.gates) v.set_empty();
-  y.touch();
-}
 
 void check_domains(const Tube& y, const Tube* w, const char* where) {
   if (w && w->tdomain() != y.tdomain()) {
@@ -38,20 +31,10 @@ bool prepare_time(Interval& t, const Tube& y, bool sampling, const char* where) 
   return true;
 }
 
-// Records the atoms of one tube (2k: gate k, 2k+1: slice k) that shrank by
-// more than a ratio, for the network; inactive without a list.
-struct ChangeLog {
-  double ratio = 0.0;
-  std::vector<std::size_t>* atoms = nullptr;
-  void note(std::size_t atom, const Interval& before, const Interval& after) const {
-    if (atoms && shrank(before, after, ratio)) atoms->push_back(atom);
-  }
-};
-
 // The gate fronts of (5.6); marks [glo, ghi] the gates it changed. False if a
 // gate became empty.
 bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi,
-                  const ChangeLog& log) {
+                  const TubeChanges& log) {
   const TDomain& td = *y.tdomain();
   const auto ts = td.times();
   const std::size_t n = td.nb_slices();
@@ -71,7 +54,7 @@ bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   const auto narrow = [&](std::size_t i, const Interval& h) {
     Interval& g = d.gates[i];
     if (h == g) return true;
-    log.note(2 * i, g, h);
+    log.gate(i, g, h);
     g = h;
     mark(i);
     return !g.is_empty();
@@ -129,21 +112,21 @@ bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
 }
 
 // The gate at a degenerate t that is a time point: ∩= [z].
-bool contract_gate(const Interval& t, const Interval& z, Tube& y, const ChangeLog& log) {
+bool contract_gate(const Interval& t, const Interval& z, Tube& y, const TubeChanges& log) {
   if (!t.is_degenerate()) return true;
   const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
   if (i < 0) return true;
   Interval& g = y.data().gates[static_cast<std::size_t>(i)];
   const Interval h = g & z;
   if (h != g) {
-    log.note(2 * static_cast<std::size_t>(i), g, h);
+    log.gate(static_cast<std::size_t>(i), g, h);
     g = h;
     y.touch();
   }
   return !h.is_empty();
 }
 
-bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w, const ChangeLog& log) {
+bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w, const TubeChanges& log) {
   std::size_t glo = y.nb_slices() + 1, ghi = 0;
   const bool ok = sweep_fronts(t, z, y, w, glo, ghi, log);
   if (glo <= ghi) y.touch();
@@ -153,26 +136,26 @@ bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w,
   const std::size_t n = y.nb_slices(), a = glo > 0 ? glo - 1 : 0, b = std::min(ghi, n - 1);
   TubeData& d = y.data();
   std::vector<Interval> before;
-  if (log.atoms) {
+  if (log.active()) {
     for (std::size_t k = a; k <= b; ++k) before.insert(before.end(), {d.gates[k], d.slices[k]});
     before.push_back(d.gates[b + 1]);
   }
   const bool deriv_ok = CtcDeriv().contract(y, w, a, b);
-  if (log.atoms) {
+  if (log.active()) {
     for (std::size_t k = a; k <= b; ++k) {
-      log.note(2 * k, before[2 * (k - a)], d.gates[k]);
-      log.note(2 * k + 1, before[2 * (k - a) + 1], d.slices[k]);
+      log.gate(k, before[2 * (k - a)], d.gates[k]);
+      log.slice(k, before[2 * (k - a) + 1], d.slices[k]);
     }
-    log.note(2 * (b + 1), before.back(), d.gates[b + 1]);
+    log.gate(b + 1, before.back(), d.gates[b + 1]);
   }
   return deriv_ok;
 }
 
 // Every case on component tubes (w empty: no derivative), one [t];
-// logs[i] (if given) receives the atoms of y[i] that shrank.
+// logs[i] (if given) receives what shrank in y[i].
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, const char* where, double ratio, std::vector<std::vector<std::size_t>>* logs) {
-  if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size())) {
+                  bool sampling, const char* where, const std::vector<TubeChanges>* logs) {
+  if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
   }
@@ -187,14 +170,14 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     ok = !t.is_empty();
   }
   for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    const ChangeLog log{ratio, logs ? &(*logs)[i] : nullptr};
+    const TubeChanges log = logs ? (*logs)[i] : TubeChanges();
     ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
     if (ok) ok = w.empty() ? contract_gate(t, z[i], *y[i], log) : contract_tube(t, z[i], *y[i], *w[i], log);
   }
   if (!ok) {
     t.set_empty();
     z.set_empty();
-    for (Tube* yi : y) set_tube_empty(*yi);
+    for (Tube* yi : y) yi->set(Interval::empty());
   }
   return ok;
 }
@@ -214,32 +197,38 @@ std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>&
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, "CtcEval::contract(t, z, y, w)", 0.0, nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, "CtcEval::contract(t, z, y, w)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, "CtcEval::contract(t, z, y)", 0.0, nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const {
   return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_,
-                      "CtcEval::contract(t, z, y, w)", 0.0, nullptr);
+                      "CtcEval::contract(t, z, y, w)", nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
-  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, "CtcEval::contract(t, z, y)", 0.0,
-                      nullptr);
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
+}
+
+bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
+                       const std::vector<TubeChanges>& changes) const {
+  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, changes)", &changes);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                        double ratio, std::vector<std::vector<std::size_t>>& changed) const {
   changed.assign(y.size(), {});
-  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, ratio, changed)", ratio, &changed);
+  std::vector<TubeChanges> logs;
+  for (auto& c : changed) logs.emplace_back(c, 0, ratio);
+  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, ratio, changed)", &logs);
 }
 
 }  // namespace sillage

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_changes.h"
 #include "sillage/interval/interval.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube.h"
@@ -59,8 +60,13 @@ class CtcEval : public NetworkCtc {
   bool contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const;
   bool contract(Interval& t, IntervalVector& z, TubeVector& y) const;
   // For network nodes: the vector case on component tubes (w empty: no
-  // derivative); changed[i] receives the atoms of y[i] (2k: gate k, 2k+1:
-  // slice k) that shrank by more than `ratio` (shrink.h).
+  // derivative); changes[i] (one per y[i]) receives the slices and gates of
+  // y[i] that shrank (TubeNode::changes()).
+  bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
+                const std::vector<TubeChanges>& changes) const;
+  // Deprecated (the atom encoding leaks): changed[i] receives the atoms of
+  // y[i] (2k: gate k, 2k+1: slice k) that shrank by more than `ratio`. Use
+  // the TubeChanges overload.
   bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                 double ratio, std::vector<std::vector<std::size_t>>& changed) const;
 

@@ -1,6 +1,6 @@
 #include "sillage/dynamics/ctc_increment.h"
 
-#include "sillage/dynamics/tube_nodes.h"
+#include "sillage/cn/tube_pair_node.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -21,12 +21,8 @@ bool CtcIncrement::contract(Tube& x, const Tube& i) const {
   };
   for (std::size_t k = 0; k < n && ok; ++k) narrow(d.gates[k + 1], d.gates[k] + inc[k]);
   for (std::size_t k = n; k-- > 0 && ok;) narrow(d.gates[k], d.gates[k + 1] - inc[k]);
-  if (!ok) {
-    for (Interval& v : d.slices) v.set_empty();
-    for (Interval& v : d.gates) v.set_empty();
-    changed = true;
-  }
-  if (changed) x.touch();
+  if (!ok) x.set(Interval::empty());  // no trajectory
+  else if (changed) x.touch();
   return ok;
 }
 
@@ -42,7 +38,7 @@ bool CtcIncrement::contract(TubeVector& x, const TubeVector& i) const {
 }
 
 std::shared_ptr<const CnNode> CtcIncrement::make_node(const std::vector<BoundDomain>& args) const {
-  return make_increment_node(*this, args);
+  return make_tube_pair_node(*this, args);
 }
 
 }  // namespace sillage

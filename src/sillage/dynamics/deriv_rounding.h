@@ -12,7 +12,7 @@
 //    Written as inline assembly so that no translation unit needs AVX-512
 //    code generation; it only runs when the CPU reports AVX-512F (checked once,
 //    see hardware_rounding()).
-#include "sillage/dynamics/branchless_rounding.h"
+#include "sillage/interval/branchless_rounding.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SILLAGE_DERIV_HARD_ROUNDING 1

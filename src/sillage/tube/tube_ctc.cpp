@@ -1,8 +1,10 @@
 #include "sillage/tube/tube_ctc.h"
 
+#include <algorithm>
 #include <string>
 
 #include "sillage/error.h"
+#include "sillage/tube/time_box_ctc.h"
 
 namespace sillage {
 
@@ -29,95 +31,30 @@ void check_tubes(const Ctc& ctc, const std::vector<Tube*>& x) {
   }
 }
 
-void set_all_empty(const std::vector<Tube*>& x) {
-  for (Tube* xi : x) {
-    TubeData& d = xi->data();
-    bool changed = false;
-    for (auto* array : {&d.slices, &d.gates}) {
-      for (Interval& v : *array) {
-        changed = changed || !v.is_empty();
-        v.set_empty();
-      }
-    }
-    if (changed) xi->touch();
-  }
-}
-
-// The box contraction used on every slice and gate: HC4 of f(x) ∈ y without
-// a virtual call, or any contractor. False when the box is proven empty.
-struct HC4 {
-  const Function& f;
-  const IntervalVector& y;
-  bool operator()(IntervalVector& x) const { return f.hc4_revise(x, y); }
-};
-struct AnyCtc {
-  const Ctc& c;
-  bool operator()(IntervalVector& x) const {
-    c.contract(x);
-    return !x.is_empty();
-  }
-};
-
-// Contracts the box of the k-th elements of `arrays` (slices or gates);
-// writes back and records changes. False if proven empty.
-template <class Op>
-bool contract_column(const Op& op, std::vector<std::vector<Interval>*>& arrays, std::size_t k, IntervalVector& buf,
-                     std::vector<char>& changed) {
-  const std::size_t n = arrays.size();
-  for (std::size_t i = 0; i < n; ++i) buf[i] = (*arrays[i])[k];
-  if (!op(buf)) return false;
-  for (std::size_t i = 0; i < n; ++i) {
-    Interval& v = (*arrays[i])[k];
-    if (!(buf[i] == v)) {
-      v = buf[i];
-      changed[i] = 1;
-    }
-  }
-  return true;
-}
-
-template <class Op>
-bool contract_tubes(const Op& op, const std::vector<Tube*>& x) {
-  const std::size_t n = x.size();
-  if (n == 0) return true;  // no variable: nothing to contract
-  const std::size_t N = x[0]->nb_slices();
-
-  std::vector<std::vector<Interval>*> slices(n), gates(n);
-  std::vector<char> changed(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    slices[i] = &x[i]->data().slices;
-    gates[i] = &x[i]->data().gates;
-    if (x[i]->is_empty()) {
-      set_all_empty(x);
-      return false;
-    }
-  }
-
-  IntervalVector buf(n);
+// The box contractor at every slice and gate (time_box_ctc.h); on
+// emptiness (on input or proven) every tube is set empty.
+bool contract_tubes(const Ctc& ctc, const std::vector<Tube*>& x) {
+  if (x.empty()) return true;  // no variable: nothing to contract
   bool ok = true;
-  for (std::size_t k = 0; k < N && ok; ++k) ok = contract_column(op, slices, k, buf, changed);
-  // Gates: x(t_k) is in both neighbouring slices, then in f^-1(y).
-  for (std::size_t k = 0; k <= N && ok; ++k) {
-    for (std::size_t i = 0; i < n && ok; ++i) {
-      Interval& g = (*gates[i])[k];
-      Interval h = g;
-      if (k > 0) h &= (*slices[i])[k - 1];
-      if (k < N) h &= (*slices[i])[k];
-      if (!(h == g)) {
-        g = h;
-        changed[i] = 1;
-      }
-      ok = !g.is_empty();
-    }
-    if (ok) ok = contract_column(op, gates, k, buf, changed);
+  for (const Tube* xi : x) ok = ok && !xi->is_empty();
+  if (ok) {
+    std::vector<TimeVar> vars;
+    for (Tube* xi : x) vars.push_back({xi, 0});
+    std::vector<std::size_t> atoms(2 * x[0]->nb_slices() + 1);
+    for (std::size_t i = 0; i < atoms.size(); ++i) atoms[i] = i;
+    IntervalVector no_params(1);
+    ok = contract_time_elements(ctc, vars, atoms, no_params, {}) == kNoTimeAtom;
   }
   if (!ok) {
-    set_all_empty(x);
-    return false;
+    const auto empty = [](const Interval& v) { return v.is_empty(); };
+    for (Tube* xi : x) {  // touched only if not already the empty tube
+      if (!std::all_of(xi->slices().begin(), xi->slices().end(), empty) ||
+          !std::all_of(xi->gates().begin(), xi->gates().end(), empty)) {
+        xi->set(Interval::empty());
+      }
+    }
   }
-  for (std::size_t i = 0; i < n; ++i)
-    if (changed[i]) x[i]->touch();
-  return true;
+  return ok;
 }
 
 std::vector<Tube*> components(TubeVector& x) {
@@ -130,13 +67,13 @@ std::vector<Tube*> components(TubeVector& x) {
 
 bool contract(const CtcFunction& ctc, const std::vector<Tube*>& x) {
   check_tubes(ctc, x);
-  return contract_tubes(HC4{ctc.function(), ctc.image()}, x);
+  return contract_tubes(ctc, x);
 }
 
 bool contract(const Ctc& ctc, const std::vector<Tube*>& x) {
   if (const auto* f = dynamic_cast<const CtcFunction*>(&ctc)) return contract(*f, x);
   check_tubes(ctc, x);
-  return contract_tubes(AnyCtc{ctc}, x);
+  return contract_tubes(ctc, x);
 }
 
 bool contract(const CtcFunction& ctc, TubeVector& x) { return contract(ctc, components(x)); }

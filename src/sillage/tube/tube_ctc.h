@@ -15,8 +15,9 @@
 // (on input, or proven inconsistent by HC4); then every slice and gate of
 // every tube is set empty, the canonical empty tube.
 //
-// Batching: one box buffer for all slices and gates, the non-virtual
-// Function::hc4_revise (thread-local tape scratch): no allocation per slice.
+// One implementation with the network's TubeCtcNode: contract_time_elements
+// (time_box_ctc.h), boxes by chunks, one HC4 batch per chunk for a
+// CtcFunction.
 #include <utility>
 #include <vector>
 

@@ -182,6 +182,15 @@ TEST(CtcEval, NetworkFormLogsExactlyTheAtomsThatShrank) {
   got.erase(std::unique(got.begin(), got.end()), got.end());
   EXPECT_EQ(got, expected);
   EXPECT_FALSE(expected.empty());
+  // The TubeChanges form reports the same atoms.
+  UnitProblem q;
+  Interval t2(4.5, 5.5);
+  IntervalVector z2{Interval(0.0)};
+  std::vector<std::size_t> logged;
+  ASSERT_TRUE(CtcEval().contract(t2, z2, {&q.y}, {&q.w}, {TubeChanges(logged, 0, 0.0)}));
+  std::sort(logged.begin(), logged.end());
+  logged.erase(std::unique(logged.begin(), logged.end()), logged.end());
+  EXPECT_EQ(logged, expected);
 }
 
 // The definition (5.6) evaluated on a fine sampling of t1 ∈ [t], at the gates

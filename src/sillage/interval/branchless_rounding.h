@@ -1,6 +1,7 @@
 #pragma once
-// Upward-rounded +, ×, ÷ without data-dependent branches, for the hot loops
-// of the dynamics layer (internal header).
+// Upward-rounded +, ×, ÷ without data-dependent branches: the branch-free
+// sibling of rounding.h, for hot loops (CtcDeriv's slice rule, polygon
+// hulls; internal header).
 //
 // Why: rounding.h decides "step to the next double or not" with a branch on
 // the sign of the rounding error, which is random on real data: on a long
