@@ -268,7 +268,9 @@ void init_trajectory(py::module_& m) {
       // Sampled trajectories pickle as their samples (bit-exact); an analytic one does not pickle.
       .def(py::pickle(
           [](const Trajectory& x) {
-            if (!x.is_sampled()) throw Error("Trajectory: an analytic trajectory cannot be pickled (only sampled ones)");
+            if (!x.is_sampled()) {
+              throw Error("Trajectory: an analytic trajectory cannot be pickled (only sampled ones)");
+            }
             return py::make_tuple(x.sample_times(), x.sample_values());
           },
           [](const py::tuple& st) {
@@ -412,46 +414,59 @@ void init_tube_functions(py::module_& m) {
   using T = Tube;
   using F1 = T (*)(const T&);
   // Overloads chain onto the Interval ones defined by init_interval.
-  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"));
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"));
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"));
-  m.def("log", static_cast<F1>(&log), py::arg("x"));
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"));
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"));
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"));
-  m.def("asin", static_cast<F1>(&asin), py::arg("x"));
-  m.def("acos", static_cast<F1>(&acos), py::arg("x"));
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"));
-  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"));
-  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"));
-  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"));
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"));
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"));
-  m.def("pow", static_cast<T (*)(const T&, int)>(&pow), py::arg("x"), py::arg("n"));
-  m.def("pow", static_cast<T (*)(const T&, double)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<T (*)(const T&, const Interval&)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<T (*)(const T&, const T&)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("root", static_cast<T (*)(const T&, int)>(&root), py::arg("x"), py::arg("n"));
-  m.def("atan2", static_cast<T (*)(const T&, const T&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("atan2", static_cast<T (*)(const T&, const Interval&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("atan2", static_cast<T (*)(const Interval&, const T&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("min", static_cast<T (*)(const T&, const T&)>(&min), py::arg("x"), py::arg("y"));
-  m.def("max", static_cast<T (*)(const T&, const T&)>(&max), py::arg("x"), py::arg("y"));
-  m.def("hull", [](const T& x, const T& y) { return x | y; }, py::arg("x"), py::arg("y"));
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "sqr of a tube, slice- and gate-wise (rigorous).");
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "sqrt of a tube, slice- and gate-wise (rigorous).");
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "exp of a tube, slice- and gate-wise (rigorous).");
+  m.def("log", static_cast<F1>(&log), py::arg("x"), "log of a tube, slice- and gate-wise (rigorous).");
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "sin of a tube, slice- and gate-wise (rigorous).");
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "cos of a tube, slice- and gate-wise (rigorous).");
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "tan of a tube, slice- and gate-wise (rigorous).");
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"), "asin of a tube, slice- and gate-wise (rigorous).");
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"), "acos of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "atan of a tube, slice- and gate-wise (rigorous).");
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), "sinh of a tube, slice- and gate-wise (rigorous).");
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), "cosh of a tube, slice- and gate-wise (rigorous).");
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), "tanh of a tube, slice- and gate-wise (rigorous).");
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "abs of a tube, slice- and gate-wise (rigorous).");
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "sign of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, int)>(&pow), py::arg("x"), py::arg("n"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, const Interval&)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, const T&)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("root", static_cast<T (*)(const T&, int)>(&root), py::arg("x"), py::arg("n"),
+        "root of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const T&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const T&, const Interval&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const Interval&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("min", static_cast<T (*)(const T&, const T&)>(&min), py::arg("x"), py::arg("y"),
+        "min of a tube, slice- and gate-wise (rigorous).");
+  m.def("max", static_cast<T (*)(const T&, const T&)>(&max), py::arg("x"), py::arg("y"),
+        "max of a tube, slice- and gate-wise (rigorous).");
+  m.def("hull", [](const T& x, const T& y) { return x | y; }, py::arg("x"), py::arg("y"),
+        "Slice- and gate-wise hull of two tubes (x | y).");
 
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double>(&tube_from_data), py::arg("tdomain"),
         py::arg("data"), py::arg("error") = 0.0, "Interpolation of the data +- error.");
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double, const Interval&>(&tube_from_data),
         py::arg("tdomain"), py::arg("data"), py::arg("error"), py::arg("dx"),
         "Samples +- error and derivative bounds dx (thesis 3.3.2).");
-  m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"));
-  m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"));
+  m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"),
+        "The tube of the trajectories x with lb(t) <= x(t) <= ub(t) (two Trajectories).");
+  m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"),
+        "Writes a Tube or a TubeVector (with its time points) to a file.");
   m.def("save_tube", py::overload_cast<const TubeVector&, const std::string&>(&save), py::arg("x"),
         py::arg("path"));
   m.def("load_tube", py::overload_cast<const std::string&, TD>(&load_tube), py::arg("path"),
-        py::arg("tdomain") = TD());
+        py::arg("tdomain") = TD(), "Reads a Tube written by save_tube, on tdomain if given (same time points).");
   m.def("load_tube_vector", py::overload_cast<const std::string&, TD>(&load_tube_vector), py::arg("path"),
-        py::arg("tdomain") = TD());
+        py::arg("tdomain") = TD(), "Reads a TubeVector written by save_tube, on tdomain if given.");
 }
 
 // Component-wise results, as a TubeVector.
@@ -537,14 +552,14 @@ void init_tube_vector(py::module_& m) {
       // reference that stays valid whatever happens to the vector, and that
       // ContractorNetwork identifies with the component of DomainRef.component.
       .def("__getitem__", [](V& v, long long i) { return v.shared_component(py_index(i, v.size())); },
-           py::arg("i"))
+           py::arg("i"), "Component i (negative i from the end), a live reference.")
       .def("__setitem__",
            [](V& v, long long i, const Tube& x) {
              Tube& xi = v[py_index(i, v.size())];
              if (x.tdomain() != xi.tdomain()) throw DimensionError("TubeVector[i] = x: x is on another TDomain");
              xi = x;
            },
-           py::arg("i"), py::arg("x"))
+           py::arg("i"), py::arg("x"), "Component i := a copy of the tube x (same TDomain).")
       .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i..j (inclusive), copied.")
       .def("slice", &V::slice, py::arg("k"), "The box of slice k.")
       .def("gate", &V::gate, py::arg("k"), "The box of gate k.")
@@ -568,7 +583,9 @@ void init_tube_vector(py::module_& m) {
       .def("diam", [](const V& v) { return component_values(v, 2); },
            "(dim, N) numpy array of slice diameters (row i = self[i].diam()).")
       .def("inflate",
-           [](const V& v, double r) { return map_components(v.size(), [&](std::size_t i) { return inflated(v[i], r); }); },
+           [](const V& v, double r) {
+             return map_components(v.size(), [&](std::size_t i) { return inflated(v[i], r); });
+           },
            py::arg("r"), "A new tube vector: every component inflated by r >= 0 (see Tube.inflate).")
       .def("inflate",
            [](const V& v, const IntervalVector& r) {
