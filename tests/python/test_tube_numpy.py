@@ -374,3 +374,49 @@ def test_matplotlib_axes_units_and_tplane_legend():
     plot_loops.plot_loops_map(ax, tp, positions)
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("x (m)", "y (m)")
     plt.close(fig)
+
+
+# ---- Trajectory arithmetic and TrajectoryVector ------------------------------
+
+def test_trajectory_arithmetic():
+    x = Trajectory([0.0, 1.0, 3.0], [0.0, 2.0, -2.0])
+    y = Trajectory("2*t", Interval(0, 2))
+    z = x + y
+    assert not z.is_sampled() and not z.is_analytic() and y.is_analytic()
+    assert repr(z) == "Trajectory(composite, t=[0, 2])"
+    assert z.domain() == Interval(0, 2)
+    assert z(1.0) == Interval(4)
+    assert (x - y)(1.0) == Interval(0) and (x * y)(1.0) == Interval(4) and (x / y)(1.0) == Interval(1)
+    assert (x + 1)(1.0) == Interval(3) and (1 - x)(1.0) == Interval(-1) and (3 * x)(1.0) == Interval(6)
+    assert (x / 4)(1.0) == Interval(0.5) and (8 / x)(1.0) == Interval(4) and (-x)(1.0) == Interval(-2)
+    assert s.sqr(x)(1.0) == Interval(4) and abs(-x)(1.0) == Interval(2) and s.abs(-x)(1.0) == Interval(2)
+    assert s.cos(x)(0.0).contains(1.0) and s.exp(x)(0.0).contains(1.0)
+    assert (x - x)(Interval(0, 1)) == Interval(-2, 2)  # operands evaluated independently
+    td = TDomain(0.0, 3.0, 0.5)
+    assert s.tube_from_data(td, x + 1.0).gate(2) == Interval(3)
+    with pytest.raises(s.Error, match="do not overlap"):
+        x + Trajectory("t", Interval(5, 6))
+    with pytest.raises(s.Error, match="only a sampled"):
+        pickle.dumps(z)
+
+
+def test_trajectory_vector():
+    v = s.TrajectoryVector([0.0, 1.0, 2.0], np.array([[0.0, 10.0], [1.0, 11.0], [4.0, 12.0]]))
+    assert len(v) == 2 and v.domain() == Interval(0, 2)
+    assert repr(v) == "TrajectoryVector(dim 2, t=[0, 2])"
+    assert v(1.0) == IntervalVector([1, 11])
+    assert v(Interval(0, 2)) == IntervalVector([[0, 4], [10, 12]])
+    assert v[-1].sample_values() == [10.0, 11.0, 12.0]
+    w = s.TrajectoryVector("(t, 2*t)", Interval(0, 4))
+    assert (v + w)(1.0) == IntervalVector([2, 13]) and (v - w)(2.0) == IntervalVector([2, 8])
+    assert (2 * v)(1.0) == IntervalVector([2, 22]) and (v * w[0])(2.0) == IntervalVector([8, 24])
+    assert (v / 2)(2.0) == IntervalVector([2, 6]) and (-v)(0.0) == IntervalVector([0, -10])
+    u = pickle.loads(pickle.dumps(v))
+    assert u(0.5) == v(0.5)
+    td = TDomain(0.0, 2.0, 0.5)
+    assert TubeVector(td, "(t + [-0.1, 0.1], 2*t + [-0.1, 0.1])").contains(s.TrajectoryVector("(t, 2*t)", Interval(0, 2)))
+    assert s.TrajectoryVector([Trajectory("t", Interval(0, 1))]).size() == 1
+    with pytest.raises(s.DimensionError):
+        v + s.TrajectoryVector("t", Interval(0, 1))
+    with pytest.raises(s.DimensionError):
+        s.TrajectoryVector([0.0, 1.0], np.array([[0.0, 1.0]]))
