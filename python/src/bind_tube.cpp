@@ -370,12 +370,17 @@ void init_tube_class(py::module_& m) {
   def_copy(c);
   c.def(py::init([](TD td, const py::array& slices, const py::object& gates) {
           const std::size_t n = td->nb_slices();
+          if (slices.ndim() == 1 && gates.is_none()) {  // (N,) points: degenerate slices, as IntervalVector
+            const auto points = py::module_::import("sillage._sillage").attr("IntervalVector")(slices);
+            return T(td, points.cast<IntervalVector>().components());
+          }
           auto s = intervals_from_array(slices, n, "Tube(tdomain, slices)", "slices");
           if (gates.is_none()) return T(td, s);
           return T(td, s, intervals_from_array(gates, n + 1, "Tube(tdomain, slices, gates)", "gates"));
         }),
         py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(),
-        "From numpy arrays of bounds: slices of shape (N, 2), row k = [lb, ub] of slice k; gates (optional)\n"
+        "From numpy arrays of bounds: slices of shape (N, 2), row k = [lb, ub] of slice k (an (N,) array:\n"
+        "points, degenerate slices); gates (optional)\n"
         "of shape (N+1, 2). Without gates, gate k is the intersection of the two slices around t_k and the\n"
         "end gates are the end slices. [inf, -inf] is the empty interval (what slices_array() gives).\n"
         "DimensionError for a wrong shape; sillage.Error for NaN, lb > ub, or a gate disjoint from a slice.")

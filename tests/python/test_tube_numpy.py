@@ -51,8 +51,10 @@ def test_tube_from_array_errors():
         Tube(td, A[:2])
     with pytest.raises(s.DimensionError, match=r"shape \(4, 2\), got \(3, 2\)"):
         Tube(td, A, A)
-    with pytest.raises(s.DimensionError, match=r"got \(6,\)"):
-        Tube(td, A.ravel())
+    with pytest.raises(s.DimensionError, match="6 slices given, the TDomain has 3"):
+        Tube(td, A.ravel())  # (6,): six points
+    with pytest.raises(s.DimensionError, match=r"got \(3, 2, 1\)"):
+        Tube(td, A[:, :, None])
     bad = A.copy()
     bad[2, 0] = np.nan
     with pytest.raises(s.Error, match="slices row 2 has a NaN bound"):
@@ -420,3 +422,11 @@ def test_trajectory_vector():
         v + s.TrajectoryVector("t", Interval(0, 1))
     with pytest.raises(s.DimensionError):
         s.TrajectoryVector([0.0, 1.0], np.array([[0.0, 1.0]]))
+
+
+def test_tube_from_points_array():
+    td = td3()
+    x = Tube(td, np.array([1.0, 2.0, 3.0]))  # (N,) points, as IntervalVector takes them
+    assert x.slices_array().tolist() == [[1.0, 1.0], [2.0, 2.0], [3.0, 3.0]]
+    with pytest.raises(s.DimensionError):
+        Tube(td, np.array([1.0, 2.0]))
