@@ -380,9 +380,9 @@ void init_tube_class(py::module_& m) {
         }),
         py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(),
         "From numpy arrays of bounds: slices of shape (N, 2), row k = [lb, ub] of slice k (an (N,) array:\n"
-        "points, degenerate slices); gates (optional)\n"
-        "of shape (N+1, 2). Without gates, gate k is the intersection of the two slices around t_k and the\n"
-        "end gates are the end slices. [inf, -inf] is the empty interval (what slices_array() gives).\n"
+        "points, degenerate slices); gates (optional) of shape (N+1, 2). Without gates, gate k is the\n"
+        "intersection of the two slices around t_k and the end gates are the end slices. [inf, -inf] is\n"
+        "the empty interval (what slices_array() gives).\n"
         "DimensionError for a wrong shape; sillage.Error for NaN, lb > ub, or a gate disjoint from a slice.")
       .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
            "From an expression of t, e.g. Tube(td, 'sin(t) + [-0.1,0.1]').")
