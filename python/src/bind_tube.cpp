@@ -24,6 +24,7 @@
 #include "sillage/tube/tube_builders.h"
 #include "sillage/tube/tube_io.h"
 #include "sillage/tube/tube_vector.h"
+#include "sillage/tube/tube_vector_arithmetic.h"
 
 namespace sillage::python {
 
@@ -558,42 +559,6 @@ void init_tube_functions(py::module_& m) {
         py::arg("tdomain") = TD(), "Reads a TubeVector written by save_tube, on tdomain if given.");
 }
 
-// Component-wise results, as a TubeVector.
-template <class F>
-TubeVector map_components(std::size_t n, F f) {
-  std::vector<Tube> xs;
-  xs.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) xs.push_back(f(i));
-  return TubeVector(std::move(xs));
-}
-
-void check_sizes(std::size_t a, std::size_t b, const char* where) {
-  if (a != b) {
-    throw DimensionError(std::string(where) + ": sizes differ (" + std::to_string(a) + " and " + std::to_string(b) +
-                         ")");
-  }
-}
-
-// Hull of the times t where the box [x](t) meets y (every component at once):
-// slices contribute their whole domain, gates their time point. Empty if none.
-Interval vector_inverse(const TubeVector& x, const IntervalVector& y) {
-  check_sizes(x.size(), y.size(), "TubeVector.inverse");
-  const TDomain& td = *x.tdomain();
-  const auto meets = [&](std::size_t k, bool gate) {
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const Interval& v = gate ? x[i].gate(k) : x[i].slice(k);
-      if ((v & y[i]).is_empty()) return false;
-    }
-    return true;
-  };
-  Interval h = Interval::empty();
-  for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
-    if (meets(k, true)) h |= Interval(td.t(k));
-    if (k < x.nb_slices() && meets(k, false)) h |= td.slice_domain(k);
-  }
-  return h;
-}
-
 void init_tube_vector(py::module_& m) {
   using V = TubeVector;
   py::class_<V, std::shared_ptr<V>> c(m, "TubeVector", "n tubes on one TDomain; v[i] is a live reference.");
@@ -604,9 +569,9 @@ void init_tube_vector(py::module_& m) {
     std::vector<std::vector<Interval>> g;
     if (!gates.is_none()) {
       g = components_from_array(gates, n + 1, "TubeVector(tdomain, slices, gates)", "gates");
-      check_sizes(s.size(), g.size(), "TubeVector(tdomain, slices, gates)");
+      check_same_size(s.size(), g.size(), "TubeVector(tdomain, slices, gates)");
     }
-    return map_components(s.size(), [&](std::size_t i) { return g.empty() ? Tube(td, s[i]) : Tube(td, s[i], g[i]); });
+    return componentwise(s.size(), [&](std::size_t i) { return g.empty() ? Tube(td, s[i]) : Tube(td, s[i], g[i]); });
   };
   constexpr const char* kArraysDoc =
       "From numpy bounds: slices of shape (dim, N, 2) or a list of dim (N, 2) arrays, component i as in\n"
@@ -675,13 +640,13 @@ void init_tube_vector(py::module_& m) {
            "(dim, N) numpy array of slice diameters (row i = self[i].diam()).")
       .def("inflate",
            [](const V& v, double r) {
-             return map_components(v.size(), [&](std::size_t i) { return inflated(v[i], r); });
+             return componentwise(v.size(), [&](std::size_t i) { return inflated(v[i], r); });
            },
            py::arg("r"), "A new tube vector: every component inflated by r >= 0 (see Tube.inflate).")
       .def("inflate",
            [](const V& v, const IntervalVector& r) {
-             check_sizes(v.size(), r.size(), "TubeVector.inflate");
-             return map_components(v.size(), [&](std::size_t i) {
+             check_same_size(v.size(), r.size(), "TubeVector.inflate");
+             return componentwise(v.size(), [&](std::size_t i) {
                if (r[i].is_empty()) throw Error("TubeVector.inflate: radius " + std::to_string(i) + " is empty");
                return inflated(v[i], r[i].ub());
              });
@@ -689,11 +654,11 @@ void init_tube_vector(py::module_& m) {
            py::arg("r"), "Component i inflated by r[i] (the upper bound of each component of r, >= 0).")
       .def("inflate",
            [](const V& v, const V& r) {
-             check_sizes(v.size(), r.size(), "TubeVector.inflate");
-             return map_components(v.size(), [&](std::size_t i) { return inflated(v[i], r[i]); });
+             check_same_size(v.size(), r.size(), "TubeVector.inflate");
+             return componentwise(v.size(), [&](std::size_t i) { return inflated(v[i], r[i]); });
            },
            py::arg("r"), "Component i inflated by the tube of radii r[i] (see Tube.inflate).")
-      .def("inverse", &vector_inverse, py::arg("y"),
+      .def("inverse", [](const V& x, const IntervalVector& y) { return inverse(x, y); }, py::arg("y"),
            "Hull of the times where the box [x](t) meets the box y (all components at once); empty if none.")
       .def(
           "set",
@@ -719,7 +684,7 @@ void init_tube_vector(py::module_& m) {
            py::return_value_policy::reference)
       .def("__and__", [](const V& a, const V& b) { V r(a); return r &= b; }, py::is_operator())
       .def("__or__", [](const V& a, const V& b) { V r(a); return r |= b; }, py::is_operator())
-      .def("__neg__", [](const V& a) { return map_components(a.size(), [&](std::size_t i) { return -a[i]; }); })
+      .def("__neg__", [](const V& a) { return -a; })
       .def("__repr__",
            [](const V& v) {
              return "TubeVector(t=" + v.tdomain()->t0_tf().str() + ", " + std::to_string(v.nb_slices()) +
@@ -733,45 +698,28 @@ void init_tube_vector(py::module_& m) {
             const std::size_t n = td->nb_slices();
             const auto s = components_from_array(st[1], n, "TubeVector.__setstate__", "slices");
             const auto g = components_from_array(st[2], n + 1, "TubeVector.__setstate__", "gates");
-            check_sizes(s.size(), g.size(), "TubeVector.__setstate__");
-            return map_components(s.size(), [&](std::size_t i) { return tube_with(td, s[i], g[i]); });
+            check_same_size(s.size(), g.size(), "TubeVector.__setstate__");
+            return componentwise(s.size(), [&](std::size_t i) { return tube_with(td, s[i], g[i]); });
           }));
   c.attr("__hash__") = py::none();
   c.attr("__array_ufunc__") = py::none();
 
   // Component-wise arithmetic: with a TubeVector or a box (component i with component i), with a
   // Tube or an Interval/float (every component with it). DimensionError if sizes or TDomains differ.
-#define SILLAGE_TV_BIN(name, rname, iname, op)                                                                   \
-  c.def(name, [](const V& a, const V& b) {                                                                        \
-     check_sizes(a.size(), b.size(), name);                                                                       \
-     return map_components(a.size(), [&](std::size_t i) { return a[i] op b[i]; });                                \
-   }, py::is_operator())                                                                                          \
-      .def(name, [](const V& a, const Tube& b) {                                                                  \
-        return map_components(a.size(), [&](std::size_t i) { return a[i] op b; });                                \
-      }, py::is_operator())                                                                                       \
-      .def(name, [](const V& a, const Interval& b) {                                                              \
-        return map_components(a.size(), [&](std::size_t i) { return a[i] op b; });                                \
-      }, py::is_operator())                                                                                       \
-      .def(name, [](const V& a, const IntervalVector& b) {                                                        \
-        check_sizes(a.size(), b.size(), name);                                                                    \
-        return map_components(a.size(), [&](std::size_t i) { return a[i] op b[i]; });                             \
-      }, py::is_operator())                                                                                       \
-      .def(rname, [](const V& a, const Tube& b) {                                                                 \
-        return map_components(a.size(), [&](std::size_t i) { return b op a[i]; });                                \
-      }, py::is_operator())                                                                                       \
-      .def(rname, [](const V& a, const Interval& b) {                                                             \
-        return map_components(a.size(), [&](std::size_t i) { return b op a[i]; });                                \
-      }, py::is_operator())                                                                                       \
-      .def(rname, [](const V& a, const IntervalVector& b) {                                                       \
-        check_sizes(a.size(), b.size(), rname);                                                                   \
-        return map_components(a.size(), [&](std::size_t i) { return b[i] op a[i]; });                             \
-      }, py::is_operator())                                                                                       \
-      .def(iname, [](const py::object& self, const py::object& b) {                                               \
-        /* in place: the components keep their identity (live references stay valid) */                          \
-        const V r = self.attr(name)(b).cast<V>();                                                                  \
-        V& a = self.cast<V&>();                                                                                    \
-        for (std::size_t i = 0; i < a.size(); ++i) a[i] = r[i];                                                   \
-        return self;                                                                                               \
+#define SILLAGE_TV_BIN(name, rname, iname, op)                                                              \
+  c.def(name, [](const V& a, const V& b) { return a op b; }, py::is_operator())                              \
+      .def(name, [](const V& a, const Tube& b) { return a op b; }, py::is_operator())                       \
+      .def(name, [](const V& a, const Interval& b) { return a op b; }, py::is_operator())                   \
+      .def(name, [](const V& a, const IntervalVector& b) { return a op b; }, py::is_operator())             \
+      .def(rname, [](const V& a, const Tube& b) { return b op a; }, py::is_operator())                      \
+      .def(rname, [](const V& a, const Interval& b) { return b op a; }, py::is_operator())                  \
+      .def(rname, [](const V& a, const IntervalVector& b) { return b op a; }, py::is_operator())            \
+      .def(iname, [](const py::object& self, const py::object& b) {                                          \
+        /* in place: the components keep their identity (live references stay valid) */                     \
+        const V r = self.attr(name)(b).cast<V>();                                                             \
+        V& a = self.cast<V&>();                                                                               \
+        for (std::size_t i = 0; i < a.size(); ++i) a[i] = r[i];                                              \
+        return self;                                                                                          \
       }, py::is_operator());
   SILLAGE_TV_BIN("__add__", "__radd__", "__iadd__", +)
   SILLAGE_TV_BIN("__sub__", "__rsub__", "__isub__", -)

@@ -102,7 +102,7 @@ def test_tube_vector_from_arrays_errors():
     td = td3()
     with pytest.raises(s.DimensionError, match=r"shape \(dim, 3, 2\)"):
         TubeVector(td, np.zeros((2, 4, 2)))
-    with pytest.raises(s.DimensionError, match="sizes differ"):
+    with pytest.raises(s.DimensionError, match="dimension mismatch"):
         TubeVector(td, np.stack([A, A]), np.zeros((1, 4, 2)))
     with pytest.raises(s.DimensionError, match=r"slices\[1\] must have shape \(3, 2\)"):
         TubeVector(td, [A, A[:2]])
@@ -163,9 +163,9 @@ def test_tube_vector_arithmetic():
     assert (v + box).lb().tolist() == [[0.0, 0.5, 1.0], [11.0, 11.5, 12.0]]
     assert (box - v)[1] == Interval(10.0) - v[1]
     assert (-v)[0] == -x
-    with pytest.raises(s.DimensionError, match="sizes differ"):
+    with pytest.raises(s.DimensionError, match="dimension mismatch"):
         v + TubeVector(td, 3)
-    with pytest.raises(s.DimensionError, match="sizes differ"):
+    with pytest.raises(s.DimensionError, match="dimension mismatch"):
         v + IntervalVector(3)
 
 

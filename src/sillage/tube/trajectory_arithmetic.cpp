@@ -166,10 +166,7 @@ TrajectoryVector map_components(std::size_t n, F f) {
 }
 
 void check_sizes(const TrajectoryVector& x, const TrajectoryVector& y, const char* where) {
-  if (x.size() != y.size()) {
-    throw DimensionError(std::string(where) + ": sizes differ (" + std::to_string(x.size()) + " and " +
-                         std::to_string(y.size()) + ")");
-  }
+  check_same_size(x.size(), y.size(), where);  // interval_vector.h
 }
 
 }  // namespace
