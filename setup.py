@@ -4,6 +4,7 @@ Works offline: `pip install --no-build-isolation .` (setuptools, CMake, a C++20
 compiler, pybind11 and oneTBB come from Debian packages; see scripts/setup.sh).
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -13,6 +14,8 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).resolve().parent
+# The version is the one of project(sillage VERSION ...) in CMakeLists.txt (also sillage.__version__).
+VERSION = re.search(r"project\(sillage VERSION ([0-9.]+)", (ROOT / "CMakeLists.txt").read_text()).group(1)
 
 
 class CMakeBuild(build_ext):
@@ -34,6 +37,7 @@ class CMakeBuild(build_ext):
 
 
 setup(
+    version=VERSION,
     packages=["sillage"],
     package_dir={"sillage": "python/sillage"},
     ext_modules=[Extension("sillage._sillage", sources=[])],

@@ -16,6 +16,11 @@ Notes on the Python API:
 * ``bwd_f(y, x1, ...)`` returns the contracted arguments as a tuple, e.g.
   ``x1, x2 = bwd_add(y, x1, x2)`` and ``(x,) = bwd_sqr(y, x)``.
 * Invalid input raises ``sillage.Error`` (a ``ValueError``).
+* Tubes and numpy: ``Tube(td, a)`` from an ``(N, 2)`` array of slice bounds,
+  ``TubeVector(td, a)`` from a ``(dim, N, 2)`` one; ``slices_array()`` /
+  ``gates_array()`` / ``lb()`` / ``ub()`` / ``diam()`` give arrays back.
+  Interval, IntervalVector, TDomain, Tube, TubeVector and sampled Trajectory
+  objects pickle bit for bit (tubes pickled together share one TDomain).
 * ``sillage.abs``, ``sillage.min``, ``sillage.max`` and ``sillage.pow`` work on
   intervals; ``from sillage import *`` leaves Python's own ``abs``/``min``/
   ``max``/``pow`` alone (``abs(x)`` and ``x ** n`` work on intervals anyway).
@@ -23,6 +28,24 @@ Notes on the Python API:
 from . import _sillage
 from ._sillage import *  # noqa: F401,F403
 from ._sillage import Error  # noqa: F401
+
+#: The version of the C++ project (project(sillage VERSION ...) in CMakeLists.txt).
+__version__ = _sillage.__version__
+
+
+def _tplane_repr(tp):
+    d = tp.domain()
+    return (f"TPlane(t1={d[0]}, t2={d[1]}, eps={tp.eps():g}, {tp.nb_detections()} detections, "
+            f"{tp.nb_proofs()} proofs)")
+
+
+def _network_repr(cn):
+    return f"ContractorNetwork({cn.nb_ctc()} contractors, {cn.nb_dom()} domains)"
+
+
+# Short reprs of the classes registered without one (the C++ side has no text form for them).
+_sillage.TPlane.__repr__ = _tplane_repr
+_sillage.ContractorNetwork.__repr__ = _network_repr
 
 _BUILTIN_NAMES = {"abs", "min", "max", "pow"}
 __all__ = [n for n in dir(_sillage) if not n.startswith("_") and n not in _BUILTIN_NAMES]

@@ -2,9 +2,9 @@
 
 * ``plot_tplane(ax, tplane, truth=None)``: the t-plane paving (thesis colours),
   each detection filled and outlined by its status, the diagonal t1 = t2 and
-  the true crossings (t1*, t2*) as points;
+  the true crossings (t1*, t2*) as points, with a legend; axes in seconds;
 * ``plot_loops_map(ax, tplane, positions=None)``: the trajectory (a position
-  TubeVector or an (n, 2) path) and the map box of each detection.
+  TubeVector or an (n, 2) path) and the map box of each detection; axes in metres.
 
 Statuses, as the SVG figures (``loop_style``): a complete detection proven by
 the degree test is orange, a complete one without proof black, a partial one
@@ -13,13 +13,13 @@ are drawn by collections, one per status, so that large pavings stay fast.
 """
 import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
-from matplotlib.patches import Rectangle
+from matplotlib.patches import Patch, Rectangle
 
 from ._sillage import PavingTag, contour
 from .plot import PAVING_COLOURS
 from .plot_tube import plot_tube_vector_2d
 
-__all__ = ["LOOP_COLOURS", "loop_status", "plot_tplane", "plot_loops_map"]
+__all__ = ["LOOP_COLOURS", "TPLANE_LEGEND", "loop_status", "plot_tplane", "plot_loops_map"]
 
 #: (face, edge) colours of each detection status (the same as the SVG figures).
 LOOP_COLOURS = {"proven": ("#ff8c00", "#c25e00"), "unproven": ("#000000", "#000000"),
@@ -68,17 +68,24 @@ def _outline_segments(loops_boxes):
     return np.asarray(segs, dtype=float).reshape(-1, 2, 2)
 
 
+#: Legend text of each entry of plot_tplane's result.
+TPLANE_LEGEND = {"domain": "outside (no loop)", "outside": "outside (no loop)", "boundary": "boundary",
+                 "inner": "inner", "partial": "partial detection", "unproven": "detection (no proof)",
+                 "proven": "proven loop", "diagonal": "t1 = t2", "truth": "true crossings"}
+
+
 def plot_tplane(ax, tplane, truth=None, show_outside=False, show_diagonal=True, markers=0.01, alpha=0.45,
-                linewidth=0.3, autoscale=True):
+                linewidth=0.3, autoscale=True, legend=True):
     """Draws the t-plane of a TPlane (after compute_detections); returns a dict of the artists added.
 
     `truth`: true crossings, a list of PathCrossing (self_crossings) or of (t1, t2) pairs, drawn as
     blue points. `show_outside`: draw every Outside leaf; otherwise the domain is filled with the
     outside colour once (the same picture, far fewer shapes). `markers`: detections whose hull is
     smaller than this fraction of the domain also get a point at their centre so that they show
-    (0 or None: no markers). Keys of the result: 'domain' or 'outside', 'inner', 'boundary',
-    'proven', 'unproven', 'partial' (fills), 'outlines', 'markers', 'diagonal', 'truth'; an entry
-    is absent when there is nothing to draw.
+    (0 or None: no markers). `legend`: add a legend naming what is drawn (TPLANE_LEGEND), kept
+    under the key 'legend'. Keys of the result: 'domain' or 'outside', 'inner', 'boundary',
+    'proven', 'unproven', 'partial' (fills), 'outlines', 'markers', 'diagonal', 'truth', 'legend';
+    an entry is absent when there is nothing to draw. Axes: t1 and t2 in seconds.
     """
     out = {}
     dom = _box_array(tplane.domain())
@@ -138,9 +145,30 @@ def plot_tplane(ax, tplane, truth=None, show_outside=False, show_diagonal=True, 
     if autoscale:
         ax.set_xlim(dom[0, 0], dom[0, 1])
         ax.set_ylim(dom[1, 0], dom[1, 1])
-        ax.set_xlabel("t1")
-        ax.set_ylabel("t2")
+        ax.set_xlabel("t1 (s)")
+        ax.set_ylabel("t2 (s)")
+    if legend:
+        out["legend"] = _tplane_legend(ax, out)
     return out
+
+
+def _tplane_legend(ax, out):
+    """A legend with one entry per drawn kind (patches for the fills, the lines themselves)."""
+    handles = []
+    for key in ("domain", "outside", "boundary", "inner", "partial", "unproven", "proven"):
+        if key not in out:
+            continue
+        if key in LOOP_COLOURS:
+            face, edge = LOOP_COLOURS[key]
+        else:
+            face, edge = PAVING_COLOURS[{"domain": PavingTag.Outside, "outside": PavingTag.Outside,
+                                         "boundary": PavingTag.Boundary, "inner": PavingTag.Inner}[key]]
+        handles.append(Patch(facecolor=face, edgecolor=edge, label=TPLANE_LEGEND[key]))
+    for key in ("diagonal", "truth"):
+        if key in out:
+            out[key].set_label(TPLANE_LEGEND[key])
+            handles.append(out[key])
+    return ax.legend(handles=handles, loc="lower right", fontsize="small", framealpha=0.9)
 
 
 def _path_array(positions):
@@ -213,6 +241,6 @@ def plot_loops_map(ax, tplane, positions=None, times=None, crossings=None, origi
         ax.autoscale_view()
     if autoscale:
         ax.set_aspect("equal", adjustable="datalim")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
     return out

@@ -93,6 +93,7 @@ def plot_tube(ax, tube, color=None, edgecolor=None, traj=None, gates=False, line
     """Draws a scalar Tube over time; returns the PolyCollection of the slices.
 
     `traj`: a Trajectory drawn as a red line; `gates`: draw the gates as vertical segments.
+    With `autoscale`, the limits are set and the time axis is labelled "t (s)".
     """
     face, edge = TUBE_COLOURS["slice"]
     times, sl, gt = _arrays(tube)
@@ -116,6 +117,7 @@ def plot_tube(ax, tube, color=None, edgecolor=None, traj=None, gates=False, line
     if autoscale:
         ax.set_xlim(times[0], times[-1])
         ax.set_ylim(lo_w, hi_w)
+        ax.set_xlabel("t (s)")
     return coll
 
 
@@ -177,6 +179,6 @@ def plot_thickness(ax, tube, measure=None, color="#2a6aa8", **kwargs):
     d[~np.isfinite(d)] = np.nan
     (line,) = ax.step(times, np.append(d, d[-1]), where="post", color=color, **kwargs)
     ax.set_xlim(times[0], times[-1])
-    ax.set_xlabel("t")
+    ax.set_xlabel("t (s)")
     ax.set_ylabel("d(t)")
     return line

@@ -5,6 +5,7 @@
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -17,11 +18,13 @@
 #include "sillage/expr/function.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/trajectory.h"
+#include "sillage/tube/trajectory_arithmetic.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_arithmetic.h"
 #include "sillage/tube/tube_builders.h"
 #include "sillage/tube/tube_io.h"
 #include "sillage/tube/tube_vector.h"
+#include "sillage/tube/tube_vector_arithmetic.h"
 
 namespace sillage::python {
 
@@ -41,6 +44,169 @@ py::array_t<double> bounds_array(std::span<const Interval> xs) {
   return a;
 }
 
+using Bounds = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// One row [lb, ub] of a bounds array; (inf, -inf) is the empty interval (what
+// slices_array gives for an empty slice). NaN, lb > ub or an infinite point are errors.
+Interval interval_from_row(double lo, double hi, const std::string& where) {
+  if (std::isnan(lo) || std::isnan(hi)) throw Error(where + " has a NaN bound");
+  if (lo == rounding::kInf && hi == -rounding::kInf) return Interval::empty();
+  if (lo > hi) {
+    throw Error(where + ": lb > ub ([" + std::to_string(lo) + ", " + std::to_string(hi) +
+                "]; an empty interval is written [inf, -inf])");
+  }
+  if (lo == rounding::kInf || hi == -rounding::kInf) throw Error(where + ": an infinite point is not an interval");
+  return Interval(lo, hi);
+}
+
+Bounds bounds_of(const py::handle& h, const char* where, const char* what) {
+  Bounds a = Bounds::ensure(h);
+  if (!a) {
+    PyErr_Clear();
+    throw ArgumentTypeError(std::string(where) + ": " + what + " must be an array of floats, got " + type_name(h));
+  }
+  return a;
+}
+
+// An (n, 2) array of bounds as n intervals (DimensionError if the shape is not (n, 2)).
+std::vector<Interval> intervals_from_array(const py::handle& h, std::size_t n, const char* where, const char* what) {
+  const Bounds a = bounds_of(h, where, what);
+  if (a.ndim() != 2 || a.shape(0) != static_cast<py::ssize_t>(n) || a.shape(1) != 2) {
+    throw DimensionError(std::string(where) + ": " + what + " must have shape (" + std::to_string(n) +
+                         ", 2), got " + shape_text(a));
+  }
+  auto r = a.unchecked<2>();
+  std::vector<Interval> xs;
+  xs.reserve(n);
+  for (py::ssize_t k = 0; k < r.shape(0); ++k) {
+    xs.push_back(interval_from_row(r(k, 0), r(k, 1),
+                                   std::string(where) + ": " + what + " row " + std::to_string(k)));
+  }
+  return xs;
+}
+
+// A (dim, n, 2) array (or a list of dim (n, 2) arrays) as dim lists of n intervals.
+std::vector<std::vector<Interval>> components_from_array(const py::handle& h, std::size_t n, const char* where,
+                                                         const char* what) {
+  std::vector<std::vector<Interval>> cs;
+  if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)) {
+    std::size_t i = 0;
+    for (const auto& item : h) {
+      const std::string w = std::string(what) + "[" + std::to_string(i++) + "]";
+      cs.push_back(intervals_from_array(item, n, where, w.c_str()));
+    }
+  } else {
+    const Bounds a = bounds_of(h, where, what);
+    if (a.ndim() != 3 || a.shape(0) < 1 || a.shape(1) != static_cast<py::ssize_t>(n) || a.shape(2) != 2) {
+      throw DimensionError(std::string(where) + ": " + what + " must have shape (dim, " + std::to_string(n) +
+                           ", 2) with dim >= 1, got " + shape_text(a));
+    }
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+      const std::string w = std::string(what) + "[" + std::to_string(i) + "]";
+      cs.push_back(intervals_from_array(a[py::make_tuple(i)], n, where, w.c_str()));
+    }
+  }
+  if (cs.empty()) throw DimensionError(std::string(where) + ": " + what + " has no component");
+  return cs;
+}
+
+// A tube with exactly these slices and gates (no consistency check: used to
+// restore a pickled tube bit for bit).
+Tube tube_with(const TD& td, std::vector<Interval> slices, std::vector<Interval> gates) {
+  Tube x(td);
+  x.data().slices = std::move(slices);
+  x.data().gates = std::move(gates);
+  x.touch();
+  return x;
+}
+
+// (dim, n, 2) array of the slices (or gates) of every component.
+py::array_t<double> components_array(const TubeVector& v, bool gates) {
+  const std::size_t n = gates ? v.nb_slices() + 1 : v.nb_slices();
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(n), py::ssize_t{2}});
+  auto r = a.mutable_unchecked<3>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto xs = gates ? v[i].gates() : v[i].slices();
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto ii = static_cast<py::ssize_t>(i), kk = static_cast<py::ssize_t>(k);
+      r(ii, kk, 0) = xs[k].is_empty() ? rounding::kInf : xs[k].lb();
+      r(ii, kk, 1) = xs[k].is_empty() ? -rounding::kInf : xs[k].ub();
+    }
+  }
+  return a;
+}
+
+// Slice-wise lb (what = 0), ub (1) or diam (2) of a tube, shape (N,).
+py::array_t<double> slice_values(const Tube& x, int what) {
+  py::array_t<double> a(static_cast<py::ssize_t>(x.nb_slices()));
+  auto r = a.mutable_unchecked<1>();
+  const auto xs = x.slices();
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const Interval& y = xs[k];
+    const auto i = static_cast<py::ssize_t>(k);
+    if (what == 0) r(i) = y.is_empty() ? rounding::kInf : y.lb();
+    else if (what == 1) r(i) = y.is_empty() ? -rounding::kInf : y.ub();
+    else r(i) = y.diam();
+  }
+  return a;
+}
+
+py::array_t<double> component_values(const TubeVector& v, int what) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(v.nb_slices())});
+  auto r = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto row = slice_values(v[i], what);
+    auto c = row.unchecked<1>();
+    for (py::ssize_t k = 0; k < c.shape(0); ++k) r(static_cast<py::ssize_t>(i), k) = c(k);
+  }
+  return a;
+}
+
+// Every slice and gate inflated by r (r >= 0, finite or inf; Error otherwise).
+Tube inflated(const Tube& x, double r) {
+  if (!(r >= 0.0)) throw Error("Tube.inflate: the radius must be >= 0, got " + std::to_string(r));
+  Tube y(x);
+  for (auto& s : y.data().slices) s = s.inflate(r);
+  for (auto& g : y.data().gates) g = g.inflate(r);
+  y.touch();
+  return y;
+}
+
+// x + [-1, 1]·r, slice- and gate-wise: inflation by a tube of radii (its upper bounds count).
+Tube inflated(const Tube& x, const Tube& r) {
+  if (r.codomain().lb() < 0.0) throw Error("Tube.inflate: the radius tube has negative values");
+  return x + Interval(-1.0, 1.0) * r;
+}
+
+// The index of the gate at time t, sampling the TDomain at t if t is not a time point yet.
+std::size_t gate_at(const Tube& x, double t, const char* where) {
+  if (std::isnan(t)) throw Error(std::string(where) + ": t is NaN");
+  const auto& td = x.tdomain();
+  const std::ptrdiff_t k = td->time_index(t);
+  return k >= 0 ? static_cast<std::size_t>(k) : td->sample(t);
+}
+
+const char* const kTubeSetDoc =
+    "set(y): every slice and gate := y.\n"
+    "set(y, k): slice k := y (an index), its two gates := y & the neighbouring slice (an end gate := y).\n"
+    "set(y, t=t): the value at time t := y, i.e. the gate at t (like Codac's set(y, t)). If t is not a\n"
+    "time point yet, the TDomain is sampled at t first (td.sample(t)), which splits the slice containing t\n"
+    "in every tube on that TDomain (their values do not change). The slices are not changed (see\n"
+    "set_gate). Error if t is NaN or outside the domain, or if both k and t are given.";
+
+// Python str of an interval vector: ([a, b], [c, d]).
+std::string box_text(const IntervalVector& v) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i].str();
+  return s + ")";
+}
+
 std::size_t py_index(long long i, std::size_t n) {
   if (i < 0) i += static_cast<long long>(n);
   if (i < 0 || i >= static_cast<long long>(n)) throw py::index_error("TubeVector index out of range");
@@ -54,38 +220,147 @@ void init_tdomain(py::module_& m) {
       .def(py::init<double, double, double>(), py::arg("t0"), py::arg("tf"), py::arg("dt"),
            "Uniform: t_k = t0 + k*dt, the last slice possibly shorter, t_N = tf.")
       .def(py::init<std::vector<double>>(), py::arg("times"), "From the time points (strictly increasing).")
-      .def("nb_slices", &TDomain::nb_slices)
-      .def("t", &TDomain::t, py::arg("k"))
-      .def("t0_tf", &TDomain::t0_tf)
-      .def("times", [](const TDomain& td) { return std::vector<double>(td.times().begin(), td.times().end()); })
+      .def("nb_slices", &TDomain::nb_slices, "N, the number of slices.")
+      .def("t", &TDomain::t, py::arg("k"), "The time point t_k, k <= N (sillage.Error otherwise).")
+      .def("t0_tf", &TDomain::t0_tf, "[t_0, t_N] as an Interval.")
+      .def("times", [](const TDomain& td) { return std::vector<double>(td.times().begin(), td.times().end()); },
+           "The N+1 time points as a list of floats.")
       .def("slice_index", &TDomain::slice_index, py::arg("t"),
            "Index of the slice containing t (at an inner time point: the slice it starts).")
       .def("slice_domain", &TDomain::slice_domain, py::arg("k"))
       .def("slice_width", &TDomain::slice_width, py::arg("k"), "Rigorous enclosure of t_{k+1} - t_k.")
       .def("is_time_point", &TDomain::is_time_point, py::arg("t"))
       .def("time_index", &TDomain::time_index, py::arg("t"), "The index k with t_k == t, or -1 if t is not a time point.")
-      .def("sample", &TDomain::sample, py::arg("t"), "Adds the time point t; returns its index.")
-      .def("nb_attached", &TDomain::nb_attached)
-      .def("__repr__", [](const TDomain& td) {
-        return "TDomain(" + td.t0_tf().str() + ", " + std::to_string(td.nb_slices()) + " slices)";
-      });
+      .def("sample", &TDomain::sample, py::arg("t"),
+           "Adds the time point t and splits the slice containing it in every attached tube; returns its index.")
+      .def("nb_attached", &TDomain::nb_attached, "Number of tube components attached to this domain and alive.")
+      .def("__repr__",
+           [](const TDomain& td) {
+             return "TDomain(t=" + td.t0_tf().str() + ", " + std::to_string(td.nb_slices()) + " slices)";
+           })
+      // Pickled as its time points; tubes pickled together keep sharing one TDomain (pickle's memo).
+      .def(py::pickle(
+          [](const TDomain& td) { return py::make_tuple(std::vector<double>(td.times().begin(), td.times().end())); },
+          [](const py::tuple& st) { return TDomain::create(st[0].cast<std::vector<double>>()); }));
 }
 
 void init_trajectory(py::module_& m) {
-  py::class_<Trajectory, std::shared_ptr<Trajectory>>(
-      m, "Trajectory", "A sampled (piecewise-linear) or analytic trajectory; evaluations are enclosures.")
-      .def(py::init<const std::map<double, double>&>(), py::arg("samples"), "From a dict {t: x}.")
+  py::class_<Trajectory, std::shared_ptr<Trajectory>> tc(
+      m, "Trajectory",
+      "A sampled (piecewise-linear), analytic (expression of t) or composite (arithmetic result) trajectory;\n"
+      "evaluations are enclosures.");
+  tc.def(py::init<const std::map<double, double>&>(), py::arg("samples"), "From a dict {t: x}.")
       .def(py::init<const std::vector<double>&, const std::vector<double>&>(), py::arg("times"), py::arg("values"))
       .def(py::init<const std::string&, const Interval&>(), py::arg("expr"), py::arg("domain"),
            "Analytic: an expression of t over the domain.")
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"))
-      .def("is_sampled", &Trajectory::is_sampled)
-      .def("domain", &Trajectory::domain)
-      .def("sample_times", &Trajectory::sample_times, "The sample times (sampled trajectories).")
-      .def("sample_values", &Trajectory::sample_values)
-      .def("set", &Trajectory::set, py::arg("t"), py::arg("x"))
-      .def("__call__", py::overload_cast<double>(&Trajectory::operator(), py::const_), py::arg("t"))
-      .def("__call__", py::overload_cast<const Interval&>(&Trajectory::operator(), py::const_), py::arg("t"));
+      .def("is_sampled", &Trajectory::is_sampled, "True for a sampled trajectory.")
+      .def("is_analytic", &Trajectory::is_analytic,
+           "True for an analytic one (an expression of t); neither: a composite (arithmetic result).")
+      .def("domain", &Trajectory::domain, "The time domain, an Interval.")
+      .def("sample_times", &Trajectory::sample_times, "The sample times (sampled trajectories; [] otherwise).")
+      .def("sample_values", &Trajectory::sample_values, "The sample values (sampled trajectories; [] otherwise).")
+      .def("set", &Trajectory::set, py::arg("t"), py::arg("x"),
+           "Adds the sample (t, x), replacing an existing one at t (sampled trajectories only).")
+      .def("__call__", py::overload_cast<double>(&Trajectory::operator(), py::const_), py::arg("t"),
+           "x(t) as an enclosing Interval (t a float), or x([t]) = {x(t) : t in [t]} (t an Interval).")
+      .def("__call__", py::overload_cast<const Interval&>(&Trajectory::operator(), py::const_), py::arg("t"))
+      .def("__repr__",
+           [](const Trajectory& x) {
+             if (x.is_analytic()) return "Trajectory(analytic, t=" + x.domain().str() + ")";
+             if (!x.is_sampled()) return "Trajectory(composite, t=" + x.domain().str() + ")";
+             return "Trajectory(sampled, " + std::to_string(x.sample_times().size()) + " points, t=" +
+                    x.domain().str() + ")";
+           })
+      // Sampled trajectories pickle as their samples (bit-exact); an analytic one does not pickle.
+      .def(py::pickle(
+          [](const Trajectory& x) {
+            if (!x.is_sampled()) {
+              throw Error("Trajectory: only a sampled trajectory can be pickled, not an analytic or composite one");
+            }
+            return py::make_tuple(x.sample_times(), x.sample_values());
+          },
+          [](const py::tuple& st) {
+            return Trajectory(st[0].cast<std::vector<double>>(), st[1].cast<std::vector<double>>());
+          }));
+  // Arithmetic (trajectory_arithmetic.h): composite trajectories over the common domain.
+#define SILLAGE_TRAJ_BIN(name, rname, op)                                                                      \
+  tc.def(name, [](const Trajectory& a, const Trajectory& b) { return a op b; }, py::is_operator(),            \
+         "Composite trajectory over the common domain, evaluated as [a](t) " #op " [b](t).")                   \
+      .def(name, [](const Trajectory& a, double b) { return a op b; }, py::is_operator())                     \
+      .def(rname, [](const Trajectory& a, double b) { return b op a; }, py::is_operator());
+  SILLAGE_TRAJ_BIN("__add__", "__radd__", +)
+  SILLAGE_TRAJ_BIN("__sub__", "__rsub__", -)
+  SILLAGE_TRAJ_BIN("__mul__", "__rmul__", *)
+  SILLAGE_TRAJ_BIN("__truediv__", "__rtruediv__", /)
+#undef SILLAGE_TRAJ_BIN
+  tc.def("__neg__", [](const Trajectory& a) { return -a; })
+      .def("__abs__", [](const Trajectory& a) { return abs(a); });
+  tc.attr("__array_ufunc__") = py::none();
+  using F1 = Trajectory (*)(const Trajectory&);
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "sqr of a trajectory (composite).");
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "sqrt of a trajectory (composite).");
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "exp of a trajectory (composite).");
+  m.def("log", static_cast<F1>(&log), py::arg("x"), "log of a trajectory (composite).");
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "sin of a trajectory (composite).");
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "cos of a trajectory (composite).");
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "tan of a trajectory (composite).");
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "atan of a trajectory (composite).");
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "abs of a trajectory (composite).");
+  m.def("atan2", static_cast<Trajectory (*)(const Trajectory&, const Trajectory&)>(&atan2), py::arg("y"),
+        py::arg("x"), "atan2(y, x) of two trajectories (composite).");
+
+  using TV = TrajectoryVector;
+  py::class_<TV, std::shared_ptr<TV>> v(m, "TrajectoryVector",
+                                        "n scalar trajectories, a vector trajectory over their common domain.");
+  def_copy(v);
+  v.def(py::init<std::vector<Trajectory>>(), py::arg("trajectories"), "From Trajectories (copied).")
+      .def(py::init([](const std::vector<double>& times, const py::handle& values) {
+             const Bounds a = bounds_of(values, "TrajectoryVector(times, values)", "values");
+             if (a.ndim() != 2) {
+               throw DimensionError("TrajectoryVector(times, values): values must have shape (k, n), got " +
+                                    shape_text(a));
+             }
+             auto r = a.unchecked<2>();
+             std::vector<std::vector<double>> pts(static_cast<std::size_t>(r.shape(0)));
+             for (py::ssize_t j = 0; j < r.shape(0); ++j) {
+               for (py::ssize_t i = 0; i < r.shape(1); ++i) pts[static_cast<std::size_t>(j)].push_back(r(j, i));
+             }
+             return TV(times, pts);
+           }),
+           py::arg("times"), py::arg("values"),
+           "Sampled: values of shape (k, n), row j = the point at times[j] (k times, strictly increasing).")
+      .def(py::init<const std::string&, const Interval&>(), py::arg("expr"), py::arg("domain"),
+           "Analytic: a vector expression of t, e.g. '(cos(t), sin(t))', over the domain.")
+      .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
+           "Analytic: a Function of one variable t (component i = f[i]).")
+      .def("size", &TV::size, "The dimension n.")
+      .def("__len__", &TV::size)
+      .def("domain", &TV::domain, "The intersection of the components' domains.")
+      .def("__getitem__", [](const TV& x, long long i) { return x[py_index(i, x.size())]; }, py::arg("i"),
+           "Component i (a copy; negative i from the end).")
+      .def("__call__", py::overload_cast<double>(&TV::operator(), py::const_), py::arg("t"),
+           "The box of the components' enclosures at t (a float) or over [t] (an Interval).")
+      .def("__call__", py::overload_cast<const Interval&>(&TV::operator(), py::const_), py::arg("t"))
+      .def("__neg__", [](const TV& a) { return -a; })
+      .def("__add__", [](const TV& a, const TV& b) { return a + b; }, py::is_operator(),
+           "Component-wise (same size, DimensionError otherwise).")
+      .def("__sub__", [](const TV& a, const TV& b) { return a - b; }, py::is_operator())
+      .def("__mul__", [](const TV& a, const Trajectory& b) { return a * b; }, py::is_operator(),
+           "Every component times a scalar trajectory or a number.")
+      .def("__mul__", [](const TV& a, double b) { return a * b; }, py::is_operator())
+      .def("__rmul__", [](const TV& a, const Trajectory& b) { return b * a; }, py::is_operator())
+      .def("__rmul__", [](const TV& a, double b) { return b * a; }, py::is_operator())
+      .def("__truediv__", [](const TV& a, const Trajectory& b) { return a / b; }, py::is_operator())
+      .def("__truediv__", [](const TV& a, double b) { return a / b; }, py::is_operator())
+      .def("__repr__",
+           [](const TV& x) {
+             return "TrajectoryVector(dim " + std::to_string(x.size()) + ", t=" + x.domain().str() + ")";
+           })
+      // Pickled as its components (each must be sampled).
+      .def(py::pickle([](const TV& x) { return py::make_tuple(x.components()); },
+                      [](const py::tuple& st) { return TV(st[0].cast<std::vector<Trajectory>>()); }));
+  v.attr("__array_ufunc__") = py::none();
 }
 
 void init_tube_class(py::module_& m) {
@@ -94,36 +369,78 @@ void init_tube_class(py::module_& m) {
                                       "A sliced enclosure of scalar trajectories: N slice codomains and N+1 gates "
                                       "on a TDomain. Copies (copy()) are attached to the same TDomain.");
   def_copy(c);
-  c.def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
-        "From an expression of t, e.g. Tube(td, 'sin(t) + [-0.1,0.1]').")
-      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"))
-      .def(py::init<TD, const Interval&>(), py::arg("tdomain"), py::arg("x") = Interval())
-      .def(py::init<TD, const std::vector<Interval>&>(), py::arg("tdomain"), py::arg("slices"))
+  c.def(py::init([](TD td, const py::array& slices, const py::object& gates) {
+          const std::size_t n = td->nb_slices();
+          if (slices.ndim() == 1 && gates.is_none()) {  // (N,) points: degenerate slices, as IntervalVector
+            const auto points = py::module_::import("sillage._sillage").attr("IntervalVector")(slices);
+            return T(td, points.cast<IntervalVector>().components());
+          }
+          auto s = intervals_from_array(slices, n, "Tube(tdomain, slices)", "slices");
+          if (gates.is_none()) return T(td, s);
+          return T(td, s, intervals_from_array(gates, n + 1, "Tube(tdomain, slices, gates)", "gates"));
+        }),
+        py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(),
+        "From numpy arrays of bounds: slices of shape (N, 2), row k = [lb, ub] of slice k (an (N,) array:\n"
+        "points, degenerate slices); gates (optional) of shape (N+1, 2). Without gates, gate k is the\n"
+        "intersection of the two slices around t_k and the end gates are the end slices. [inf, -inf] is\n"
+        "the empty interval (what slices_array() gives).\n"
+        "DimensionError for a wrong shape; sillage.Error for NaN, lb > ub, or a gate disjoint from a slice.")
+      .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
+           "From an expression of t, e.g. Tube(td, 'sin(t) + [-0.1,0.1]').")
+      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"),
+           "From a scalar Function of one variable: slice k = [f]([t_k, t_k+1]), gate k = [f](t_k).")
+      .def(py::init<TD, const Interval&>(), py::arg("tdomain"), py::arg("x") = Interval(),
+           "Every slice and gate = x (the whole line by default).")
+      .def(py::init<TD, const std::vector<Interval>&>(), py::arg("tdomain"), py::arg("slices"),
+           "From a list of N slice intervals; gates as for arrays.")
       .def(py::init<TD, const std::vector<Interval>&, const std::vector<Interval>&>(), py::arg("tdomain"),
-           py::arg("slices"), py::arg("gates"))
-      .def("tdomain", &T::tdomain)
-      .def("nb_slices", &T::nb_slices)
+           py::arg("slices"), py::arg("gates"), "From lists of N slices and N+1 gates.")
+      .def("tdomain", &T::tdomain, "The TDomain (shared, not a copy).")
+      .def("nb_slices", &T::nb_slices, "N, the number of slices.")
       // Signed indices: -1 is an OutOfRangeError, not an argument mismatch.
       .def("slice", [](const T& x, py::ssize_t k) { return x.slice(index_arg(k, "Tube.slice", "slice")); },
-           py::arg("k"))
-      .def("gate", [](const T& x, py::ssize_t k) { return x.gate(index_arg(k, "Tube.gate", "gate")); }, py::arg("k"))
+           py::arg("k"), "[x](k), the codomain of slice k (0 <= k < N).")
+      .def("gate", [](const T& x, py::ssize_t k) { return x.gate(index_arg(k, "Tube.gate", "gate")); }, py::arg("k"),
+           "[x](t_k), gate k (0 <= k <= N).")
       .def(
-          "set", [](T& x, const Interval& y, py::ssize_t k) { x.set(y, index_arg(k, "Tube.set(y, k)", "slice")); },
-          py::arg("y"), py::arg("k"), "Slice k := y, its gates := y & the neighbouring slices.")
-      .def("set", py::overload_cast<const Interval&>(&T::set), py::arg("y"))
+          "set",
+          [](T& x, const Interval& y, const py::object& k, const py::object& t) {
+            if (!k.is_none() && !t.is_none()) throw Error("Tube.set: give a slice index k or a time t, not both");
+            if (!t.is_none()) {
+              const std::size_t g = gate_at(x, t.cast<double>(), "Tube.set(y, t=t)");
+              x.set_gate(g, y);
+            } else if (!k.is_none()) {
+              x.set(y, index_arg(k.cast<py::ssize_t>(), "Tube.set(y, k)", "slice"));
+            } else {
+              x.set(y);
+            }
+          },
+          py::arg("y"), py::arg("k") = py::none(), py::kw_only(), py::arg("t") = py::none(), kTubeSetDoc)
       .def(
           "set_gate",
           [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
-          py::arg("k"), py::arg("y"))
-      .def("codomain", &T::codomain)
-      .def("volume", &T::volume)
-      .def("thickness", &T::thickness, py::arg("k"))
-      .def("max_thickness", &T::max_thickness)
-      .def("is_empty", &T::is_empty)
-      .def("is_subset", &T::is_subset, py::arg("y"))
-      .def("contains", &T::contains, py::arg("trajectory"))
-      .def("__call__", py::overload_cast<double>(&T::operator(), py::const_), py::arg("t"))
+          py::arg("k"), py::arg("y"), "Gate k := y (not checked against the slices).")
+      .def("codomain", &T::codomain, "Hull of all slices and gates.")
+      .def("volume", &T::volume, "Sum of (slice width) x (slice diameter), rounded up (inf if a slice is unbounded).")
+      .def("thickness", &T::thickness, py::arg("k"), "Diameter of slice k (0 if empty).")
+      .def("max_thickness", &T::max_thickness, "The largest slice diameter.")
+      .def("is_empty", &T::is_empty, "True if some slice or gate is empty.")
+      .def("is_subset", &T::is_subset, py::arg("y"), "Slice- and gate-wise inclusion (same TDomain).")
+      .def("contains", &T::contains, py::arg("trajectory"),
+           "True if the trajectory's enclosures lie inside every slice and gate (rigorous).")
+      .def("__call__", py::overload_cast<double>(&T::operator(), py::const_), py::arg("t"),
+           "[x](t): the gate if t is a time point, else the slice containing t; [x]([t]) for an Interval t.")
       .def("__call__", py::overload_cast<const Interval&>(&T::operator(), py::const_), py::arg("t"))
+      .def("lb", [](const T& x) { return slice_values(x, 0); },
+           "numpy array (N,) of the slice lower bounds (inf for an empty slice); gates: gates_array()[:, 0].")
+      .def("ub", [](const T& x) { return slice_values(x, 1); },
+           "numpy array (N,) of the slice upper bounds (-inf for an empty slice); gates: gates_array()[:, 1].")
+      .def("diam", [](const T& x) { return slice_values(x, 2); },
+           "numpy array (N,) of the slice diameters, rounded up (NaN for an empty slice, like Interval.diam).")
+      .def("inflate", py::overload_cast<const T&, double>(&inflated), py::arg("r"),
+           "A new tube: every slice and gate inflated by r >= 0 (this tube is unchanged, like Interval.inflate).")
+      .def("inflate", py::overload_cast<const T&, const T&>(&inflated), py::arg("r"),
+           "A new tube: self + [-1, 1]·r slice- and gate-wise, r a tube of radii >= 0 on the same TDomain.")
       .def("inverse", [](const T& x, const Interval& y) { return x.inverse(y); }, py::arg("y"),
            "Hull of the times where the tube meets y.")
       .def("inverse_components",
@@ -133,13 +450,24 @@ void init_tube_class(py::module_& m) {
              return cs;
            },
            py::arg("y"), "The connected subsets of the inverse, in time order.")
-      .def("slices_array", [](const T& x) { return bounds_array(x.slices()); }, "(N, 2) array of slice bounds.")
-      .def("gates_array", [](const T& x) { return bounds_array(x.gates()); }, "(N+1, 2) array of gate bounds.")
-      .def("__repr__", [](const T& x) {
-        std::ostringstream os;
-        os << x;
-        return os.str();
-      })
+      .def("slices_array", [](const T& x) { return bounds_array(x.slices()); },
+           "(N, 2) numpy array of slice bounds (an empty slice gives [inf, -inf]); Tube(td, a) takes it back.")
+      .def("gates_array", [](const T& x) { return bounds_array(x.gates()); },
+           "(N+1, 2) numpy array of gate bounds (an empty gate gives [inf, -inf]).")
+      .def("__repr__",
+           [](const T& x) {
+             return "Tube(t=" + x.tdomain()->t0_tf().str() + ", " + std::to_string(x.nb_slices()) +
+                    " slices, codomain=" + x.codomain().str() + ")";
+           })
+      // (tdomain, slices, gates): restored bit for bit, on the same TDomain object as its companions.
+      .def(py::pickle(
+          [](const T& x) { return py::make_tuple(x.tdomain(), bounds_array(x.slices()), bounds_array(x.gates())); },
+          [](const py::tuple& st) {
+            TD td = st[0].cast<TD>();
+            const std::size_t n = td->nb_slices();
+            return tube_with(td, intervals_from_array(st[1], n, "Tube.__setstate__", "slices"),
+                             intervals_from_array(st[2], n + 1, "Tube.__setstate__", "gates"));
+          }))
       .def(py::self == py::self)
       .def(py::self != py::self)
       .def(-py::self)
@@ -176,103 +504,228 @@ void init_tube_functions(py::module_& m) {
   using T = Tube;
   using F1 = T (*)(const T&);
   // Overloads chain onto the Interval ones defined by init_interval.
-  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"));
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"));
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"));
-  m.def("log", static_cast<F1>(&log), py::arg("x"));
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"));
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"));
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"));
-  m.def("asin", static_cast<F1>(&asin), py::arg("x"));
-  m.def("acos", static_cast<F1>(&acos), py::arg("x"));
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"));
-  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"));
-  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"));
-  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"));
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"));
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"));
-  m.def("pow", static_cast<T (*)(const T&, int)>(&pow), py::arg("x"), py::arg("n"));
-  m.def("pow", static_cast<T (*)(const T&, double)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<T (*)(const T&, const Interval&)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("pow", static_cast<T (*)(const T&, const T&)>(&pow), py::arg("x"), py::arg("p"));
-  m.def("root", static_cast<T (*)(const T&, int)>(&root), py::arg("x"), py::arg("n"));
-  m.def("atan2", static_cast<T (*)(const T&, const T&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("atan2", static_cast<T (*)(const T&, const Interval&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("atan2", static_cast<T (*)(const Interval&, const T&)>(&atan2), py::arg("y"), py::arg("x"));
-  m.def("min", static_cast<T (*)(const T&, const T&)>(&min), py::arg("x"), py::arg("y"));
-  m.def("max", static_cast<T (*)(const T&, const T&)>(&max), py::arg("x"), py::arg("y"));
-  m.def("hull", [](const T& x, const T& y) { return x | y; }, py::arg("x"), py::arg("y"));
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "sqr of a tube, slice- and gate-wise (rigorous).");
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "sqrt of a tube, slice- and gate-wise (rigorous).");
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "exp of a tube, slice- and gate-wise (rigorous).");
+  m.def("log", static_cast<F1>(&log), py::arg("x"), "log of a tube, slice- and gate-wise (rigorous).");
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "sin of a tube, slice- and gate-wise (rigorous).");
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "cos of a tube, slice- and gate-wise (rigorous).");
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "tan of a tube, slice- and gate-wise (rigorous).");
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"), "asin of a tube, slice- and gate-wise (rigorous).");
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"), "acos of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "atan of a tube, slice- and gate-wise (rigorous).");
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), "sinh of a tube, slice- and gate-wise (rigorous).");
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), "cosh of a tube, slice- and gate-wise (rigorous).");
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), "tanh of a tube, slice- and gate-wise (rigorous).");
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "abs of a tube, slice- and gate-wise (rigorous).");
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "sign of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, int)>(&pow), py::arg("x"), py::arg("n"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, double)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, const Interval&)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("pow", static_cast<T (*)(const T&, const T&)>(&pow), py::arg("x"), py::arg("p"),
+        "pow of a tube, slice- and gate-wise (rigorous).");
+  m.def("root", static_cast<T (*)(const T&, int)>(&root), py::arg("x"), py::arg("n"),
+        "root of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const T&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const T&, const Interval&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("atan2", static_cast<T (*)(const Interval&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
+        "atan2 of a tube, slice- and gate-wise (rigorous).");
+  m.def("min", static_cast<T (*)(const T&, const T&)>(&min), py::arg("x"), py::arg("y"),
+        "min of a tube, slice- and gate-wise (rigorous).");
+  m.def("max", static_cast<T (*)(const T&, const T&)>(&max), py::arg("x"), py::arg("y"),
+        "max of a tube, slice- and gate-wise (rigorous).");
+  m.def("hull", [](const T& x, const T& y) { return x | y; }, py::arg("x"), py::arg("y"),
+        "Slice- and gate-wise hull of two tubes (x | y).");
 
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double>(&tube_from_data), py::arg("tdomain"),
         py::arg("data"), py::arg("error") = 0.0, "Interpolation of the data +- error.");
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double, const Interval&>(&tube_from_data),
         py::arg("tdomain"), py::arg("data"), py::arg("error"), py::arg("dx"),
         "Samples +- error and derivative bounds dx (thesis 3.3.2).");
-  m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"));
-  m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"));
+  m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"),
+        "The tube of the trajectories x with lb(t) <= x(t) <= ub(t) (two Trajectories).");
+  m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"),
+        "Writes a Tube or a TubeVector (with its time points) to a file.");
   m.def("save_tube", py::overload_cast<const TubeVector&, const std::string&>(&save), py::arg("x"),
         py::arg("path"));
   m.def("load_tube", py::overload_cast<const std::string&, TD>(&load_tube), py::arg("path"),
-        py::arg("tdomain") = TD());
+        py::arg("tdomain") = TD(), "Reads a Tube written by save_tube, on tdomain if given (same time points).");
   m.def("load_tube_vector", py::overload_cast<const std::string&, TD>(&load_tube_vector), py::arg("path"),
-        py::arg("tdomain") = TD());
+        py::arg("tdomain") = TD(), "Reads a TubeVector written by save_tube, on tdomain if given.");
 }
 
 void init_tube_vector(py::module_& m) {
   using V = TubeVector;
   py::class_<V, std::shared_ptr<V>> c(m, "TubeVector", "n tubes on one TDomain; v[i] is a live reference.");
   def_copy(c);
-  c.def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
-        "From a vector expression of t, e.g. '(cos(t), sin(t))'.")
-      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"))
-      .def(py::init<TD, std::size_t, const Interval&>(), py::arg("tdomain"), py::arg("n"), py::arg("x") = Interval())
-      .def(py::init<TD, const IntervalVector&>(), py::arg("tdomain"), py::arg("x"))
-      .def(py::init<std::vector<Tube>>(), py::arg("tubes"))
-      .def("size", &V::size)
+  const auto from_arrays = [](TD td, const py::handle& slices, const py::object& gates) {
+    const std::size_t n = td->nb_slices();
+    const auto s = components_from_array(slices, n, "TubeVector(tdomain, slices)", "slices");
+    std::vector<std::vector<Interval>> g;
+    if (!gates.is_none()) {
+      g = components_from_array(gates, n + 1, "TubeVector(tdomain, slices, gates)", "gates");
+      check_same_size(s.size(), g.size(), "TubeVector(tdomain, slices, gates)");
+    }
+    return componentwise(s.size(), [&](std::size_t i) { return g.empty() ? Tube(td, s[i]) : Tube(td, s[i], g[i]); });
+  };
+  constexpr const char* kArraysDoc =
+      "From numpy bounds: slices of shape (dim, N, 2) or a list of dim (N, 2) arrays, component i as in\n"
+      "Tube(td, slices[i]); gates (optional) of shape (dim, N+1, 2) or a list of (N+1, 2) arrays.\n"
+      "A 2-D array (n, 2) is a box: constant components, as TubeVector(td, IntervalVector(a)).";
+  c.def(py::init([from_arrays](TD td, const py::array& slices, const py::object& gates) {
+          if (slices.ndim() == 2 && gates.is_none()) {
+            return V(td, py::module_::import("sillage._sillage").attr("IntervalVector")(slices).cast<IntervalVector>());
+          }
+          return from_arrays(td, slices, gates);
+        }),
+        py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(), kArraysDoc)
+      .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
+           "From a vector expression of t, e.g. '(cos(t), sin(t))'.")
+      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"), "From a Function of one variable t.")
+      .def(py::init<TD, std::size_t, const Interval&>(), py::arg("tdomain"), py::arg("n"), py::arg("x") = Interval(),
+           "n components, every slice and gate = x.")
+      .def(py::init<TD, const IntervalVector&>(), py::arg("tdomain"), py::arg("x"),
+           "Constant in time: component i = x[i].")
+      // Registered after the box form: a list of ndarrays is taken here (no conversion needed), a list
+      // of [lb, ub] pairs by IntervalVector.
+      .def(py::init([from_arrays](TD td, const std::vector<py::array>& slices, const py::object& gates) {
+             return from_arrays(td, py::cast(slices), gates);
+           }),
+           py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(), kArraysDoc)
+      .def(py::init<std::vector<Tube>>(), py::arg("tubes"), "From Tubes on one TDomain (copied).")
+      .def("size", &V::size, "The dimension n.")
       .def("__len__", &V::size)
-      .def("tdomain", &V::tdomain)
-      .def("nb_slices", &V::nb_slices)
+      .def("tdomain", &V::tdomain, "The TDomain (shared).")
+      .def("nb_slices", &V::nb_slices, "N, the number of slices.")
       // The component itself (a heap object of its own, shared): a live
       // reference that stays valid whatever happens to the vector, and that
       // ContractorNetwork identifies with the component of DomainRef.component.
       .def("__getitem__", [](V& v, long long i) { return v.shared_component(py_index(i, v.size())); },
-           py::arg("i"))
+           py::arg("i"), "Component i (negative i from the end), a live reference.")
       .def("__setitem__",
            [](V& v, long long i, const Tube& x) {
              Tube& xi = v[py_index(i, v.size())];
              if (x.tdomain() != xi.tdomain()) throw DimensionError("TubeVector[i] = x: x is on another TDomain");
              xi = x;
            },
-           py::arg("i"), py::arg("x"))
+           py::arg("i"), py::arg("x"), "Component i := a copy of the tube x (same TDomain).")
       .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i..j (inclusive), copied.")
-      .def("slice", &V::slice, py::arg("k"))
-      .def("gate", &V::gate, py::arg("k"))
-      .def("__call__", py::overload_cast<double>(&V::operator(), py::const_), py::arg("t"))
+      .def("slice", &V::slice, py::arg("k"), "The box of slice k.")
+      .def("gate", &V::gate, py::arg("k"), "The box of gate k.")
+      .def("__call__", py::overload_cast<double>(&V::operator(), py::const_), py::arg("t"),
+           "Component-wise Tube.__call__: a box [x](t) (t a float) or [x]([t]) (t an Interval).")
       .def("__call__", py::overload_cast<const Interval&>(&V::operator(), py::const_), py::arg("t"))
-      .def("codomain", &V::codomain)
-      .def("volume", &V::volume)
-      .def("max_thickness", &V::max_thickness)
-      .def("is_empty", &V::is_empty)
-      .def("is_subset", &V::is_subset, py::arg("y"))
-      .def("contains", &V::contains, py::arg("trajectories"))
-      .def("set", py::overload_cast<const IntervalVector&>(&V::set), py::arg("y"))
+      .def("codomain", &V::codomain, "The box hull of every slice and gate.")
+      .def("volume", &V::volume, "Sum over slices of (slice width) x (volume of the slice box), rounded up.")
+      .def("max_thickness", &V::max_thickness, "The largest slice diameter over the components.")
+      .def("is_empty", &V::is_empty, "True if some component is empty.")
+      .def("is_subset", &V::is_subset, py::arg("y"), "Component-wise Tube.is_subset.")
+      .def("contains", &V::contains, py::arg("trajectories"), "One Trajectory per component, each inside.")
+      .def("contains", [](const V& x, const TrajectoryVector& y) { return x.contains(y.components()); },
+           py::arg("trajectory"), "The components of the TrajectoryVector, each inside (rigorous).")
+      .def("slices_array", [](const V& v) { return components_array(v, false); },
+           "(dim, N, 2) numpy array of slice bounds ([inf, -inf] for empty); TubeVector(td, a) takes it back.")
+      .def("gates_array", [](const V& v) { return components_array(v, true); },
+           "(dim, N+1, 2) numpy array of gate bounds ([inf, -inf] for empty).")
+      .def("lb", [](const V& v) { return component_values(v, 0); },
+           "(dim, N) numpy array of slice lower bounds (row i = self[i].lb()).")
+      .def("ub", [](const V& v) { return component_values(v, 1); },
+           "(dim, N) numpy array of slice upper bounds (row i = self[i].ub()).")
+      .def("diam", [](const V& v) { return component_values(v, 2); },
+           "(dim, N) numpy array of slice diameters (row i = self[i].diam()).")
+      .def("inflate",
+           [](const V& v, double r) {
+             return componentwise(v.size(), [&](std::size_t i) { return inflated(v[i], r); });
+           },
+           py::arg("r"), "A new tube vector: every component inflated by r >= 0 (see Tube.inflate).")
+      .def("inflate",
+           [](const V& v, const IntervalVector& r) {
+             check_same_size(v.size(), r.size(), "TubeVector.inflate");
+             return componentwise(v.size(), [&](std::size_t i) {
+               if (r[i].is_empty()) throw Error("TubeVector.inflate: radius " + std::to_string(i) + " is empty");
+               return inflated(v[i], r[i].ub());
+             });
+           },
+           py::arg("r"), "Component i inflated by r[i] (the upper bound of each component of r, >= 0).")
+      .def("inflate",
+           [](const V& v, const V& r) {
+             check_same_size(v.size(), r.size(), "TubeVector.inflate");
+             return componentwise(v.size(), [&](std::size_t i) { return inflated(v[i], r[i]); });
+           },
+           py::arg("r"), "Component i inflated by the tube of radii r[i] (see Tube.inflate).")
+      .def("inverse", [](const V& x, const IntervalVector& y) { return inverse(x, y); }, py::arg("y"),
+           "Hull of the times where the box [x](t) meets the box y (all components at once); empty if none.")
       .def(
           "set",
-          [](V& x, const IntervalVector& y, py::ssize_t k) { x.set(y, index_arg(k, "TubeVector.set(y, k)", "slice")); },
-          py::arg("y"), py::arg("k"))
-      .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"))
+          [](V& x, const IntervalVector& y, const py::object& k, const py::object& t) {
+            if (!k.is_none() && !t.is_none()) throw Error("TubeVector.set: give a slice index k or a time t, not both");
+            if (!t.is_none()) {
+              x.set_gate(gate_at(x[0], t.cast<double>(), "TubeVector.set(y, t=t)"), y);
+            } else if (!k.is_none()) {
+              x.set(y, index_arg(k.cast<py::ssize_t>(), "TubeVector.set(y, k)", "slice"));
+            } else {
+              x.set(y);
+            }
+          },
+          py::arg("y"), py::arg("k") = py::none(), py::kw_only(), py::arg("t") = py::none(),
+          "Tube.set component-wise with a box y: set(y), set(y, k) (slice index), set(y, t=t) (the gate at\n"
+          "time t, sampling the TDomain at t if needed).")
+      .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"), "Gate k := the box y.")
       .def(py::self == py::self)
       .def(py::self != py::self)
       .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),
            py::return_value_policy::reference)
       .def("__ior__", [](V& a, const V& b) -> V& { return a |= b; }, py::is_operator(),
            py::return_value_policy::reference)
-      .def("__repr__", [](const V& v) {
-        std::ostringstream os;
-        os << v;
-        return os.str();
-      });
+      .def("__and__", [](const V& a, const V& b) { V r(a); return r &= b; }, py::is_operator())
+      .def("__or__", [](const V& a, const V& b) { V r(a); return r |= b; }, py::is_operator())
+      .def("__neg__", [](const V& a) { return -a; })
+      .def("__repr__",
+           [](const V& v) {
+             return "TubeVector(t=" + v.tdomain()->t0_tf().str() + ", " + std::to_string(v.nb_slices()) +
+                    " slices, dim " + std::to_string(v.size()) + ", codomain=" + box_text(v.codomain()) + ")";
+           })
+      // (tdomain, slices, gates) as (dim, N, 2) / (dim, N+1, 2) arrays: bit-exact, TDomain shared.
+      .def(py::pickle(
+          [](const V& v) { return py::make_tuple(v.tdomain(), components_array(v, false), components_array(v, true)); },
+          [](const py::tuple& st) {
+            TD td = st[0].cast<TD>();
+            const std::size_t n = td->nb_slices();
+            const auto s = components_from_array(st[1], n, "TubeVector.__setstate__", "slices");
+            const auto g = components_from_array(st[2], n + 1, "TubeVector.__setstate__", "gates");
+            check_same_size(s.size(), g.size(), "TubeVector.__setstate__");
+            return componentwise(s.size(), [&](std::size_t i) { return tube_with(td, s[i], g[i]); });
+          }));
   c.attr("__hash__") = py::none();
+  c.attr("__array_ufunc__") = py::none();
+
+  // Component-wise arithmetic: with a TubeVector or a box (component i with component i), with a
+  // Tube or an Interval/float (every component with it). DimensionError if sizes or TDomains differ.
+#define SILLAGE_TV_BIN(name, rname, iname, op)                                                              \
+  c.def(name, [](const V& a, const V& b) { return a op b; }, py::is_operator())                              \
+      .def(name, [](const V& a, const Tube& b) { return a op b; }, py::is_operator())                       \
+      .def(name, [](const V& a, const Interval& b) { return a op b; }, py::is_operator())                   \
+      .def(name, [](const V& a, const IntervalVector& b) { return a op b; }, py::is_operator())             \
+      .def(rname, [](const V& a, const Tube& b) { return b op a; }, py::is_operator())                      \
+      .def(rname, [](const V& a, const Interval& b) { return b op a; }, py::is_operator())                  \
+      .def(rname, [](const V& a, const IntervalVector& b) { return b op a; }, py::is_operator())            \
+      .def(iname, [](const py::object& self, const py::object& b) {                                          \
+        /* in place: the components keep their identity (live references stay valid) */                     \
+        const V r = self.attr(name)(b).cast<V>();                                                             \
+        V& a = self.cast<V&>();                                                                               \
+        for (std::size_t i = 0; i < a.size(); ++i) a[i] = r[i];                                              \
+        return self;                                                                                          \
+      }, py::is_operator());
+  SILLAGE_TV_BIN("__add__", "__radd__", "__iadd__", +)
+  SILLAGE_TV_BIN("__sub__", "__rsub__", "__isub__", -)
+  SILLAGE_TV_BIN("__mul__", "__rmul__", "__imul__", *)
+  SILLAGE_TV_BIN("__truediv__", "__rtruediv__", "__itruediv__", /)
+#undef SILLAGE_TV_BIN
 }
 
 }  // namespace

@@ -11,7 +11,10 @@
 #include "arg_checks.h"
 #include "bindings.h"
 #include "sillage/tube/tube_integral.h"
+#include "sillage/error.h"
+#include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube_taylor.h"
+#include "sillage/tube/tube_vector.h"
 
 namespace sillage::python {
 
@@ -37,7 +40,7 @@ void init_tube_analysis(py::module_& m) {
   py::class_<TubeAnalysis>(m, "TubeAnalysis",
                            "Holds the synthesis tree of a tube (thesis 3.3.1) for repeated O(log N) queries;\n"
                            "rebuilt automatically when the tube changes. Keeps the tube alive.")
-      .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>())
+      .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>(), "Analysis of the tube x (kept alive).")
       .def(
           "eval", [](const TubeAnalysis& a, const Interval& t) { return a.eval(t); }, py::arg("t"),
           "[x]([t]), as Tube.__call__.")
@@ -56,7 +59,10 @@ void init_tube_analysis(py::module_& m) {
             return a.partial_integral(interval_arg(t1, where, "t1"), interval_arg(t2, where, "t2"));
           },
           py::arg("t1"), py::arg("t2"), kPartialDoc)
-      .def("nb_slices", [](const TubeAnalysis& a) { return a.tree()->nb_slices(); });
+      .def("nb_slices", [](const TubeAnalysis& a) { return a.tree()->nb_slices(); }, "N, the tube's slice count.")
+      .def("__repr__", [](const py::object& self) {
+        return "TubeAnalysis(" + py::repr(py::cast(self.cast<const TubeAnalysis&>().tube())).cast<std::string>() + ")";
+      });
 
   // Primitives from Taylor increments (tube_taylor.h).
   m.def("taylor_increments", &taylor_increments, py::arg("w"), py::arg("dw"), py::arg("noise") = Interval(0.0),
@@ -92,6 +98,42 @@ void init_tube_analysis(py::module_& m) {
              py::cpp_function([](const Tube& x, const Interval& x0) { return primitive(x, x0); },
                               py::name("primitive"), py::is_method(cls), py::arg("x0") = Interval(0.0),
                               kPrimitiveDoc));
+
+  // The same for TubeVector, component by component (IntervalVector results).
+  if (!py::hasattr(m, "TubeVector")) return;
+  py::object vcls = m.attr("TubeVector");
+  add_method(vcls, "integral",
+             py::cpp_function(
+                 [](const TubeVector& x, const py::object& t1, const py::object& t2) {
+                   const Interval i1 = interval_arg(t1, "TubeVector.integral", "t1");
+                   const bool two = !t2.is_none();
+                   const Interval i2 = two ? interval_arg(t2, "TubeVector.integral", "t2") : Interval();
+                   IntervalVector r(x.size());
+                   for (std::size_t i = 0; i < x.size(); ++i) r[i] = two ? integral(x[i], i1, i2) : integral(x[i], i1);
+                   return r;
+                 },
+                 py::name("integral"), py::is_method(vcls), py::arg("t1"), py::arg("t2") = py::none(),
+                 "Tube.integral component by component, as an IntervalVector:\n"
+                 "integral(t) = ∫_{t0}^{t} x, integral(t1, t2) = ∫_{t1}^{t2} x\n"
+                 "(floats or Intervals, (3.7)-(3.9))."));
+  add_method(vcls, "primitive",
+             py::cpp_function(
+                 [](const TubeVector& x, const py::object& x0) {
+                   IntervalVector v0(x.size(), Interval(0.0));
+                   if (!x0.is_none()) {
+                     v0 = py::module_::import("sillage._sillage").attr("IntervalVector")(x0).cast<IntervalVector>();
+                   }
+                   if (v0.size() != x.size()) {
+                     throw DimensionError("TubeVector.primitive: x0 has size " + std::to_string(v0.size()) +
+                                          ", the tube vector " + std::to_string(x.size()));
+                   }
+                   std::vector<Tube> ps;
+                   for (std::size_t i = 0; i < x.size(); ++i) ps.push_back(primitive(x[i], v0[i]));
+                   return TubeVector(std::move(ps));
+                 },
+                 py::name("primitive"), py::is_method(vcls), py::arg("x0") = py::none(),
+                 "primitive(x0=zeros) -> TubeVector p with p(t0) = x0 (a box or a list) and p' in this tube:\n"
+                 "Tube.primitive component by component."));
 }
 
 }  // namespace sillage::python

@@ -5,6 +5,7 @@
 
 PYBIND11_MODULE(_sillage, m) {
   m.doc() = "sillage: guaranteed state estimation by constraint programming over intervals and tubes";
+  m.attr("__version__") = SILLAGE_VERSION;  // project(sillage VERSION ...) in CMakeLists.txt
   sillage::python::init_errors(m);
   sillage::python::init_budget(m);
   sillage::python::init_interval(m);

@@ -56,7 +56,7 @@ Figure step_figure(const TDomain& td, const std::vector<double>& values, const s
   hi += 0.05 * (hi - lo);
   Figure fig(IntervalVector{td.t0_tf(), Interval(lo, hi)}, width_px, height_px);
   fig.set_title(clipped ? title + " (infinite values clipped)" : title);
-  fig.set_labels("t", "d(t)");
+  fig.set_labels("t (s)", "d(t)");
 
   // One step per pixel column: the max of the slices it covers (upper
   // envelope), consecutive equal steps merged.

@@ -195,7 +195,7 @@ Figure tube_figure(const Tube& x, const std::string& title, const TubeStyle& sty
   const Interval wy = finite_window(all, clipped);
   Figure fig(IntervalVector{x.tdomain()->t0_tf(), wy}, width_px, height_px);
   fig.set_title(clipped ? title + " (unbounded: clipped to " + wy.str() + ")" : title);
-  fig.set_labels("t", "x");
+  fig.set_labels("t (s)", "x");
   draw_tube(fig, x, style, truth);
   return fig;
 }

@@ -59,6 +59,13 @@ Trajectory::Trajectory(const Function& f, const Interval& domain)
 Trajectory::Trajectory(const std::string& expr_of_t, const Interval& domain)
     : Trajectory(Function({"t"}, expr_of_t), domain) {}
 
+Trajectory::Trajectory(Eval eval, const Interval& domain) : eval_(std::move(eval)), domain_(domain) {
+  if (!eval_) throw Error("Trajectory(eval, domain): no evaluation function");
+  if (domain.is_empty() || domain.is_unbounded()) {
+    throw Error("Trajectory(eval, domain): the domain must be bounded and non-empty, got " + domain.str());
+  }
+}
+
 void Trajectory::check_time(double t, const char* where) const {
   if (!domain_.contains(t)) {
     throw Error(std::string(where) + ": t = " + number_text(t) + " is outside the trajectory's domain " + domain_.str());
@@ -75,6 +82,7 @@ Interval Trajectory::interpolate(std::size_t i, const Interval& t) const {
 Interval Trajectory::operator()(double t) const {
   check_time(t, "Trajectory::operator()(t)");
   if (f_) return f_->eval(IntervalVector{Interval(t)});
+  if (eval_) return eval_(Interval(t));
   const auto it = std::lower_bound(ts_.begin(), ts_.end(), t);
   const auto i = static_cast<std::size_t>(it - ts_.begin());
   if (*it == t) return Interval(xs_[i]);  // a sample: exact
@@ -88,6 +96,7 @@ Interval Trajectory::operator()(const Interval& t) const {
                 domain_.str());
   }
   if (f_) return f_->eval(IntervalVector{t});
+  if (eval_) return eval_(t);
   // Piecewise linear: the range is the hull of the values at the ends of [t]
   // and of the samples strictly inside.
   Interval r = (*this)(t.lb()) | (*this)(t.ub());
@@ -97,7 +106,7 @@ Interval Trajectory::operator()(const Interval& t) const {
 }
 
 void Trajectory::set(double t, double x) {
-  if (f_) throw Error("Trajectory::set(t, x): an analytic trajectory cannot be sampled");
+  if (!is_sampled()) throw Error("Trajectory::set(t, x): only a sampled trajectory takes samples");
   check_finite(t, x, "Trajectory::set(t, x)");
   const auto it = std::lower_bound(ts_.begin(), ts_.end(), t);
   const auto i = it - ts_.begin();

@@ -1,13 +1,16 @@
 #pragma once
 // Trajectory: one scalar function of time, used as a ground truth and to
-// build tubes. Two kinds:
+// build tubes. Three kinds:
 //  - sampled: points (t_i, x_i), the trajectory being the piecewise-linear
 //    interpolation between them (its domain is [t_first, t_last]);
-//  - analytic: a Function of the single variable t over a given domain.
+//  - analytic: a Function of the single variable t over a given domain;
+//  - composite: the result of trajectory arithmetic (trajectory_arithmetic.h),
+//    x op y evaluated as [x](t) op [y](t) on the operands' enclosures.
 // Evaluations return guaranteed enclosures (Interval), rounding included:
 // an analytic value is an interval evaluation; a sampled value is the
 // interpolation formula evaluated in interval arithmetic.
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -29,8 +32,13 @@ class Trajectory {
   // must be scalar, of one variable (named t for the text form).
   Trajectory(const Function& f, const Interval& domain);
   Trajectory(const std::string& expr_of_t, const Interval& domain);
+  // Composite over `domain` (bounded, non-empty): x([t]) = eval([t]), which
+  // must enclose the values over [t] (used by trajectory_arithmetic.h).
+  using Eval = std::function<Interval(const Interval&)>;
+  Trajectory(Eval eval, const Interval& domain);
 
-  bool is_sampled() const { return !f_; }
+  bool is_sampled() const { return !f_ && !eval_; }
+  bool is_analytic() const { return static_cast<bool>(f_); }
   Interval domain() const { return domain_; }
   const std::vector<double>& sample_times() const { return ts_; }   // sampled only
   const std::vector<double>& sample_values() const { return xs_; }  // sampled only
@@ -51,6 +59,7 @@ class Trajectory {
 
   std::vector<double> ts_, xs_;
   std::shared_ptr<Function> f_;  // analytic when set
+  Eval eval_;                    // composite when set
   Interval domain_;
 };
 
