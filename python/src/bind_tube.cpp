@@ -227,9 +227,9 @@ void init_tdomain(py::module_& m) {
            "The N+1 time points as a list of floats.")
       .def("slice_index", &TDomain::slice_index, py::arg("t"),
            "Index of the slice containing t (at an inner time point: the slice it starts).")
-      .def("slice_domain", &TDomain::slice_domain, py::arg("k"))
+      .def("slice_domain", &TDomain::slice_domain, py::arg("k"), "The time interval [t_k, t_{k+1}] of slice k.")
       .def("slice_width", &TDomain::slice_width, py::arg("k"), "Rigorous enclosure of t_{k+1} - t_k.")
-      .def("is_time_point", &TDomain::is_time_point, py::arg("t"))
+      .def("is_time_point", &TDomain::is_time_point, py::arg("t"), "True if t is one of the time points t_k.")
       .def("time_index", &TDomain::time_index, py::arg("t"), "The index k with t_k == t, or -1 if t is not a time point.")
       .def("sample", &TDomain::sample, py::arg("t"),
            "Adds the time point t and splits the slice containing it in every attached tube; returns its index.")
@@ -250,10 +250,12 @@ void init_trajectory(py::module_& m) {
       "A sampled (piecewise-linear), analytic (expression of t) or composite (arithmetic result) trajectory;\n"
       "evaluations are enclosures.");
   tc.def(py::init<const std::map<double, double>&>(), py::arg("samples"), "From a dict {t: x}.")
-      .def(py::init<const std::vector<double>&, const std::vector<double>&>(), py::arg("times"), py::arg("values"))
+      .def(py::init<const std::vector<double>&, const std::vector<double>&>(), py::arg("times"), py::arg("values"),
+           "Sampled: the values at the times (strictly increasing), linear in between.")
       .def(py::init<const std::string&, const Interval&>(), py::arg("expr"), py::arg("domain"),
            "Analytic: an expression of t over the domain.")
-      .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"))
+      .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
+           "Analytic: a Function of one variable t over the domain.")
       .def("is_sampled", &Trajectory::is_sampled, "True for a sampled trajectory.")
       .def("is_analytic", &Trajectory::is_analytic,
            "True for an analytic one (an expression of t); neither: a composite (arithmetic result).")
@@ -552,7 +554,7 @@ void init_tube_functions(py::module_& m) {
   m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"),
         "Writes a Tube or a TubeVector (with its time points) to a file.");
   m.def("save_tube", py::overload_cast<const TubeVector&, const std::string&>(&save), py::arg("x"),
-        py::arg("path"));
+        py::arg("path"), "Writes a TubeVector (with its time points) to a file; read it with load_tube_vector.");
   m.def("load_tube", py::overload_cast<const std::string&, TD>(&load_tube), py::arg("path"),
         py::arg("tdomain") = TD(), "Reads a Tube written by save_tube, on tdomain if given (same time points).");
   m.def("load_tube_vector", py::overload_cast<const std::string&, TD>(&load_tube_vector), py::arg("path"),
@@ -734,8 +736,8 @@ void init_tube(py::module_& m) {
   init_tdomain(m);
   init_trajectory(m);
   init_tube_class(m);
+  init_tube_vector(m);    // before the functions, so their signatures name TubeVector
   init_tube_functions(m);
-  init_tube_vector(m);
 }
 
 }  // namespace sillage::python

@@ -125,7 +125,7 @@ void init_tube_node(py::module_& m) {
       "contracted in place. Return None or True, or False when there is no solution. The network\n"
       "calls it until the fixed point; each call is intersected with the domains before it, and the\n"
       "slices that shrank wake the other contractors. Optional: name(self) for the reports.")
-      .def(py::init<>())
+      .def(py::init<>(), "A contractor to subclass: call super().__init__() in your __init__.")
       .def("contract", &TubeCtc::contract, py::arg("domains"),
            "Contracts the domains in place; returns None, True, or False for 'no solution'.");
 }
