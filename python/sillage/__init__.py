@@ -33,19 +33,5 @@ from ._sillage import Error  # noqa: F401
 __version__ = _sillage.__version__
 
 
-def _tplane_repr(tp):
-    d = tp.domain()
-    return (f"TPlane(t1={d[0]}, t2={d[1]}, eps={tp.eps():g}, {tp.nb_detections()} detections, "
-            f"{tp.nb_proofs()} proofs)")
-
-
-def _network_repr(cn):
-    return f"ContractorNetwork({cn.nb_ctc()} contractors, {cn.nb_dom()} domains)"
-
-
-# Short reprs of the classes registered without one (the C++ side has no text form for them).
-_sillage.TPlane.__repr__ = _tplane_repr
-_sillage.ContractorNetwork.__repr__ = _network_repr
-
 _BUILTIN_NAMES = {"abs", "min", "max", "pow"}
 __all__ = [n for n in dir(_sillage) if not n.startswith("_") and n not in _BUILTIN_NAMES]

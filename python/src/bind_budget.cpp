@@ -7,6 +7,7 @@ namespace sillage::python {
 
 void init_budget(py::module_& m) {
   py::class_<CancelToken>(m, "CancelToken", "A flag that stops a computation (shared by its copies).")
+      .def("__repr__", [](const CancelToken& c) { return std::string("CancelToken(cancelled=") + (c.cancelled() ? "True" : "False") + ")"; })
       .def(py::init<>(), "A token not cancelled.")
       .def("cancel", &CancelToken::cancel, "Ask the computations holding this token to stop (any thread).")
       .def("cancelled", &CancelToken::cancelled,

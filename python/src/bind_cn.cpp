@@ -35,9 +35,14 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
 void init_cn(py::module_& m) {
   py::class_<NetworkCtc, std::shared_ptr<NetworkCtc>>(
       m, "NetworkCtc", "A contractor on whole tubes that a ContractorNetwork binds (CtcDeriv, CtcEval).")
-      .def("name", &NetworkCtc::name, "The class name, e.g. 'CtcEval'.");
+      .def("name", &NetworkCtc::name, "The class name, e.g. 'CtcEval'.")
+      .def("__repr__", [](const NetworkCtc& c) { return "<" + c.name() + ">"; });
 
   py::class_<DomainRef>(m, "DomainRef", "A part of a box given to ContractorNetwork.add.")
+      .def("__repr__",
+           [](const DomainRef& r) {
+             return "DomainRef(first=" + std::to_string(r.first()) + ", count=" + std::to_string(r.count()) + ")";
+           })
       .def_static("component", py::overload_cast<std::shared_ptr<IntervalVector>, std::size_t>(&DomainRef::component),
                   py::arg("x"), py::arg("i"), "Component i of the box x, live: the network contracts x[i] itself.")
       .def_static("component", py::overload_cast<std::shared_ptr<TubeVector>, std::size_t>(&DomainRef::component),
@@ -78,6 +83,11 @@ void init_cn(py::module_& m) {
                                 "2.3.1). Domains are the caller's own objects (Interval, IntervalVector, Tube, "
                                 "TubeVector or a DomainRef part), contracted in place. A contractor on a tube argument "
                                 "is applied at every time; CtcDeriv and CtcEval act on whole tubes.")
+      .def("__repr__",
+           [](const ContractorNetwork& cn) {
+             return "ContractorNetwork(" + std::to_string(cn.nb_ctc()) + " contractors, " + std::to_string(cn.nb_dom()) +
+                    " domains)";
+           })
       .def(py::init<>(), "An empty network.")
       .def("create_dom", py::overload_cast<const Interval&, const std::string&>(&ContractorNetwork::create_dom),
            py::arg("x"), py::arg("name") = "", "A new domain (a copy of x), optionally named.")

@@ -172,6 +172,10 @@ Proves that a Function is defined at every point of a box (set-based evaluation
 silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def(py::init<const Function&>(), py::arg("f"),
            "A check of where f is defined (proofs by interval evaluation of its partial operations).")
+      .def("__repr__",
+           [](const DefinitionCheck& d) {
+             return std::string("DefinitionCheck(total=") + (d.is_total() ? "True" : "False") + ")";
+           })
       .def("defined_on", &DefinitionCheck::defined_on, py::arg("x"),
            "True when every operation of f is proven defined on the whole box x (an empty box is trivially "
            "fine); False means \"not proven\".")

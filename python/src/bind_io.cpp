@@ -13,6 +13,12 @@ namespace sillage::python {
 void init_io(py::module_& m) {
   py::class_<CsvTable>(m, "CsvTable",
                        "A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.")
+      .def("__repr__",
+           [](const CsvTable& t) {
+             std::string s = "CsvTable(" + std::to_string(t.nb_rows()) + " rows, columns=[";
+             for (std::size_t i = 0; i < t.columns().size(); ++i) s += (i ? ", '" : "'") + t.columns()[i] + "'";
+             return s + "])";
+           })
       .def_static("read", &CsvTable::read, py::arg("path"),
                   "Reads the file at path (comma-separated; blank lines and lines starting with '#' are skipped; a "
                   "UTF-8 byte order mark is skipped). ParseError on a bad cell, Error if the file cannot be read.")

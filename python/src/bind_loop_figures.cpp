@@ -33,6 +33,7 @@ void init_loop_figures(py::module_& m) {
   m.def("loop_style", &loop_style, py::arg("status"), "Fill and stroke of a status in the figures.");
 
   py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions", "Drawing options of tplane_figure.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_leaf_px 2, marker_px 3, crossing_px 2, show_diagonal True.")
       .def_readwrite("min_leaf_px", &TPlaneFigureOptions::min_leaf_px,
                      "Leaves smaller than this (pixels, both sides) are covered by the outline of their component.")
@@ -51,6 +52,7 @@ void init_loop_figures(py::module_& m) {
       "The t-plane (Fig. 6.13): paving, detections by status, diagonal, true crossings; view zooms.");
 
   py::class_<LoopsMapOptions>(m, "LoopsMapOptions", "Drawing options of loops_map_figure.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: show_partial, boxes and projections True, path_px 0.5, crossing_px 2.5.")
       .def_readwrite("show_partial", &LoopsMapOptions::show_partial, "Draw the partial detections too.")
       .def_readwrite("boxes", &LoopsMapOptions::boxes, "Draw the map boxes.")

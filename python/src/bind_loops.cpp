@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,7 @@ void init_loops(py::module_& m) {
       .def("__repr__", &loop_repr);
 
   py::class_<ProofOptions>(m, "ProofOptions", "Tuning of TPlane.compute_proofs (lengths as fractions of eps).")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "The default tuning (see the fields); newton and count on.")
       .def_readwrite("degree_edge_fraction", &ProofOptions::degree_edge_fraction,
                      "Boundary edges of a detection are bisected for the degree down to this fraction of eps.")
@@ -105,6 +107,13 @@ void init_loops(py::module_& m) {
                      "[f] = integral of [v] over [t1] -> [t2] (6.6) (or (7.28) from positions), Outside by\n"
                      "(6.8)-(6.9), Inner by (6.10); its connected components are the detections.\n"
                      "compute_proofs: degree test, Newton test, count (Alg. 7-10).")
+      .def("__repr__",
+           [](const TPlane& tp) {
+             std::ostringstream s;  // eps as printf's %g
+             s << "TPlane(t1=" << tp.domain()[0].str() << ", t2=" << tp.domain()[1].str() << ", eps=" << tp.eps()
+               << ", " << tp.nb_detections() << " detections, " << tp.nb_proofs() << " proofs)";
+             return s.str();
+           })
       .def(py::init<const Interval&>(), py::arg("tdomain"),
            "The t-plane tdomain^2; tdomain bounded with lb < ub (Error otherwise).")
       .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), "The t-plane [t0, tf]^2 of a TDomain.")
@@ -158,6 +167,10 @@ void init_loops(py::module_& m) {
   // throw otherwise): keep_alive holds them as long as the Python object.
   py::class_<LoopFunction>(m, "LoopFunction",
                            "f(t1, t2) = p(t2) - p(t1) of a planar trajectory: enclosures of f, J_f and positions.")
+      .def("__repr__",
+           [](const LoopFunction& f) {
+             return "LoopFunction(t=" + f.time_domain().str() + (f.has_positions() ? ", from (p, w))" : ", from v)");
+           })
       .def(py::init<const TubeVector&>(), py::arg("v"), py::keep_alive<1, 2>(),
            "From a 2-D velocity tube: [f] = integral of [v] over [t1] -> [t2] (6.6).")
       .def(py::init<const TubeVector&, const TubeVector&>(), py::arg("p"), py::arg("w"), py::keep_alive<1, 2>(),
@@ -179,6 +192,7 @@ void init_loops(py::module_& m) {
            "(ranges of the integral of v^-, of v^+) over t1 in [t1], t2 in [t2] (6.11).");
 
   py::class_<DegreeOptions>(m, "DegreeOptions", "Tuning of topological_degree.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_edge_length 1e-9, max_evaluations 2^20.")
       .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length,
                      "Boundary pieces are bisected until they exclude 0 or are shorter than this.")
@@ -236,6 +250,7 @@ void init_loops(py::module_& m) {
       "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
   py::class_<NewtonOptions>(m, "NewtonOptions", "Tuning of newton_test.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_iterations 20.")
       .def_readwrite("max_iterations", &NewtonOptions::max_iterations, "Newton contractions [t] &= N([t]) at most.");
   py::class_<NewtonResult>(m, "NewtonResult", "The result of newton_test.")
@@ -261,6 +276,7 @@ void init_loops(py::module_& m) {
       "Interval Newton test: proven when N([t]) lies in the interior of [t].");
 
   py::class_<CountOptions>(m, "CountOptions", "Tuning of count_zeros.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_width 1e-9, max_boxes 2^16.")
       .def_readwrite("min_width", &CountOptions::min_width,
                      "zeta of Remark 6.1: boxes are not bisected below this width.")

@@ -110,10 +110,12 @@ the indices of the fixes no trajectory of the input x satisfies (wrong, if at
 most q are). The TDomain is never sampled.)doc")
       .def(py::init<int>(), py::arg("q"), "At most q fixes are wrong; q >= 0 (else Error).")
       .def("q", &CtcQEval::q, "The number of fixes allowed to be wrong.")
+      .def("__repr__", [](const CtcQEval& c) { return "CtcQEval(q=" + std::to_string(c.q()) + ")"; })
       .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
            "Contracts x in place; obs is a list of TubeObservation.");
 
   py::class_<TubeGomneResult>(m, "TubeGomneResult", "What gomne_tube proved; see gomne_tube.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def_readonly("q", &TubeGomneResult::q, "At least q fixes are wrong (q_max + 1 if every q <= q_max emptied x).")
       .def_readonly("x", &TubeGomneResult::x, "The tube contracted with CtcQEval(q).")
       .def_readonly("outliers", &TubeGomneResult::outliers,

@@ -126,6 +126,10 @@ void init_tube_node(py::module_& m) {
       "calls it until the fixed point; each call is intersected with the domains before it, and the\n"
       "slices that shrank wake the other contractors. Optional: name(self) for the reports.")
       .def(py::init<>(), "A contractor to subclass: call super().__init__() in your __init__.")
+      .def("__repr__",
+           [](const py::object& self) {
+             return "<" + py::str(py::type::of(self).attr("__name__")).cast<std::string>() + " (TubeCtc)>";
+           })
       .def("contract", &TubeCtc::contract, py::arg("domains"),
            "Contracts the domains in place; returns None, True, or False for 'no solution'.");
 }

@@ -3,6 +3,8 @@
 // each lives in bind_<layer>.cpp.
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace sillage {
 class Interval;
 }
@@ -23,6 +25,10 @@ void def_copy(Class& cls) {
       .def("__copy__", [](const T& x) { return T(x); })
       .def("__deepcopy__", [](const T& x, py::dict) { return T(x); });
 }
+// A __repr__ "Name(field=value, ...)" over the class's properties (its
+// def_readwrite / def_readonly fields), for option and result structs.
+std::string fields_repr(const py::object& self);
+
 void init_errors(py::module_& m);
 void init_budget(py::module_& m);
 void init_interval(py::module_& m);
