@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "interruptible.h"
 #include "sillage/cn/contractor_network.h"
 
 namespace sillage::python {
@@ -120,13 +121,32 @@ void init_cn(py::module_& m) {
           "Adds the contractor ctc (a Ctc, a NetworkCtc or a TubeCtc subclass) on the concatenation of the domains "
           "(Interval, IntervalVector, Tube, TubeVector, DomainRef); their sizes must add up to ctc.nb_vars() "
           "(DimensionError otherwise).")
-      .def("contract", &ContractorNetwork::contract, py::call_guard<py::gil_scoped_release>(),
-           "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
-           "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.")
+      .def(
+          "contract",
+          [](ContractorNetwork& cn) {
+            // Without the GIL, on a worker, so that Ctrl-C stops it (interruptible.h).
+            const Budget user = cn.budget();
+            return run_interruptible(user.cancel, [&cn, &user](const CancelToken& token) {
+              struct Restore {
+                ContractorNetwork& cn;
+                const Budget& b;
+                ~Restore() { cn.set_budget(b); }
+              } restore{cn, user};
+              cn.set_budget(with_token(user, token));
+              return cn.contract();
+            });
+          },
+          "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
+          "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.\n"
+          "Ctrl-C raises KeyboardInterrupt; budget() limits it (BudgetExceeded, Cancelled).")
       .def("nb_ctc", &ContractorNetwork::nb_ctc, "Number of contractors added.")
       .def("nb_dom", &ContractorNetwork::nb_dom, "Number of domains known to the network.")
       .def("ratio", &ContractorNetwork::ratio,
            "The shrink ratio above which a contracted atom wakes its other contractors (default 0.01).")
+      .def("budget", &ContractorNetwork::budget,
+           "The limits of contract(): max_boxes counts contractor calls, max_seconds the time, cancel a CancelToken.")
+      .def("set_budget", &ContractorNetwork::set_budget, py::arg("budget"),
+           "Sets budget(); contract() then raises BudgetExceeded past it (the domains stay enclosures).")
       .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"),
            "Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on it.");
 }

@@ -24,6 +24,7 @@ namespace sillage::python {
 template <class Run>
 auto run_interruptible(const CancelToken& user, Run&& run) {
   const CancelToken token;
+  if (user.cancelled()) token.cancel();  // cancelled before the start: stop at the first box
   using Result = decltype(run(token));
   std::packaged_task<Result()> task([&run, &token] { return run(token); });
   std::future<Result> result = task.get_future();

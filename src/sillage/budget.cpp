@@ -12,12 +12,13 @@ void check_budget(const Budget& budget, const char* where) {
 }
 
 BudgetMeter::BudgetMeter(const Budget& budget, const char* where, const char* option, const char* hint,
-                         std::size_t bytes_per_box)
+                         std::size_t bytes_per_box, const char* unit)
     : budget_(budget),
       where_(where),
       option_(option),
       hint_(hint),
       bytes_per_box_(bytes_per_box),
+      unit_(unit),
       max_boxes_in_memory_(bytes_per_box > 0 && budget.max_bytes > 0 ? budget.max_bytes / bytes_per_box : 0),
       start_(std::chrono::steady_clock::now()) {
   check_budget(budget, where);
@@ -34,7 +35,7 @@ void BudgetMeter::add() {
     // max_boxes + 1, not `now`: parallel tasks past the limit all throw, and
     // the message must not depend on which one is reported.
     throw BudgetExceeded(std::string(where_) + ": budget exceeded: " + std::to_string(budget_.max_boxes + 1) +
-                         " boxes > max_boxes = " + std::to_string(budget_.max_boxes) + "; raise " + option_ +
+                         " " + unit_ + " > max_boxes = " + std::to_string(budget_.max_boxes) + "; raise " + option_ +
                          ".max_boxes (0: no limit)" + hint_);
   }
   if (max_boxes_in_memory_ != 0 && now > max_boxes_in_memory_) {
@@ -50,7 +51,7 @@ void BudgetMeter::add() {
       char secs[32];
       std::snprintf(secs, sizeof secs, "%.2f", s);
       throw BudgetExceeded(std::string(where_) + ": budget exceeded: " + secs + " s > max_seconds = " +
-                           number_text(budget_.max_seconds) + " (after " + std::to_string(now) + " boxes); raise " +
+                           number_text(budget_.max_seconds) + " (after " + std::to_string(now) + " " + unit_ + "); raise " +
                            option_ + ".max_seconds (0: no limit)");
     }
   }

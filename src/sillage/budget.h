@@ -1,6 +1,7 @@
 #pragma once
 // Budgets and cancellation of the long algorithms (SIVIA and its variants,
-// the t-plane detections and proofs, the degree and count refinements).
+// the t-plane detections and proofs, the degree and count refinements, the
+// contractor network, where max_boxes counts contractor calls).
 // Their cost grows without bound as eps shrinks or the dimension grows, so
 // each one checks a Budget as it goes:
 //  - max_boxes: boxes stored or refined (for a paving: its nodes), 10^7 by
@@ -63,7 +64,7 @@ class Cancelled : public std::runtime_error {
 class BudgetMeter {
  public:
   BudgetMeter(const Budget& budget, const char* where, const char* option = "options.budget",
-              const char* hint = "", std::size_t bytes_per_box = 0);
+              const char* hint = "", std::size_t bytes_per_box = 0, const char* unit = "boxes");
   // Counts one more box; throws BudgetExceeded or Cancelled.
   void add();
   std::size_t boxes() const { return boxes_.load(std::memory_order_relaxed); }
@@ -74,6 +75,7 @@ class BudgetMeter {
   const char* option_;
   const char* hint_;
   std::size_t bytes_per_box_;
+  const char* unit_;  // what is counted, in messages ("boxes", "contractor calls")
   std::size_t max_boxes_in_memory_;  // max_bytes / bytes_per_box; 0: no limit
   std::chrono::steady_clock::time_point start_;
   std::atomic<std::size_t> boxes_{0};

@@ -220,6 +220,11 @@ void sort_unique(std::vector<std::size_t>& v, std::size_t n, std::vector<char>& 
 
 }  // namespace
 
+void ContractorNetwork::set_budget(const Budget& budget) {
+  check_budget(budget, "ContractorNetwork::set_budget");
+  budget_ = budget;
+}
+
 ContractStats ContractorNetwork::contract() {
   check_not_contracting("contract");
   const auto start = std::chrono::steady_clock::now();
@@ -241,6 +246,8 @@ ContractStats ContractorNetwork::contract() {
   }
   if (stats.empty) return finish();
 
+  BudgetMeter meter(budget_, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
+                    "contractor calls");
   std::vector<std::size_t> round(nodes_.size()), next, changed;
   std::vector<char> mark;
   for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
@@ -257,6 +264,7 @@ ContractStats ContractorNetwork::contract() {
       sort_unique(dirty, node.nb_atoms(), mark);
       NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
       fresh[i] = 0;
+      meter.add();
       ++stats.contractor_calls;
       const bool ok = node.run(run);
       dirty.clear();

@@ -45,6 +45,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/cn/cn_node.h"
 #include "sillage/cn/domain_ref.h"
 #include "sillage/cn/network_ctc.h"
@@ -107,6 +108,12 @@ class ContractorNetwork {
   double ratio() const { return ratio_; }
   // 0 <= ratio < 1 (else Error).
   void set_ratio(double ratio);
+  // Limits of contract(): max_boxes counts contractor calls (10^7 by
+  // default), max_seconds the wall-clock time, cancel stops it from another
+  // thread (Python: Ctrl-C). Exceeded: BudgetExceeded (cancelled: Cancelled),
+  // the domains left contracted as far as they got (still enclosures).
+  const Budget& budget() const { return budget_; }
+  void set_budget(const Budget& budget);
 
  private:
   std::string label(std::size_t d) const;
@@ -138,6 +145,7 @@ class ContractorNetwork {
   std::vector<Watchers> watchers_;  // per domain
   std::vector<std::shared_ptr<const CnNode>> nodes_;
   double ratio_ = 0.01;
+  Budget budget_;
   // True during contract(): a contractor calling back into the network (a
   // Python one may) must not grow the arrays contract() is walking.
   bool contracting_ = false;
