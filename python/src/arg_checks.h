@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <string>
 
+#include <pybind11/numpy.h>
+
 #include "bindings.h"
 #include "sillage/error.h"
 #include "sillage/interval/interval.h"
@@ -31,6 +33,33 @@ inline Interval interval_arg(const py::handle& h, const char* where, const char*
     return Interval(x);
   }
   throw ArgumentTypeError(std::string(where) + ": " + name + " must be an Interval or a number, got " + type_name(h));
+}
+
+// A C-ordered array of doubles, converted from any numeric array.
+using Bounds = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// h as an array of doubles (ArgumentTypeError naming `where` and `what` otherwise).
+inline Bounds bounds_of(const py::handle& h, const char* where, const char* what) {
+  Bounds a = Bounds::ensure(h);
+  if (!a) {
+    PyErr_Clear();
+    throw ArgumentTypeError(std::string(where) + ": " + what + " must be an array of floats, got " + type_name(h));
+  }
+  return a;
+}
+
+// The shape of an array as Python prints it: "(3,)", "(4, 2)".
+inline std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// Index i of a sequence of n, negative from the end (IndexError naming `what` otherwise).
+inline std::size_t py_index(long long i, std::size_t n, const char* what) {
+  if (i < 0) i += static_cast<long long>(n);
+  if (i < 0 || i >= static_cast<long long>(n)) throw py::index_error(std::string(what) + " index out of range");
+  return static_cast<std::size_t>(i);
 }
 
 }  // namespace sillage::python

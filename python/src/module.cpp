@@ -14,6 +14,7 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_cn(m);
   sillage::python::init_tube_node(m);
   sillage::python::init_paving(m);
+  sillage::python::init_trajectory(m);
   sillage::python::init_tube(m);
   sillage::python::init_tube_analysis(m);
   sillage::python::init_tube_ctc(m);
