@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/tube.h"
 
@@ -55,15 +55,15 @@ void BM_CtcDeriv(benchmark::State& state) {
   Problem p = make_problem(static_cast<std::size_t>(state.range(0)));
   const Tube x0 = p.x;
   const CtcDeriv ctc(kP);
-  const bool saved = sillage::deriv::hardware_rounding();
-  if (kSoft) sillage::deriv::set_hardware_rounding(false);
+  const bool saved = sillage::detail::hardware_rounding();
+  if (kSoft) sillage::detail::set_hardware_rounding(false);
   for (auto _ : state) {
     p.x.data().slices = x0.data().slices;  // same sizes: no allocation
     p.x.data().gates = x0.data().gates;
     benchmark::DoNotOptimize(ctc.contract(p.x, p.v));
   }
-  sillage::deriv::set_hardware_rounding(saved);
-  state.SetLabel(sillage::deriv::hardware_rounding_available() && !kSoft ? "hardware rounding" : "software rounding");
+  sillage::detail::set_hardware_rounding(saved);
+  state.SetLabel(sillage::detail::hardware_rounding_available() && !kSoft ? "hardware rounding" : "software rounding");
   set_counter(state);
 }
 

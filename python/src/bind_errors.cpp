@@ -22,7 +22,7 @@ py::handle new_exception(py::module_& m, const char* name, const py::tuple& base
 // Raises `type` with the message decoded as UTF-8, invalid bytes replaced:
 // a message that does not decode must not become an empty exception.
 void raise(py::handle type, const char* what) {
-  const std::string message = valid_utf8(what);
+  const std::string message = detail::valid_utf8(what);
   PyErr_SetString(type.ptr(), message.c_str());
 }
 

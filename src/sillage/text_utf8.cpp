@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 
-namespace sillage {
+namespace sillage::detail {
 
 std::size_t utf8_sequence_length(const std::string& s, std::size_t i) {
   const auto b = [&](std::size_t k) { return static_cast<std::uint8_t>(s[i + k]); };
@@ -79,4 +79,4 @@ std::string code_point_name(const std::string& seq) {
   return buf;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string>
 
-namespace sillage {
+namespace sillage::detail {
 
 // Length of the valid UTF-8 sequence starting at text[i] (1 to 4), 0 if the
 // bytes there are not valid UTF-8 (overlong forms and surrogates included).
@@ -24,4 +24,4 @@ std::string excerpt(const std::string& text, std::size_t col);
 // "U+00E9".
 std::string code_point_name(const std::string& sequence);
 
-}  // namespace sillage
+}  // namespace sillage::detail

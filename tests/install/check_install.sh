@@ -9,6 +9,12 @@ trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
 
+# Exactly the public headers are installed (include/sillage/), none of src/.
+source_dir=$(cd "$here/../.." && pwd)
+diff <(cd "$source_dir/include" && find sillage -name '*.h' | sort) \
+     <(cd "$work/prefix/include" && find sillage -name '*.h' | sort) \
+  || { echo "install: the installed headers differ from include/sillage/"; exit 1; }
+
 cmake -S "$here/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release \
   > "$work/configure.log" || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }

@@ -58,7 +58,7 @@ DomainRef DomainRef::subvector(std::shared_ptr<IntervalVector> x, std::size_t i,
 }
 
 DomainRef DomainRef::component(std::shared_ptr<TubeVector> x, std::size_t i) {
-  auto d = std::make_shared<TubeComponentDomain>(std::move(x), i);
+  auto d = std::make_shared<detail::TubeComponentDomain>(std::move(x), i);
   const std::size_t n = d->nb_atoms();
   return DomainRef(std::move(d), 0, n);
 }

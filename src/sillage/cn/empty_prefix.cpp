@@ -2,7 +2,7 @@
 
 #include "sillage/tube/tube_atoms.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& contract) {
   const std::size_t nb_atoms = 2 * x.nb_slices() + 1;
@@ -27,4 +27,4 @@ std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& 
   return hi;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -11,10 +11,10 @@
 
 #include "sillage/tube/tube.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 // `contract` returns false on emptiness (CtcDeriv, CtcIncrement, ...). Returns
 // 2N+1 (no atom) when even the whole of x is not proven empty by a new run.
 std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& contract);
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -2,7 +2,7 @@
 
 #include "sillage/error.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -40,4 +40,4 @@ void TubeComponentDomain::check_layout(const std::string& label) const {
   TubeDomain::check_layout(label);
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

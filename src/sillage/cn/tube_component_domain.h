@@ -11,7 +11,7 @@
 #include "sillage/cn/tube_domain.h"
 #include "sillage/tube/tube_vector.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 class TubeComponentDomain : public TubeDomain {
  public:
@@ -26,4 +26,4 @@ class TubeComponentDomain : public TubeDomain {
   std::size_t index_, size_;
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail

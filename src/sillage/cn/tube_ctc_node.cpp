@@ -39,20 +39,20 @@ TubeCtcNode::TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<Bound
 }
 
 bool TubeCtcNode::contract_atoms(NodeRun& r, const std::vector<std::size_t>& atoms, IntervalVector& params) const {
-  std::vector<TimeVar> vars(var_range_.size());
+  std::vector<detail::TimeVar> vars(var_range_.size());
   std::vector<TubeChanges> out(var_range_.size());
   std::size_t p = 0;
   for (std::size_t v = 0; v < vars.size(); ++v) {
     const auto& t = tube(var_range_[v]);
-    vars[v] = t ? TimeVar{&t->tube(), 0} : TimeVar{nullptr, p++};
+    vars[v] = t ? detail::TimeVar{&t->tube(), 0} : detail::TimeVar{nullptr, p++};
     out[v] = changes(r, var_range_[v]);
   }
-  const std::size_t empty = contract_time_elements(
+  const std::size_t empty = detail::contract_time_elements(
       *ctc_, vars, atoms, params,
       [&out](std::size_t v, std::size_t i, const Interval& before, const Interval& after) {
         out[v].atom(i, before, after);
       });
-  if (empty == kNoTimeAtom) return true;
+  if (empty == detail::kNoTimeAtom) return true;
   for (std::size_t g = 0; g < nb_args() && r.empty_at == kNoAtom; ++g) {
     if (tube(g)) r.empty_at = offset(g) + empty;
   }

@@ -110,7 +110,7 @@ bool TubeNode::contract_tube(NodeRun& run, std::size_t r, const std::function<bo
   changes(run, r).diff(before, x);
   if (ok) return true;
   // x is now empty everywhere: find from its former value where it stopped being consistent.
-  const std::size_t a = first_empty_prefix(before.restore(x.tdomain()), contract);
+  const std::size_t a = detail::first_empty_prefix(before.restore(x.tdomain()), contract);
   if (a < x.nb_slices() * 2 + 1) run.empty_at = offset(r) + a;
   return false;
 }

@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "sillage/cn/tube_pair_node.h"
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
 #include "sillage/dynamics/slice_deriv.h"
 #include "sillage/error.h"
@@ -45,8 +45,8 @@ bool forward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& c
     const double t1 = d.t[k + 1];
     double slo = d.s[k].lb(), shi = d.s[k].ub();
     double blo = d.g[k + 1].lb(), bhi = d.g[k + 1].ub();
-    ok &= deriv::contract_slice<R, true, false, kEnv>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
-                                                      deriv::width<R>(t0, t1));
+    ok &= detail::contract_slice<R, true, false, kEnv>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                      detail::width<R>(t0, t1));
     ch |= store(d.g[k], alo, ahi);
     if constexpr (kEnv) ch |= store(d.s[k], slo, shi);
     alo = blo;
@@ -70,8 +70,8 @@ bool backward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& 
     const double t0 = d.t[k];
     double slo = d.s[k].lb(), shi = d.s[k].ub();
     double alo = d.g[k].lb(), ahi = d.g[k].ub();
-    ok &= deriv::contract_slice<R, false, true, true, kWiden>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
-                                                      deriv::width<R>(t0, t1));
+    ok &= detail::contract_slice<R, false, true, true, kWiden>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                      detail::width<R>(t0, t1));
     ch |= store(d.g[k + 1], blo, bhi);
     ch |= store(d.s[k], slo, shi);
     blo = alo;
@@ -97,7 +97,7 @@ void check_range(std::size_t n, std::size_t first, std::size_t last, const char*
   }
 }
 
-#if SILLAGE_DERIV_HARD_ROUNDING
+#if SILLAGE_HARD_ROUNDING
 // The backward sweep of FWD_BWD with hardware rounding, by blocks of slices
 // from the end: the gates of the block by the scalar rule (a sequential
 // chain), then the polygon hulls of the block 8 at a time (independent).
@@ -106,7 +106,7 @@ void check_range(std::size_t n, std::size_t first, std::size_t last, const char*
 // the next gate is computed.
 bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
   constexpr std::size_t kBlock = 64;  // the block stays in L1 between the two passes
-  using R = deriv::HardRounding;
+  using R = detail::HardRounding;
   double blo = d.g[last + 1].lb(), bhi = d.g[last + 1].ub();
   double t1 = d.t[last + 1];
   bool ok = true;
@@ -117,15 +117,15 @@ bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last
       const double t0 = d.t[k];
       double slo = d.s[k].lb(), shi = d.s[k].ub();
       double alo = d.g[k].lb(), ahi = d.g[k].ub();
-      ok &= deriv::contract_slice<R, false, true, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
-                                                         deriv::width<R>(t0, t1));
+      ok &= detail::contract_slice<R, false, true, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
+                                                         detail::width<R>(t0, t1));
       ch |= store(d.g[k + 1], blo, bhi);
       blo = alo;
       bhi = ahi;
       t1 = t0;
     }
     ch |= store(d.g[begin], blo, bhi);
-    ch |= deriv::polygon_hulls_x8(d.t, d.s, d.g, d.v, begin, end - begin);
+    ch |= detail::polygon_hulls_x8(d.t, d.s, d.g, d.v, begin, end - begin);
     end = begin;
   }
   changed |= ch != 0;
@@ -143,8 +143,8 @@ bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, 
     case TimePropag::FWD_BWD:
       break;
   }
-#if SILLAGE_DERIV_HARD_ROUNDING
-  if constexpr (std::is_same_v<R, deriv::HardRounding>) {
+#if SILLAGE_HARD_ROUNDING
+  if constexpr (std::is_same_v<R, detail::HardRounding>) {
     return forward_sweep<R, false>(d, first, last, changed) && backward_sweep_blocked(d, first, last, changed);
   }
 #endif
@@ -165,11 +165,11 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
   TubeData& dx = x.data();
   const Arrays d{x.tdomain()->times().data(), dx.slices.data(), dx.gates.data(), v.data().slices.data()};
   bool changed = false;
-#if SILLAGE_DERIV_HARD_ROUNDING
-  const bool ok = deriv::hardware_rounding() ? sweeps<deriv::HardRounding>(p, d, first, last, changed)
-                                             : sweeps<deriv::SoftRounding>(p, d, first, last, changed);
+#if SILLAGE_HARD_ROUNDING
+  const bool ok = detail::hardware_rounding() ? sweeps<detail::HardRounding>(p, d, first, last, changed)
+                                             : sweeps<detail::SoftRounding>(p, d, first, last, changed);
 #else
-  const bool ok = sweeps<deriv::SoftRounding>(p, d, first, last, changed);
+  const bool ok = sweeps<detail::SoftRounding>(p, d, first, last, changed);
 #endif
   if (!ok) {
     x.set(Interval::empty());
@@ -204,29 +204,6 @@ bool each_component(TubeVector& x, F f) {
 }
 
 }  // namespace
-
-void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::size_t& last, const char* where) {
-  if (t.is_empty() || !t.is_subset(td.t0_tf())) {
-    throw Error(std::string(where) + ": [t] = " + t.str() + " is " + (t.is_empty() ? "empty" : "not inside ") +
-                (t.is_empty() ? "" : td.t0_tf().str()));
-  }
-  const auto ts = td.times();
-  const std::size_t n = td.nb_slices();
-  if (t.is_degenerate()) {
-    const std::ptrdiff_t g = td.time_index(t.lb());
-    if (g < 0) {
-      first = last = td.slice_index(t.lb());
-    } else {
-      const auto k = static_cast<std::size_t>(g);
-      first = k > 0 ? k - 1 : 0;
-      last = std::min(k, n - 1);
-    }
-    return;
-  }
-  // Slices with t_k < t⁺ and t_{k+1} > t⁻.
-  first = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t.lb()) - ts.begin()) - 1;
-  last = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), t.ub()) - ts.begin()) - 1;
-}
 
 std::shared_ptr<const CnNode> CtcDeriv::make_node(const std::vector<BoundDomain>& args) const {
   return make_tube_pair_node(*this, args);

@@ -1,6 +1,6 @@
 #include "sillage/dynamics/polygon_hull_x8.h"
 
-#if SILLAGE_DERIV_HARD_ROUNDING
+#if SILLAGE_HARD_ROUNDING
 
 #include <immintrin.h>
 
@@ -16,7 +16,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 
-namespace sillage::deriv {
+namespace sillage::detail {
 
 static_assert(sizeof(Interval) == 2 * sizeof(double) && std::is_standard_layout_v<Interval>,
               "Interval must be two contiguous doubles (lb, ub)");
@@ -102,6 +102,6 @@ SILLAGE_X8 std::uint64_t polygon_hulls_x8(const double* t, Interval* s, const In
   return changed;
 }
 
-}  // namespace sillage::deriv
+}  // namespace sillage::detail
 
-#endif  // SILLAGE_DERIV_HARD_ROUNDING
+#endif  // SILLAGE_HARD_ROUNDING

@@ -11,12 +11,12 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/interval/interval.h"
 
-namespace sillage::deriv {
+namespace sillage::detail {
 
-#if SILLAGE_DERIV_HARD_ROUNDING
+#if SILLAGE_HARD_ROUNDING
 // For k = first .. first+count-1: s[k] ∩= hull of the polygon of slice k,
 // from the gates g[k], g[k+1] (final: consistent both ways and inside their
 // slices), v[k] and the times t[k], t[k+1]. Only call when
@@ -25,4 +25,4 @@ std::uint64_t polygon_hulls_x8(const double* t, Interval* s, const Interval* g, 
                                std::size_t count);
 #endif
 
-}  // namespace sillage::deriv
+}  // namespace sillage::detail

@@ -19,15 +19,15 @@
 // only used as a bound (it is the maximum of min(f1, f2) over the whole line),
 // so an error in "is the crossing inside the range" cannot lose a trajectory.
 //
-// The rounding is a policy R (deriv_rounding.h): software emulation without
+// The rounding is a policy R (interval/rounding_policies.h): software emulation without
 // branches, or the hardware's static rounding modes where available (one
 // instruction per directed operation). Both give the exact directed results.
 #include <algorithm>
 
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/interval/rounding.h"
 
-namespace sillage::deriv {
+namespace sillage::detail {
 
 inline constexpr double kInf = rounding::kInf;
 
@@ -85,7 +85,7 @@ inline void polygon_hull(double alo, double ahi, double blo, double bhi, double 
   const double du0 = R::sub_up(f20, ahi);
   const double du = kConsistent ? du0 : std::max(du0, 0.0);
   const double cu = R::add_up(ahi, R::mul_up_nz(R::mul_up_nz(vhi, inv), du));
-  up = std::min(mu, branchless::select(straddle, cu, kInf));
+  up = std::min(mu, detail::select(straddle, cu, kInf));
   // Lower bound: min over τ of max(g1, g2), g1 = a⁻ + τv⁻, g2 = b⁻ - σv⁺.
   const double g1d = R::add_down(alo, plo);  // <= g1(δ)
   const double g20 = R::sub_down(blo, phi);  // <= g2(0)
@@ -94,7 +94,7 @@ inline void polygon_hull(double alo, double ahi, double blo, double bhi, double 
   const double dl = kConsistent ? dl0 : std::min(dl0, 0.0);
   // λ' <= RU(-v⁻ · inv); times dl <= 0 rounded down.
   const double cl = R::add_down(alo, R::mul_down_nz(R::mul_up_nz(-vlo, inv), dl));
-  lo = std::max(ml, branchless::select(straddle, cl, -kInf));
+  lo = std::max(ml, detail::select(straddle, cl, -kInf));
 }
 
 // One slice, in place: [a] ∩= [s], [b] ∩= [s], then (kFwd) [b] ∩= [a] + δ[v],
@@ -159,4 +159,4 @@ inline double upper_envelope(double A, double B, double P, double Q, double tau_
   return std::min(std::min(f1, f2), valid ? cross : kInf);
 }
 
-}  // namespace sillage::deriv
+}  // namespace sillage::detail

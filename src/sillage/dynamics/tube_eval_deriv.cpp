@@ -7,7 +7,7 @@
 #include <string>
 
 #include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/dynamics/slice_deriv.h"
 #include "sillage/error.h"
 #include "sillage/tube/tube.h"
@@ -16,21 +16,21 @@ namespace sillage {
 
 namespace {
 
-using R = deriv::SoftRounding;  // evaluations are not the hot path
+using R = detail::SoftRounding;  // evaluations are not the hot path
 
 // Slice k of x with its gates, contracted locally by the slice rule (gates
 // into the slice, forward and backward): the polygon's inputs.
 struct LocalSlice {
   double alo, ahi, blo, bhi, slo, shi, vlo, vhi;
   double t0, t1;
-  deriv::Width w;
+  detail::Width w;
   bool ok;  // false: something is empty, the tube holds no trajectory
 
   LocalSlice(const TubeData& x, const TubeData& v, std::span<const double> ts, std::size_t k)
       : alo(x.gates[k].lb()), ahi(x.gates[k].ub()), blo(x.gates[k + 1].lb()), bhi(x.gates[k + 1].ub()),
         slo(x.slices[k].lb()), shi(x.slices[k].ub()), vlo(v.slices[k].lb()), vhi(v.slices[k].ub()), t0(ts[k]),
-        t1(ts[k + 1]), w(deriv::width<R>(t0, t1)) {
-    ok = deriv::contract_slice<R, true, true, false>(alo, ahi, blo, bhi, slo, shi, vlo, vhi, w);
+        t1(ts[k + 1]), w(detail::width<R>(t0, t1)) {
+    ok = detail::contract_slice<R, true, true, false>(alo, ahi, blo, bhi, slo, shi, vlo, vhi, w);
   }
 
   // Hull of the polygon ∩ [x](k) over t ∈ [c1, c2] ⊆ [t0, t1] (ok required).
@@ -38,8 +38,8 @@ struct LocalSlice {
     using namespace rounding;
     const double tau_lo = sub_down(c1, t0), tau_hi = sub_up(c2, t0);
     const double sig_lo = sub_down(t1, c2), sig_hi = sub_up(t1, c1);
-    const double up = deriv::upper_envelope<R>(ahi, bhi, vhi, vlo, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
-    const double lo = -deriv::upper_envelope<R>(-alo, -blo, -vlo, -vhi, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+    const double up = detail::upper_envelope<R>(ahi, bhi, vhi, vlo, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+    const double lo = -detail::upper_envelope<R>(-alo, -blo, -vlo, -vhi, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
     const double h_lo = std::max(lo, slo), h_hi = std::min(up, shi);
     return h_lo <= h_hi ? Interval::from_bounds_unchecked(h_lo, h_hi) : Interval::empty();
   }

@@ -9,7 +9,7 @@
 
 #include "sillage/expr/tape.h"
 
-namespace sillage {
+namespace sillage::detail {
 namespace {
 
 bool is_value(const Expr& e, double c) { return e.is_const() && e.node().value == Interval(c); }
@@ -126,4 +126,4 @@ std::vector<Expr> jacobian_exprs(const std::vector<Expr>& es, const std::vector<
   return jac;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

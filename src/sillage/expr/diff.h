@@ -7,7 +7,7 @@
 
 #include "sillage/expr/expr.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 // d e / d v.
 Expr diff(const Expr& e, const ExprVar& v);
@@ -15,4 +15,4 @@ Expr diff(const Expr& e, const ExprVar& v);
 // element i*n + j is d e_i / d v_j.
 std::vector<Expr> jacobian_exprs(const std::vector<Expr>& es, const std::vector<ExprVar>& vars);
 
-}  // namespace sillage
+}  // namespace sillage::detail

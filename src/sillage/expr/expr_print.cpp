@@ -166,7 +166,7 @@ class NameSource {
       std::string s(1, static_cast<char>('a' + k_ % 26));
       if (k_ >= 26) s += std::to_string(k_ / 26);
       ++k_;
-      if (!taken_.count(s) && !is_reserved_name(s)) return s;
+      if (!taken_.count(s) && !detail::is_reserved_name(s)) return s;
     }
   }
 

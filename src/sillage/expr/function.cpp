@@ -62,7 +62,7 @@ std::vector<Interval>& scratch(std::size_t n) {
 using detail::FunctionImpl;
 
 Function::Function(const std::vector<std::string>& vars, const std::string& expr)
-    : impl_(detail::make_impl(vars, parse_exprs(vars, expr))) {}
+    : impl_(detail::make_impl(vars, detail::parse_exprs(vars, expr))) {}
 
 Function::Function(const std::vector<ExprVar>& vars, const Expr& expr)
     : impl_(detail::make_impl(detail::names_of(vars), {expr})) {}
@@ -175,7 +175,7 @@ bool Function::hc4_revise(IntervalVector& x, const Interval& y) const {
 
 Function Function::diff() const {
   std::call_once(impl_->diff_once, [this] {
-    impl_->diff = detail::make_impl(impl_->vars, jacobian_exprs(impl_->exprs, impl_->var_exprs));
+    impl_->diff = detail::make_impl(impl_->vars, detail::jacobian_exprs(impl_->exprs, impl_->var_exprs));
   });
   return Function(impl_->diff);
 }

@@ -12,7 +12,7 @@
 #include "sillage/expr/literal.h"
 #include "sillage/text_utf8.h"
 
-namespace sillage {
+namespace sillage::detail {
 namespace {
 
 struct FunctionSpec {
@@ -401,4 +401,4 @@ Expr parse_expr(const std::vector<std::string>& vars, const std::string& text) {
   return es[0];
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -18,7 +18,7 @@
 
 #include "sillage/expr/expr.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 // The output expressions of `text` (one for a scalar function, m for a vector).
 std::vector<Expr> parse_exprs(const std::vector<std::string>& vars, const std::string& text);
@@ -28,4 +28,4 @@ Expr parse_expr(const std::vector<std::string>& vars, const std::string& text);
 // True for the names the syntax reserves (pi, inf, oo, nan, function names).
 bool is_reserved_name(const std::string& name);
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -10,7 +10,7 @@
 
 namespace sillage {
 
-using namespace backward_detail;
+using namespace detail;
 using rounding::kInf;
 
 bool bwd_add(const Interval& y_in, Interval& x1, Interval& x2) {

@@ -4,7 +4,7 @@
 
 #include "sillage/interval/interval.h"
 
-namespace sillage::backward_detail {
+namespace sillage::detail {
 
 // One argument: false when it is empty.
 inline bool settle(Interval& x) { return !x.is_empty(); }
@@ -27,4 +27,4 @@ inline Interval meet_pieces(const Interval& x, const std::pair<Interval, Interva
 // x contracted to the hull of (x ∩ p) ∪ (x ∩ -p): the two branches of an even function.
 inline Interval meet_symmetric(const Interval& x, const Interval& p) { return (x & p) | (x & -p); }
 
-}  // namespace sillage::backward_detail
+}  // namespace sillage::detail

@@ -22,7 +22,7 @@ namespace sillage {
 
 namespace {
 
-using namespace backward_detail;
+using namespace detail;
 using rounding::kInf;
 using rounding::kMax;
 

@@ -15,7 +15,7 @@ namespace sillage {
 
 namespace {
 
-using namespace backward_detail;
+using namespace detail;
 using rounding::kInf;
 
 // The union over integers k of branch[j] + k * period. The branches are outer

@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace sillage::branchless {
+namespace sillage::detail {
 
 inline constexpr double kMax = std::numeric_limits<double>::max();
 
@@ -79,4 +79,4 @@ inline double div_up_pos(double a, double b) {
   return next_up_if(q, ((r > 0) | !safe) & (q < std::numeric_limits<double>::infinity()));
 }
 
-}  // namespace sillage::branchless
+}  // namespace sillage::detail

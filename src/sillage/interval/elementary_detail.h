@@ -16,7 +16,7 @@
 
 #include "sillage/interval/interval.h"
 
-namespace sillage::elem {
+namespace sillage::detail {
 
 inline constexpr int kUlpsBasic = 1;   // exp, log, sin, cos, asin, acos, atan, atan2
 inline constexpr int kUlpsTanPow = 1;  // tan, pow
@@ -68,4 +68,4 @@ inline double step_up_pos(double v, std::uint64_t k) {
 // Interval from bounds known to be ordered and valid.
 inline Interval make(double lo, double hi) { return Interval::from_bounds_unchecked(lo + 0.0, hi + 0.0); }
 
-}  // namespace sillage::elem
+}  // namespace sillage::detail

@@ -4,7 +4,7 @@
 
 namespace sillage {
 
-using namespace elem;
+using namespace detail;
 
 namespace {
 

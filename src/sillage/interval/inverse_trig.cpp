@@ -4,7 +4,7 @@
 
 namespace sillage {
 
-using namespace elem;
+using namespace detail;
 
 Interval asin(const Interval& x) {
   const Interval d = x & make(-1.0, 1.0);

@@ -7,7 +7,7 @@
 
 namespace sillage {
 
-using namespace elem;
+using namespace detail;
 
 namespace {
 

@@ -16,7 +16,7 @@
 
 namespace sillage {
 
-using namespace elem;
+using namespace detail;
 
 namespace {
 

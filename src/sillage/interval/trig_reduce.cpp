@@ -9,7 +9,7 @@
 
 #include "sillage/interval/rounding.h"
 
-namespace sillage::elem {
+namespace sillage::detail {
 
 namespace {
 
@@ -137,4 +137,4 @@ Reduced reduce_half_pi(double x) {
   return out;
 }
 
-}  // namespace sillage::elem
+}  // namespace sillage::detail

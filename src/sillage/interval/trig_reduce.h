@@ -6,7 +6,7 @@
 // (e.g. x = 6381956970095103 * 2^797, 2^-61 away from a multiple of pi/2,
 // on which glibc 2.36's cos is 7 ulps off).
 
-namespace sillage::elem {
+namespace sillage::detail {
 
 struct Reduced {
   bool ok = false;   // false only if x was too close to a multiple of pi/2 to decide
@@ -19,4 +19,4 @@ struct Reduced {
 // x finite, |x| >= 1.
 Reduced reduce_half_pi(double x);
 
-}  // namespace sillage::elem
+}  // namespace sillage::detail

@@ -60,7 +60,7 @@ void check_header(const std::vector<std::string>& names, const std::string& wher
     const auto [it, added] = first.emplace(names[i], i);
     if (!added) {
       throw ParseError(where + ": columns " + std::to_string(it->second + 1) + " and " + std::to_string(i + 1) +
-                       " of the header have the same name '" + quote_text(names[i]) + "'");
+                       " of the header have the same name '" + detail::quote_text(names[i]) + "'");
     }
   }
 }
@@ -102,7 +102,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
       const char* end = cell.data() + cell.size();
       const auto [p, ec] = std::from_chars(cell.data(), end, row[c]);
       if (cell.empty() || ec != std::errc() || p != end || !std::isfinite(row[c])) {
-        throw ParseError(where + ": column '" + quote_text(t.columns_[c]) + "': '" + quote_text(cell) +
+        throw ParseError(where + ": column '" + detail::quote_text(t.columns_[c]) + "': '" + detail::quote_text(cell) +
                          "' is not a finite number");
       }
     }
@@ -135,7 +135,7 @@ std::size_t CsvTable::column(const std::string& name) const {
     if (columns_[i] == name) return i;
   std::string have;
   for (const auto& c : columns_) have += (have.empty() ? "" : ", ") + c;
-  throw Error(source_ + ": no column '" + quote_text(name) + "' (columns: " + quote_text(have, 200) + ")");
+  throw Error(source_ + ": no column '" + detail::quote_text(name) + "' (columns: " + detail::quote_text(have, 200) + ")");
 }
 
 std::vector<double> CsvTable::values(const std::string& name) const {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -63,4 +63,4 @@ int orientation_sign(double ax, double ay, double bx, double by, double cx, doub
   return exact_orientation(ax, ay, bx, by, cx, cy);
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

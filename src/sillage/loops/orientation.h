@@ -10,8 +10,8 @@
 // as a floating-point expansion (TwoSum), whose leading term gives the sign.
 // Exact when no product overflows and every non-zero coordinate has a
 // magnitude >= 2^-480 (the products' rounding errors are then representable).
-namespace sillage {
+namespace sillage::detail {
 
 int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy);
 
-}  // namespace sillage
+}  // namespace sillage::detail

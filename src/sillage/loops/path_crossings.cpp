@@ -51,9 +51,9 @@ struct SegmentBox {
 bool cross_properly(const std::vector<double>& x, const std::vector<double>& y, std::size_t i, std::size_t j) {
   const double ax = x[i], ay = y[i], bx = x[i + 1], by = y[i + 1];
   const double cx = x[j], cy = y[j], dx = x[j + 1], dy = y[j + 1];
-  const int c = orientation_sign(ax, ay, bx, by, cx, cy), d = orientation_sign(ax, ay, bx, by, dx, dy);
+  const int c = detail::orientation_sign(ax, ay, bx, by, cx, cy), d = detail::orientation_sign(ax, ay, bx, by, dx, dy);
   if (c == 0 || d == 0 || c == d) return false;
-  const int a = orientation_sign(cx, cy, dx, dy, ax, ay), b = orientation_sign(cx, cy, dx, dy, bx, by);
+  const int a = detail::orientation_sign(cx, cy, dx, dy, ax, ay), b = detail::orientation_sign(cx, cy, dx, dy, bx, by);
   return a != 0 && b != 0 && a != b;
 }
 

@@ -62,20 +62,16 @@ inline Interval lower_of(Lanes v) { return Interval::from_bounds_unchecked(v[0],
 inline Interval upper_of(Lanes v) { return Interval::from_bounds_unchecked(v[2], -v[3] + 0.0); }
 inline Lanes lanes_of(const Interval& l, const Interval& u) { return Lanes{l.lb(), -l.ub(), u.lb(), -u.ub()}; }
 
-namespace lanes_impl {
-
-inline Lanes abs(Lanes x) { return (Lanes)((LaneMask)x & 0x7fffffffffffffffLL); }
-inline Lanes select(LaneMask m, Lanes a, Lanes b) { return (Lanes)(((LaneMask)a & m) | ((LaneMask)b & ~m)); }
+inline Lanes lane_abs(Lanes x) { return (Lanes)((LaneMask)x & 0x7fffffffffffffffLL); }
+inline Lanes lane_select(LaneMask m, Lanes a, Lanes b) { return (Lanes)(((LaneMask)a & m) | ((LaneMask)b & ~m)); }
 
 // s, or the double just below s where the exact value is below s (err < 0).
 // s is finite and nonzero there: one step of the bit pattern towards -inf.
-inline Lanes down_if(Lanes s, Lanes err) {
+inline Lanes lane_down_if(Lanes s, Lanes err) {
   const LaneMask below = (LaneMask)(err < 0.0);
   const LaneMask negative = (LaneMask)(s < 0.0);
   return (Lanes)((LaneBits)s + (LaneBits)(below & (-1 - 2 * negative)));  // s > 0: -1, s < 0: +1
 }
-
-}  // namespace lanes_impl
 
 inline bool any(LaneMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
@@ -84,7 +80,6 @@ inline bool any(LaneMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 // and any step computed from its result, must be redone (advance_exact).
 // Checking `bad` once after a chain of steps saves a check per step.
 inline void advance_fast(Lanes& p, double t0, double t1, double lo, double hi, LaneMask& bad) {
-  using namespace lanes_impl;
   // Width [w_lo, w_hi] = Interval(t1) - Interval(t0): one sum, rounded both ways.
   const double w = t1 - t0;
   const bool swap = std::fabs(t1) < std::fabs(t0);
@@ -97,20 +92,20 @@ inline void advance_fast(Lanes& p, double t0, double t1, double lo, double hi, L
   // interval.h takes w_lo for a factor >= 0, w_hi for a negative one.
   const Lanes s{lo, -lo, hi, -hi};
   const LaneMask nonneg = (LaneMask)(s >= 0.0);
-  const Lanes a = select(nonneg, Lanes{w_lo, w_lo, w_lo, w_lo}, Lanes{w_hi, w_hi, w_hi, w_hi});
+  const Lanes a = lane_select(nonneg, Lanes{w_lo, w_lo, w_lo, w_lo}, Lanes{w_hi, w_hi, w_hi, w_hi});
   const Lanes prod = a * s;
   const Lanes perr{std::fma(a[0], s[0], -prod[0]), std::fma(a[1], s[1], -prod[1]),
                    std::fma(a[2], s[2], -prod[2]), std::fma(a[3], s[3], -prod[3])};
   const LaneMask nonzero = (LaneMask)(s != 0.0);
-  const Lanes aprod = abs(prod);
-  const Lanes q = (Lanes)((LaneMask)down_if(prod, perr) & nonzero);  // a zero factor gives +0
+  const Lanes aprod = lane_abs(prod);
+  const Lanes q = (Lanes)((LaneMask)lane_down_if(prod, perr) & nonzero);  // a zero factor gives +0
   // Sums, rounded down (Fast2Sum: the larger operand first, as rounding.h).
   const Lanes sum = p + q;
-  const LaneMask q_larger = (LaneMask)(abs(p) < abs(q));
-  const Lanes serr = select(q_larger, p, q) - (sum - select(q_larger, q, p));
+  const LaneMask q_larger = (LaneMask)(lane_abs(p) < lane_abs(q));
+  const Lanes serr = lane_select(q_larger, p, q) - (sum - lane_select(q_larger, q, p));
   bad |= (nonzero & ((LaneMask)(aprod < 0x1p-968) | (LaneMask)(aprod > rounding::kMax))) |
-         ~(LaneMask)(abs(sum) <= rounding::kMax) | ~(LaneMask)(a <= 0x1p1000);
-  p = down_if(sum, serr);
+         ~(LaneMask)(lane_abs(sum) <= rounding::kMax) | ~(LaneMask)(a <= 0x1p1000);
+  p = lane_down_if(sum, serr);
 }
 
 // One step with the Interval operators (the definition; any slice).

@@ -100,7 +100,7 @@ class SynthesisTree::Blocks {
         tree_.prim_nodes_, full_first, full_end, acc, [](Lanes a, const Lanes& b) { return detail::lane_min(a, b); },
         [](bool take, const Anchor& node) {  // the node, or +inf lanes, without a branch
           const std::int64_t m = -static_cast<std::int64_t>(take);
-          return detail::lanes_impl::select(detail::LaneMask{m, m, m, m}, load(node), detail::max_lanes());
+          return detail::lane_select(detail::LaneMask{m, m, m, m}, load(node), detail::max_lanes());
         });
   }
 

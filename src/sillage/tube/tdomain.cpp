@@ -150,4 +150,27 @@ void TDomain::attach(const std::shared_ptr<TubeData>& data) {
   attached_.push_back(data);
 }
 
+void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::size_t& last, const char* where) {
+  if (t.is_empty() || !t.is_subset(td.t0_tf())) {
+    throw Error(std::string(where) + ": [t] = " + t.str() + " is " + (t.is_empty() ? "empty" : "not inside ") +
+                (t.is_empty() ? "" : td.t0_tf().str()));
+  }
+  const auto ts = td.times();
+  const std::size_t n = td.nb_slices();
+  if (t.is_degenerate()) {
+    const std::ptrdiff_t g = td.time_index(t.lb());
+    if (g < 0) {
+      first = last = td.slice_index(t.lb());
+    } else {
+      const auto k = static_cast<std::size_t>(g);
+      first = k > 0 ? k - 1 : 0;
+      last = std::min(k, n - 1);
+    }
+    return;
+  }
+  // Slices with t_k < t⁺ and t_{k+1} > t⁻.
+  first = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t.lb()) - ts.begin()) - 1;
+  last = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), t.ub()) - ts.begin()) - 1;
+}
+
 }  // namespace sillage

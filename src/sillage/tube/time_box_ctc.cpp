@@ -3,7 +3,7 @@
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/tube/tube_atoms.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -110,4 +110,4 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
   return kNoTimeAtom;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -21,7 +21,7 @@
 #include "sillage/ctc/ctc.h"
 #include "sillage/tube/tube.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 // Variable v of the contractor: a tube, or (tube null) the constant
 // params[param].
@@ -46,4 +46,4 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
                                    std::span<const std::size_t> atoms, IntervalVector& params,
                                    const TimeChange& changed);
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -38,12 +38,12 @@ bool contract_tubes(const Ctc& ctc, const std::vector<Tube*>& x) {
   bool ok = true;
   for (const Tube* xi : x) ok = ok && !xi->is_empty();
   if (ok) {
-    std::vector<TimeVar> vars;
+    std::vector<detail::TimeVar> vars;
     for (Tube* xi : x) vars.push_back({xi, 0});
     std::vector<std::size_t> atoms(2 * x[0]->nb_slices() + 1);
     for (std::size_t i = 0; i < atoms.size(); ++i) atoms[i] = i;
     IntervalVector no_params(1);
-    ok = contract_time_elements(ctc, vars, atoms, no_params, {}) == kNoTimeAtom;
+    ok = detail::contract_time_elements(ctc, vars, atoms, no_params, {}) == detail::kNoTimeAtom;
   }
   if (!ok) {
     const auto empty = [](const Interval& v) { return v.is_empty(); };

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "kit/contractor_kit.h"
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/tube/tube.h"
 
@@ -21,11 +21,11 @@ namespace sillage::test {
 class BothRoundings : public ::testing::TestWithParam<bool> {
  protected:
   void SetUp() override {
-    if (GetParam() && !deriv::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
-    saved_ = deriv::hardware_rounding();
-    deriv::set_hardware_rounding(GetParam());
+    if (GetParam() && !detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
+    saved_ = detail::hardware_rounding();
+    detail::set_hardware_rounding(GetParam());
   }
-  void TearDown() override { deriv::set_hardware_rounding(saved_); }
+  void TearDown() override { detail::set_hardware_rounding(saved_); }
 
  private:
   bool saved_ = false;

@@ -151,8 +151,8 @@ TEST_P(CtcDerivProperty, RestrictedRangeEqualsWholeOnThatRange) {
 }
 
 TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
-  if (!deriv::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
-  const bool saved = deriv::hardware_rounding();
+  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
+  const bool saved = detail::hardware_rounding();
   std::mt19937_64 rng(5);
   // Up to 300 slices: the hardware FWD_BWD works by blocks of 64 slices and
   // 8 lanes, with partial blocks and lanes at the ends; ranges too.
@@ -164,10 +164,10 @@ TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
     if (first > last) std::swap(first, last);
     for (TimePropag mode : {TimePropag::FORWARD, TimePropag::BACKWARD, TimePropag::FWD_BWD}) {
       Tube hard = p.x, soft = p.x, hard_r = p.x, soft_r = p.x;
-      deriv::set_hardware_rounding(true);
+      detail::set_hardware_rounding(true);
       const bool ok_hard = CtcDeriv(mode).contract(hard, p.v);
       CtcDeriv(mode).contract(hard_r, p.v, first, last);
-      deriv::set_hardware_rounding(false);
+      detail::set_hardware_rounding(false);
       const bool ok_soft = CtcDeriv(mode).contract(soft, p.v);
       CtcDeriv(mode).contract(soft_r, p.v, first, last);
       ASSERT_EQ(ok_hard, ok_soft) << trial;
@@ -180,7 +180,7 @@ TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
       }
     }
   }
-  deriv::set_hardware_rounding(saved);
+  detail::set_hardware_rounding(saved);
 }
 
 // ---- the definition (4.4), brute force ----

@@ -15,7 +15,7 @@ using namespace sillage;
 namespace {
 
 std::string d(const std::string& e, const std::string& v = "x") {
-  return diff(parse_expr({"x", "y"}, e), ExprVar(v)).str();
+  return detail::diff(detail::parse_expr({"x", "y"}, e), ExprVar(v)).str();
 }
 
 }  // namespace
@@ -45,7 +45,7 @@ TEST(Diff, SimplifiedExpressions) {
 TEST(Diff, SharesNodesWithTheFunction) {
   ExprVar x("x");
   const Expr f = exp(sin(x));
-  const Expr df = diff(f, x);  // exp(sin(x)) * cos(x)
+  const Expr df = detail::diff(f, x);  // exp(sin(x)) * cos(x)
   EXPECT_EQ(df, f * cos(x));
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 std::string parse_error(const std::string& text) {
   try {
-    parse_expr({"x", "y"}, text);
+    detail::parse_expr({"x", "y"}, text);
   } catch (const ParseError& e) {
     return e.what();
   }
@@ -66,7 +66,7 @@ TEST(ParseLimits, NestingLimitIsExactly500Levels) {
   const IntervalVector x{Interval(2.0), Interval(0.0)};
   for (const auto& [open, close] : std::vector<std::pair<std::string, std::string>>{
            {"(", ")"}, {"sin(", ")"}, {"-", ""}, {"min(1, ", ")"}}) {
-    EXPECT_NO_THROW(parse_expr({"x", "y"}, nested(open, 500, close))) << open;
+    EXPECT_NO_THROW(detail::parse_expr({"x", "y"}, nested(open, 500, close))) << open;
     EXPECT_EQ(parse_error(nested(open, 501, close)).substr(0, 48), "expression nested too deeply (more than 500 leve")
         << open;
   }
@@ -74,6 +74,6 @@ TEST(ParseLimits, NestingLimitIsExactly500Levels) {
   // Exponents: x^x^...^x with 500 carets is 500 levels.
   std::string pw = "x";
   for (int i = 0; i < 500; ++i) pw += "^x";
-  EXPECT_NO_THROW(parse_expr({"x", "y"}, pw));
+  EXPECT_NO_THROW(detail::parse_expr({"x", "y"}, pw));
   EXPECT_NE(parse_error(pw + "^x").find("more than 500 levels"), std::string::npos);
 }

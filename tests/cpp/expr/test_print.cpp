@@ -53,15 +53,15 @@ TEST(Print, LetReadsBack) {
   ExprVar x("x");
   for (int n : {2, 3, 10}) {
     const Expr e = tower(x, n);
-    EXPECT_EQ(parse_expr({"x"}, e.str()), e) << n;
+    EXPECT_EQ(detail::parse_expr({"x"}, e.str()), e) << n;
   }
-  EXPECT_EQ(parse_expr({"x"}, "let a = x + 1; b = sin(a) in b * b + a"),
-            parse_expr({"x"}, "sin(x + 1) * sin(x + 1) + (x + 1)"));
-  EXPECT_THROW(parse_expr({"x"}, "let x = 1 in x"), ParseError);      // a variable
-  EXPECT_THROW(parse_expr({"x"}, "let a = 1; a = 2 in a"), ParseError);  // bound twice
-  EXPECT_THROW(parse_expr({"x"}, "let sin = 1 in x"), ParseError);    // reserved
-  EXPECT_THROW(parse_expr({"x"}, "let a = 1 a"), ParseError);         // no 'in'
-  EXPECT_THROW(parse_expr({"x"}, "x + let a = 1 in a"), ParseError);  // only in front
+  EXPECT_EQ(detail::parse_expr({"x"}, "let a = x + 1; b = sin(a) in b * b + a"),
+            detail::parse_expr({"x"}, "sin(x + 1) * sin(x + 1) + (x + 1)"));
+  EXPECT_THROW(detail::parse_expr({"x"}, "let x = 1 in x"), ParseError);      // a variable
+  EXPECT_THROW(detail::parse_expr({"x"}, "let a = 1; a = 2 in a"), ParseError);  // bound twice
+  EXPECT_THROW(detail::parse_expr({"x"}, "let sin = 1 in x"), ParseError);    // reserved
+  EXPECT_THROW(detail::parse_expr({"x"}, "let a = 1 a"), ParseError);         // no 'in'
+  EXPECT_THROW(detail::parse_expr({"x"}, "x + let a = 1 in a"), ParseError);  // only in front
 }
 
 TEST(Print, DeepNestsPrintWithinTheParserLimit) {
@@ -74,7 +74,7 @@ TEST(Print, DeepNestsPrintWithinTheParserLimit) {
     for (int i = 0; i < 1000; ++i) e = wrap(e);
     const std::string text = e.str();
     EXPECT_EQ(text.substr(0, 4), "let ");
-    EXPECT_EQ(parse_expr({"x"}, text), e);
+    EXPECT_EQ(detail::parse_expr({"x"}, text), e);
   }
   // Shallow ones are left alone.
   Expr e = x;
@@ -89,11 +89,11 @@ TEST(Print, SharedDagsPrintLinearly) {
   const std::string text = e.str();
   EXPECT_LT(text.size(), 40u * 24);
   EXPECT_EQ(text.substr(0, 35), "let a = x * x + 1; b = a * a + 1; c");
-  EXPECT_EQ(parse_expr({"x"}, text), e);
+  EXPECT_EQ(detail::parse_expr({"x"}, text), e);
   // The derivative of a deep nest shares sin^k(x) with cos(sin^k(x)).
   Expr s = x;
   for (int i = 0; i < 300; ++i) s = sin(s);
-  const std::string d = diff(s, x).str();
+  const std::string d = detail::diff(s, x).str();
   EXPECT_LT(d.size(), 300u * 60);
-  EXPECT_EQ(parse_expr({"x"}, d), diff(s, x));
+  EXPECT_EQ(detail::parse_expr({"x"}, d), detail::diff(s, x));
 }

@@ -282,7 +282,7 @@ TEST(PathCrossings, RandomWalksMatchBruteForce) {
     for (std::size_t i = 0; i + 1 < n; ++i) {
       for (std::size_t j = i + 2; j + 1 < n; ++j) {
         auto o = [&](std::size_t a, std::size_t b, std::size_t c) {
-          return orientation_sign(p.x[a], p.y[a], p.x[b], p.y[b], p.x[c], p.y[c]);
+          return detail::orientation_sign(p.x[a], p.y[a], p.x[b], p.y[b], p.x[c], p.y[c]);
         };
         if (o(i, i + 1, j) * o(i, i + 1, j + 1) < 0 && o(j, j + 1, i) * o(j, j + 1, i + 1) < 0) {
           expected.emplace_back(i, j);
@@ -309,12 +309,12 @@ TEST(PathCrossings, OrientationSignIsExactWhereDoublesFail) {
     for (int j = 0; j < 64; ++j) {
       const double px = 0.5 + i * u, py = 0.5 + j * u;
       // orient((12, 12), (24, 24), p) = 12 (py - px): exact sign of j - i.
-      EXPECT_EQ(orientation_sign(12, 12, 24, 24, px, py), (j > i) - (j < i)) << i << " " << j;
+      EXPECT_EQ(detail::orientation_sign(12, 12, 24, 24, px, py), (j > i) - (j < i)) << i << " " << j;
     }
   }
-  EXPECT_EQ(orientation_sign(0, 0, 1, 0, 0, 1), 1);
-  EXPECT_EQ(orientation_sign(0, 0, 1, 0, 0, -1), -1);
-  EXPECT_EQ(orientation_sign(0, 0, 1, 1, 3, 3), 0);
+  EXPECT_EQ(detail::orientation_sign(0, 0, 1, 0, 0, 1), 1);
+  EXPECT_EQ(detail::orientation_sign(0, 0, 1, 0, 0, -1), -1);
+  EXPECT_EQ(detail::orientation_sign(0, 0, 1, 1, 3, 3), 0);
 }
 
 TEST(PathCrossings, MillionPointSurveyMatchesCoarseSampling) {

@@ -1,13 +1,13 @@
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 
 #include <atomic>
 
-namespace sillage::deriv {
+namespace sillage::detail {
 
 namespace {
 
 bool detect() {
-#if SILLAGE_DERIV_HARD_ROUNDING
+#if SILLAGE_HARD_ROUNDING
   // libgcc / compiler-rt also check that the OS saves the AVX-512 state.
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx512f");
@@ -32,4 +32,4 @@ bool hardware_rounding() { return enabled().load(std::memory_order_relaxed); }
 
 void set_hardware_rounding(bool on) { enabled().store(on && hardware_rounding_available(), std::memory_order_relaxed); }
 
-}  // namespace sillage::deriv
+}  // namespace sillage::detail

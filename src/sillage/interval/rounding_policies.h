@@ -1,6 +1,6 @@
 #pragma once
-// Rounding policies for the slice rule of CtcDeriv (internal header of the
-// dynamics layer). A policy R provides static add_up, add_down, sub_up,
+// Rounding policies for batched kernels such as the slice rule of CtcDeriv
+// (internal header of the interval layer). A policy R provides static add_up, add_down, sub_up,
 // sub_down, mul_up, mul_down (0·inf = 0) and div_up (a >= 0, b > 0), each
 // returning the exact upward / downward rounded result, for the operands the
 // slice rule passes (bounds of non-empty sets, see branchless_rounding.h).
@@ -15,26 +15,26 @@
 #include "sillage/interval/branchless_rounding.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define SILLAGE_DERIV_HARD_ROUNDING 1
+#define SILLAGE_HARD_ROUNDING 1
 #else
-#define SILLAGE_DERIV_HARD_ROUNDING 0
+#define SILLAGE_HARD_ROUNDING 0
 #endif
 
-namespace sillage::deriv {
+namespace sillage::detail {
 
 struct SoftRounding {
-  static double add_up(double a, double b) { return branchless::add_up(a, b); }
-  static double add_down(double a, double b) { return branchless::add_down(a, b); }
-  static double sub_up(double a, double b) { return branchless::sub_up(a, b); }
-  static double sub_down(double a, double b) { return branchless::sub_down(a, b); }
-  static double mul_up(double a, double b) { return branchless::mul_up(a, b); }
-  static double mul_down(double a, double b) { return branchless::mul_down(a, b); }
-  static double mul_up_nz(double a, double b) { return branchless::mul_up(a, b); }
-  static double mul_down_nz(double a, double b) { return branchless::mul_down(a, b); }
-  static double div_up(double a, double b) { return branchless::div_up_pos(a, b); }
+  static double add_up(double a, double b) { return detail::add_up(a, b); }
+  static double add_down(double a, double b) { return detail::add_down(a, b); }
+  static double sub_up(double a, double b) { return detail::sub_up(a, b); }
+  static double sub_down(double a, double b) { return detail::sub_down(a, b); }
+  static double mul_up(double a, double b) { return detail::mul_up(a, b); }
+  static double mul_down(double a, double b) { return detail::mul_down(a, b); }
+  static double mul_up_nz(double a, double b) { return detail::mul_up(a, b); }
+  static double mul_down_nz(double a, double b) { return detail::mul_down(a, b); }
+  static double div_up(double a, double b) { return detail::div_up_pos(a, b); }
 };
 
-#if SILLAGE_DERIV_HARD_ROUNDING
+#if SILLAGE_HARD_ROUNDING
 // "%{" escapes the braces of the rounding operand in GCC's asm templates;
 // AT&T order: op {mode}, src2, src1, dst computes dst = src1 op src2.
 #define SILLAGE_DERIV_OP(name, insn, mode)                                      \
@@ -65,4 +65,4 @@ bool hardware_rounding_available();
 bool hardware_rounding();
 void set_hardware_rounding(bool on);
 
-}  // namespace sillage::deriv
+}  // namespace sillage::detail

@@ -40,7 +40,9 @@ inline double next_up(double x) {
 
 inline double next_down(double x) { return -next_up(-x); }
 
-namespace detail {
+}  // namespace sillage::rounding
+
+namespace sillage::detail {
 
 // Sign (-1, 0, +1) of the exact value a*b - p, for the round-to-nearest p of a*b.
 inline int mul_error_sign(double a, double b, double p) {
@@ -74,7 +76,9 @@ inline int div_error_sign(double a, double b, double q) {
   return ((r > 0) - (r < 0)) * sb;
 }
 
-}  // namespace detail
+}  // namespace sillage::detail
+
+namespace sillage::rounding {
 
 // ---- addition and subtraction -------------------------------------------------
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/interval/rounding_policies.h"
 #include "sillage/interval/rounding.h"
 
 using namespace sillage;
@@ -84,31 +84,31 @@ void check_policy(const char* name) {
 
 }  // namespace
 
-TEST(DerivRounding, SoftwareMatchesRounding) { check_policy<deriv::SoftRounding>("soft"); }
+TEST(RoundingPolicies, SoftwareMatchesRounding) { check_policy<detail::SoftRounding>("soft"); }
 
-TEST(DerivRounding, HardwareMatchesRounding) {
-#if SILLAGE_DERIV_HARD_ROUNDING
-  if (!deriv::hardware_rounding_available()) GTEST_SKIP() << "no AVX-512F";
-  check_policy<deriv::HardRounding>("hard");
+TEST(RoundingPolicies, HardwareMatchesRounding) {
+#if SILLAGE_HARD_ROUNDING
+  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no AVX-512F";
+  check_policy<detail::HardRounding>("hard");
 #else
   GTEST_SKIP() << "not compiled in";
 #endif
 }
 
-TEST(DerivRounding, Switch) {
-  const bool saved = deriv::hardware_rounding();
-  deriv::set_hardware_rounding(false);
-  EXPECT_FALSE(deriv::hardware_rounding());
-  deriv::set_hardware_rounding(true);
-  EXPECT_EQ(deriv::hardware_rounding(), deriv::hardware_rounding_available());
-  deriv::set_hardware_rounding(saved);
+TEST(RoundingPolicies, Switch) {
+  const bool saved = detail::hardware_rounding();
+  detail::set_hardware_rounding(false);
+  EXPECT_FALSE(detail::hardware_rounding());
+  detail::set_hardware_rounding(true);
+  EXPECT_EQ(detail::hardware_rounding(), detail::hardware_rounding_available());
+  detail::set_hardware_rounding(saved);
 }
 
-TEST(DerivRounding, NextUpIf) {
-  EXPECT_EQ(branchless::next_up_if(1.0, false), 1.0);
-  EXPECT_EQ(branchless::next_up_if(1.0, true), rounding::next_up(1.0));
-  EXPECT_EQ(branchless::next_up_if(-1.0, true), rounding::next_up(-1.0));
-  EXPECT_EQ(branchless::next_up_if(0.0, true), std::numeric_limits<double>::denorm_min());
-  EXPECT_EQ(branchless::next_up_if(-kInf, true), -kMax);
-  EXPECT_EQ(branchless::next_up_if(kMax, true), kInf);
+TEST(RoundingPolicies, NextUpIf) {
+  EXPECT_EQ(detail::next_up_if(1.0, false), 1.0);
+  EXPECT_EQ(detail::next_up_if(1.0, true), rounding::next_up(1.0));
+  EXPECT_EQ(detail::next_up_if(-1.0, true), rounding::next_up(-1.0));
+  EXPECT_EQ(detail::next_up_if(0.0, true), std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(detail::next_up_if(-kInf, true), -kMax);
+  EXPECT_EQ(detail::next_up_if(kMax, true), kInf);
 }

@@ -113,4 +113,9 @@ class TDomain {
   std::size_t prune_at_ = 16;  // next size at which expired entries are purged
 };
 
+// The slices k of td whose domain meets the interior of t (t non-empty, with
+// positive width), or that contain t when it is degenerate: first..last.
+// Error if t is empty or not inside [t_0, t_N].
+void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::size_t& last, const char* where);
+
 }  // namespace sillage
