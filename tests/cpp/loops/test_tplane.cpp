@@ -388,6 +388,35 @@ TEST(TPlane, SurveyClaimsHoldForTheTrueTrajectory) {
   }
   EXPECT_GE(tp.nb_proofs(), crossings.size() / 2);
   EXPECT_GE(counted, tp.nb_proofs() / 2);
+  // The pieces of split detections: the same claims, and their degrees add up.
+  for (std::size_t i = 0; i < tp.nb_detections(); ++i) {
+    const Loop& l = tp.detections()[i];
+    int degree = 0;
+    bool determined = true;
+    std::size_t in_pieces = 0;
+    for (const Loop& p : l.pieces()) {
+      std::size_t inside_piece = 0;
+      for (const Crossing& c : crossings) {
+        for (const auto& b : p.boxes()) {
+          if (b[0].contains(c.t1) && b[1].contains(c.t2)) {
+            ++inside_piece;
+            break;
+          }
+        }
+      }
+      in_pieces += inside_piece;
+      if (p.proven()) EXPECT_GE(inside_piece, 1u) << p.t_box();
+      if (p.count()) EXPECT_EQ(*p.count(), inside_piece) << p.t_box();
+      EXPECT_TRUE(p.t_box().is_subset(l.t_box()));
+      EXPECT_TRUE(p.pieces().empty());
+      determined = determined && p.degree();
+      degree += p.degree().value_or(0);
+    }
+    if (!l.pieces().empty()) EXPECT_EQ(in_pieces, inside[i]);  // every loop lies in a piece
+    if (!l.pieces().empty() && determined && l.degree()) EXPECT_EQ(degree, *l.degree());
+  }
+  for (const Loop& p : tp.proofs()) EXPECT_TRUE(p.proven());
+  EXPECT_GE(tp.proofs().size(), tp.nb_proofs());
 }
 
 TEST(TPlane, BadInput) {
