@@ -37,6 +37,7 @@ namespace {
 // A part of the region still to settle, at some refinement level.
 struct Pending {
   std::vector<IntervalVector> boxes;
+  std::vector<bool> whole;  // whole[k]: boxes[k] is proven inside the feasible set, never bisected
   std::size_t level = 0;
   std::optional<int> degree;  // known from its parent when it is the parent minus zero-free boxes
 };
@@ -47,31 +48,39 @@ class Splitter {
       : f_(f), jacobian_(jacobian), options_(options), meter_(meter) {}
 
   SplitResult run(const std::vector<IntervalVector>& boxes, const std::optional<int>& degree) {
-    std::vector<Pending> work{{boxes, 0, degree}};
+    std::vector<bool> whole(boxes.size(), false);
+    if (options_.inside) {
+      for (std::size_t k = 0; k < boxes.size(); ++k) whole[k] = options_.inside(boxes[k]);
+    }
+    std::vector<Pending> work{{boxes, std::move(whole), 0, degree}};
     while (!work.empty()) {
       Pending p = std::move(work.back());
       work.pop_back();
-      std::vector<IntervalVector> kept = refine(p.boxes);
+      auto [kept, kept_whole] = refine(p.boxes, p.whole);
       const std::size_t level = p.level + 1;
       result_.nb_levels = std::max(result_.nb_levels, level);
       if (kept.empty()) continue;  // every half excludes 0: no zero there at all
-      std::vector<Component> parts = connected_components(kept);
+      // The tags carry the flags through connected_components.
+      std::vector<PavingTag> tags(kept.size());
+      for (std::size_t k = 0; k < kept.size(); ++k) tags[k] = kept_whole[k] ? PavingTag::Inner : PavingTag::Boundary;
+      std::vector<Component> parts = connected_components(kept, tags);
       const bool last = level >= options_.max_levels;
       for (Component& c : parts) {
         const bool small = 2 * c.boxes.size() <= options_.max_boxes;
         if (parts.size() == 1 && p.degree && !last && small) {
           // Same zeros as the parent, same degree, still unsettled: refine further.
-          work.push_back({std::move(c.boxes), level, p.degree});
+          work.push_back({std::move(c.boxes), flags_of(c), level, p.degree});
           continue;
         }
         // A single part with the parent's degree has the parent's zeros, which
         // could not be counted: the count is not tried again.
         const bool same = parts.size() == 1 && p.degree;
+        std::vector<bool> flags = flags_of(c);
         SplitPiece piece = assess(std::move(c.boxes), c.hull, same ? p.degree : std::nullopt, !same);
         if (settled(piece) || last || !small) {
           result_.pieces.push_back(std::move(piece));
         } else {
-          work.push_back({std::move(piece.boxes), level, piece.degree});
+          work.push_back({std::move(piece.boxes), std::move(flags), level, piece.degree});
         }
       }
     }
@@ -83,23 +92,36 @@ class Splitter {
   }
 
  private:
-  // Bisects every box once and keeps the halves where f* may vanish.
-  std::vector<IntervalVector> refine(const std::vector<IntervalVector>& boxes) {
+  static std::vector<bool> flags_of(const Component& c) {
+    std::vector<bool> r(c.tags.size());
+    for (std::size_t k = 0; k < r.size(); ++k) r[k] = c.tags[k] == PavingTag::Inner;
+    return r;
+  }
+
+  // Bisects every box once, but those proven inside (their halves are
+  // inside too: no cut can cross them), and keeps the halves where f* may vanish.
+  std::pair<std::vector<IntervalVector>, std::vector<bool>> refine(const std::vector<IntervalVector>& boxes,
+                                                                   const std::vector<bool>& whole) {
     std::vector<IntervalVector> kept;
-    for (const IntervalVector& b : boxes) {
-      if (options_.inside && options_.inside(b)) {
-        kept.push_back(b);
+    std::vector<bool> kept_whole;
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (whole[k]) {
+        kept.push_back(boxes[k]);
+        kept_whole.push_back(true);
         continue;
       }
-      auto [lo, hi] = b.bisect();
+      auto [lo, hi] = boxes[k].bisect();
       for (IntervalVector* h : {&lo, &hi}) {
         meter_.add();
         ++result_.nb_evaluations;
         const IntervalVector y = detail::eval_plane_function(f_, *h, "split_region");
-        if (y[0].contains(0.0) && y[1].contains(0.0)) kept.push_back(std::move(*h));
+        if (y[0].contains(0.0) && y[1].contains(0.0)) {
+          kept.push_back(std::move(*h));
+          kept_whole.push_back(false);
+        }
       }
     }
-    return kept;
+    return {std::move(kept), std::move(kept_whole)};
   }
 
   SplitPiece assess(std::vector<IntervalVector> boxes, const IntervalVector& hull, std::optional<int> degree,

@@ -43,8 +43,10 @@ struct SplitOptions {
   Budget budget;         // for the whole split: every evaluation of [f] counts as a box
   // Optional: true for a box proven to lie in the feasible set {0 ∈ [f]}
   // (e.g. the Inner test (6.10) of the t-plane). No cut can cross such a box,
-  // so it is kept whole instead of bisected: the refinement then costs the
-  // boundary of the feasible set only. Soundness never depends on it.
+  // so it is kept whole instead of bisected, and so are its halves. It is
+  // asked of the boxes of the region only: on the halves made by the
+  // refinement it would cost more evaluations than it saves over a few
+  // levels. Soundness never depends on it.
   std::function<bool(const IntervalVector&)> inside;
 };
 
