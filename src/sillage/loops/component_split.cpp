@@ -37,7 +37,7 @@ namespace {
 // A part of the region still to settle, at some refinement level.
 struct Pending {
   std::vector<IntervalVector> boxes;
-  std::vector<bool> whole;  // whole[k]: boxes[k] is proven inside the feasible set, never bisected
+  std::vector<bool> whole;  // whole[k]: boxes[k] is not bisected (inside the feasible set, or 0 deep in [f])
   std::size_t level = 0;
   std::optional<int> degree;  // known from its parent when it is the parent minus zero-free boxes
 };
@@ -47,10 +47,11 @@ class Splitter {
   Splitter(const PlaneFunction& f, const PlaneJacobian& jacobian, const SplitOptions& options, BudgetMeter& meter)
       : f_(f), jacobian_(jacobian), options_(options), meter_(meter) {}
 
-  SplitResult run(const std::vector<IntervalVector>& boxes, const std::optional<int>& degree) {
-    std::vector<bool> whole(boxes.size(), false);
-    if (options_.inside) {
-      for (std::size_t k = 0; k < boxes.size(); ++k) whole[k] = options_.inside(boxes[k]);
+  SplitResult run(const std::vector<IntervalVector>& boxes, const std::optional<int>& degree,
+                  std::vector<bool> whole) {
+    if (whole.empty()) {  // not given: ask options.inside, if any
+      whole.assign(boxes.size(), false);
+      for (std::size_t k = 0; k < boxes.size() && options_.inside; ++k) whole[k] = options_.inside(boxes[k]);
     }
     std::vector<Pending> work{{boxes, std::move(whole), 0, degree}};
     while (!work.empty()) {
@@ -117,11 +118,24 @@ class Splitter {
         const IntervalVector y = detail::eval_plane_function(f_, *h, "split_region");
         if (y[0].contains(0.0) && y[1].contains(0.0)) {
           kept.push_back(std::move(*h));
-          kept_whole.push_back(false);
+          kept_whole.push_back(deep(y));
         }
       }
     }
     return {std::move(kept), std::move(kept_whole)};
+  }
+
+  // 0 lies deep inside [f] on both components (farther than deep_margin of
+  // its width from either bound): the halves of such a box would keep 0 as
+  // well, so bisecting it further would not cut anything (a heuristic on the
+  // cost only: a box kept whole just stays in its piece).
+  bool deep(const IntervalVector& y) const {
+    if (!(options_.deep_margin > 0)) return false;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double m = options_.deep_margin * (y[i].ub() - y[i].lb());
+      if (!(-y[i].lb() > m && y[i].ub() > m)) return false;
+    }
+    return true;
   }
 
   SplitPiece assess(std::vector<IntervalVector> boxes, const IntervalVector& hull, std::optional<int> degree,
@@ -155,14 +169,15 @@ SplitResult split_region(const std::vector<IntervalVector>& boxes, const PlaneFu
 
 SplitResult detail::split_region(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                  const PlaneJacobian& jacobian, const SplitOptions& options, BudgetMeter& meter,
-                                 const std::optional<int>& degree) {
+                                 const std::optional<int>& degree, const std::vector<bool>& inside) {
   if (boxes.empty()) throw Error("split_region: no box (the region is empty)");
   if (options.max_levels == 0 || options.max_boxes == 0) {
     throw Error("split_region: max_levels and max_boxes must be positive, got " +
                 std::to_string(options.max_levels) + " and " + std::to_string(options.max_boxes));
   }
   for (const IntervalVector& b : boxes) detail::check_plane_box(b, "split_region");
-  return Splitter(f, jacobian, options, meter).run(boxes, degree);
+  if (!inside.empty()) check_same_size(inside.size(), boxes.size(), "split_region (inside flags vs boxes)");
+  return Splitter(f, jacobian, options, meter).run(boxes, degree, inside);
 }
 
 }  // namespace sillage

@@ -48,6 +48,10 @@ struct SplitOptions {
   // refinement it would cost more evaluations than it saves over a few
   // levels. Soundness never depends on it.
   std::function<bool(const IntervalVector&)> inside;
+  // A half whose [f] holds 0 farther than this fraction of its width from
+  // both bounds, on both components, is not bisected again: its halves would
+  // hold 0 as well (cost only, never soundness; 0: bisect every box).
+  double deep_margin = 0.05;
 };
 
 // One piece of a split region: a union of boxes, disjoint from the other
@@ -84,9 +88,11 @@ namespace detail {
 // The same, counting against a meter shared with the caller (options.budget
 // unused), for a region whose degree is already known when `degree` is set
 // (and whose zeros could not be counted: not tried again on the same zeros).
+// `inside`, if not empty, flags the boxes known to lie in the feasible set
+// (then options.inside is not asked).
 SplitResult split_region(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                          const PlaneJacobian& jacobian, const SplitOptions& options, BudgetMeter& meter,
-                         const std::optional<int>& degree);
+                         const std::optional<int>& degree, const std::vector<bool>& inside = {});
 }  // namespace detail
 
 }  // namespace sillage

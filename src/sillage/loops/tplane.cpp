@@ -69,6 +69,7 @@ void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
     Loop l;
     l.boxes_ = std::move(c.boxes);
     l.nb_inner_ = c.count(PavingTag::Inner);
+    for (PavingTag tag : c.tags) l.inner_.push_back(tag == PavingTag::Inner);
     l.t_box_ = c.hull;
     l.complete_ = is_complete(l.boxes_, l.t_box_, domain_);
     loops.push_back(std::move(l));

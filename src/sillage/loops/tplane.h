@@ -90,6 +90,7 @@ class Loop {
   bool proven_newton_ = false;
   std::optional<std::size_t> count_;
   std::vector<Loop> pieces_;
+  std::vector<bool> inner_;  // inner_[k]: boxes_[k] is an Inner leaf (for the split)
 };
 
 // Tuning of compute_proofs; the lengths are fractions of the eps of the

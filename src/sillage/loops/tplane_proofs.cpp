@@ -10,7 +10,6 @@
 #include "sillage/error.h"
 #include "sillage/loops/component_split.h"
 #include "sillage/loops/loop_function.h"
-#include "sillage/loops/loop_sivia.h"
 #include "sillage/loops/topological_degree.h"
 #include "sillage/loops/tplane.h"
 #include "sillage/loops/zero_tests.h"
@@ -125,7 +124,6 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
   split_options.degree = degree_options;
   split_options.count = options.count;
   split_options.count_options = count_options;
-  split_options.inside = [&f](const IntervalVector& t) { return detail::is_inner_box(f, t); };
 
   // One meter for all the components: the budget is that of the whole call.
   BudgetMeter meter(options.budget, "TPlane::compute_proofs");
@@ -142,7 +140,7 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
       p.count = detail::count_zeros(l.boxes_, *p.degree, fn, jac, count_options, meter).count;
     }
     if (needs_split(p.degree, p.count, options)) {
-      SplitResult split = detail::split_region(l.boxes_, fn, jac, split_options, meter, p.degree);
+      SplitResult split = detail::split_region(l.boxes_, fn, jac, split_options, meter, p.degree, l.inner_);
       p.split_count = split.count();
       p.pieces = std::move(split.pieces);
     }
