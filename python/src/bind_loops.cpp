@@ -331,6 +331,9 @@ void init_loops(py::module_& m) {
       .def_readwrite("degree", &SplitOptions::degree, "DegreeOptions for the degree of each piece.")
       .def_readwrite("count", &SplitOptions::count, "Count the zeros of each piece (Alg. 10).")
       .def_readwrite("count_options", &SplitOptions::count_options, "CountOptions for the counts.")
+      .def_readwrite("deep_margin", &SplitOptions::deep_margin,
+                     "A half whose [f] holds 0 farther than this fraction of its width from both bounds is not "
+                     "bisected again (cost only; 0: bisect every box).")
       .def_readwrite("budget", &SplitOptions::budget, "For the whole split (sillage.Budget); exceeding it raises.");
   py::class_<SplitPiece>(m, "SplitPiece", "A piece of a split region: disjoint from the others, zero-free boundary.")
       .def_readonly("boxes", &SplitPiece::boxes, "Its boxes.")
