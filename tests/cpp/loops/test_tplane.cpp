@@ -448,5 +448,54 @@ TEST(TPlane, BadInput) {
   EXPECT_THROW(inner.compute_proofs(v, bad), Error);
 }
 
+// A detection of degree 0 holding two crossings of opposite orientations
+// (the 1 h Lissajous survey at eps = T/1000): the split proves both, each in
+// its own piece, and the pieces' degrees add up to 0.
+TEST(TPlane, SplitProvesTwoCrossingsInADegreeZeroDetection) {
+  const double T = 3600;
+  auto td = TDomain::create(0, T, 0.5);
+  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
+  const TubeVector v(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
+                             "*t + 0.4) + [-0.01,0.01])");
+  TPlane tp(td);
+  tp.compute_detections(T / 1000, v);
+  tp.compute_proofs(v);
+  const auto crossings = true_crossings(0, T, 0.25);
+  std::size_t split = 0;
+  for (const Loop& l : tp.detections()) {
+    if (l.degree() != 0 || l.nb_proven_pieces() < 2) continue;
+    ++split;
+    EXPECT_FALSE(l.proven());
+    EXPECT_TRUE(l.proven_split());
+    EXPECT_EQ(l.count(), 2u);
+    int sum = 0;
+    for (const Loop& p : l.pieces()) {
+      ASSERT_TRUE(p.degree());
+      sum += *p.degree();
+      if (!p.proven()) continue;
+      std::size_t inside = 0;
+      for (const Crossing& c : crossings) {
+        for (const auto& b : p.boxes()) {
+          if (b[0].contains(c.t1) && b[1].contains(c.t2)) {
+            ++inside;
+            break;
+          }
+        }
+      }
+      EXPECT_EQ(inside, 1u);
+    }
+    EXPECT_EQ(sum, 0);
+  }
+  EXPECT_GE(split, 1u);
+  // Without the split, the same detection proves nothing; bad split options are refused.
+  ProofOptions o;
+  o.split = false;
+  tp.compute_proofs(v, o);
+  for (const Loop& l : tp.detections()) EXPECT_TRUE(l.pieces().empty());
+  o.split = true;
+  o.split_max_levels = 0;
+  EXPECT_THROW(tp.compute_proofs(v, o), Error);
+}
+
 }  // namespace
 }  // namespace sillage
