@@ -344,15 +344,20 @@ std::vector<Crossing> true_crossings(double t0, double tf, double h) {
   return r;
 }
 
+// The velocity of the Lissajous survey of true_crossings, known to ±0.01 m/s.
+TubeVector survey_velocity(const std::shared_ptr<TDomain>& td) {
+  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
+  return TubeVector(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
+                            "*t + 0.4) + [-0.01,0.01])");
+}
+
 // Every claim of the proofs holds for the true trajectory, whose velocity
 // lies in the tube: a count is the exact number of true crossings in the
 // detection, a proof holds one at least, a Newton proof exactly one.
 TEST(TPlane, SurveyClaimsHoldForTheTrueTrajectory) {
   const double T = 1800;
   auto td = TDomain::create(0, T, 0.1);
-  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
-  const TubeVector v(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
-                             "*t + 0.4) + [-0.01,0.01])");
+  const TubeVector v = survey_velocity(td);
   TPlane tp(td);
   tp.compute_detections(T / 2000, v);
   tp.compute_proofs(v);
@@ -454,9 +459,7 @@ TEST(TPlane, BadInput) {
 TEST(TPlane, SplitProvesTwoCrossingsInADegreeZeroDetection) {
   const double T = 3600;
   auto td = TDomain::create(0, T, 0.5);
-  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
-  const TubeVector v(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
-                             "*t + 0.4) + [-0.01,0.01])");
+  const TubeVector v = survey_velocity(td);
   TPlane tp(td);
   tp.compute_detections(T / 1000, v);
   tp.compute_proofs(v);
