@@ -3,12 +3,14 @@
 // count of Alg. 10) with TPlane, and the true crossings by self_crossings.
 //   BM_DetectionsAndProofs/<hours>      both, eps = (tf - t0)/2000 (targets: 1 h <= 0.5 s, 2 h <= 2 s)
 //   BM_Detections/<hours>, BM_Proofs/<hours>   each alone
+//   BM_ProofsWithoutSplit/<hours>       the proofs with ProofOptions::split off (the cost of the split)
 //   BM_DetectionsVsEps/<divisor>        1 h mission, eps = 3600 s / divisor
 //   BM_TrueCrossings/<points>           self_crossings on the 1 h true path with that many samples
 //   BM_Mission/<hours>                  generation of the mission and its velocity tube
 // Counters: detections (all, complete), proofs by T and N, lambda* (true
-// crossings in complete detections) and the share of it inside proven
-// detections (proven_pct).
+// crossings in complete detections), the share of it inside proven
+// detections or proven pieces of split ones (proven_pct), and the proven
+// sub-loops (sub_loops, TPlane::proofs()).
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -53,12 +55,17 @@ void report(benchmark::State& state, const TPlane& tp, double hours, bool proofs
       bool in = false;
       for (const IntervalVector& b : l.boxes()) in = in || (b[0].contains(c.t1) && b[1].contains(c.t2));
       if (!in) continue;
-      if (l.complete()) ++lambda_star, proven += l.proven() ? 1 : 0;
+      bool in_piece = false;  // a proven piece of a split detection (component_split.h)
+      for (const Loop& p : l.pieces()) {
+        for (const IntervalVector& b : p.boxes()) in_piece = in_piece || (p.proven() && b[0].contains(c.t1) && b[1].contains(c.t2));
+      }
+      if (l.complete()) ++lambda_star, proven += (l.proven() || in_piece) ? 1 : 0;
       break;
     }
   }
   state.counters["lambda_star"] = double(lambda_star);
   state.counters["proven_pct"] = lambda_star ? 100.0 * double(proven) / double(lambda_star) : 0.0;
+  state.counters["sub_loops"] = double(tp.proofs().size());
 }
 
 // Detections at eps = tf / eps_divisor, then proofs if asked, from scratch at each iteration.
@@ -86,15 +93,21 @@ BENCHMARK(BM_DetectionsAndProofsVsLength)->Arg(1000)->Arg(3600)->Arg(7200)->Arg(
 void BM_Detections(benchmark::State& state) { run_tplane(state, double(state.range(0)), 2000, false); }
 BENCHMARK(BM_Detections)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_Proofs(benchmark::State& state) {
+// Proofs with the split of degree-0 / uncounted detections (the default), and without it.
+void run_proofs(benchmark::State& state, bool split) {
   const double hours = double(state.range(0));
   const auto& m = mission(hours);
   TPlane tp(m.tdomain());
   tp.compute_detections(m.tf() / 2000, m.velocity_tube());
-  for (auto _ : state) tp.compute_proofs(m.velocity_tube());
+  ProofOptions options;
+  options.split = split;
+  for (auto _ : state) tp.compute_proofs(m.velocity_tube(), options);
   report(state, tp, hours, true);
 }
+void BM_Proofs(benchmark::State& state) { run_proofs(state, true); }
 BENCHMARK(BM_Proofs)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+void BM_ProofsWithoutSplit(benchmark::State& state) { run_proofs(state, false); }
+BENCHMARK(BM_ProofsWithoutSplit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DetectionsVsEps(benchmark::State& state) { run_tplane(state, 1, double(state.range(0)), true); }
 BENCHMARK(BM_DetectionsVsEps)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Arg(8000)->Unit(benchmark::kMillisecond)

@@ -69,8 +69,10 @@ def loop_table(tp, crossings):
     in_detection = np.any(masks, axis=0) if masks else np.zeros(len(crossings), bool)
     complete = [m for l, m in zip(loops, masks) if l.complete()]
     lam_star = int(np.any(complete, axis=0).sum()) if complete else 0
-    lam_t = sum(l.count() if l.count() is not None else 1 for l in loops if l.proven())
+    # Proven sub-loops (tp.proofs()): whole detections, or proven pieces of split ones.
+    lam_t = sum(p.count() if p.count() is not None else 1 for p in tp.proofs())
     proofs_hit = all(m.any() for l, m in zip(loops, masks) if l.proven() or l.proven_newton())
+    proofs_hit = proofs_hit and all(holds(p, crossings).any() for p in tp.proofs())
     counts_ok = all(l.count() == int(m.sum()) for l, m in zip(loops, masks) if l.proven() and l.count() is not None)
     return dict(lam_n=tp.nb_newton_proofs(), lam_t=lam_t, lam_star=lam_star, proofs_hit=proofs_hit,
                 counts_ok=counts_ok, all_detected=bool(in_detection.all()),

@@ -7,7 +7,8 @@
   TubeVector or an (n, 2) path) and the map box of each detection; axes in metres.
 
 Statuses, as the SVG figures (``loop_style``): a complete detection proven by
-the degree test is orange, a complete one without proof black, a partial one
+the degree test is orange (so are the proven pieces of a split detection, drawn
+over it), a complete one without proof black, a partial one
 (touching the sides or the diagonal of the t-plane, never proven) grey. Boxes
 are drawn by collections, one per status, so that large pavings stay fast.
 """
@@ -111,6 +112,8 @@ def plot_tplane(ax, tplane, truth=None, show_outside=False, show_diagonal=True, 
     groups = {s: [] for s in _STATUS_ORDER}
     for loop in tplane.detections():
         groups[loop_status(loop)].append(loop)
+        # The proven pieces of a split detection, drawn over it.
+        groups["proven"] += [p for p in loop.pieces() if p.proven()]
     size = max(dom[0, 1] - dom[0, 0], dom[1, 1] - dom[1, 0])
     centres, centre_colours = [], []
     outlines, outline_colours = [], []

@@ -27,6 +27,7 @@ struct DetectionShape {
   LoopStatus status = LoopStatus::Partial;
 };
 
+// One shape per detection, then one per proven piece of a split detection.
 std::vector<DetectionShape> detection_shapes(const TPlane& tplane);
 
 struct TPlaneFigureOptions {

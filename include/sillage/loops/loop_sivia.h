@@ -35,6 +35,10 @@ Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double ep
                   const SiviaOptions& options = {});
 
 namespace detail {
+// (6.10), velocity form only: t1 < t2 surely and, on both components, the
+// range of ∫v^- is <= 0 and that of ∫v^+ is >= 0, so that every (t1, t2) of
+// the box is a feasible loop. Always false with positions (see above).
+bool is_inner_box(const LoopFunction& f, const IntervalVector& t);
 // loop_sivia in parallel for a caller named `where` whose budget argument is
 // called "budget" (error messages).
 Paving build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps, const Budget& budget,

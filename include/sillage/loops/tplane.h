@@ -27,7 +27,10 @@
 // (topological_degree.h, with boundary refinement), the interval Newton test
 // N on the hull (zero_tests.h, only when the hull meets no other component:
 // then a zero in the hull is a zero in Ω_i; see ProofOptions for an
-// inflated retry), and the count of loops (Alg. 10, Remark 6.1). Components are processed in parallel (oneTBB); results never
+// inflated retry), and the count of loops (Alg. 10, Remark 6.1). A
+// component whose degree is 0 or undetermined, or whose loops are not
+// counted, is then split into pieces with zero-free boundaries
+// (component_split.h): each piece of non-zero degree proves a loop. Components are processed in parallel (oneTBB); results never
 // depend on the number of threads.
 #include <cstddef>
 #include <memory>
@@ -66,7 +69,15 @@ class Loop {
   // Exact number of loops in the component (Alg. 10), when the degree is
   // known and det [J_f] keeps its sign where loops may be. It may be 0: a
   // proof that this detection holds no loop.
+  // When the split of Ω_i (component_split.h) counted every piece, the sum.
   std::optional<std::size_t> count() const { return count_; }
+  // The pieces of Ω_i when it was split (empty otherwise): disjoint sub-loops,
+  // each with its boxes, t-box, map box, degree and count (complete, never
+  // split again, proven_newton false). Every loop of Ω_i lies in a piece.
+  const std::vector<Loop>& pieces() const { return pieces_; }
+  std::size_t nb_proven_pieces() const;  // pieces of non-zero degree
+  // A loop is proven in Ω_i: by T on Ω_i itself or on one of its pieces.
+  bool proven_split() const { return proven() || nb_proven_pieces() > 0; }
 
  private:
   friend class TPlane;
@@ -78,6 +89,8 @@ class Loop {
   std::optional<int> degree_;
   bool proven_newton_ = false;
   std::optional<std::size_t> count_;
+  std::vector<Loop> pieces_;
+  std::vector<bool> inner_;  // inner_[k]: boxes_[k] is an Inner leaf (for the split)
 };
 
 // Tuning of compute_proofs; the lengths are fractions of the eps of the
@@ -100,6 +113,13 @@ struct ProofOptions {
   // diagonal, and meets no other component. 0: the hull only.
   double newton_inflation = 0.25;
   bool count = true;   // run Alg. 10
+  // Split the complete detections of degree 0 or undetermined, or not
+  // counted, into pieces (component_split.h): up to split_max_levels
+  // bisections of their boxes (3: down to eps/2.8, inside Ω_i only), at most
+  // split_max_boxes boxes per piece being refined.
+  bool split = true;
+  std::size_t split_max_levels = 3;
+  std::size_t split_max_boxes = 1u << 15;
   // For the whole of compute_proofs: every evaluation of the degree test and
   // every box of the counts counts as a box (budget.h).
   Budget budget;
@@ -137,7 +157,9 @@ class TPlane {
   std::size_t nb_proofs() const;         // complete detections proven by T
   std::size_t nb_newton_proofs() const;  // ... by N
   const std::vector<Loop>& detections() const { return detections_; }
-  std::vector<Loop> proofs() const;      // the detections proven by T
+  // Every proven sub-loop: for each detection, its pieces of non-zero
+  // degree if it has some, else the detection itself if T proves it.
+  std::vector<Loop> proofs() const;
 
  private:
   void check_tube(const TubeVector& x, const char* what, const char* where) const;

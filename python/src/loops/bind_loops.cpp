@@ -15,7 +15,9 @@
 
 #include "bindings.h"
 #include "interruptible.h"
+#include "sillage/loops/component_split.h"
 #include "sillage/loops/loop_function.h"
+#include "sillage/loops/loop_sivia.h"
 #include "sillage/loops/path_crossings.h"
 #include "sillage/loops/tplane.h"
 #include "sillage/loops/zero_tests.h"
@@ -62,8 +64,11 @@ std::string loop_repr(const Loop& l) {
   std::string s = "<Loop t_box " + l.t_box().str() + (l.complete() ? ", complete" : ", partial");
   if (l.degree()) s += ", degree " + std::to_string(*l.degree());
   if (l.count()) s += ", count " + std::to_string(*l.count());
+  if (!l.pieces().empty()) s += ", " + std::to_string(l.pieces().size()) + " pieces";
   return s + ">";
 }
+
+std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? std::to_string(*x) : "None"; }
 
 }  // namespace
 
@@ -79,7 +84,12 @@ void init_loops(py::module_& m) {
       .def("degree", &Loop::degree, "Topological degree of f over the component, or None.")
       .def("proven", &Loop::proven, "A loop is proven by the degree test T.")
       .def("proven_newton", &Loop::proven_newton, "A unique loop is proven by the Newton test N.")
-      .def("count", &Loop::count, "Exact number of loops (Alg. 10), or None.")
+      .def("count", &Loop::count, "Exact number of loops (Alg. 10, or the sum over the pieces), or None.")
+      .def("pieces", &Loop::pieces,
+           "The pieces (Loop) of the component when it was split (degree 0, undetermined or uncounted): disjoint "
+           "sub-loops with zero-free boundaries, each with its boxes, t_box, map_box, degree and count.")
+      .def("nb_proven_pieces", &Loop::nb_proven_pieces, "Pieces of non-zero degree (each proves a loop).")
+      .def("proven_split", &Loop::proven_split, "A loop is proven by T on the component or on one of its pieces.")
       .def("__repr__", &loop_repr);
 
   py::class_<ProofOptions>(m, "ProofOptions", "Tuning of TPlane.compute_proofs (lengths as fractions of eps).")
@@ -98,6 +108,11 @@ void init_loops(py::module_& m) {
                      "2, 4, 8 times it) while the box stays inside the square, above the diagonal, away from other "
                      "components; 0: the hull only.")
       .def_readwrite("count", &ProofOptions::count, "Run the count of loops, Alg. 10 (default True).")
+      .def_readwrite("split", &ProofOptions::split,
+                     "Split the complete detections of degree 0, undetermined or uncounted into pieces (default True).")
+      .def_readwrite("split_max_levels", &ProofOptions::split_max_levels,
+                     "Bisections of the boxes of a piece still to settle (3: down to eps/2.8, inside the detection).")
+      .def_readwrite("split_max_boxes", &ProofOptions::split_max_boxes, "Cap on the boxes of a piece being refined.")
       .def_readwrite("budget", &ProofOptions::budget, "For the whole call (sillage.Budget).");
 
   const py::call_guard<py::gil_scoped_release> nogil;
@@ -306,6 +321,61 @@ void init_loops(py::module_& m) {
          const CountOptions& o) { return count_zeros(boxes, degree, plane_function(f), plane_jacobian(j), o); },
       py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
       "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
+
+  py::class_<SplitOptions>(m, "SplitOptions", "Tuning of split_region.")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
+      .def(py::init<>(), "Defaults: max_levels 8, max_boxes 2^15, count on.")
+      .def_readwrite("max_levels", &SplitOptions::max_levels,
+                     "Bisections of every box of a piece still to settle (8: boxes 16 times narrower).")
+      .def_readwrite("max_boxes", &SplitOptions::max_boxes, "Cap on the boxes of one piece being refined.")
+      .def_readwrite("degree", &SplitOptions::degree, "DegreeOptions for the degree of each piece.")
+      .def_readwrite("count", &SplitOptions::count, "Count the zeros of each piece (Alg. 10).")
+      .def_readwrite("count_options", &SplitOptions::count_options, "CountOptions for the counts.")
+      .def_readwrite("deep_margin", &SplitOptions::deep_margin,
+                     "A half whose [f] holds 0 farther than this fraction of its width from both bounds is not "
+                     "bisected again (cost only; 0: bisect every box).")
+      .def_readwrite("budget", &SplitOptions::budget, "For the whole split (sillage.Budget); exceeding it raises.");
+  py::class_<SplitPiece>(m, "SplitPiece", "A piece of a split region: disjoint from the others, zero-free boundary.")
+      .def_readonly("boxes", &SplitPiece::boxes, "Its boxes.")
+      .def_readonly("t_box", &SplitPiece::t_box, "Hull of its boxes.")
+      .def_readonly("degree", &SplitPiece::degree, "Degree of f over the piece, or None (undetermined).")
+      .def_readonly("count", &SplitPiece::count, "Exact number of zeros in the piece, or None.")
+      .def("proves_zero", &SplitPiece::proves_zero, "The degree is known and non-zero: a zero lies in the piece.")
+      .def("__repr__", [](const SplitPiece& p) {
+        return "<SplitPiece t_box " + p.t_box.str() + ", degree " + optional_str(p.degree) + ", count " +
+               optional_size_str(p.count) + ", " + std::to_string(p.boxes.size()) + " boxes>";
+      });
+  py::class_<SplitResult>(m, "SplitResult", "The result of split_region.")
+      .def_readonly("pieces", &SplitResult::pieces, "The pieces (SplitPiece), ordered by the lower corner of their hull.")
+      .def_readonly("nb_evaluations", &SplitResult::nb_evaluations, "Evaluations of [f] for the refinement.")
+      .def_readonly("nb_levels", &SplitResult::nb_levels, "Deepest refinement level reached.")
+      .def("degree", &SplitResult::degree, "Sum of the degrees of the pieces when all are known, else None.")
+      .def("count", &SplitResult::count, "Number of zeros in the region when every piece is counted, else None.")
+      .def("nb_proven", &SplitResult::nb_proven, "Pieces of non-zero degree.")
+      .def("__repr__", [](const SplitResult& r) {
+        return "<SplitResult " + std::to_string(r.pieces.size()) + " pieces, degree " + optional_str(r.degree()) +
+               ", count " + optional_size_str(r.count()) + ">";
+      });
+  m.def(
+      "split_region",
+      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          SplitOptions with = with_token(o, t);
+          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
+          return split_region(boxes, f.function(), f.jacobian_function(), with);
+        });
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
+      "Splits a union of t-boxes into pieces with zero-free boundaries for a LoopFunction (Inner boxes kept whole).");
+  m.def(
+      "split_region",
+      [](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j, const SplitOptions& o) {
+        const PlaneJacobian jac = j.is_none() ? PlaneJacobian{} : plane_jacobian(j.cast<py::function>());
+        if (!jac && o.count) throw Error("split_region: a jacobian is needed to count (or set options.count = False)");
+        return split_region(boxes, plane_function(f), jac, o);
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
+      "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
       .def_readonly("t1", &PathCrossing::t1, "The first passage time (t1 < t2).")

@@ -36,7 +36,13 @@ IntervalVector hull_of(const std::vector<IntervalVector>& boxes) {
 std::vector<DetectionShape> detection_shapes(const TPlane& tplane) {
   std::vector<DetectionShape> shapes;
   shapes.reserve(tplane.nb_detections());
-  for (const Loop& l : tplane.detections()) shapes.push_back({l.boxes(), loop_status(l)});
+  for (const Loop& l : tplane.detections()) {
+    shapes.push_back({l.boxes(), loop_status(l)});
+    // The proven pieces of a split detection, drawn over it (component_split.h).
+    for (const Loop& p : l.pieces()) {
+      if (p.proven()) shapes.push_back({p.boxes(), LoopStatus::Proven});
+    }
+  }
   return shapes;
 }
 

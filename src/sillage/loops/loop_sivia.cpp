@@ -31,6 +31,14 @@ bool is_injective(const LoopFunction& f, const IntervalVector& t) {
   return excludes_zero(v[0]) || excludes_zero(v[1]);
 }
 
+bool inner_bounds(const IntervalVector& lower, const IntervalVector& upper) {
+  if (lower.is_empty() || upper.is_empty()) return false;
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!(lower[i].ub() <= 0.0 && 0.0 <= upper[i].lb())) return false;
+  }
+  return true;
+}
+
 // Alg. 6 on one box, as a separation (paving_builder.h): x_out loses what is
 // proven outside T, x_in is emptied when what is left is proven inside.
 void separate(const LoopFunction& f, IntervalVector& x_in, IntervalVector& x_out) {
@@ -56,13 +64,9 @@ void separate(const LoopFunction& f, IntervalVector& x_in, IntervalVector& x_out
     t.set_empty();
     return;
   }
-  if (!f.has_positions()) {
-    bool inner = true;
-    for (std::size_t i = 0; i < 2; ++i) inner = inner && lower[i].ub() <= 0.0 && 0.0 <= upper[i].lb();  // (6.10)
-    if (inner) {
-      x_in.set_empty();
-      return;
-    }
+  if (!f.has_positions() && inner_bounds(lower, upper)) {  // (6.10)
+    x_in.set_empty();
+    return;
   }
   if (is_injective(f, t)) t.set_empty();  // (6.9), last: the other tests decide most boxes off the diagonal
 }
@@ -89,6 +93,12 @@ Paving paving_of(const LoopFunction& f, const IntervalVector& square, double eps
 
 Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, const SiviaOptions& options) {
   return paving_of(f, square, eps, options.parallel, options.budget, kWhere, "options.budget");
+}
+
+bool detail::is_inner_box(const LoopFunction& f, const IntervalVector& t) {
+  if (f.has_positions() || f.is_empty() || !(t[0].ub() < t[1].lb())) return false;
+  const auto [lower, upper] = f.integral_bounds(t[0], t[1]);
+  return inner_bounds(lower, upper);
 }
 
 Paving detail::build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps,

@@ -69,6 +69,7 @@ void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
     Loop l;
     l.boxes_ = std::move(c.boxes);
     l.nb_inner_ = c.count(PavingTag::Inner);
+    for (PavingTag tag : c.tags) l.inner_.push_back(tag == PavingTag::Inner);
     l.t_box_ = c.hull;
     l.complete_ = is_complete(l.boxes_, l.t_box_, domain_);
     loops.push_back(std::move(l));
@@ -99,9 +100,19 @@ std::size_t TPlane::nb_newton_proofs() const {
       std::count_if(detections_.begin(), detections_.end(), [](const Loop& l) { return l.proven_newton(); }));
 }
 
+std::size_t Loop::nb_proven_pieces() const {
+  return static_cast<std::size_t>(std::count_if(pieces_.begin(), pieces_.end(), [](const Loop& p) { return p.proven(); }));
+}
+
 std::vector<Loop> TPlane::proofs() const {
   std::vector<Loop> r;
-  std::copy_if(detections_.begin(), detections_.end(), std::back_inserter(r), [](const Loop& l) { return l.proven(); });
+  for (const Loop& l : detections_) {
+    if (l.nb_proven_pieces() > 0) {
+      std::copy_if(l.pieces_.begin(), l.pieces_.end(), std::back_inserter(r), [](const Loop& p) { return p.proven(); });
+    } else if (l.proven()) {
+      r.push_back(l);
+    }
+  }
   return r;
 }
 

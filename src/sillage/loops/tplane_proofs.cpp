@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sillage/error.h"
+#include "sillage/loops/component_split.h"
 #include "sillage/loops/loop_function.h"
 #include "sillage/loops/topological_degree.h"
 #include "sillage/loops/tplane.h"
@@ -29,6 +30,16 @@ void check_options(const ProofOptions& o, double eps, const char* where) {
   if (!(o.degree_edge_fraction * eps > 0) || !(o.count_width_fraction * eps > 0)) {
     throw Error(std::string(where) + ": the fractions of eps = " + number_text(eps) + " underflow to 0");
   }
+  if (o.split && (o.split_max_levels == 0 || o.split_max_boxes == 0)) {
+    throw Error(std::string(where) + ": split_max_levels and split_max_boxes must be positive, got " +
+                std::to_string(o.split_max_levels) + " and " + std::to_string(o.split_max_boxes));
+  }
+}
+
+// A detection of degree 0 or undetermined proves nothing, and an uncounted
+// one does not say how many loops it holds: both may fall apart in pieces.
+bool needs_split(const std::optional<int>& degree, const std::optional<std::size_t>& count, const ProofOptions& o) {
+  return o.split && (!degree || *degree == 0 || (o.count && !count));
 }
 
 }  // namespace
@@ -88,6 +99,8 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     bool newton = false;
     std::optional<std::size_t> count;
     std::vector<IntervalVector> newton_boxes;
+    std::vector<SplitPiece> pieces;
+    std::optional<std::size_t> split_count;
   };
   std::vector<Proof> proofs(detections_.size());
   // Sequential part: map boxes, and the boxes where N may run.
@@ -105,6 +118,12 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
   CountOptions count_options;
   count_options.min_width = options.count_width_fraction * eps_;
   count_options.max_boxes = options.count_max_boxes;
+  SplitOptions split_options;
+  split_options.max_levels = options.split_max_levels;
+  split_options.max_boxes = options.split_max_boxes;
+  split_options.degree = degree_options;
+  split_options.count = options.count;
+  split_options.count_options = count_options;
 
   // One meter for all the components: the budget is that of the whole call.
   BudgetMeter meter(options.budget, "TPlane::compute_proofs");
@@ -120,6 +139,11 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     if (options.count && p.degree) {
       p.count = detail::count_zeros(l.boxes_, *p.degree, fn, jac, count_options, meter).count;
     }
+    if (needs_split(p.degree, p.count, options)) {
+      SplitResult split = detail::split_region(l.boxes_, fn, jac, split_options, meter, p.degree, l.inner_);
+      p.split_count = split.count();
+      p.pieces = std::move(split.pieces);
+    }
   });
 
   for (std::size_t i = 0; i < detections_.size(); ++i) {
@@ -127,7 +151,18 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     l.map_box_ = std::move(proofs[i].map_box);
     l.degree_ = proofs[i].degree;
     l.proven_newton_ = proofs[i].newton;
-    l.count_ = proofs[i].count;
+    l.count_ = proofs[i].count ? proofs[i].count : proofs[i].split_count;
+    l.pieces_.clear();
+    for (SplitPiece& s : proofs[i].pieces) {
+      Loop piece;
+      piece.t_box_ = s.t_box;
+      piece.map_box_ = f.position(s.t_box[0]) | f.position(s.t_box[1]);
+      piece.boxes_ = std::move(s.boxes);
+      piece.complete_ = true;
+      piece.degree_ = s.degree;
+      piece.count_ = s.count;
+      l.pieces_.push_back(std::move(piece));
+    }
   }
 }
 

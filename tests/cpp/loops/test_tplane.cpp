@@ -344,15 +344,20 @@ std::vector<Crossing> true_crossings(double t0, double tf, double h) {
   return r;
 }
 
+// The velocity of the Lissajous survey of true_crossings, known to ±0.01 m/s.
+TubeVector survey_velocity(const std::shared_ptr<TDomain>& td) {
+  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
+  return TubeVector(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
+                            "*t + 0.4) + [-0.01,0.01])");
+}
+
 // Every claim of the proofs holds for the true trajectory, whose velocity
 // lies in the tube: a count is the exact number of true crossings in the
 // detection, a proof holds one at least, a Newton proof exactly one.
 TEST(TPlane, SurveyClaimsHoldForTheTrueTrajectory) {
   const double T = 1800;
   auto td = TDomain::create(0, T, 0.1);
-  const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
-  const TubeVector v(td, "(120*" + w1 + "*cos(" + w1 + "*t) + [-0.01,0.01], 120*" + w2 + "*cos(" + w2 +
-                             "*t + 0.4) + [-0.01,0.01])");
+  const TubeVector v = survey_velocity(td);
   TPlane tp(td);
   tp.compute_detections(T / 2000, v);
   tp.compute_proofs(v);
@@ -388,6 +393,35 @@ TEST(TPlane, SurveyClaimsHoldForTheTrueTrajectory) {
   }
   EXPECT_GE(tp.nb_proofs(), crossings.size() / 2);
   EXPECT_GE(counted, tp.nb_proofs() / 2);
+  // The pieces of split detections: the same claims, and their degrees add up.
+  for (std::size_t i = 0; i < tp.nb_detections(); ++i) {
+    const Loop& l = tp.detections()[i];
+    int degree = 0;
+    bool determined = true;
+    std::size_t in_pieces = 0;
+    for (const Loop& p : l.pieces()) {
+      std::size_t inside_piece = 0;
+      for (const Crossing& c : crossings) {
+        for (const auto& b : p.boxes()) {
+          if (b[0].contains(c.t1) && b[1].contains(c.t2)) {
+            ++inside_piece;
+            break;
+          }
+        }
+      }
+      in_pieces += inside_piece;
+      if (p.proven()) EXPECT_GE(inside_piece, 1u) << p.t_box();
+      if (p.count()) EXPECT_EQ(*p.count(), inside_piece) << p.t_box();
+      EXPECT_TRUE(p.t_box().is_subset(l.t_box()));
+      EXPECT_TRUE(p.pieces().empty());
+      determined = determined && p.degree();
+      degree += p.degree().value_or(0);
+    }
+    if (!l.pieces().empty()) EXPECT_EQ(in_pieces, inside[i]);  // every loop lies in a piece
+    if (!l.pieces().empty() && determined && l.degree()) EXPECT_EQ(degree, *l.degree());
+  }
+  for (const Loop& p : tp.proofs()) EXPECT_TRUE(p.proven());
+  EXPECT_GE(tp.proofs().size(), tp.nb_proofs());
 }
 
 TEST(TPlane, BadInput) {
@@ -417,6 +451,53 @@ TEST(TPlane, BadInput) {
   ProofOptions bad;
   bad.degree_edge_fraction = 0;
   EXPECT_THROW(inner.compute_proofs(v, bad), Error);
+}
+
+// A detection of degree 0 holding two crossings of opposite orientations
+// (the 1 h Lissajous survey at eps = T/1000): the split proves both, each in
+// its own piece, and the pieces' degrees add up to 0.
+TEST(TPlane, SplitProvesTwoCrossingsInADegreeZeroDetection) {
+  const double T = 3600;
+  auto td = TDomain::create(0, T, 0.5);
+  const TubeVector v = survey_velocity(td);
+  TPlane tp(td);
+  tp.compute_detections(T / 1000, v);
+  tp.compute_proofs(v);
+  const auto crossings = true_crossings(0, T, 0.25);
+  std::size_t split = 0;
+  for (const Loop& l : tp.detections()) {
+    if (l.degree() != 0 || l.nb_proven_pieces() < 2) continue;
+    ++split;
+    EXPECT_FALSE(l.proven());
+    EXPECT_TRUE(l.proven_split());
+    EXPECT_EQ(l.count(), 2u);
+    int sum = 0;
+    for (const Loop& p : l.pieces()) {
+      ASSERT_TRUE(p.degree());
+      sum += *p.degree();
+      if (!p.proven()) continue;
+      std::size_t inside = 0;
+      for (const Crossing& c : crossings) {
+        for (const auto& b : p.boxes()) {
+          if (b[0].contains(c.t1) && b[1].contains(c.t2)) {
+            ++inside;
+            break;
+          }
+        }
+      }
+      EXPECT_EQ(inside, 1u);
+    }
+    EXPECT_EQ(sum, 0);
+  }
+  EXPECT_GE(split, 1u);
+  // Without the split, the same detection proves nothing; bad split options are refused.
+  ProofOptions o;
+  o.split = false;
+  tp.compute_proofs(v, o);
+  for (const Loop& l : tp.detections()) EXPECT_TRUE(l.pieces().empty());
+  o.split = true;
+  o.split_max_levels = 0;
+  EXPECT_THROW(tp.compute_proofs(v, o), Error);
 }
 
 }  // namespace
