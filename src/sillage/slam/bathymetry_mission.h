@@ -36,7 +36,7 @@ struct BathymetryMissionOptions {
   double speed = 1.03;       // m/s (2 knots)
   double turn_radius = 28;   // m
   double rail_spacing = 40;  // m (< 2 turn_radius: keyhole turns)
-  double depth = 13.5;       // m, mean depth below the surface
+  double depth = 14.5;       // m, depth below the surface at the start
   SeabedOptions seabed;
   TideModel tide;
   BathymetrySensorBounds bounds;

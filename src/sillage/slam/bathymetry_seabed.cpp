@@ -44,19 +44,19 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
     banks.push_back({rng.uniform(x_edge + 60, L - 60), rng.uniform(60, L - 60), -rng.uniform(2.0, 3.5),
                      rng.uniform(90, 130), rng.uniform(35, 50), std::cos(th), std::sin(th)});
   }
-  // Rocks 0.8-1.6 m high, sigma 6-9 m, at least 8 sigma_max = 72 m apart.
-  const double rock_smax = 9;
+  // Rocks 0.8-1.5 m high, sigma 8-12 m, at least 8 sigma_max = 96 m apart.
+  const double rock_smax = 12;
   for (int k = 0, tries = 0; k < o.nb_rocks && tries < 10000; ++tries) {
-    const double s = rng.uniform(6, rock_smax), cx = rng.uniform(x_edge + 30, L - 20), cy = rng.uniform(20, L - 20);
-    const double amp = -rng.uniform(0.8, 1.6);
+    const double s = rng.uniform(8, rock_smax), cx = rng.uniform(x_edge + 30, L - 20), cy = rng.uniform(20, L - 20);
+    const double amp = -rng.uniform(0.8, 1.5);
     bool far = true;
     for (const auto& r : rocks) far = far && std::hypot(r.cx - cx, r.cy - cy) >= 8 * rock_smax;
     if (!far) continue;
     rocks.push_back({cx, cy, amp, s, s, 1, 0});
     ++k;
   }
-  // Sand waves: crests across a random direction, wavelength 35-45 m, amplitude 0.25-0.4 m.
-  const double wl = rng.uniform(35, 45), wamp = rng.uniform(0.25, 0.4), wth = rng.uniform(0, kPi);
+  // Sand waves: crests across a random direction, wavelength 40-55 m, amplitude 0.2-0.3 m.
+  const double wl = rng.uniform(40, 55), wamp = rng.uniform(0.2, 0.3), wth = rng.uniform(0, kPi);
   const double kx = 2 * kPi / wl * std::cos(wth), ky = 2 * kPi / wl * std::sin(wth), wph = rng.uniform(0, 2 * kPi);
   // A gentle swell in the smooth part too (0.3 m over 200 m).
   const double gamp = 0.3, gk = 2 * kPi / 200, gph = rng.uniform(0, 2 * kPi);
