@@ -9,6 +9,7 @@
 #include "sillage/interval/elementary.h"
 #include "sillage/tube/tube_arithmetic.h"
 #include "sillage/tube/tube_integral.h"
+#include "sillage/tube/tube_taylor.h"
 
 namespace sillage {
 
@@ -124,7 +125,14 @@ TubeVector bathymetry_dead_reckoning(const BathymetryMission& m, const std::shar
   const Grid g = grid_of(m, td, "bathymetry_dead_reckoning");
   const TubeVector w = fine_velocity(fine_sensor_tubes(m, g));
   std::vector<Tube> p;
-  for (std::size_t i = 0; i < 3; ++i) p.push_back(coarsen(primitive(w[i], x0[i]), td, g));
+  for (std::size_t i = 0; i < 2; ++i) p.push_back(coarsen(primitive(w[i], x0[i]), td, g));
+  // Depth: the pressure sensor at every sample, the integrated rate in between.
+  const std::size_t N = g.fine->nb_slices(), i0 = g.idx.front();
+  const Interval e(-m.bounds().depth, m.bounds().depth);
+  std::vector<Interval> inc(N), gates(N + 1);
+  for (std::size_t k = 0; k < N; ++k) inc[k] = g.fine->slice_width(k) * w[2].slice(k);
+  for (std::size_t k = 0; k <= N; ++k) gates[k] = Interval(m.measured().depth[i0 + k]) + e;
+  p.push_back(coarsen(primitive_from_increments(w[2], inc, x0[2], gates), td, g));
   return TubeVector(std::move(p));
 }
 

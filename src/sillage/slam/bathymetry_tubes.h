@@ -11,7 +11,8 @@
 //    sensor period, then the slices of `td` the hulls of the fine slices;
 //  - p = x0 + integral of w (the library's primitive) at the sensor period, so
 //    the gates on `td` keep the fine integration; its third component is the
-//    depth (positive down);
+//    depth (positive down): the pressure depth +- its bound at every sample,
+//    the integrated depth rate in between (primitive_from_increments);
 //  - z = z_alt + z_depth + z_tide (7.30), the seabed depth below the chart
 //    datum under the vehicle: measured altitude + measured depth - tide model
 //    (7.29), each with its bound, plus the footprint filter bound
