@@ -85,6 +85,11 @@ void BathymetryDem::range_rec(std::size_t level, std::size_t bi, std::size_t bj,
 
 Interval BathymetryDem::node_range(std::size_t i0, std::size_t i1, std::size_t j0, std::size_t j1) const {
   double lo = INFINITY, hi = -INFINITY;
+  if ((i1 - i0 + 1) * (j1 - j0 + 1) <= 64) {  // small: a direct scan beats the descent
+    for (std::size_t j = j0; j <= j1; ++j)
+      for (std::size_t i = i0; i <= i1; ++i) lo = std::min(lo, at(i, j)), hi = std::max(hi, at(i, j));
+    return Interval(lo, hi);
+  }
   range_rec(pmin_.size() - 1, 0, 0, i0, i1, j0, j1, lo, hi);
   return Interval(lo, hi);
 }
