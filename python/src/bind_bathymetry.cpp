@@ -12,6 +12,7 @@
 #include "sillage/slam/bathymetry_dem.h"
 #include "sillage/slam/bathymetry_figures.h"
 #include "sillage/slam/bathymetry_mission.h"
+#include "sillage/slam/bathymetry_range_observation.h"
 #include "sillage/slam/bathymetry_seabed.h"
 #include "sillage/slam/bathymetry_sensors.h"
 #include "sillage/slam/bathymetry_tide.h"
@@ -232,11 +233,30 @@ void init_bathymetry_mission(py::module_& m) {
         "The observation tube with the true observation (Fig. 7.14), an SVG Figure.");
 }
 
+void init_range_observation(py::module_& m) {
+  py::class_<RangeBounds>(m, "RangeBounds",
+                          "Stated bounds of range measurements: short and long errors, time stamps, speed.")
+      .def(py::init<>(), "Defaults (plaza1): short 1.5 m, long 10 m, time stamps 0.2 s, speed 2 m/s.")
+      .def(py::init<double, double, double, double>(), py::arg("short_err"), py::arg("long_err"),
+           py::arg("time_err"), py::arg("speed"), "The four bounds.")
+      .def("__repr__", [](const RangeBounds& b) { return repr(b); }, "RangeBounds(short_err, long_err, ...).")
+      .def_readwrite("short_err", &RangeBounds::short_err, "measured - true >= -short_err (m).")
+      .def_readwrite("long_err", &RangeBounds::long_err, "measured - true <= long_err (m).")
+      .def_readwrite("time_err", &RangeBounds::time_err, "Time-stamp error (s).")
+      .def_readwrite("speed", &RangeBounds::speed, "Bound on |z'|: the robot's speed (m/s).");
+  m.def("range_observation_tubes", &range_observation_tubes, py::arg("tdomain"), py::arg("times"),
+        py::arg("beacon"), py::arg("range"), py::arg("beacon_ids"), py::arg("bounds") = RangeBounds{},
+        py::call_guard<py::gil_scoped_release>(),
+        "The range observation tubes of a range-only temporal SLAM without the beacon positions: one tube per "
+        "id of beacon_ids, from the measurements (times, beacon, range) and the stated bounds.");
+}
+
 }  // namespace
 
 void init_bathymetry(py::module_& m) {
   init_bathymetry_data(m);
   init_bathymetry_mission(m);
+  init_range_observation(m);
 }
 
 }  // namespace sillage::python

@@ -118,3 +118,36 @@ def test_figures(mission, tmp_path):
     assert (tmp_path / "dem.svg").stat().st_size > 10000
     assert "<svg" in sillage.bathymetry_map_figure(mission, p).svg()
     assert sillage.depth_colour(0, 0, 1) != sillage.depth_colour(1, 0, 1)
+
+
+def test_range_observation_tubes():
+    """Range-only temporal SLAM without beacon positions: z = the ranges, one tube each."""
+    td = sillage.TDomain(0, 10, 1)
+    z = sillage.range_observation_tubes(td, [0.0, 10.0], [3, 3], [20.0, 24.0], [3],
+                                        sillage.RangeBounds(1.0, 2.0, 0.5, 1.0))
+    assert len(z) == 1
+    assert z[0].gate(5) == Interval(16.5, 26.5)
+    with pytest.raises(sillage.Error):
+        sillage.range_observation_tubes(td, [0.0], [1], [3.0], [2])
+
+
+def test_range_observation_plaza1():
+    import csv
+    from pathlib import Path
+    d = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1"
+    if not (d / "ranges.csv").exists():
+        pytest.skip("no plaza1 data")
+
+    def cols(name):
+        with open(d / name) as f:
+            rows = list(csv.DictReader(f))
+        return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    gt, rg, bc = cols("ground_truth.csv"), cols("ranges.csv"), cols("beacons.csv")
+    ids = [int(i) for i in bc["beacon_id"]]
+    td = sillage.TDomain(gt["t_s"][0], gt["t_s"][-1], 2.0)
+    z = sillage.range_observation_tubes(td, list(rg["t_s"]), [int(i) for i in rg["beacon_id"]], list(rg["range_m"]),
+                                        ids)
+    for i in range(len(ids)):
+        truth = np.hypot(gt["x_m"] - bc["x_m"][i], gt["y_m"] - bc["y_m"][i])
+        for t, r in list(zip(gt["t_s"], truth))[::7]:
+            assert z[i](float(t)).contains(float(r))
