@@ -50,6 +50,8 @@ EXAMPLES = [
     ("loops_lissajous", "py", "loops_lissajous.py"),
     ("outliers_ranges", "cpp", "example_outliers_ranges"),
     ("outliers_ranges", "py", "outliers_ranges.py"),
+    ("bathymetry_mission", "cpp", "example_bathymetry_mission"),
+    ("bathymetry_mission", "py", "bathymetry_mission.py"),
 ]
 
 

@@ -30,6 +30,7 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
       {"loops_utias", {"--data", "--robot"}},
       {"outliers_ranges", {"--eps=X"}},
+      {"bathymetry_mission", {"--seed=X", "--dt=X"}},
   };
   return table;
 }

@@ -1,0 +1,118 @@
+#include "sillage/slam/bathymetry_plan.h"
+
+#include <cmath>
+
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// Ideal geometry of the plan (constant speed, exact arcs), to lay out the legs.
+struct Walker {
+  double x, y, h, t, u, R;
+  std::vector<double> ts, holds, rates;
+  void straight(double len) {
+    x += len * std::cos(h), y += len * std::sin(h), t += len / u;
+  }
+  // A turn of signed angle d: ramp (quasi straight for kRamp/2 on each side), arc.
+  void turn(double d, bool record = true) {
+    const double ramp = BathymetryPlan::kRamp, r = (d > 0 ? 1 : -1) * u / R, hold = std::abs(d) / std::abs(r) - ramp;
+    if (record) ts.push_back(t), holds.push_back(hold), rates.push_back(r);
+    const double s = d > 0 ? 1 : -1;
+    x += u * ramp / 2 * std::cos(h), y += u * ramp / 2 * std::sin(h);
+    x += s * R * (std::sin(h + d) - std::sin(h)), y += s * R * (-std::cos(h + d) + std::cos(h));
+    h += d;
+    x += u * ramp / 2 * std::cos(h), y += u * ramp / 2 * std::sin(h);
+    t += hold + 2 * ramp;
+  }
+  void straight_to_x(double target) { straight((target - x) / std::cos(h)); }
+  void straight_to_y(double target) { straight((target - y) / std::sin(h)); }
+};
+
+// Keyhole turn: away by beta, then back by pi + beta (sign s: +1 = ends turned
+// counter-clockwise). Lateral shift of the rail, found by bisection.
+double keyhole_beta(double u, double R, double spacing) {
+  auto shift = [&](double beta) {
+    Walker w{0, 0, kPi / 2, 0, u, R, {}, {}, {}};
+    w.turn(-beta, false), w.turn(kPi + beta, false);
+    return -w.x;  // westward
+  };
+  double lo = 0, hi = kPi / 2;
+  if (shift(lo) < spacing) throw Error("BathymetryPlan: rail spacing larger than a plain U-turn; lower it");
+  for (int k = 0; k < 60; ++k) {
+    const double mid = (lo + hi) / 2;
+    (shift(mid) > spacing ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+double smoothstep(double s) { return s * s * (3 - 2 * s); }
+double smoothstep_integral(double s) { return s * s * s - s * s * s * s / 2; }
+}  // namespace
+
+BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, double depth, double duration) {
+  if (L < 300) throw Error("BathymetryPlan: the area must be at least 300 m wide");
+  const double m = 0.08 * L;  // margin from the edges
+  x0_ = m, y0_ = m, yaw0_ = kPi / 4;
+  Walker w{x0_, y0_, yaw0_, 0, u, R, {}, {}, {}};
+  // Overall crossing.
+  w.straight_to_x(L - m - 2 * R);
+  w.turn(3 * kPi / 4);
+  w.straight_to_x(m + 1.2 * R);
+  w.turn(3 * kPi / 4);
+  w.straight_to_y(0.22 * L);
+  w.turn(3 * kPi / 4);
+  // Boustrophedon towards the west.
+  const double beta = keyhole_beta(u, R, spacing), y_lo = 0.2 * L, y_hi = 0.8 * L;
+  bool north = true;
+  while (w.t < duration + 100 && w.x > m + R) {
+    w.straight_to_y(north ? y_hi : y_lo);
+    if (north) w.turn(-beta), w.turn(kPi + beta);
+    else w.turn(beta), w.turn(-kPi - beta);
+    north = !north;
+  }
+  for (std::size_t k = 0; k < w.ts.size(); ++k) turns_.push_back({w.ts[k], w.holds[k], w.rates[k]});
+  // Small planned depth changes (+1.5 m, -2 m, +1 m), 90 s each.
+  depth_changes_ = {{0.26 * duration, 90, 1.5}, {0.55 * duration, 90, -2.0}, {0.8 * duration, 90, 1.0}};
+  (void)depth;
+}
+
+double BathymetryPlan::yaw_rate(double t) const {
+  double r = 0;
+  for (const auto& k : turns_) {
+    const double a = t - k.ts;
+    if (a <= 0) break;
+    if (a < kRamp) r += k.rate * smoothstep(a / kRamp);
+    else if (a < kRamp + k.hold) r += k.rate;
+    else if (a < 2 * kRamp + k.hold) r += k.rate * (1 - smoothstep((a - kRamp - k.hold) / kRamp));
+  }
+  return r;
+}
+
+double BathymetryPlan::yaw(double t) const {
+  double y = yaw0_;
+  for (const auto& k : turns_) {
+    const double a = t - k.ts;
+    if (a <= 0) break;
+    if (a < kRamp) y += k.rate * kRamp * smoothstep_integral(a / kRamp);
+    else if (a < kRamp + k.hold) y += k.rate * (kRamp / 2 + (a - kRamp));
+    else if (a < 2 * kRamp + k.hold) {
+      const double s = (a - kRamp - k.hold) / kRamp;
+      y += k.rate * (kRamp / 2 + k.hold + kRamp * (s - smoothstep_integral(s)));
+    } else y += k.rate * (kRamp + k.hold);
+  }
+  return y;
+}
+
+double BathymetryPlan::depth_rate(double t) const {
+  double r = 0;
+  for (const auto& c : depth_changes_) {
+    const double s = (t - c.ts) / c.dur;
+    if (s > 0 && s < 1) r += c.delta / c.dur * 30 * s * s * (1 - s) * (1 - s);  // smootherstep'
+  }
+  return r;
+}
+
+}  // namespace sillage

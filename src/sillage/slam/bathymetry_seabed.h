@@ -1,0 +1,49 @@
+#pragma once
+// A synthetic seabed like the Rade de Brest survey area (thesis Fig. 7.20),
+// deterministic from a seed: a regional slope, sandbanks, sand waves, a few
+// rocks and a smoother western part where the bathymetry carries little
+// information (the weakness of the 19 October mission, thesis 7.3.4), sampled
+// on a grid (BathymetryDem) with a small node roughness, quantized to the
+// millimetre as a surveyed DEM would be.
+//
+// Its class (SeabedClass) is stated from the generator's parameters, not
+// measured on the result: the smooth part g of the seabed (everything but the
+// node roughness) has |Hessian| <= curvature and |grad g| <= slope everywhere,
+// and every node is g + n with |n| <= roughness. Those bounds are what the
+// altitude footprint filter and the observation tube rely on.
+#include <cstdint>
+#include <string>
+
+#include "sillage/interval/interval_vector.h"
+#include "sillage/slam/bathymetry_dem.h"
+
+namespace sillage {
+
+struct SeabedOptions {
+  double size = 500;          // side of the square area (m), from (0, 0)
+  double cell = 1;            // grid step (m)
+  double base_depth = 21;     // depth at the origin (m, below chart datum)
+  double smooth_width = 170;  // width of the smooth western strip (m)
+  int nb_rocks = 7;
+  int nb_banks = 2;
+};
+
+struct SeabedClass {
+  double curvature;  // bound on the Hessian norm of the smooth seabed (1/m)
+  double slope;      // bound on its gradient norm
+  double roughness;  // bound on the node roughness (m), quantization included
+};
+
+struct Seabed {
+  BathymetryDem dem;
+  SeabedClass bounds;
+  IntervalVector smooth_region;  // the low-information strip
+};
+
+// Error if the options are not finite and positive where they must be, or the
+// grid would not be exact (see BathymetryDem).
+Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& options = {});
+
+std::string repr(const SeabedClass& c);
+
+}  // namespace sillage

@@ -1,0 +1,153 @@
+"""The synthetic bathymetric mission from Python: same names as C++, determinism
+from the seed, the DEM as an inclusion function, the truth inside the dead
+reckoning and the observation tubes, bad input refused."""
+import numpy as np
+import pytest
+
+import sillage
+from sillage import BathymetryDem, BathymetryMission, Interval, IntervalVector
+
+
+@pytest.fixture(scope="module")
+def mission():
+    return BathymetryMission(seed=7)
+
+
+def test_summary_and_determinism(mission):
+    assert mission.nb_samples == 57601
+    assert 5500 < mission.path_length() < 6300
+    again = BathymetryMission(seed=7)
+    assert np.array_equal(again.x1, mission.x1)
+    assert np.array_equal(again.measured.altitude, mission.measured.altitude)
+    other = BathymetryMission(seed=8)
+    assert not np.array_equal(other.dem.depths(), mission.dem.depths())
+    assert "BathymetryMission(seed=7" in repr(mission)
+
+
+def test_measurements_within_stated_bounds(mission):
+    b, t, m = mission.bounds, mission.truth, mission.measured
+    deg = np.pi / 180
+    assert np.all(np.abs(m.yaw - t.yaw) <= b.heading * deg)
+    assert np.all(np.abs(m.depth - t.depth) <= b.depth)
+    speed = np.sqrt(m.vx ** 2 + m.vy ** 2 + m.vz ** 2)
+    assert np.all(np.abs(m.vx - t.vx) <= b.dvl_scale * speed + b.dvl_offset)
+    assert np.all(np.abs(m.altitude - mission.filtered_altitude) <= b.altitude_scale * m.altitude + b.altitude_offset)
+
+
+def test_dem_encloses_random_points_and_boxes(mission):
+    dem = mission.dem
+    rng = np.random.default_rng(1)
+    for x, y in rng.uniform(0, 500, size=(300, 2)):
+        i, j = min(int(x), 499), min(int(y), 499)
+        u, v = x - i, y - j
+        ref = ((1 - u) * (1 - v) * dem.node(i, j) + u * (1 - v) * dem.node(i + 1, j)
+               + (1 - u) * v * dem.node(i, j + 1) + u * v * dem.node(i + 1, j + 1))
+        assert dem(x, y).inflate(1e-9).contains(ref)
+        box = IntervalVector([[max(0, x - 3), min(500, x + 3)], [max(0, y - 2), min(500, y + 2)]])
+        r = dem.eval(box)
+        assert r.contains(dem(x, y).mid())
+        assert r.is_subset(dem.eval_cells(box))
+    assert dem.eval(IntervalVector([[-5, 5], [0, 1]])).is_unbounded()  # outside the map: unknown
+
+
+def test_dem_by_hand_and_errors():
+    dem = BathymetryDem(0, 0, 2, np.array([[0.0, 1, 2], [3, 4, 5]]))
+    assert dem.eval(IntervalVector([[0, 4], [0, 2]])) == Interval(0, 5)
+    assert abs(dem.eval(IntervalVector([[1, 3], [0.5, 1.5]])).lb() - 1.25) < 1e-12
+    with pytest.raises(sillage.Error):
+        BathymetryDem(0, 0, 0.1, np.zeros((2, 4)))  # 3 * 0.1 is not exact
+    with pytest.raises(sillage.Error):
+        BathymetryDem(0, 0, 1, np.zeros(4))
+
+
+def inside(tube, times, values):
+    tp = np.asarray(tube.tdomain().times())
+    s = np.asarray(tube.slices_array())
+    g = np.asarray(tube.gates_array())
+    k = np.clip(np.searchsorted(tp, times, side="right") - 1, 0, len(s) - 1)
+    ok_s = (values >= s[k, 0]) & (values <= s[k, 1])
+    on = np.isin(times, tp)
+    kg = np.searchsorted(tp, times[on])
+    ok_g = (values[on] >= g[kg, 0]) & (values[on] <= g[kg, 1])
+    return ok_s.all() and ok_g.all()
+
+
+def test_truth_inside_the_tubes(mission):
+    td = mission.tdomain(2.0)
+    p = sillage.bathymetry_dead_reckoning(mission, td, sillage.bathymetry_initial_box(mission))
+    z = sillage.bathymetry_observation_tube(mission, td)
+    w = sillage.bathymetry_velocity_tube(mission, td)
+    assert len(p) == 3 and len(w) == 3
+    t = mission.times
+    assert inside(p[0], t, mission.x1) and inside(p[1], t, mission.x2) and inside(p[2], t, mission.truth.depth)
+    zt = sillage.bathymetry_truth_observation(mission)
+    assert inside(z, t, np.asarray(zt.sample_values()))
+    # Fig. 7.17: tens of metres of drift at the end.
+    pf = p.gate(td.nb_slices())
+    assert 20 < np.hypot(pf[0].diam(), pf[1].diam()) < 150
+
+
+def test_footprint_and_tide(mission):
+    pts = sillage.dvl_footprint(250, 250, 0.2, 10)
+    assert len(pts) == 20
+    c = mission.seabed.bounds
+    e = sillage.footprint_filter_bound(c, 1.0, 10)
+    assert abs(sillage.footprint_depth(mission.dem, 250, 250, 0.2, 10) - mission.dem(250, 250).mid()) <= e
+    assert sillage.footprint_filter_bound(c, 1.0, 20) > e  # wider when higher
+    tide = sillage.TideModel()
+    assert tide.height(Interval(tide.t_low)).contains(0)
+    assert tide.height(Interval(0)).contains(tide.height_value(0))
+
+
+def test_bad_input(mission):
+    with pytest.raises(sillage.Error):
+        mission.tdomain(0.25)
+    with pytest.raises(sillage.Error):
+        sillage.bathymetry_observation_tube(mission, sillage.TDomain(0, 5760, 0.7))
+    o = sillage.BathymetryMissionOptions()
+    o.rail_spacing = 60
+    with pytest.raises(sillage.Error):
+        BathymetryMission(seed=1, options=o)
+
+
+def test_figures(mission, tmp_path):
+    td = mission.tdomain(4.0)
+    p = sillage.bathymetry_dead_reckoning(mission, td, sillage.bathymetry_initial_box(mission))
+    f = sillage.bathymetry_dem_figure(mission.dem, list(mission.x1), list(mission.x2))
+    f.save(str(tmp_path / "dem.svg"))
+    assert (tmp_path / "dem.svg").stat().st_size > 10000
+    assert "<svg" in sillage.bathymetry_map_figure(mission, p).svg()
+    assert sillage.depth_colour(0, 0, 1) != sillage.depth_colour(1, 0, 1)
+
+
+def test_range_observation_tubes():
+    """Range-only temporal SLAM without beacon positions: z = the ranges, one tube each."""
+    td = sillage.TDomain(0, 10, 1)
+    z = sillage.range_observation_tubes(td, [0.0, 10.0], [3, 3], [20.0, 24.0], [3],
+                                        sillage.RangeBounds(1.0, 2.0, 0.5, 1.0))
+    assert len(z) == 1
+    assert z[0].gate(5) == Interval(16.5, 26.5)
+    with pytest.raises(sillage.Error):
+        sillage.range_observation_tubes(td, [0.0], [1], [3.0], [2])
+
+
+def test_range_observation_plaza1():
+    import csv
+    from pathlib import Path
+    d = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1"
+    if not (d / "ranges.csv").exists():
+        pytest.skip("no plaza1 data")
+
+    def cols(name):
+        with open(d / name) as f:
+            rows = list(csv.DictReader(f))
+        return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    gt, rg, bc = cols("ground_truth.csv"), cols("ranges.csv"), cols("beacons.csv")
+    ids = [int(i) for i in bc["beacon_id"]]
+    td = sillage.TDomain(gt["t_s"][0], gt["t_s"][-1], 2.0)
+    z = sillage.range_observation_tubes(td, list(rg["t_s"]), [int(i) for i in rg["beacon_id"]], list(rg["range_m"]),
+                                        ids)
+    for i in range(len(ids)):
+        truth = np.hypot(gt["x_m"] - bc["x_m"][i], gt["y_m"] - bc["y_m"][i])
+        for t, r in list(zip(gt["t_s"], truth))[::7]:
+            assert z[i](float(t)).contains(float(r))
