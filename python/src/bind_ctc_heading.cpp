@@ -6,7 +6,6 @@
 
 #include "bindings.h"
 #include "sillage/dynamics/ctc_heading.h"
-#include "sillage/error.h"
 
 namespace sillage::python {
 
@@ -22,7 +21,7 @@ the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d,
            "The contractor with the bound track >= 0 (rad) on the angle between the direction of travel and the "
            "heading (else Error).")
       .def("track", &CtcHeading::track, "The bound on the angle between the direction of travel and the heading.")
-      .def("__repr__", [](const CtcHeading& c) { return "CtcHeading(track=" + number_text(c.track()) + ")"; })
+      .def("__repr__", [](const CtcHeading& c) { return "CtcHeading(track=" + std::string(py::repr(py::float_(c.track()))) + ")"; })
       .def(
           "contract",
           [](const CtcHeading& c, TubeVector& p, Tube& psi, const Tube& d, const Tube& w) {
