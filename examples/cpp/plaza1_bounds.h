@@ -33,13 +33,6 @@ struct Bounds {
   double range_long = 10.0; // m: measured - true <= range_long
   double time_err = 0.2;    // s: time stamps of the ranges
   double track = 0.05;      // rad: direction of travel vs heading
-  double turn_accel = 10.0; // rad/s^2
-  // Heading from positions (plaza1_network.h): windows of feedback_window
-  // seconds (0: off), every feedback_stride slices, cells of feedback_cell.
-  double feedback_window = 0;  // s
-  std::size_t feedback_stride = 5;
-  double feedback_cell = 0.01;  // rad
-  int feedback_rounds = 10;
 };
 
 struct BoundSpec {
@@ -80,11 +73,6 @@ inline const std::vector<BoundSpec>& bound_table() {
        "logging PC (not real-time): reports of a serial radio reach it up to 0.2 s late or early"},
       {"--track-err", "track error", "rad", &Bounds::track,
        "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"},
-      // Used by the heading from positions only (C++, --heading-window).
-      {"--turn-accel", "turn acceleration", "rad/s^2", &Bounds::turn_accel,
-       "traction-limited wheels (<= 5 m/s^2) on a 1 m track: at most 2 * 5 / 1 rad/s^2"},
-      {"--heading-window", "heading-from-positions window", "s", &Bounds::feedback_window,
-       "not a bound: 0 = off; windows of this length give the heading from the positions (C++ only)"},
   };
   return t;
 }

@@ -43,7 +43,7 @@ TABLE = [
     ("--track-err", "track", "track error", "rad", 0.05,
      "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"),
 ]
-# The C++ table has two more, used by its heading from positions only: --turn-accel, --heading-window.
+# The same table as the C++ one (plaza1_bounds.h), option for option.
 
 
 def add_options(ap):

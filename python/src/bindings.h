@@ -50,4 +50,5 @@ void init_figures(py::module_& m);
 void init_loop_figures(py::module_& m);
 void init_qinter(py::module_& m);
 void init_bathymetry(py::module_& m);
+void init_ctc_heading(py::module_& m);
 }  // namespace sillage::python

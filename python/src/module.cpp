@@ -27,4 +27,5 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_loop_figures(m);
   sillage::python::init_qinter(m);
   sillage::python::init_bathymetry(m);
+  sillage::python::init_ctc_heading(m);
 }

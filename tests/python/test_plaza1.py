@@ -49,7 +49,7 @@ def test_ten_times_the_drift_stays_inside():
 @pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
 def test_unknown_start_keeps_the_truth(tmp_path):
     """--unknown-start 1: anywhere within 10 m of the beacons' bounding box, any heading. The truth
-    stays inside (Python); in C++ also with the heading from positions (--heading-window 20)."""
+    stays inside, in Python and in C++ (where CtcHeading gives the heading from the positions)."""
     import argparse
     import subprocess
     import plaza1_bounds
@@ -64,8 +64,36 @@ def test_unknown_start_keeps_the_truth(tmp_path):
     exe = Path(sillage.__file__).resolve().parents[2] / "examples" / "example_plaza1"
     if not exe.exists():
         pytest.skip(f"{exe} is not built")
-    r = subprocess.run([str(exe), "--out", str(tmp_path), "--unknown-start", "1", "--heading-window", "20"],
+    r = subprocess.run([str(exe), "--out", str(tmp_path), "--unknown-start", "1"],
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stdout[-2000:]
-    assert "heading from positions:" in r.stdout
     assert r.stdout.count("ground truth inside at 9658 / 9658") == 2
+
+
+@pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
+def test_q_relaxed_ranges(tmp_path):
+    """--q-ranges Q: the ranges q-relaxed in the network (one CtcQEval). q = 0 is the strict
+    intersection (up to the order of the contractions); q = 3 keeps the truth with a wider tube;
+    a wrong range (50 m too long) empties the strict network and not the one with q = 1."""
+    import subprocess
+    import sillage
+    d = plaza1.load(DATA)
+    n = len(d["t"])
+    _, s_strict, _, in_strict, mean_strict, _, _ = plaza1.solve(d, True)
+    _, s0, _, in0, mean0, _, nr = plaza1.solve(d, True, q=0)
+    _, s3, _, in3, mean3, _, _ = plaza1.solve(d, True, q=3)
+    assert nr == 3529 and not s0.empty and not s3.empty and in0 == n and in3 == n
+    assert mean0 == pytest.approx(mean_strict, rel=0.01) and mean3 >= mean0
+    wrong = dict(d, r=list(d["r"]))
+    wrong["r"][1000] += 50.0
+    assert plaza1.solve(wrong, True)[1].empty
+    _, s1, _, in1, _, _, _ = plaza1.solve(wrong, True, q=1)
+    assert not s1.empty and in1 == n
+    exe = Path(sillage.__file__).resolve().parents[2] / "examples" / "example_plaza1"
+    if not exe.exists():
+        pytest.skip(f"{exe} is not built")
+    r = subprocess.run([str(exe), "--out", str(tmp_path), "--q-ranges", "2"], capture_output=True, text=True,
+                       timeout=600)
+    assert r.returncode == 0, r.stdout[-2000:]
+    assert "q-relaxed (q = 2) against the strict intersection" in r.stdout
+    assert r.stdout.count("ground truth inside at 9658 / 9658") == 3

@@ -13,9 +13,20 @@
 // q = 0 is the intersection of the m CtcEval contractions; q >= m leaves [x]
 // unchanged. The TDomain is never sampled (copies share it): sample it at a
 // degenerate t_i beforehand for the tightest result.
+//
+// In a ContractorNetwork: CtcQEval(q, obs) holds its observations, and
+// cn.add(ctc, {x, v}) (tube vectors, or tubes, of one size) contracts x at
+// every run. The node keeps one working copy of x and records, for each
+// observation, only the slices and gates its CtcEval contraction changed
+// (restored before the next observation): the q-relaxed intersection of an
+// atom involves only the observations that changed it, the others leaving
+// it whole.
 #include <cstddef>
+#include <memory>
+#include <string>
 #include <vector>
 
+#include "sillage/cn/network_ctc.h"
 #include "sillage/ctc/ctc_algebra.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube_vector.h"
@@ -31,11 +42,18 @@ struct TubeObservation {
   CtcPtr ctc = nullptr;  // on z.size() variables
 };
 
-class CtcQEval {
+class CtcQEval : public NetworkCtc {
  public:
   // q >= 0 (else Error).
   explicit CtcQEval(int q);
+  // The network form: the observations are held (a non-empty list, else Error).
+  CtcQEval(int q, std::vector<TubeObservation> obs);
   int q() const { return q_; }
+  const std::vector<TubeObservation>& observations() const { return obs_; }
+  std::string name() const override { return "CtcQEval"; }
+  // cn.add(ctc, {x, v}): needs the observations of the constructor; each z
+  // and ctc of the size of x (else DimensionError naming CtcQEval).
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // Contracts x; v is its derivative (same TDomain and size, else
   // DimensionError); each z of the non-empty list obs has x.size()
@@ -47,6 +65,7 @@ class CtcQEval {
 
  private:
   int q_;
+  std::vector<TubeObservation> obs_;
 };
 
 }  // namespace sillage

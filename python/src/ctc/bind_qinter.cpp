@@ -101,18 +101,28 @@ ctc = CtcFunction(|z - b|, r).)doc")
         return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + ">";
       });
 
-  py::class_<CtcQEval>(m, "CtcQEval", R"doc(
+  py::class_<CtcQEval, NetworkCtc, std::shared_ptr<CtcQEval>>(m, "CtcQEval", R"doc(
 Position fixes on a tube, at most q of them wrong. contract(x, v, obs) contracts
 a copy of the TubeVector x by each fix alone (CtcEval with the derivative v),
 then intersects x, gate by gate and slice by slice, with the q-relaxed
 intersection of the copies: a trajectory satisfying m - q fixes is kept. Returns
 the indices of the fixes no trajectory of the input x satisfies (wrong, if at
-most q are). The TDomain is never sampled.)doc")
+most q are). The TDomain is never sampled. In a ContractorNetwork:
+CtcQEval(q, obs) holds the fixes and cn.add(ctc, [x, v]) contracts x.)doc")
       .def(py::init<int>(), py::arg("q"), "At most q fixes are wrong; q >= 0 (else Error).")
+      .def(py::init<int, std::vector<TubeObservation>>(), py::arg("q"), py::arg("obs"),
+           "The network form: at most q of the fixes obs (a non-empty list of TubeObservation) are wrong; "
+           "ContractorNetwork.add(ctc, [x, v]) then contracts x.")
       .def("q", &CtcQEval::q, "The number of fixes allowed to be wrong.")
-      .def("__repr__", [](const CtcQEval& c) { return "CtcQEval(q=" + std::to_string(c.q()) + ")"; })
+      .def("observations", &CtcQEval::observations, "The fixes held for the network form (empty if none).")
+      .def("__repr__",
+           [](const CtcQEval& c) {
+             return "CtcQEval(q=" + std::to_string(c.q()) +
+                    (c.observations().empty() ? "" : ", " + std::to_string(c.observations().size()) + " observations") +
+                    ")";
+           })
       .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
-           "Contracts x in place; obs is a list of TubeObservation.");
+           py::call_guard<py::gil_scoped_release>(), "Contracts x in place; obs is a list of TubeObservation.");
 
   py::class_<TubeGomneResult>(m, "TubeGomneResult", "What gomne_tube proved; see gomne_tube.")
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")

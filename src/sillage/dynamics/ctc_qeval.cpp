@@ -1,7 +1,9 @@
 #include "sillage/dynamics/ctc_qeval.h"
 
+#include <algorithm>
 #include <string>
 
+#include "sillage/cn/tube_node.h"
 #include "sillage/ctc/q_inter.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/dynamics/ctc_eval.h"
@@ -10,33 +12,41 @@ namespace sillage {
 
 namespace {
 
-void check_observations(const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs) {
-  if (obs.empty()) throw Error("CtcQEval::contract: needs at least one observation");
-  if (v.size() != x.size() || v.tdomain() != x.tdomain()) {
-    throw DimensionError("CtcQEval::contract: the derivative tube must have the size (" + std::to_string(x.size()) +
-                         ") and the TDomain of the tube");
-  }
+// Each observation of the size n of the tube, at a time meeting `domain`.
+void check_observation_list(std::size_t n, const Interval& domain, const std::vector<TubeObservation>& obs,
+                            const std::string& where) {
+  if (obs.empty()) throw Error(where + ": needs at least one observation");
   for (std::size_t i = 0; i < obs.size(); ++i) {
-    if (obs[i].z.size() != x.size()) {
-      throw DimensionError("CtcQEval::contract: observation " + std::to_string(i) + " has " +
-                           std::to_string(obs[i].z.size()) + " components, the tube " + std::to_string(x.size()));
+    if (obs[i].z.size() != n) {
+      throw DimensionError(where + ": observation " + std::to_string(i) + " has " + std::to_string(obs[i].z.size()) +
+                           " components, the tube " + std::to_string(n));
     }
-    if (!obs[i].t.intersects(x.tdomain()->t0_tf())) {
-      throw Error("CtcQEval::contract: the time " + obs[i].t.str() + " of observation " + std::to_string(i) +
-                  " does not meet the time domain " + x.tdomain()->t0_tf().str());
+    if (!obs[i].t.intersects(domain)) {
+      throw Error(where + ": the time " + obs[i].t.str() + " of observation " + std::to_string(i) +
+                  " does not meet the time domain " + domain.str());
     }
-    if (obs[i].ctc && obs[i].ctc->nb_vars() != x.size()) {
-      throw DimensionError("CtcQEval::contract: the contractor of observation " + std::to_string(i) + " (" +
+    if (obs[i].ctc && obs[i].ctc->nb_vars() != n) {
+      throw DimensionError(where + ": the contractor of observation " + std::to_string(i) + " (" +
                            obs[i].ctc->name() + ") acts on " + std::to_string(obs[i].ctc->nb_vars()) +
-                           " variables, the tube has " + std::to_string(x.size()));
+                           " variables, the tube has " + std::to_string(n));
     }
   }
 }
 
-// Contracts y by one observation alone: CtcEval alternated with the
-// constraint on z until z stops shrinking (shrink.h); false if inconsistent.
-bool contract_alone(const CtcEval& eval, const TubeObservation& o, TubeVector& y, const TubeVector& v) {
-  Interval t = o.t & y.tdomain()->t0_tf();  // not empty (checked)
+void check_observations(const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs) {
+  if (v.size() != x.size() || v.tdomain() != x.tdomain()) {
+    throw DimensionError("CtcQEval::contract: the derivative tube must have the size (" + std::to_string(x.size()) +
+                         ") and the TDomain of the tube");
+  }
+  check_observation_list(x.size(), x.tdomain()->t0_tf(), obs, "CtcQEval::contract");
+}
+
+// Contracts by one observation alone: `eval(t, z)` (CtcEval on the tube)
+// alternated with the constraint on z until z stops shrinking (shrink.h);
+// false if inconsistent.
+template <class Eval>
+bool contract_alone(const TubeObservation& o, const Interval& domain, Eval eval) {
+  Interval t = o.t & domain;  // not empty (checked)
   IntervalVector z = o.z;
   while (true) {
     const IntervalVector before = z;
@@ -44,8 +54,8 @@ bool contract_alone(const CtcEval& eval, const TubeObservation& o, TubeVector& y
       o.ctc->contract(z);
       z &= before;  // a contractor never enlarges; guard against one that would
     }
-    if (z.is_empty() || !eval.contract(t, z, y, v)) return false;
-    if (!o.ctc || !shrank(before, z, 0.01)) return !y.is_empty();
+    if (z.is_empty() || !eval(t, z)) return false;
+    if (!o.ctc || !shrank(before, z, 0.01)) return true;
   }
 }
 
@@ -64,6 +74,11 @@ Interval relaxed_atom(const std::vector<TubeVector>& copies, const std::vector<b
 
 CtcQEval::CtcQEval(int q) : q_(q) { check_q(q, "CtcQEval"); }
 
+CtcQEval::CtcQEval(int q, std::vector<TubeObservation> obs) : q_(q), obs_(std::move(obs)) {
+  check_q(q, "CtcQEval");
+  if (obs_.empty()) throw Error("CtcQEval(q, obs): needs at least one observation");
+}
+
 std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
                                             const std::vector<TubeObservation>& obs) const {
   check_observations(x, v, obs);
@@ -74,7 +89,10 @@ std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
   std::vector<TubeVector> copies(obs.size(), x);
   std::vector<bool> live(obs.size());
   for (std::size_t i = 0; i < obs.size(); ++i) {
-    live[i] = contract_alone(eval, obs[i], copies[i], v);
+    TubeVector& y = copies[i];
+    live[i] = contract_alone(obs[i], x.tdomain()->t0_tf(), [&](Interval& t, IntervalVector& z) {
+      return eval.contract(t, z, y, v) && !y.is_empty();
+    });
     if (!live[i]) violated.push_back(i);
   }
   if (static_cast<std::size_t>(q_) >= obs.size()) return violated;
@@ -90,6 +108,131 @@ std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
   }
   if (x.is_empty()) x.set(IntervalVector::empty(x.size()));  // no trajectory left anywhere
   return violated;
+}
+
+// The network form.
+namespace {
+
+// One atom of one observation's contraction: component, atom (2k gate k,
+// 2k+1 slice k) and its value after the contraction.
+struct AtomValue {
+  std::size_t comp, atom;
+  Interval value;
+};
+
+Interval& atom_of(TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
+const Interval& atom_of(const TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
+
+// cn.add(CtcQEval(q, obs), {x, v}): x and v tubes of one size n.
+class QEvalNode : public TubeNode {
+ public:
+  QEvalNode(const CtcQEval& ctc, const std::vector<BoundDomain>& args) : TubeNode("CtcQEval", args), ctc_(ctc) {
+    if (args.empty() || args.size() % 2 != 0) {
+      throw DimensionError(where() + ": expects x and v with as many components, got " + std::to_string(args.size()) +
+                           " tubes");
+    }
+    x_ = whole_tubes(0, args.size() / 2, "x");
+    v_ = whole_tubes(args.size() / 2, args.size() / 2, "v");
+    check_observation_list(x_.size(), x_[0]->tube().tdomain()->t0_tf(), ctc_.observations(), where());
+  }
+
+  bool run(NodeRun& r) const override {
+    const auto& obs = ctc_.observations();
+    const std::size_t m = obs.size(), n = x_.size();
+    if (static_cast<std::size_t>(ctc_.q()) >= m) return true;
+    std::vector<Tube> work;  // x, contracted by one observation at a time and restored
+    std::vector<Tube*> y;
+    std::vector<const Tube*> w;
+    for (std::size_t j = 0; j < n; ++j) work.push_back(x_[j]->tube()), w.push_back(&v_[j]->tube());
+    for (auto& t : work) y.push_back(&t);
+    CtcEval eval;
+    eval.enable_time_sampling(false);  // the network's layout is fixed
+    std::vector<std::vector<std::size_t>> changed(n);
+    std::vector<TubeChanges> logs;
+    for (auto& c : changed) logs.emplace_back(c, 0, 0.0);  // ratio 0: every change
+    std::vector<AtomValue> values;
+    std::size_t violated = 0;
+    const Interval domain = work[0].tdomain()->t0_tf();
+    for (std::size_t i = 0; i < m; ++i) {
+      for (auto& c : changed) c.clear();
+      const bool live = contract_alone(obs[i], domain, [&](Interval& t, IntervalVector& z) {
+        return eval.contract(t, z, y, w, logs);
+      });
+      for (std::size_t j = 0; j < n; ++j) {
+        TubeData& d = work[j].data();
+        const TubeData& x = x_[j]->tube().data();
+        if (!live) {  // CtcEval emptied the copy: start again from x
+          work[j] = x_[j]->tube();
+          continue;
+        }
+        std::sort(changed[j].begin(), changed[j].end());
+        changed[j].erase(std::unique(changed[j].begin(), changed[j].end()), changed[j].end());
+        for (const std::size_t a : changed[j]) {
+          values.push_back({j, a, atom_of(d, a)});
+          atom_of(d, a) = atom_of(x, a);
+        }
+        work[j].touch();
+      }
+      violated += !live;
+    }
+    // More than q observations violated by every trajectory of x: none is left.
+    if (violated > static_cast<std::size_t>(ctc_.q())) return empty_all(r);
+    // Atom by atom: the L - c live observations that left it whole hold all of it; a value
+    // must lie in m - q observations, so in need = (m - q) - (L - c) of the c that changed it.
+    std::sort(values.begin(), values.end(),
+              [](const AtomValue& a, const AtomValue& b) { return a.comp != b.comp ? a.comp < b.comp : a.atom < b.atom; });
+    const std::size_t keep = m - static_cast<std::size_t>(ctc_.q()), live = m - violated;
+    std::vector<Interval> column;
+    bool ok = true;
+    for (std::size_t g = 0; g < values.size() && ok;) {
+      std::size_t e = g;
+      column.clear();
+      while (e < values.size() && values[e].comp == values[g].comp && values[e].atom == values[g].atom) {
+        column.push_back(values[e++].value);
+      }
+      const std::size_t c = column.size();
+      if (live - c < keep) {
+        const std::size_t need = keep - (live - c);
+        Tube& xt = x_[values[g].comp]->tube();
+        Interval& atom = atom_of(xt.data(), values[g].atom);
+        const Interval before = atom;
+        atom &= q_inter(column, static_cast<int>(c - need));
+        changes(r, values[g].comp).atom(values[g].atom, before, atom);
+        if (atom.is_empty()) {
+          r.empty_at = offset(values[g].comp) + values[g].atom;
+          ok = false;
+        }
+      }
+      g = e;
+    }
+    for (auto& x : x_) x->tube().touch();
+    if (!ok) return empty_all(r);
+    return true;
+  }
+
+ private:
+  bool empty_all(NodeRun& r) const {
+    for (std::size_t j = 0; j < x_.size(); ++j) {
+      Tube& x = x_[j]->tube();
+      const TubeChanges out = changes(r, j);
+      for (std::size_t k = 0; k <= x.nb_slices(); ++k) out.gate(k, x.gate(k), Interval::empty());
+      for (std::size_t k = 0; k < x.nb_slices(); ++k) out.slice(k, x.slice(k), Interval::empty());
+      x.set(Interval::empty());
+    }
+    return false;
+  }
+
+  CtcQEval ctc_;
+  std::vector<std::shared_ptr<TubeDomain>> x_, v_;
+};
+
+}  // namespace
+
+std::shared_ptr<const CnNode> CtcQEval::make_node(const std::vector<BoundDomain>& args) const {
+  if (obs_.empty()) {
+    throw Error("ContractorNetwork::add(CtcQEval): the network form needs the observations: CtcQEval(q, obs)");
+  }
+  return std::make_shared<QEvalNode>(*this, args);
 }
 
 }  // namespace sillage

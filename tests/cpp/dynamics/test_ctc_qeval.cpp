@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "dynamics/circle_mission.h"
+#include "sillage/cn/contractor_network.h"
+#include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_qeval.h"
 
 using namespace sillage;
@@ -67,4 +69,71 @@ TEST(CtcQEval, Errors) {
   EXPECT_THROW(CtcQEval(0).contract(f.x, f.v, bad), DimensionError);
   const TubeVector v3(f.td, 3);
   EXPECT_THROW(CtcQEval(0).contract(f.x, v3, f.obs), DimensionError);
+}
+
+// The network form: CtcQEval(q, obs) and cn.add(ctc, {x, v}). Alone in a
+// network its first run is the direct call (the node keeps one working copy
+// and the atoms each fix changed, the direct call a copy per fix).
+TEST(CtcQEval, NetworkFormIsTheDirectCall) {
+  for (int q = 0; q <= 3; ++q) {
+    Fixes f({3, 7});
+    TubeVector direct = f.x;
+    CtcQEval(q).contract(direct, f.v, f.obs);
+    auto x = std::make_shared<TubeVector>(f.x);
+    auto v = std::make_shared<TubeVector>(f.v);
+    ContractorNetwork cn;
+    cn.add(std::make_shared<CtcQEval>(q, f.obs), {x, v});
+    const ContractStats s = cn.contract();
+    EXPECT_EQ(s.empty, q < 2) << "q " << q;
+    if (q < 2) {
+      EXPECT_NE(s.emptiness.find("CtcQEval"), std::string::npos) << s.emptiness;
+      continue;
+    }
+    EXPECT_TRUE(x->is_subset(direct)) << "q " << q;
+    if (s.contractor_calls == 1) EXPECT_EQ(*x, direct) << "q " << q;
+    EXPECT_TRUE(test::holds_circle(*x)) << "q " << q;
+  }
+}
+
+TEST(CtcQEval, RangesWithOutliersInANetwork) {
+  // Ranges to two beacons (fixes with a constraint on z), two of them 3 m too long: with q = 2 the truth is kept
+  // and the tube is thin; with q = 1 the network is empty.
+  for (int q = 1; q <= 2; ++q) {
+    test::CircleMission mission;
+    std::vector<TubeObservation> obs;
+    for (std::size_t i = 0; i < 20; ++i) {
+      const double t = 0.25 + 0.5 * static_cast<double>(i);
+      const double bx = i % 2 ? 3.0 : -3.0, by = 1.0;
+      double r = std::hypot(std::cos(t) - bx, std::sin(t) - by);
+      if (i == 4 || i == 13) r += 3.0;
+      const Function dist({"a", "b"}, "sqrt((a - " + number_text(bx) + ")^2 + (b - " + number_text(by) + ")^2)");
+      obs.push_back({Interval(t).inflate(0.01), IntervalVector(2),
+                     std::make_shared<CtcFunction>(dist, Interval(r).inflate(0.05))});
+    }
+    auto x = std::make_shared<TubeVector>(mission.x);
+    auto v = std::make_shared<TubeVector>(mission.v);
+    x->set_gate(0, IntervalVector{Interval(0.9, 1.1), Interval(-0.1, 0.1)});
+    ContractorNetwork cn;
+    cn.add(std::make_shared<CtcQEval>(q, obs), {x, v});
+    const ContractStats s = cn.contract();
+    if (q == 1) {
+      EXPECT_TRUE(s.empty);
+      continue;
+    }
+    ASSERT_FALSE(s.empty) << s.emptiness;
+    EXPECT_TRUE(test::holds_circle(*x));
+    EXPECT_LT(x->max_thickness(), 1.0);
+  }
+}
+
+TEST(CtcQEval, NetworkFormErrors) {
+  Fixes f({});
+  EXPECT_THROW(CtcQEval(0, {}), Error);
+  ContractorNetwork cn;
+  auto x = std::make_shared<TubeVector>(f.x);
+  auto v = std::make_shared<TubeVector>(f.v);
+  EXPECT_THROW(cn.add(std::make_shared<CtcQEval>(0), {x, v}), Error);  // no observations held
+  std::vector<TubeObservation> bad{{Interval(1.0), IntervalVector(3)}};
+  EXPECT_THROW(cn.add(std::make_shared<CtcQEval>(0, bad), {x, v}), DimensionError);
+  EXPECT_THROW(cn.add(std::make_shared<CtcQEval>(0, f.obs), {x}), DimensionError);
 }

@@ -11,6 +11,7 @@
 
 #include "deriv_test_util.h"
 #include "kit/contractor_kit.h"
+#include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_increment.h"
@@ -261,6 +262,31 @@ TEST(DynamicsLaws, CtcQEvalWithOneWrongFix) {
   // result; an unknown fix time or value is tried.
   o.skip_empty = {2, 3, 4, 5, 6, 7, 8, 9};
   EXPECT_TRUE(kit::check_laws(qeval_contract, qeval_case, o));
+}
+
+// The network form of CtcQEval on the same cases: the fixes held by the
+// contractor (the domains t_i, z_i are read, not contracted).
+TEST(DynamicsLaws, CtcQEvalInANetwork) {
+  const auto contract = [](kit::Domains& d) {
+    std::vector<TubeObservation> obs;
+    for (std::size_t i = 2; i + 1 < d.size(); i += 2) {
+      obs.push_back({std::get<Interval>(d[i]), std::get<IntervalVector>(d[i + 1]), nullptr});
+    }
+    auto x = std::make_shared<TubeVector>(std::get<TubeVector>(d[0]));
+    auto v = std::make_shared<TubeVector>(std::get<TubeVector>(d[1]));
+    ContractorNetwork cn;
+    cn.add(std::make_shared<CtcQEval>(1, obs), {x, v});
+    cn.contract();
+    d[0] = *x;
+  };
+  kit::Options o;
+  o.cases = 20;
+  o.idempotence = kit::Idempotence::ContractionOnly;
+  o.outputs = {0};
+  o.empty_any = true;
+  o.threads = false;  // a network per call
+  o.skip_empty = {2, 3, 4, 5, 6, 7, 8, 9};
+  EXPECT_TRUE(kit::check_laws(contract, qeval_case, o));
 }
 
 // (g) Monotone: X ⊆ Y ⇒ C(X) ⊆ C(Y).
