@@ -78,7 +78,7 @@ BuiltProblem build_network(const Problem& p, double delta) {
   ContractorNetwork& cn = *b.cn;
   for (const VarSpec& v : p.vars) {
     VarDomain d;
-    d.spec = &v;
+    d.spec = std::make_shared<const VarSpec>(v);
     if (v.is_tube()) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));

@@ -21,7 +21,7 @@ namespace sillage {
 
 // The domain of one variable: exactly one pointer is set, by kind.
 struct VarDomain {
-  const VarSpec* spec = nullptr;
+  std::shared_ptr<const VarSpec> spec;  // a copy: the domains outlive the Problem
   std::shared_ptr<TubeVector> tubes;       // tube (size 1) and tube_vector
   std::shared_ptr<Interval> interval;      // interval
   std::shared_ptr<IntervalVector> box;     // box
