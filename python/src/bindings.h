@@ -48,5 +48,6 @@ void init_loops(py::module_& m);
 void init_tube_figures(py::module_& m);
 void init_figures(py::module_& m);
 void init_loop_figures(py::module_& m);
+void init_problem(py::module_& m);
 void init_qinter(py::module_& m);
 }  // namespace sillage::python

@@ -43,6 +43,8 @@ std::string figure_block(const std::function<Figure()>& make, const std::string&
   std::string svg;
   try {
     svg = make().svg();
+    // Inline in HTML: the XML declaration of the file form is not wanted.
+    if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
   } catch (const Error& e) {
     return "<figure><p class=\"note\">" + xml_escape(caption) + ": not drawn (" + xml_escape(e.what()) + ")</p></figure>\n";
   }

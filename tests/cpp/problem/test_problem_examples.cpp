@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../../../examples/cpp/causal_chain_network.h"
+#include "../../../examples/cpp/dead_reckoning_network.h"
 #include "problem_text.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -65,11 +66,7 @@ TEST(ProblemExamples, DeadReckoningIsTheCppNetwork) {
   (*v)[2] = Tube(td, "-9/20*cos(t/5) + [-0.001,0.001]");
   (*v)[3] = Tube(td, "1/10 + sin(t/4) + [-0.001,0.001]");
   ContractorNetwork cn;
-  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*cos(x3) - v")),
-         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 0)});
-  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*sin(x3) - v")),
-         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 1)});
-  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  dead_reckoning::add_constraints(cn, x, v);
   ASSERT_FALSE(cn.contract().empty);
   expect_identical(*r.built.var("x").tubes, *x);
   expect_identical(*r.built.var("v").tubes, *v);
