@@ -50,6 +50,7 @@ EXAMPLES = [
     ("loops_lissajous", "py", "loops_lissajous.py"),
     ("outliers_ranges", "cpp", "example_outliers_ranges"),
     ("outliers_ranges", "py", "outliers_ranges.py"),
+    ("problem_file", "py", "problem_file.py"),
 ]
 
 

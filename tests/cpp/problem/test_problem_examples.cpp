@@ -108,3 +108,56 @@ TEST(ProblemExamples, AutoDeltaRefinesUntilStable) {
   EXPECT_TRUE(std::abs(prev.mean_thickness - last.mean_thickness) <= 0.05 * prev.mean_thickness ||
               r.schedule.size() >= 10);
 }
+
+// Constants (interval, box) and increments: the static beacons of thesis
+// Table 2.1 as a file (one expr per range, solved once, no tube), and a
+// tube from its increments.
+TEST(ProblemExamples, StaticBeaconsWithConstantsOnly) {
+  const std::string text = R"([time]
+domain = [0, 1]
+delta = 1
+[var.x]
+kind = "box"
+dim = 2
+[var.rho]
+kind = "box"
+dim = 3
+value = ["[3.63, 4.43]", "[3.13, 3.93]", "[2.15, 2.95]"]
+[[constraint]]
+kind = "expr"
+expr = "sqrt((x[0] + 0.5)^2 + (x[1] - 4)^2) - rho[0]"
+[[constraint]]
+kind = "expr"
+expr = "sqrt((x[0] + 2.5)^2 + (x[1] + 2.5)^2) - rho[1]"
+[[constraint]]
+kind = "expr"
+expr = "sqrt((x[0] - 2.5)^2 + (x[1] + 0.5)^2) - rho[2]"
+)";
+  const SolveResult r = solve_problem(problem_test::parse(text));
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  const IntervalVector& x = *r.built.var("x").box;
+  EXPECT_TRUE(x.contains(Vector{0.0, 0.0}));
+  EXPECT_LT(x[0].diam(), 2.0);
+  EXPECT_LT(x[1].diam(), 2.0);
+}
+
+TEST(ProblemExamples, IncrementsGiveTheGatesExactly) {
+  const std::string text = R"([time]
+domain = [0, 4]
+delta = 1
+[var.x]
+kind = "tube"
+at = [{ t = 0, value = 0 }]
+[var.i]
+kind = "tube"
+value = "[1, 2]"
+[[constraint]]
+kind = "increment"
+x = "x"
+v = "i"
+)";
+  const SolveResult r = solve_problem(problem_test::parse(text));
+  ASSERT_FALSE(r.empty);
+  const Tube& x = (*r.built.var("x").tubes)[0];
+  for (std::size_t k = 0; k <= 4; ++k) EXPECT_EQ(x.gate(k), Interval(double(k), 2.0 * k)) << k;
+}
