@@ -52,6 +52,7 @@ EXAMPLES = [
     ("outliers_ranges", "py", "outliers_ranges.py"),
     ("bathymetry_mission", "cpp", "example_bathymetry_mission"),
     ("bathymetry_mission", "py", "bathymetry_mission.py"),
+    ("problem_file", "py", "problem_file.py"),
 ]
 
 

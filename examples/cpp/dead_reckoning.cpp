@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "dead_reckoning_network.h"
 #include "example_args.h"
 #include "example_check.h"
 #include "sillage/cn/contractor_network.h"
@@ -90,11 +91,7 @@ TubeVector solve_cn(const Problem& p) {
   (*v)[2] = p.u1;
   (*v)[3] = p.u2;
   ContractorNetwork cn;
-  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*cos(x3) - v")),
-         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 0)});
-  cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*sin(x3) - v")),
-         {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 1)});
-  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  dead_reckoning::add_constraints(cn, x, v);
   example::check_stats(cn.contract(), "cn");  // empty: x is empty and fails enclosure_ok
   return *x;
 }

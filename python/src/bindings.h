@@ -48,6 +48,7 @@ void init_loops(py::module_& m);
 void init_tube_figures(py::module_& m);
 void init_figures(py::module_& m);
 void init_loop_figures(py::module_& m);
+void init_problem(py::module_& m);
 void init_qinter(py::module_& m);
 void init_bathymetry(py::module_& m);
 void init_ctc_heading(py::module_& m);

@@ -67,6 +67,7 @@ struct ContractStats {
   // empty on input at component 1"; "" when not empty.
   std::string emptiness;
   std::string empty_contractor;          // describe() of the contractor; "" if empty on input
+  std::size_t empty_node = static_cast<std::size_t>(-1);  // its index in add() order; -1 if empty on input
   std::size_t empty_domain_index = 0;    // the domain's index in the network
   std::string empty_domain_name;         // its name, "" if it has none
   std::string empty_atom;                // "slice", "gate", "component" or "" (the whole domain)

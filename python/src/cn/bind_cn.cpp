@@ -65,6 +65,8 @@ void init_cn(py::module_& m) {
                     "Why, e.g. \"CtcEval emptied tube 'x' at slice 412 [41.2, 41.3] for t in [...]\"; '' if not empty.")
       .def_readonly("empty_contractor", &ContractStats::empty_contractor,
                     "The contractor that emptied it (e.g. 'CtcDeriv'); '' if it was empty on input.")
+      .def_readonly("empty_node", &ContractStats::empty_node,
+                    "Index (in add() order) of the node that emptied it; 2**64 - 1 if it was empty on input.")
       .def_readonly("empty_domain_index", &ContractStats::empty_domain_index,
                     "The emptied domain's index in the network.")
       .def_readonly("empty_domain_name", &ContractStats::empty_domain_name, "Its name (set_name), '' if none.")

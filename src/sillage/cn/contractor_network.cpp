@@ -271,6 +271,7 @@ ContractStats ContractorNetwork::contract() {
       check_layouts_after(node);
       if (!ok) {
         explain_node_empty(stats, node, run);
+        stats.empty_node = i;
         return finish();
       }
       for (const std::size_t k : changed) {

@@ -1,0 +1,61 @@
+"""A problem as a file (docs/cli.md): the robot on a line of
+examples/problems/line_ranges.toml (x' = v, v = cos(t) ± 0.01, an unknown start,
+ranges to beacons at uncertain times), solved by sillage.solve without writing
+a network; the stated bounds go through example_args.bound. The same file runs
+with `sillage solve examples/problems/line_ranges.toml`."""
+import math
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+import sillage  # noqa: E402
+from example_args import bound, out_dir, print_result  # noqa: E402
+from sillage import Interval, plot  # noqa: E402
+
+PROBLEMS = Path(__file__).resolve().parents[1] / "problems"
+
+
+def problem_text():
+    """line_ranges.toml with its stated bounds passed through bound()."""
+    text = (PROBLEMS / "line_ranges.toml").read_text()
+    v = bound(Interval(-0.01, 0.01))
+    text = text.replace('"cos(t) + [-0.01, 0.01]"', f'"cos(t) + [{v.lb()!r}, {v.ub()!r}]"')
+    text = text.replace("time_error = 0.01", f"time_error = {bound(0.01)!r}")
+    text = text.replace("errors = { r = 0.001 }", f"errors = {{ r = {bound(0.001)!r} }}")
+    return text.replace('file = "data/', f'file = "{PROBLEMS.as_posix()}/data/')
+
+
+def main():
+    out = out_dir(__doc__)
+    path = out / "line_ranges.toml"
+    path.write_text(problem_text())
+    r = sillage.solve(str(path))
+    x, v = r.domains["x"], r.domains["v"]
+    inside = 0
+    if not r.empty:  # the truth: x(t) = sin(t) + 1, v(t) = cos(t)
+        inside = sum(1 for i in range(201)
+                     if x(0.1 * i).contains(math.sin(0.1 * i) + 1) and v(0.1 * i).contains(math.cos(0.1 * i)))
+    ok = not r.empty and inside == 201
+    print("A robot on a line localised by ranges, from a problem file")
+    if r.empty:
+        print(f"  NO SOLUTION: {r.why_empty}")
+    else:
+        print(f"  x(0) in {x(0.0)} (truth 1), max thickness {x.max_thickness():.3g}, 201 truth samples: {inside} inside")
+    fig, ax = plt.subplots(figsize=(8, 3))
+    if not r.empty:
+        plot.plot_tube(ax, x)
+    ts = [0.1 * i for i in range(201)]
+    ax.plot(ts, [math.sin(t) + 1 for t in ts], "r-", lw=1)
+    ax.set_title("[x](t) from examples/problems/line_ranges.toml, truth in red")
+    name = "problem_file_py.png"
+    fig.savefig(out / name, dpi=90)
+    print_result("problem_file", f"{inside}/201 truth samples inside" if not r.empty else "no solution", ok,
+                 [(name, "The tube of the problem file (sillage.solve) and the truth")])
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,109 @@
+// Problem files (sillage/problem) in Python: load_problem, check_summary,
+// solve_problem and solve(path), which returns the domains as sillage objects.
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "sillage/problem/check_summary.h"
+#include "sillage/problem/load_problem.h"
+#include "sillage/problem/solve_problem.h"
+
+namespace sillage::python {
+
+namespace {
+
+// {name: Tube | TubeVector | Interval | IntervalVector}, copies of the solved domains
+// (a Tube is the solved object itself, shared).
+py::dict domains(SolveResult& r) {
+  py::dict d;
+  for (VarDomain& v : r.built.vars) {
+    const char* name = v.spec->name.c_str();
+    if (v.tubes && v.spec->kind == VarKind::Tube) d[name] = v.tubes->shared_component(0);
+    else if (v.tubes) d[name] = TubeVector(*v.tubes);
+    else if (v.interval) d[name] = *v.interval;
+    else d[name] = *v.box;
+  }
+  return d;
+}
+
+py::list schedule(const SolveResult& r) {
+  py::list l;
+  for (const ScheduleStep& s : r.schedule) {
+    py::dict d;
+    d["delta"] = s.delta;
+    d["slices"] = s.slices;
+    d["mean_thickness"] = s.mean_thickness;
+    d["build_seconds"] = s.build_seconds;
+    d["contract_seconds"] = s.contract_seconds;
+    d["stats"] = s.stats;
+    l.append(d);
+  }
+  return l;
+}
+
+std::shared_ptr<SolveResult> solve_with(const Problem& p, std::optional<double> delta, bool auto_delta,
+                                        double tolerance, double budget_seconds) {
+  SolveOptions o;
+  o.delta = delta;
+  o.auto_delta = auto_delta;
+  o.tolerance = tolerance;
+  o.budget_seconds = budget_seconds;
+  py::gil_scoped_release release;
+  return std::make_shared<SolveResult>(solve_problem(p, o));
+}
+
+}  // namespace
+
+void init_problem(py::module_& m) {
+  py::class_<Problem>(m, "Problem", "An estimation problem read from a TOML file (docs/cli.md), validated.")
+      .def_readonly("file", &Problem::file, "The path of the file.")
+      .def_readonly("hash", &Problem::hash, "FNV-1a 64-bit hash of its text, in hex.")
+      .def_property_readonly("variables", [](const Problem& p) {
+        std::vector<std::string> v;
+        for (const VarSpec& s : p.vars) v.push_back(s.name);
+        return v;
+      }, "The names of its variables.")
+      .def_property_readonly("nb_constraints", [](const Problem& p) { return p.constraints.size(); },
+                             "The number of [[constraint]] tables.")
+      .def("__repr__", [](const Problem& p) {
+        return "Problem('" + p.file + "', " + std::to_string(p.vars.size()) + " variables, " +
+               std::to_string(p.constraints.size()) + " constraints, hash " + p.hash + ")";
+      });
+
+  py::class_<SolveResult, std::shared_ptr<SolveResult>>(
+      m, "SolveResult", "A solved problem: the domains, whether they are empty (no solution) and why, the schedule.")
+      .def_readonly("empty", &SolveResult::empty, "True if the problem has no solution (an empty domain).")
+      .def_readonly("why_empty", &SolveResult::why_empty,
+                    "Which constraint emptied what, and where in the file ('' when solved).")
+      .def_property_readonly("domains", &domains,
+                             "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
+      .def_property_readonly("schedule", &schedule,
+                             "One dict per δ tried: delta, slices, mean_thickness, build_seconds, "
+                             "contract_seconds, stats.")
+      .def("build_seconds", &SolveResult::build_seconds, "Time spent building the networks (all steps).")
+      .def("contract_seconds", &SolveResult::contract_seconds, "Time spent contracting (all steps).")
+      .def("__repr__", [](const SolveResult& r) {
+        const ScheduleStep& s = r.schedule.back();
+        return std::string("SolveResult(") + (r.empty ? "no solution" : "solved") + ", delta=" + number_text(s.delta) +
+               ", slices=" + std::to_string(s.slices) + ", steps=" + std::to_string(r.schedule.size()) + ")";
+      });
+
+  m.def("load_problem", &load_problem, py::arg("path"),
+        "Reads and validates a problem file; sillage.ParseError 'file:line:column: found ..., expected ...' otherwise.");
+  m.def("check_summary", &check_summary, py::arg("problem"),
+        "What `sillage check` prints: the variables, constraints, sizes and memory estimate of the network.");
+  m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
+        py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
+        "Builds the network of the problem and contracts it to the fixed point (GIL released); delta: a slice "
+        "width (default: the file's), auto_delta: refine δ from coarse until the result changes by less than "
+        "tolerance or the budget is spent.");
+  m.def(
+      "solve",
+      [](const std::string& path, std::optional<double> delta, bool auto_delta, double tolerance,
+         double budget_seconds) { return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds); },
+      py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
+      py::arg("budget_seconds") = 60.0,
+      "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
+}
+
+}  // namespace sillage::python

@@ -1,0 +1,50 @@
+#pragma once
+// Builds the domains and the ContractorNetwork of a Problem for one slice
+// width δ: one TDomain (sampled at the times of the 'at' bounds), a Tube or
+// TubeVector per tube variable, an Interval or IntervalVector per constant
+// one; per constraint: a CtcFunction (applied at every time when it involves
+// tubes), a CtcDeriv, a CtcIncrement, or per data row a CtcEval and the
+// CtcFunction of its observation. Constraints are added in file order, so the
+// propagation is the one of a hand-written network adding them in that order.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/contractor_network.h"
+#include "sillage/interval/interval_vector.h"
+#include "sillage/problem/problem.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+// The domain of one variable: exactly one pointer is set, by kind.
+struct VarDomain {
+  std::shared_ptr<const VarSpec> spec;  // a copy: the domains outlive the Problem
+  std::shared_ptr<TubeVector> tubes;       // tube (size 1) and tube_vector
+  std::shared_ptr<Interval> interval;      // interval
+  std::shared_ptr<IntervalVector> box;     // box
+  DomainRef component(std::size_t i) const;
+  std::size_t memory_bytes() const;
+};
+
+struct BuiltProblem {
+  std::shared_ptr<TDomain> td;
+  std::vector<VarDomain> vars;  // in the order of Problem::vars
+  std::unique_ptr<ContractorNetwork> cn;
+  std::vector<std::size_t> first_node;  // per constraint: its first node in the network
+  std::size_t extra_domains = 0;        // per-row times, values and columns of the evals
+  const VarDomain& var(const std::string& name) const;
+  // The constraint that added node n.
+  std::size_t constraint_of_node(std::size_t n) const;
+  std::size_t memory_bytes() const;  // the tubes and boxes
+};
+
+// δ > 0. Error (ProblemError) for a bound or a row that cannot be built.
+BuiltProblem build_network(const Problem& p, double delta);
+
+// The slice count δ gives on the problem's time domain.
+std::size_t nb_slices_for(const Problem& p, double delta);
+
+}  // namespace sillage

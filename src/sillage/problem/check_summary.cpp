@@ -1,0 +1,54 @@
+#include "sillage/problem/check_summary.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+#include "sillage/problem/build_network.h"
+
+namespace sillage {
+
+namespace {
+
+std::string line(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string line(const char* f, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, f);
+  std::vsnprintf(buf, sizeof buf, f, ap);
+  va_end(ap);
+  return buf;
+}
+
+}  // namespace
+
+std::string check_summary(const Problem& p) {
+  const double delta = p.time.delta ? *p.time.delta : (p.time.tf - p.time.t0) / 64;
+  std::size_t slices = nb_slices_for(p, delta);
+  for (const VarSpec& v : p.vars) slices += v.at.size();  // an upper bound: 'at' times may sample the domain
+  std::string s = line("%s: valid (hash %s)\n", p.file.c_str(), p.hash.c_str());
+  s += line("time [%g, %g], δ = %g%s, %zu slices at most\n", p.time.t0, p.time.tf, delta,
+            p.time.delta ? "" : " (auto: the first step)", slices);
+  std::size_t bytes = 0, domains = 0, nodes = 0;
+  s += "variables:\n";
+  for (const VarSpec& v : p.vars) {
+    const std::size_t b = v.is_tube() ? v.dim * (2 * slices + 1) * 16 : v.dim * 16;
+    bytes += b;
+    domains += v.is_tube() ? v.dim : 1;
+    s += line("  %-12s %-11s dim %-3zu %10.3f MiB\n", v.name.c_str(), kind_name(v.kind), v.dim, b / 1048576.0);
+  }
+  s += "constraints:\n";
+  for (const ConstraintSpec& c : p.constraints) {
+    std::size_t n = 1;
+    if (c.kind == ConstraintKind::Eval) {
+      n = 2 * p.table(c.data)->table.nb_rows();
+      domains += 3 * p.table(c.data)->table.nb_rows();
+      bytes += 6 * 16 * p.table(c.data)->table.nb_rows();
+    }
+    nodes += n;
+    s += line("  %-8zu nodes  %s\n", n, c.label.c_str());
+  }
+  s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains\n", nodes, domains, bytes / 1048576.0);
+  return s;
+}
+
+}  // namespace sillage

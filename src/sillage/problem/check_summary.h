@@ -1,0 +1,13 @@
+#pragma once
+// What `sillage check` prints: the network a problem would build, without
+// building it (so it stays fast on large problems): the variables with their
+// sizes, the constraints with their node counts, and a memory estimate.
+#include <string>
+
+#include "sillage/problem/problem.h"
+
+namespace sillage {
+
+std::string check_summary(const Problem& p);
+
+}  // namespace sillage

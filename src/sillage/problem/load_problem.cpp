@@ -1,0 +1,441 @@
+#include "sillage/problem/load_problem.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sillage/expr/parser.h"
+#include "sillage/problem/toml_fields.h"
+#include "sillage/problem/var_refs.h"
+
+namespace sillage {
+
+using problem_detail::describe;
+using problem_detail::Document;
+using problem_detail::Fields;
+
+namespace {
+
+std::string fnv1a_hex(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+bool valid_name(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return s.find("__") == std::string::npos && !is_reserved_name(s);
+}
+
+class Loader {
+ public:
+  Loader(const std::string& text, const std::string& path) {
+    p_.file = path;
+    p_.text = text;
+    p_.hash = fnv1a_hex(text);
+    doc_.file = path;
+    std::istringstream is(text);
+    for (std::string l; std::getline(is, l);) doc_.lines.push_back(l);
+    base_ = std::filesystem::path(path).parent_path();
+  }
+
+  Problem run() {
+    toml::table root;
+    try {
+      root = toml::parse(p_.text, p_.file);
+    } catch (const toml::parse_error& e) {
+      throw ProblemError(doc_.pos(e.source()), "invalid TOML: " + std::string(e.description()),
+                         "a TOML file (https://toml.io)");
+    }
+    const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output"});
+    read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
+    if (const toml::node* d = top.find("data"))
+      for (auto&& [key, node] : top.table(*d, "tables [data.NAME]")) read_data(std::string(key.str()), key, node);
+    const toml::node& vars = top.require("var", "tables [var.NAME]");
+    for (auto&& [key, node] : top.table(vars, "tables [var.NAME]")) read_var(std::string(key.str()), key, node);
+    const toml::node& cs = top.require("constraint", "one or more [[constraint]] tables");
+    for (const toml::node& c : top.array(cs, "[[constraint]] tables")) read_constraint(top, c);
+    if (const toml::node* o = top.find("output")) read_output(top.table(*o, "a table [output]"));
+    return std::move(p_);
+  }
+
+ private:
+  // ---- [time] ----
+  void read_time(const toml::table& t) {
+    const Fields f(doc_, t, "[time]", {"domain", "delta"});
+    const toml::node& d = f.require("domain", "[t0, tf]");
+    const toml::array& a = f.array(d, "[t0, tf], two numbers");
+    if (a.size() != 2) throw ProblemError(doc_.pos(d), describe(d), "[t0, tf], two numbers");
+    p_.time.t0 = f.number(*a.get(0), "a number t0");
+    p_.time.tf = f.number(*a.get(1), "a number tf");
+    p_.time.pos = doc_.pos(d);
+    if (!(p_.time.t0 < p_.time.tf))
+      throw ProblemError(doc_.pos(d), "t0 >= tf", "a time domain [t0, tf] with t0 < tf");
+    const toml::node& dl = f.require("delta", "a slice width (number) or \"auto\"");
+    if (dl.is_string()) {
+      if (dl.as_string()->get() != "auto") throw ProblemError(doc_.pos(dl), describe(dl), "a number or \"auto\"");
+    } else {
+      const double v = f.number(dl, "a slice width (number > 0) or \"auto\"");
+      if (!(v > 0) || v > p_.time.tf - p_.time.t0)
+        throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl), "a slice width in (0, tf - t0]");
+      if ((p_.time.tf - p_.time.t0) / v > 5e7)
+        throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl) + " (more than 5e7 slices)", "a larger delta");
+      p_.time.delta = v;
+    }
+  }
+
+  // ---- [data.NAME] ----
+  void read_data(const std::string& name, const toml::key& key, const toml::node& node) {
+    const SourcePos kp = doc_.pos(key.source());
+    if (!valid_name(name)) throw ProblemError(kp, "the table name '" + name + "'", "a name such as ranges or odo_1");
+    const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [data." + name + "]"),
+                   "[data." + name + "]", {"file", "columns"});
+    DataSpec d;
+    d.name = name;
+    d.pos = kp;
+    const toml::node& fn = f.require("file", "a CSV path relative to the problem file");
+    const std::string file = f.string(fn, "a CSV path (string)");
+    d.path = (base_ / file).lexically_normal().string();
+    if (std::filesystem::is_directory(d.path))
+      throw ProblemError(doc_.pos(fn), "the directory " + d.path, "a CSV file");
+    try {
+      d.table = CsvTable::read(d.path);
+    } catch (const Error& e) {
+      throw ProblemError(doc_.pos(fn), std::string("an unreadable CSV: ") + e.what(), "a numeric CSV with a header line");
+    }
+    if (const toml::node* cn = f.find("columns")) {
+      for (const toml::node& c : f.array(*cn, "an array of column names")) {
+        const std::string col = f.string(c, "a column name (string)");
+        if (!d.table.has_column(col)) {
+          std::string cols;
+          for (const auto& h : d.table.columns()) cols += (cols.empty() ? "" : ", ") + h;
+          throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from " + d.path, "one of: " + cols);
+        }
+      }
+    }
+    p_.data.push_back(std::move(d));
+  }
+
+  // ---- [var.NAME] ----
+  void check_bound(const BoundSpec& b, bool of_t) {
+    if (b.expr.empty()) return;
+    const std::vector<std::string> vars = of_t ? std::vector<std::string>{"t"} : std::vector<std::string>{};
+    try {
+      (void)parse_expr(vars, b.expr);
+    } catch (const ParseError& e) {
+      throw ProblemError(b.pos, std::string("the bound \"") + b.expr + "\" (" + e.what() + ")",
+                         of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""
+                              : "a constant expression such as \"[-1, 1]\" or \"pi/2 + [-0.01, 0.01]\"");
+    }
+  }
+
+  std::vector<BoundSpec> read_bounds(const Fields& f, const toml::node& n, std::size_t dim, bool of_t) {
+    std::vector<BoundSpec> out;
+    const std::string expected = dim == 1 ? "a bound (string or number) or an array of 1 bound"
+                                          : "an array of " + std::to_string(dim) + " bounds (\"\" for the whole line)";
+    if (n.is_array()) {
+      const toml::array& a = *n.as_array();
+      if (a.size() != dim) throw ProblemError(doc_.pos(n), describe(n), expected);
+      for (const toml::node& e : a) out.push_back({f.bound_text(e), doc_.pos(e)});
+    } else if (dim == 1) {
+      out.push_back({f.bound_text(n), doc_.pos(n)});
+    } else {
+      throw ProblemError(doc_.pos(n), describe(n), expected);
+    }
+    for (BoundSpec& b : out) {
+      if (b.pos.line > 0 && doc_.lines[b.pos.line - 1][b.pos.column - 1] == '"') b.pos.column += 1;
+      check_bound(b, of_t);
+    }
+    return out;
+  }
+
+  void read_var(const std::string& name, const toml::key& key, const toml::node& node) {
+    const SourcePos kp = doc_.pos(key.source());
+    if (!valid_name(name))
+      throw ProblemError(kp, "the variable name '" + name + "'",
+                         "an identifier (letters, digits, _; not __, not a function name)");
+    const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
+                   "[var." + name + "]", {"kind", "dim", "value", "at"});
+    VarSpec v;
+    v.name = name;
+    v.pos = kp;
+    const toml::node& k = f.require("kind", "\"tube\", \"tube_vector\", \"interval\" or \"box\"");
+    const std::string ks = f.string(k, "\"tube\", \"tube_vector\", \"interval\" or \"box\"");
+    if (ks == "tube") v.kind = VarKind::Tube;
+    else if (ks == "tube_vector") v.kind = VarKind::TubeVector;
+    else if (ks == "interval") v.kind = VarKind::Interval;
+    else if (ks == "box") v.kind = VarKind::Box;
+    else throw ProblemError(doc_.pos(k), describe(k), "\"tube\", \"tube_vector\", \"interval\" or \"box\"");
+    const bool vector = v.kind == VarKind::TubeVector || v.kind == VarKind::Box;
+    if (const toml::node* d = f.find("dim")) {
+      const std::int64_t n = f.integer(*d, "an integer dimension");
+      if (vector ? (n < 1 || n > 1000) : n != 1)
+        throw ProblemError(doc_.pos(*d), "dim = " + std::to_string(n),
+                           vector ? "a dimension from 1 to 1000" : "no dim (or dim = 1) for a " + ks);
+      v.dim = static_cast<std::size_t>(n);
+    } else if (vector) {
+      throw ProblemError(kp, "no 'dim' for the " + ks + " '" + name + "'", "dim = N");
+    }
+    v.value.assign(v.dim, BoundSpec{});
+    if (const toml::node* val = f.find("value")) v.value = read_bounds(f, *val, v.dim, v.is_tube());
+    if (const toml::node* at = f.find("at")) {
+      if (!v.is_tube()) throw ProblemError(doc_.pos(*at), "'at' for the " + ks + " '" + name + "'", "'at' on tubes only");
+      for (const toml::node& g : f.array(*at, "an array of {t = time, value = bounds}")) {
+        const Fields gf(doc_, f.table(g, "a table {t = time, value = bounds}"), "an 'at' of " + name, {"t", "value"});
+        GateSpec gs;
+        gs.pos = doc_.pos(g);
+        const toml::node& tn = gf.require("t", "a time in the domain");
+        gs.t = gf.number(tn, "a time (number)");
+        if (gs.t < p_.time.t0 || gs.t > p_.time.tf)
+          throw ProblemError(doc_.pos(tn), "t = " + doc_.raw(tn) + " outside the time domain",
+                             "a time in [" + number_text(p_.time.t0) + ", " + number_text(p_.time.tf) + "]");
+        gs.value = read_bounds(gf, gf.require("value", "the bounds at t"), v.dim, false);
+        v.at.push_back(std::move(gs));
+      }
+    }
+    if (p_.table(name)) throw ProblemError(kp, "the variable '" + name + "' named as a data table", "distinct names");
+    p_.vars.push_back(std::move(v));
+  }
+
+  // ---- [[constraint]] ----
+  std::string known_vars() const {
+    std::string s;
+    for (const VarSpec& v : p_.vars)
+      s += (s.empty() ? "" : ", ") + (v.dim > 1 || v.kind == VarKind::TubeVector || v.kind == VarKind::Box
+                                          ? v.name + "[0.." + std::to_string(v.dim - 1) + "]"
+                                          : v.name);
+    return s;
+  }
+
+  const VarSpec& tube_var(const Fields& f, const char* key) {
+    const toml::node& n = f.require(key, "the name of a tube variable");
+    const std::string name = f.string(n, "the name of a tube variable (string)");
+    const VarSpec* v = p_.var(name);
+    if (!v || !v->is_tube())
+      throw ProblemError(doc_.pos(n), v ? "the " + std::string(kind_name(v->kind)) + " '" + name + "'" : "'" + name + "'",
+                         "a tube or tube_vector variable (" + known_vars() + ")");
+    return *v;
+  }
+
+  void read_constraint(const Fields& top, const toml::node& node) {
+    const std::size_t index = p_.constraints.size() + 1;
+    const toml::table& t = top.table(node, "a [[constraint]] table");
+    const toml::node* kn = t.get("kind");
+    ConstraintSpec c;
+    c.pos = doc_.pos(node);
+    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\" or \"eval\"";
+    if (!kn) throw ProblemError(c.pos, "constraint " + std::to_string(index) + " without a kind", expected_kind);
+    const std::string ks = top.string(*kn, expected_kind);
+    const std::string where = "constraint " + std::to_string(index) + " (" + ks + ")";
+    auto dims = [this](const std::string& n) -> std::optional<std::size_t> {
+      const VarSpec* v = p_.var(n);
+      return v ? std::optional<std::size_t>(v->dim) : std::nullopt;
+    };
+    auto is_vec = [this](const std::string& n) {
+      const VarSpec* v = p_.var(n);
+      return v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
+    };
+    if (ks == "expr") {
+      const Fields f(doc_, t, where, {"kind", "expr"});
+      c.kind = ConstraintKind::Expr;
+      read_expr(f, c, dims, is_vec, known_vars());
+      c.label = where + ": " + c.expr + " = 0";
+    } else if (ks == "deriv" || ks == "increment") {
+      const Fields f(doc_, t, where, {"kind", "x", "v"});
+      c.kind = ks == "deriv" ? ConstraintKind::Deriv : ConstraintKind::Increment;
+      const VarSpec& x = tube_var(f, "x");
+      const VarSpec& v = tube_var(f, "v");
+      if (x.dim != v.dim || x.kind != v.kind)
+        throw ProblemError(doc_.pos(*f.find("v")),
+                           "'" + v.name + "' (" + kind_name(v.kind) + ", dim " + std::to_string(v.dim) + ")",
+                           "a variable of the kind and dimension of '" + x.name + "' (" + kind_name(x.kind) + ", dim " +
+                               std::to_string(x.dim) + ")");
+      c.x = x.name;
+      c.v = v.name;
+      c.label = where + ": " + (ks == "deriv" ? c.x + "' = " + c.v : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
+    } else if (ks == "eval") {
+      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "expr"}), c, where);
+    } else {
+      throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
+    }
+    p_.constraints.push_back(std::move(c));
+  }
+
+  template <class Dims, class Vec>
+  void read_expr(const Fields& f, ConstraintSpec& c, const Dims& dims, const Vec& vec, const std::string& known) {
+    const toml::node& e = f.require("expr", "an expression such as \"v[0] - 10*cos(x[2])\" (= 0)");
+    c.expr = f.string(e, "an expression (string)");
+    c.expr_pos = shifted(doc_.pos(e), 1);
+    (void)rewrite_refs(c.expr, c.expr_pos, dims, vec, known);
+  }
+
+  void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where) {
+    c.kind = ConstraintKind::Eval;
+    const toml::node& dn = f.require("data", "the name of a [data.NAME] table");
+    c.data = f.string(dn, "a data table name (string)");
+    const DataSpec* d = p_.table(c.data);
+    if (!d) {
+      std::string names;
+      for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
+      throw ProblemError(doc_.pos(dn), "the unknown table '" + c.data + "'", "a [data.NAME] table (" + names + ")");
+    }
+    const VarSpec& y = tube_var(f, "y");
+    c.x = y.name;
+    if (f.find("v")) {
+      const VarSpec& v = tube_var(f, "v");
+      if (v.dim != y.dim || v.kind != y.kind)
+        throw ProblemError(doc_.pos(*f.find("v")), "'" + v.name + "'", "a derivative of the kind and dimension of '" + y.name + "'");
+      c.v = v.name;
+    }
+    auto column = [&](const toml::node& n) {
+      const std::string col = f.string(n, "a column name (string)");
+      if (!d->table.has_column(col)) {
+        std::string cols;
+        for (const auto& h : d->table.columns()) cols += (cols.empty() ? "" : ", ") + h;
+        throw ProblemError(doc_.pos(n), "the column '" + col + "' missing from table '" + c.data + "'", "one of: " + cols);
+      }
+      return col;
+    };
+    c.time_column = column(f.require("time", "the time column of the table"));
+    if (const toml::node* te = f.find("time_error")) {
+      if (f.number(*te, "a time error >= 0") < 0) throw ProblemError(doc_.pos(*te), "a negative time error", "a time error >= 0");
+      c.time_error = f.bound_text(*te);
+    }
+    if (const toml::node* er = f.find("errors")) {
+      for (auto&& [key, node] : f.table(*er, "a table {column = error}")) {
+        if (!d->table.has_column(std::string(key.str())))
+          throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
+                                                         c.data + "'", "a column of it");
+        if (f.number(node, "an error >= 0 (number)") < 0)
+          throw ProblemError(doc_.pos(node), "a negative error", "an error >= 0");
+        c.errors[std::string(key.str())] = f.bound_text(node);
+      }
+    }
+    // In the observation: the evaluated value is named as y, the columns by name.
+    auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
+      if (n == y.name) return y.dim;
+      if (d->table.has_column(n)) return 1;
+      const VarSpec* v = p_.var(n);
+      if (v && !v->is_tube()) return v->dim;
+      return std::nullopt;
+    };
+    auto vec = [&](const std::string& n) {
+      if (n == y.name) return y.kind == VarKind::TubeVector;
+      const VarSpec* v = p_.var(n);
+      return !d->table.has_column(n) && v && v->kind == VarKind::Box;
+    };
+    std::string known = y.name + (y.kind == VarKind::TubeVector ? "[i]" : "") + " (the value y(t)), the columns of '" +
+                        c.data + "'";
+    for (const VarSpec& v : p_.vars)
+      if (!v.is_tube()) known += ", " + v.name;
+    read_expr(f, c, dims, vec, known);
+    for (const auto& col : d->table.columns())
+      if (p_.var(col) && col != y.name)
+        throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
+    c.label = where + ": " + c.expr + " = 0 at " + y.name + "(" + c.time_column + ") for every row of '" + c.data + "'";
+  }
+
+  // ---- [output] ----
+  std::pair<std::string, std::size_t> tube_ref(const Fields& f, const toml::node& n, bool allow_whole) {
+    const std::string s = f.string(n, "a tube such as \"x\" or \"x[0]\"");
+    const auto b = s.find('[');
+    const std::string name = s.substr(0, b);
+    const VarSpec* v = p_.var(name);
+    if (!v || !v->is_tube()) throw ProblemError(doc_.pos(n), "'" + s + "'", "a tube variable (" + known_vars() + ")");
+    if (b == std::string::npos) {
+      if (!allow_whole && v->kind == VarKind::TubeVector)
+        throw ProblemError(doc_.pos(n), "'" + s + "'", "a component such as " + name + "[0]");
+      return {name, static_cast<std::size_t>(-1)};
+    }
+    std::size_t i = 0;
+    bool ok = s.back() == ']' && s.size() > b + 2 && s.size() < b + 8;
+    for (std::size_t k = b + 1; ok && k + 1 < s.size(); ++k) {
+      ok = std::isdigit(static_cast<unsigned char>(s[k]));
+      i = i * 10 + static_cast<std::size_t>(s[k] - '0');
+    }
+    if (!ok || v->kind != VarKind::TubeVector || i >= v->dim)
+      throw ProblemError(doc_.pos(n), "'" + s + "'",
+                         "a component " + name + "[i] with i from 0 to " + std::to_string(v->dim - 1) +
+                             (v->kind == VarKind::TubeVector ? "" : " (a scalar tube has none: write " + name + ")"));
+    return {name, i};
+  }
+
+  void read_output(const toml::table& t) {
+    const Fields f(doc_, t, "[output]", {"times", "plots", "maps", "truth"});
+    if (const toml::node* ts = f.find("times"))
+      for (const toml::node& n : f.array(*ts, "an array of times")) {
+        const double v = f.number(n, "a time (number)");
+        if (v < p_.time.t0 || v > p_.time.tf)
+          throw ProblemError(doc_.pos(n), "the time " + doc_.raw(n) + " outside the domain",
+                             "a time in [" + number_text(p_.time.t0) + ", " + number_text(p_.time.tf) + "]");
+        p_.output.times.push_back(v);
+      }
+    if (const toml::node* ps = f.find("plots"))
+      for (const toml::node& n : f.array(*ps, "an array of tubes such as [\"x\", \"v[1]\"]"))
+        p_.output.plot_tubes.push_back(tube_ref(f, n, true));
+    if (const toml::node* ms = f.find("maps"))
+      for (const toml::node& n : f.array(*ms, "an array of pairs such as [[\"x[0]\", \"x[1]\"]]")) {
+        const toml::array& a = f.array(n, "a pair [\"x[0]\", \"x[1]\"]");
+        if (a.size() != 2) throw ProblemError(doc_.pos(n), describe(n), "a pair [\"x[0]\", \"x[1]\"]");
+        const auto i = tube_ref(f, *a.get(0), false), j = tube_ref(f, *a.get(1), false);
+        if (i.first != j.first || p_.var(i.first)->kind != VarKind::TubeVector)
+          throw ProblemError(doc_.pos(n), "components of different variables", "two components of one tube_vector");
+        p_.output.maps.push_back({i.first, {i.second, j.second}});
+      }
+    if (const toml::node* tr = f.find("truth")) {
+      const Fields tf(doc_, f.table(*tr, "a table {data, time, columns}"), "[output.truth]", {"data", "time", "columns"});
+      TruthSpec ts;
+      ts.pos = doc_.pos(*tr);
+      const toml::node& dn = tf.require("data", "a [data.NAME] table");
+      ts.data = tf.string(dn, "a data table name");
+      const DataSpec* d = p_.table(ts.data);
+      if (!d) throw ProblemError(doc_.pos(dn), "the unknown table '" + ts.data + "'", "a [data.NAME] table");
+      auto col = [&](const toml::node& n) {
+        const std::string c = tf.string(n, "a column name");
+        if (!d->table.has_column(c))
+          throw ProblemError(doc_.pos(n), "the column '" + c + "' missing from table '" + ts.data + "'", "a column of it");
+        return c;
+      };
+      ts.time_column = col(tf.require("time", "the time column"));
+      for (auto&& [key, node] : tf.table(tf.require("columns", "{var = [columns]}"), "a table {var = [columns]}")) {
+        const std::string name(key.str());
+        const VarSpec* v = p_.var(name);
+        if (!v || !v->is_tube())
+          throw ProblemError(doc_.pos(key.source()), "'" + name + "'", "a tube variable (" + known_vars() + ")");
+        std::vector<std::string> cols;
+        if (node.is_string()) cols.push_back(col(node));
+        else
+          for (const toml::node& c : tf.array(node, "a column name or an array of them")) cols.push_back(col(c));
+        if (cols.size() != v->dim)
+          throw ProblemError(doc_.pos(node), std::to_string(cols.size()) + " column(s)",
+                             std::to_string(v->dim) + " (one per component of '" + name + "')");
+        ts.columns[name] = cols;
+      }
+      p_.output.truth = ts;
+    }
+  }
+
+  Problem p_;
+  Document doc_;
+  std::filesystem::path base_;
+};
+
+}  // namespace
+
+Problem parse_problem(const std::string& text, const std::string& path) { return Loader(text, path).run(); }
+
+Problem load_problem(const std::string& path) {
+  if (std::filesystem::is_directory(path)) throw ProblemError(SourcePos{path}, "a directory", "a problem file (TOML)");
+  std::ifstream is(path, std::ios::binary);
+  if (!is) throw ProblemError(SourcePos{path}, "a file that cannot be read", "a readable problem file (TOML)");
+  std::ostringstream ss;
+  ss << is.rdbuf();
+  return parse_problem(ss.str(), path);
+}
+
+}  // namespace sillage

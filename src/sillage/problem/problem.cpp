@@ -1,0 +1,37 @@
+#include "sillage/problem/problem.h"
+
+namespace sillage {
+
+const VarSpec* Problem::var(const std::string& name) const {
+  for (const VarSpec& v : vars)
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+const DataSpec* Problem::table(const std::string& name) const {
+  for (const DataSpec& d : data)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+const char* kind_name(VarKind k) {
+  switch (k) {
+    case VarKind::Tube: return "tube";
+    case VarKind::TubeVector: return "tube_vector";
+    case VarKind::Interval: return "interval";
+    case VarKind::Box: return "box";
+  }
+  return "?";
+}
+
+const char* kind_name(ConstraintKind k) {
+  switch (k) {
+    case ConstraintKind::Expr: return "expr";
+    case ConstraintKind::Deriv: return "deriv";
+    case ConstraintKind::Increment: return "increment";
+    case ConstraintKind::Eval: return "eval";
+  }
+  return "?";
+}
+
+}  // namespace sillage

@@ -1,0 +1,183 @@
+#include "sillage/problem/report_html.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "sillage/figures/html.h"
+#include "sillage/figures/thickness_figure.h"
+#include "sillage/figures/tube_figure.h"
+
+namespace sillage {
+
+namespace {
+
+std::string fmt(double x, const char* f = "%.6g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+std::string itv(const Interval& x) {
+  if (x.is_empty()) return "∅";
+  return "[" + fmt(x.lb()) + ", " + fmt(x.ub()) + "]";
+}
+
+std::string comp_name(const VarDomain& v, std::size_t i) {
+  return v.spec->kind == VarKind::Tube ? v.spec->name : v.spec->name + "[" + std::to_string(i) + "]";
+}
+
+const std::vector<std::string>* truth_columns(const Problem& p, const std::string& var) {
+  if (!p.output.truth) return nullptr;
+  const auto it = p.output.truth->columns.find(var);
+  return it == p.output.truth->columns.end() ? nullptr : &it->second;
+}
+
+Trajectory truth_trajectory(const Problem& p, const std::string& column) {
+  const CsvTable& t = p.table(p.output.truth->data)->table;
+  return Trajectory(t.values(p.output.truth->time_column), t.values(column));
+}
+
+// A figure, or a note saying why it could not be drawn (an unbounded tube).
+std::string figure_block(const std::function<Figure()>& make, const std::string& caption) {
+  std::string svg;
+  try {
+    svg = make().svg();
+    // Inline in HTML: the XML declaration of the file form is not wanted.
+    if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
+  } catch (const Error& e) {
+    return "<figure><p class=\"note\">" + xml_escape(caption) + ": not drawn (" + xml_escape(e.what()) + ")</p></figure>\n";
+  }
+  return "<figure>" + svg + "<figcaption>" + xml_escape(caption) + "</figcaption></figure>\n";
+}
+
+}  // namespace
+
+TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
+  TruthCheck c;
+  if (!p.output.truth) return c;
+  const CsvTable& t = p.table(p.output.truth->data)->table;
+  const std::size_t tc = t.column(p.output.truth->time_column);
+  for (const auto& [var, cols] : p.output.truth->columns) {
+    const VarDomain& v = b.var(var);
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      const std::size_t ci = t.column(cols[i]);
+      for (std::size_t r = 0; r < t.nb_rows(); ++r) {
+        const double time = t.row(r)[tc];
+        if (time < b.td->t0() || time > b.td->tf()) continue;
+        ++c.samples;
+        const Interval x = (*v.tubes)[i](time);
+        if (x.contains(t.row(r)[ci])) ++c.inside;
+        else if (c.first_misses.size() < 10)
+          c.first_misses.push_back(comp_name(v, i) + " = " + fmt(t.row(r)[ci]) + " at t = " + fmt(time) +
+                                   " outside " + itv(x));
+      }
+    }
+  }
+  return c;
+}
+
+std::string report_html(const Problem& p, const SolveResult& r) {
+  const BuiltProblem& b = r.built;
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>sillage: " << xml_escape(p.file)
+    << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:auto;padding:1em}"
+       "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 6px;font-size:90%}"
+       "pre{background:#f4f4f4;padding:.5em;overflow:auto}.empty{color:#b00;font-weight:bold}"
+       "figure{margin:1em 0}figcaption{font-size:90%;color:#444}.note{color:#777}</style></head><body>\n";
+  h << "<h1>sillage solve " << xml_escape(p.file) << "</h1>\n";
+  if (r.empty)
+    h << "<p class=\"empty\" id=\"status\">No solution: " << xml_escape(r.why_empty) << "</p>\n";
+  else
+    h << "<p id=\"status\">Solved: every domain below encloses every solution of the problem.</p>\n";
+
+  h << "<h2>Problem</h2>\n<p>hash " << p.hash << "</p><pre>" << xml_escape(p.text) << "</pre>\n";
+
+  h << "<h2>Schedule</h2>\n<table id=\"schedule\"><tr><th>δ</th><th>slices</th><th>mean thickness</th><th>rounds</th>"
+       "<th>contractor runs</th><th>build (s)</th><th>contract (s)</th></tr>\n";
+  for (const ScheduleStep& s : r.schedule)
+    h << "<tr><td>" << fmt(s.delta) << "</td><td>" << s.slices << "</td><td>" << fmt(s.mean_thickness) << "</td><td>"
+      << s.stats.iterations << "</td><td>" << s.stats.contractor_calls << "</td><td>" << fmt(s.build_seconds, "%.4f")
+      << "</td><td>" << fmt(s.contract_seconds, "%.4f") << "</td></tr>\n";
+  h << "</table>\n";
+
+  std::vector<double> times = p.output.times;
+  if (times.empty()) times = {b.td->t0(), (b.td->t0() + b.td->tf()) / 2, b.td->tf()};
+  h << "<h2>Results</h2>\n<table id=\"results\"><tr><th>variable</th>";
+  for (double t : times) h << "<th>t = " << fmt(t) << "</th>";
+  h << "</tr>\n";
+  for (const VarDomain& v : b.vars) {
+    for (std::size_t i = 0; i < v.spec->dim; ++i) {
+      h << "<tr><td>" << xml_escape(comp_name(v, i)) << "</td>";
+      for (double t : times) {
+        const Interval x = v.tubes ? (*v.tubes)[i](t) : v.interval ? *v.interval : (*v.box)[i];
+        h << "<td>" << itv(x) << "</td>";
+      }
+      h << "</tr>\n";
+    }
+  }
+  h << "</table>\n";
+
+  h << "<h2>Figures</h2>\n";
+  if (r.empty) h << "<p class=\"note\">No figure: the domains are empty.</p>\n";
+  else {
+    for (const auto& [var, pair] : p.output.maps) {
+      const VarDomain& v = b.var(var);
+      const auto* cols = truth_columns(p, var);
+      std::optional<Trajectory> ti, tj;
+      if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
+      const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
+      h << figure_block(
+          [&] { return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr); },
+          "Map " + title + (cols ? " (truth in red)" : ""));
+    }
+    std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
+    if (plots.empty())
+      for (const VarDomain& v : b.vars)
+        if (v.tubes) plots.push_back({v.spec->name, static_cast<std::size_t>(-1)});
+    std::size_t shown = 0;
+    for (const auto& [var, comp] : plots) {
+      const VarDomain& v = b.var(var);
+      for (std::size_t i = 0; i < v.spec->dim && shown < 24; ++i) {
+        if (comp != static_cast<std::size_t>(-1) && comp != i) continue;
+        ++shown;
+        const auto* cols = truth_columns(p, var);
+        std::optional<Trajectory> tr;
+        if (cols) tr = truth_trajectory(p, (*cols)[i]);
+        const std::string name = comp_name(v, i);
+        h << figure_block([&] { return tube_figure((*v.tubes)[i], "[" + name + "](t)", {}, tr ? &*tr : nullptr); },
+                          "The tube [" + name + "](·)" + (tr ? " and the truth" : ""));
+        h << figure_block([&] { return thickness_figure((*v.tubes)[i], "Thickness of [" + name + "]"); },
+                          "Thickness of [" + name + "](·)");
+      }
+    }
+  }
+
+  h << "<h2>Truth check</h2>\n";
+  if (!p.output.truth) h << "<p class=\"note\">No ground truth given ([output.truth]).</p>\n";
+  else {
+    const TruthCheck c = check_truth(p, b);
+    h << "<p id=\"truth\">" << c.inside << " of " << c.samples << " truth samples inside the tubes.</p>\n";
+    if (!c.first_misses.empty()) {
+      h << "<ul>";
+      for (const std::string& m : c.first_misses) h << "<li>" << xml_escape(m) << "</li>";
+      h << "</ul>\n";
+    }
+  }
+
+  const double build = r.build_seconds(), contract = r.contract_seconds();
+  h << "<h2>Run statistics</h2>\n<table id=\"stats\">"
+    << "<tr><td>variables</td><td>" << b.vars.size() << "</td></tr>"
+    << "<tr><td>constraints (file)</td><td>" << p.constraints.size() << "</td></tr>"
+    << "<tr><td>network nodes</td><td>" << b.cn->nb_ctc() << "</td></tr>"
+    << "<tr><td>network domains</td><td>" << b.cn->nb_dom() << "</td></tr>"
+    << "<tr><td>slices</td><td>" << b.td->nb_slices() << "</td></tr>"
+    << "<tr><td>tube memory</td><td>" << fmt(b.memory_bytes() / 1048576.0, "%.2f") << " MiB</td></tr>"
+    << "<tr><td>build time (all steps)</td><td>" << fmt(build, "%.4f") << " s ("
+    << fmt(build + contract > 0 ? 100 * build / (build + contract) : 0, "%.1f") << " %)</td></tr>"
+    << "<tr><td>contraction time (all steps)</td><td>" << fmt(contract, "%.4f") << " s</td></tr>"
+    << "</table>\n</body></html>\n";
+  return h.str();
+}
+
+}  // namespace sillage

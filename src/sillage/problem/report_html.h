@@ -1,0 +1,22 @@
+#pragma once
+// DIR/report.html: one self-contained page (inline SVG and CSS, no script,
+// nothing fetched), readable offline: the problem file, the δ schedule, the
+// results at the requested times (t0, the middle and tf by default), the
+// figures (each tube component over time, the 2-D maps asked in [output],
+// the thickness), the truth check and the run statistics.
+#include <string>
+
+#include "sillage/problem/solve_problem.h"
+
+namespace sillage {
+
+// The truth check of [output.truth]: samples inside the tubes, and the first misses.
+struct TruthCheck {
+  std::size_t samples = 0, inside = 0;
+  std::vector<std::string> first_misses;  // up to 10, "x[1] = 3.2 at t = 4 outside [2.9, 3.1]"
+};
+TruthCheck check_truth(const Problem& p, const BuiltProblem& b);
+
+std::string report_html(const Problem& p, const SolveResult& r);
+
+}  // namespace sillage

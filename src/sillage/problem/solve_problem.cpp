@@ -1,0 +1,89 @@
+#include "sillage/problem/solve_problem.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace sillage {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string explain(const Problem& p, const BuiltProblem& b, const ContractStats& s) {
+  std::string why = s.emptiness;
+  if (s.empty_node < b.cn->nb_ctc() && !b.first_node.empty()) {
+    const ConstraintSpec& c = p.constraints[b.constraint_of_node(s.empty_node)];
+    why += "; by " + c.label + " (" + c.pos.str() + ")";
+  } else if (s.empty_node == static_cast<std::size_t>(-1)) {
+    why += "; the initial bounds are empty (" + p.file + ": [var." + s.empty_domain_name + "])";
+  }
+  return why;
+}
+
+}  // namespace
+
+double SolveResult::build_seconds() const {
+  double s = 0;
+  for (const ScheduleStep& st : schedule) s += st.build_seconds;
+  return s;
+}
+
+double SolveResult::contract_seconds() const {
+  double s = 0;
+  for (const ScheduleStep& st : schedule) s += st.contract_seconds;
+  return s;
+}
+
+double mean_thickness(const BuiltProblem& b) {
+  double sum = 0;
+  const double duration = b.td->tf() - b.td->t0();
+  for (const VarDomain& v : b.vars) {
+    if (!v.tubes) continue;
+    for (std::size_t i = 0; i < v.tubes->size(); ++i) {
+      const double vol = (*v.tubes)[i].volume();
+      if (std::isfinite(vol)) sum += vol / duration;
+    }
+  }
+  return sum;
+}
+
+SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
+  std::optional<double> fixed = o.delta ? o.delta : p.time.delta;
+  if (o.auto_delta) fixed.reset();
+  SolveResult r;
+  const auto start = std::chrono::steady_clock::now();
+  double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;
+  for (;;) {
+    ScheduleStep step;
+    step.delta = delta;
+    auto t0 = std::chrono::steady_clock::now();
+    BuiltProblem b = build_network(p, delta);
+    step.build_seconds = seconds_since(t0);
+    step.slices = b.td->nb_slices();
+    t0 = std::chrono::steady_clock::now();
+    step.stats = b.cn->contract();
+    step.contract_seconds = seconds_since(t0);
+    step.mean_thickness = step.stats.empty ? 0 : mean_thickness(b);
+    r.schedule.push_back(step);
+    if (o.on_step) o.on_step(step);
+    r.built = std::move(b);
+    if (step.stats.empty) {
+      r.empty = true;
+      r.why_empty = explain(p, r.built, step.stats);
+      return r;
+    }
+    if (fixed) return r;
+    if (r.schedule.size() >= 2) {
+      const double prev = r.schedule[r.schedule.size() - 2].mean_thickness, cur = step.mean_thickness;
+      if (std::abs(prev - cur) <= o.tolerance * std::abs(prev)) return r;
+    }
+    const double last = step.build_seconds + step.contract_seconds;
+    if (seconds_since(start) + 2 * last > o.budget_seconds) return r;
+    if (2 * step.slices > o.max_slices) return r;
+    delta /= 2;
+  }
+}
+
+}  // namespace sillage

@@ -1,0 +1,52 @@
+#pragma once
+// Solves a Problem: builds its network (build_network.h) and contracts it to
+// the fixed point, for the δ of the file, a given δ, or δ chosen
+// automatically: start coarse ((tf - t0)/64), halve while the result still
+// changes by more than `tolerance` (relative change of the mean thickness of
+// the bounded tubes) and the time budget allows the next step (estimated at
+// twice the last one). Every step is a guaranteed enclosure; the finest one is
+// the result, and the schedule (δ, slices, thickness, time) is kept.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sillage/problem/build_network.h"
+
+namespace sillage {
+
+struct SolveOptions {
+  std::optional<double> delta;  // a given δ; none: the file's, or auto if the file says "auto"
+  bool auto_delta = false;      // force the automatic δ
+  double tolerance = 0.01;      // relative change that stops the refinement
+  double budget_seconds = 60;   // of the automatic δ
+  std::size_t max_slices = 1u << 20;
+  // Called after each step (progress line).
+  std::function<void(const struct ScheduleStep&)> on_step;
+};
+
+struct ScheduleStep {
+  double delta = 0;
+  std::size_t slices = 0;
+  double mean_thickness = 0;  // over the bounded tube components
+  double build_seconds = 0, contract_seconds = 0;
+  ContractStats stats;
+};
+
+struct SolveResult {
+  BuiltProblem built;  // the last step's domains
+  std::vector<ScheduleStep> schedule;
+  bool empty = false;
+  std::string why_empty;  // ContractStats::emptiness + the constraint and its place in the file
+  double build_seconds() const;
+  double contract_seconds() const;
+};
+
+SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
+
+// The mean thickness (volume / duration) summed over the tube components with
+// a finite volume.
+double mean_thickness(const BuiltProblem& b);
+
+}  // namespace sillage

@@ -1,0 +1,101 @@
+#include "sillage/problem/toml_fields.h"
+
+#include <cmath>
+
+namespace sillage::problem_detail {
+
+SourcePos Document::pos(const toml::source_region& r) const {
+  return SourcePos{file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+}
+
+std::string Document::raw(const toml::node& n) const {
+  const auto& r = n.source();
+  if (r.begin.line == 0 || r.begin.line != r.end.line || r.begin.line > lines.size()) return "";
+  const std::string& l = lines[r.begin.line - 1];
+  const std::size_t b = r.begin.column - 1, e = std::min<std::size_t>(r.end.column - 1, l.size());
+  return b < e ? l.substr(b, e - b) : "";
+}
+
+std::string describe(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::string: {
+      std::string s = n.as_string()->get();
+      if (s.size() > 40) s = s.substr(0, 37) + "...";
+      return "a string \"" + s + "\"";
+    }
+    case toml::node_type::integer: return "an integer " + std::to_string(n.as_integer()->get());
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return n.as_boolean()->get() ? "the boolean true" : "the boolean false";
+    case toml::node_type::array: return "an array of " + std::to_string(n.as_array()->size()) + " element(s)";
+    case toml::node_type::table: return "a table";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time of day";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "a value";
+  }
+}
+
+Fields::Fields(const Document& doc, const toml::table& table, std::string where,
+               std::initializer_list<const char*> allowed)
+    : doc_(doc), table_(table), where_(std::move(where)) {
+  std::string list;
+  for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+  for (auto&& [key, node] : table) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || key.str() == a;
+    if (!ok)
+      throw ProblemError(doc.pos(key.source()), "the unknown key '" + std::string(key.str()) + "' in " + where_,
+                         "one of: " + list);
+  }
+}
+
+const toml::node* Fields::find(const char* key) const { return table_.get(key); }
+
+const toml::node& Fields::require(const char* key, const std::string& expected) const {
+  const toml::node* n = find(key);
+  if (!n) throw ProblemError(pos(), "no key '" + std::string(key) + "' in " + where_, "'" + std::string(key) + "' = " + expected);
+  return *n;
+}
+
+std::string Fields::string(const toml::node& n, const std::string& expected) const {
+  if (!n.is_string()) throw ProblemError(doc_.pos(n), describe(n), expected);
+  return n.as_string()->get();
+}
+
+double Fields::number(const toml::node& n, const std::string& expected) const {
+  double v = 0;
+  if (n.is_integer()) v = static_cast<double>(n.as_integer()->get());
+  else if (n.is_floating_point()) v = n.as_floating_point()->get();
+  else throw ProblemError(doc_.pos(n), describe(n), expected);
+  if (!std::isfinite(v)) throw ProblemError(doc_.pos(n), "a number that is not finite", expected);
+  return v;
+}
+
+std::int64_t Fields::integer(const toml::node& n, const std::string& expected) const {
+  if (!n.is_integer()) throw ProblemError(doc_.pos(n), describe(n), expected);
+  return n.as_integer()->get();
+}
+
+const toml::array& Fields::array(const toml::node& n, const std::string& expected) const {
+  if (!n.is_array()) throw ProblemError(doc_.pos(n), describe(n), expected);
+  return *n.as_array();
+}
+
+const toml::table& Fields::table(const toml::node& n, const std::string& expected) const {
+  if (!n.is_table()) throw ProblemError(doc_.pos(n), describe(n), expected);
+  return *n.as_table();
+}
+
+std::string Fields::bound_text(const toml::node& n) const {
+  const std::string expected = "a bound: an expression string such as \"[-1, 1]\" or \"2*t + [-0.1, 0.1]\", or a number";
+  if (n.is_string()) return n.as_string()->get();
+  if (n.is_integer() || n.is_floating_point()) {
+    (void)number(n, expected);
+    const std::string raw = doc_.raw(n);
+    if (raw.empty()) throw ProblemError(doc_.pos(n), "a number written over several lines", expected);
+    return raw;
+  }
+  throw ProblemError(doc_.pos(n), describe(n), expected);
+}
+
+}  // namespace sillage::problem_detail

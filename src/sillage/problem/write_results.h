@@ -1,0 +1,24 @@
+#pragma once
+// The files of a solved problem, for programs: DIR/results.json (the bounds
+// at every gate and slice of every variable, the problem's hash, the
+// schedule) and DIR/NAME.csv per tube (rows of t_lb, t_ub, then lb, ub per
+// component: a gate row has t_lb = t_ub, a slice row spans its slice;
+// unbounded ends written inf / -inf, read as such by numpy and pandas).
+// In JSON an interval is [lb, ub], an unbounded end null, the empty set null.
+#include <string>
+
+#include "sillage/problem/solve_problem.h"
+
+namespace sillage {
+
+// The JSON text of results.json.
+std::string results_json(const Problem& p, const SolveResult& r);
+// The CSV text of one tube variable.
+std::string tube_csv(const VarDomain& v);
+// Writes results.json and the CSV files into dir (created); Error if it cannot.
+void write_results(const Problem& p, const SolveResult& r, const std::string& dir);
+
+// Writes text to dir/name; Error naming the path if it cannot.
+void write_text_file(const std::string& dir, const std::string& name, const std::string& text);
+
+}  // namespace sillage

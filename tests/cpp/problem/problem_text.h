@@ -1,0 +1,35 @@
+#pragma once
+// Helpers of the problem tests: the example problems' directory, a problem
+// text parsed under a name in that directory (so data paths resolve).
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "sillage/problem/load_problem.h"
+
+namespace problem_test {
+
+inline std::string problems_dir() { return std::string(SILLAGE_SOURCE_DIR) + "/examples/problems"; }
+
+inline std::string read_file(const std::string& path) {
+  std::ifstream is(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << is.rdbuf();
+  return ss.str();
+}
+
+inline sillage::Problem parse(const std::string& text) {
+  return sillage::parse_problem(text, problems_dir() + "/test.toml");
+}
+
+// The message of the ProblemError that parsing `text` throws ("" if none).
+inline std::string error_of(const std::string& text) {
+  try {
+    (void)parse(text);
+  } catch (const sillage::ProblemError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace problem_test

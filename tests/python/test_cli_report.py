@@ -1,0 +1,112 @@
+"""The sillage command end to end: exit codes, the files it writes, and its
+report.html opened in a real headless Chromium (it loads, logs nothing to the
+console, and shows its figures at a non-zero size). Without Chromium the
+browser test is skipped on a developer's machine and fails in CI."""
+import json
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import sillage
+
+BUILD = Path(sillage.__file__).resolve().parents[2]
+SILLAGE = BUILD / "tools" / "sillage" / "sillage"
+PROBLEMS = Path(__file__).resolve().parents[2] / "examples" / "problems"
+
+# Appended to a copy of the report: one console line per SVG with its size.
+PROBE = ("<script>for (const s of document.querySelectorAll('svg')) {"
+         " const r = s.getBoundingClientRect(); console.log('SVG ' + r.width + 'x' + r.height); }</script>")
+
+
+def run(*args):
+    return subprocess.run([str(SILLAGE), *map(str, args)], capture_output=True, text=True, timeout=600)
+
+
+def chromium_console(html_path):
+    """The console lines Chromium logs while loading the page headless."""
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    if exe is None:
+        if os.environ.get("CI"):
+            pytest.fail("Chromium is not installed (scripts/setup.sh installs it): the report cannot be checked")
+        pytest.skip("Chromium is not installed")
+    out = subprocess.run([exe, "--headless", "--no-sandbox", "--disable-gpu", "--enable-logging=stderr", "--v=0",
+                          "--user-data-dir=" + str(html_path.parent / "chromium-profile"),
+                          "--dump-dom", html_path.resolve().as_uri()],
+                         capture_output=True, text=True, timeout=120)
+    assert "</html>" in out.stdout, out.stderr[-2000:]
+    return [m.group(1) for m in re.finditer(r':CONSOLE[^\]]*\] "(.*?)", source:', out.stderr)]
+
+
+def test_solve_writes_json_csv_and_report(tmp_path):
+    r = run("solve", PROBLEMS / "line_ranges.toml", "--out", tmp_path, "--quiet")
+    assert r.returncode == 0, r.stderr
+    res = json.loads((tmp_path / "results.json").read_text())
+    assert res["status"] == "solved" and len(res["hash"]) == 16
+    x = res["variables"]["x"]["components"][0]
+    assert len(x["gates"]) == len(res["times"]) and len(x["slices"]) == len(res["times"]) - 1
+    table = np.genfromtxt(tmp_path / "x.csv", delimiter=",", names=True)
+    assert table.dtype.names == ("t_lb", "t_ub", "x_lb", "x_ub")
+    gates = table[table["t_lb"] == table["t_ub"]]
+    assert np.all(gates["x_lb"] <= np.sin(gates["t_lb"]) + 1) and np.all(np.sin(gates["t_lb"]) + 1 <= gates["x_ub"])
+    assert "201 of 201 truth samples inside" in (tmp_path / "report.html").read_text()
+
+
+def test_exit_codes():
+    assert run("check", PROBLEMS / "causal_chain.toml").returncode == 0
+    bad = run("check", PROBLEMS / "data" / "beacon_ranges.csv")
+    assert bad.returncode == 2 and "beacon_ranges.csv:" in bad.stderr
+    assert run("solve", "/no/such.toml").returncode == 2
+    assert run("solve", PROBLEMS / "causal_chain.toml", "--delta", "-1").returncode == 2
+
+
+def test_no_solution_exits_1_and_says_why(tmp_path):
+    text = (PROBLEMS / "line_ranges.toml").read_text().replace('value = "[-10, 10]"', 'value = "[5, 10]"')
+    problem = PROBLEMS / "test_no_solution.toml"
+    try:
+        problem.write_text(text)
+        r = run("solve", problem, "--out", tmp_path)
+    finally:
+        problem.unlink()
+    assert r.returncode == 1
+    assert "NO SOLUTION" in r.stdout and "constraint" in r.stdout
+    assert "No solution" in (tmp_path / "report.html").read_text()
+
+
+def test_report_in_headless_chromium(tmp_path):
+    assert run("solve", PROBLEMS / "dead_reckoning.toml", "--out", tmp_path, "--quiet").returncode == 0
+    html = (tmp_path / "report.html").read_text()
+    nb_svg = html.count("<svg")
+    assert nb_svg >= 5
+    probe = tmp_path / "probe.html"
+    probe.write_text(html.replace("</body>", PROBE + "</body>"))
+    lines = chromium_console(probe)
+    sizes = [l for l in lines if l.startswith("SVG ")]
+    assert [l for l in lines if not l.startswith("SVG ")] == []  # no error, no warning
+    assert len(sizes) == nb_svg
+    for l in sizes:
+        w, h = map(float, l[4:].split("x"))
+        assert w > 100 and h > 100, l
+
+
+def test_browser_check_sees_console_errors(tmp_path):
+    # The check itself can fail: an uncaught error in a page is seen.
+    page = tmp_path / "broken.html"
+    page.write_text("<!DOCTYPE html><html><body><script>no_such_function();</script></body></html>")
+    lines = chromium_console(page)
+    assert any("no_such_function" in l for l in lines), lines
+
+
+def test_show_and_plot_a_tube_file(tmp_path):
+    td = sillage.TDomain(0, 10, 0.5)
+    x = sillage.Tube(td, "sin(t) + [-0.1, 0.1]")
+    sillage.save_tube(x, str(tmp_path / "x.tube"))
+    r = run("show", tmp_path / "x.tube")
+    assert r.returncode == 0 and "Tube of 1 component(s), 20 slices over [0, 10]" in r.stdout
+    r = run("plot", tmp_path / "x.tube", "--out", tmp_path / "x.svg")
+    assert r.returncode == 0 and (tmp_path / "x.svg").read_text().count("<svg") == 1
+    assert run("show", tmp_path / "missing.tube").returncode == 2

@@ -1,0 +1,50 @@
+"""Problem files from Python: sillage.solve returns the domains as sillage
+objects, the same sets as the C++ network (tests/cpp/problem), errors with
+file:line:column."""
+import math
+from pathlib import Path
+
+import pytest
+
+import sillage
+
+PROBLEMS = Path(__file__).resolve().parents[2] / "examples" / "problems"
+
+
+def test_solve_returns_sillage_objects():
+    r = sillage.solve(str(PROBLEMS / "line_ranges.toml"))
+    assert not r.empty and r.why_empty == ""
+    x, v = r.domains["x"], r.domains["v"]
+    assert isinstance(x, sillage.Tube) and isinstance(v, sillage.Tube)
+    for i in range(0, 201, 7):
+        t = 0.1 * i
+        assert x(t).contains(math.sin(t) + 1)
+    assert x.max_thickness() < 0.5
+    assert r.schedule[-1]["slices"] == 400
+    assert "solved" in repr(r)
+
+
+def test_tube_vectors_and_the_cpp_sets():
+    r = sillage.solve(str(PROBLEMS / "causal_chain.toml"))
+    x = r.domains["x"]
+    assert isinstance(x, sillage.TubeVector) and x.size() == 3
+    # the final box of the file at t = 14
+    assert x[0].gate(x.nb_slices()).is_subset(sillage.Interval(53.8, 56))
+
+
+def test_auto_delta_schedule():
+    r = sillage.solve(str(PROBLEMS / "line_ranges.toml"), auto_delta=True, tolerance=0.05)
+    deltas = [s["delta"] for s in r.schedule]
+    assert len(deltas) >= 2 and all(b == a / 2 for a, b in zip(deltas, deltas[1:]))
+
+
+def test_load_problem_errors_name_the_place(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[time]\ndomain = [0, 1]\ndelta = 0.1\nspeed = 3\n")
+    with pytest.raises(sillage.ParseError, match=r"bad.toml:4:1: found the unknown key 'speed' in \[time\]"):
+        sillage.load_problem(str(bad))
+    p = sillage.load_problem(str(PROBLEMS / "dead_reckoning.toml"))
+    assert p.variables == ["v", "x"] and p.nb_constraints == 3
+    assert "3 nodes" in sillage.check_summary(p)
+    r = sillage.solve_problem(p, delta=0.5)
+    assert r.schedule[0]["slices"] == 128

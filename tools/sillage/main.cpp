@@ -1,0 +1,161 @@
+// The sillage command (docs/cli.md):
+//   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--threads N] [--quiet]
+//   sillage check PROBLEM.toml
+//   sillage show TUBEFILE
+//   sillage plot TUBEFILE --out F.svg
+// Exit codes: 0 solved (or valid), 1 no solution (an empty domain, explained), 2 bad input.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include "sillage/problem/check_summary.h"
+#include "sillage/figures/tube_figure.h"
+#include "sillage/problem/load_problem.h"
+#include "sillage/problem/report_html.h"
+#include "sillage/problem/solve_problem.h"
+#include "sillage/problem/write_results.h"
+#include "sillage/tube/tube_io.h"
+
+using namespace sillage;
+
+namespace {
+
+constexpr int kSolved = 0, kNoSolution = 1, kBadInput = 2;
+
+std::optional<double> parse_delta(const std::string& s, bool& is_auto) {
+  is_auto = s == "auto";
+  if (is_auto || s.empty()) return std::nullopt;
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !(v > 0) || !std::isfinite(v))
+    throw Error("--delta: found \"" + s + "\", expected \"auto\" or a slice width > 0");
+  return v;
+}
+
+int solve(const std::string& file, std::string out, const std::string& delta_text, int threads, bool quiet) {
+  std::optional<tbb::global_control> control;
+  if (threads > 0) control.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  SolveOptions o;
+  o.delta = parse_delta(delta_text, o.auto_delta);
+  const auto start = std::chrono::steady_clock::now();
+  const Problem p = load_problem(file);
+  if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(file).stem()).string();
+  const bool progress = !quiet && isatty(STDERR_FILENO);
+  if (progress)
+    o.on_step = [&](const ScheduleStep& s) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "\rδ = %g (%zu slices): %zu rounds, %zu contractor runs, thickness %.4g, %.2f s   ", s.delta,
+                   s.slices, s.stats.iterations, s.stats.contractor_calls, s.mean_thickness, elapsed);
+    };
+  const SolveResult r = solve_problem(p, o);
+  if (progress) std::fprintf(stderr, "\n");
+  write_results(p, r, out);
+  write_text_file(out, "report.html", report_html(p, r));
+  if (!quiet) {
+    const ScheduleStep& last = r.schedule.back();
+    std::printf("%s: %s with δ = %g (%zu slices), %zu contractor runs, build %.3f s, contraction %.3f s\n",
+                file.c_str(), r.empty ? "NO SOLUTION" : "solved", last.delta, last.slices, last.stats.contractor_calls,
+                r.build_seconds(), r.contract_seconds());
+    if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
+    std::printf("  wrote %s/report.html, results.json and one CSV per tube\n", out.c_str());
+  }
+  return r.empty ? kNoSolution : kSolved;
+}
+
+int check(const std::string& file) {
+  const Problem p = load_problem(file);
+  std::fputs(check_summary(p).c_str(), stdout);
+  return kSolved;
+}
+
+// Tube files hold a Tube (kind 1) or a TubeVector (kind 2): read the kind word.
+bool is_tube_vector_file(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw Error("cannot read " + path);
+  unsigned char head[16] = {};
+  const std::size_t n = std::fread(head, 1, sizeof head, f);
+  std::fclose(f);
+  return n == sizeof head && head[12] == 2;
+}
+
+TubeVector load_any(const std::string& path) {
+  if (is_tube_vector_file(path)) return load_tube_vector(path);
+  return TubeVector({load_tube(path)});
+}
+
+int show(const std::string& path) {
+  const TubeVector x = load_any(path);
+  const TDomain& td = *x.tdomain();
+  std::printf("%s: %s of %zu component(s), %zu slices over [%g, %g]\n", path.c_str(),
+              is_tube_vector_file(path) ? "TubeVector" : "Tube", x.size(), td.nb_slices(), td.t0(), td.tf());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Interval c = x[i].codomain();
+    std::printf("  [%zu] codomain [%.6g, %.6g], volume %.6g, max thickness %.6g%s\n", i, c.lb(), c.ub(),
+                x[i].volume(), x[i].max_thickness(), x[i].is_empty() ? ", EMPTY" : "");
+  }
+  return kSolved;
+}
+
+int plot(const std::string& path, const std::string& out) {
+  const TubeVector x = load_any(path);
+  const std::string title = std::filesystem::path(path).filename().string();
+  const Figure f = x.size() >= 2 ? tube_vector_figure(x, 0, 1, title) : tube_figure(x[0], title);
+  f.save(out);
+  std::printf("wrote %s\n", out.c_str());
+  return kSolved;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sillage: guaranteed state estimation from a problem file (docs/cli.md)"};
+  app.require_subcommand(1);
+  std::string problem, out, delta, tube_file;
+  int threads = 0;
+  bool quiet = false;
+  auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
+  s->add_option("problem", problem, "the problem file (TOML)")->required();
+  s->add_option("--out", out, "output directory (default out/<problem name>)");
+  s->add_option("--delta", delta, "slice width: auto or a value (default: the file's)");
+  s->add_option("--threads", threads, "worker threads (default: all)")->check(CLI::PositiveNumber);
+  s->add_flag("--quiet", quiet, "no progress line, no summary");
+  auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
+  c->add_option("problem", problem, "the problem file (TOML)")->required();
+  auto* sh = app.add_subcommand("show", "summary of a tube file (tube_io)");
+  sh->add_option("tubefile", tube_file, "a file written by save()")->required();
+  auto* pl = app.add_subcommand("plot", "SVG figure of a tube file");
+  pl->add_option("tubefile", tube_file, "a file written by save()")->required();
+  pl->add_option("--out", out, "the SVG file")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kBadInput;
+  }
+  try {
+    if (*s) return solve(problem, out, delta, threads, quiet);
+    if (*c) return check(problem);
+    if (*sh) return show(tube_file);
+    if (*pl) return plot(tube_file, out);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "sillage: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sillage: %s\n", e.what());
+    return kBadInput;
+  }
+  return kBadInput;
+}
