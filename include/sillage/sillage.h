@@ -69,6 +69,7 @@
 
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/dynamics/ctc_qeval.h"
 #include "sillage/dynamics/gomne_tube.h"
@@ -77,6 +78,7 @@
 
 #include "sillage/io/csv.h"
 
+#include "sillage/loops/component_split.h"
 #include "sillage/loops/loop_function.h"
 #include "sillage/loops/loop_sivia.h"
 #include "sillage/loops/path_crossings.h"
@@ -84,6 +86,24 @@
 #include "sillage/loops/topological_degree.h"
 #include "sillage/loops/tplane.h"
 #include "sillage/loops/zero_tests.h"
+
+#include "sillage/slam/bathymetry_dem.h"
+#include "sillage/slam/bathymetry_figures.h"
+#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/slam/bathymetry_range_observation.h"
+#include "sillage/slam/bathymetry_seabed.h"
+#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/slam/bathymetry_tide.h"
+#include "sillage/slam/bathymetry_tubes.h"
+
+#include "sillage/problem/build_network.h"
+#include "sillage/problem/check_summary.h"
+#include "sillage/problem/load_problem.h"
+#include "sillage/problem/problem.h"
+#include "sillage/problem/problem_error.h"
+#include "sillage/problem/report_html.h"
+#include "sillage/problem/solve_problem.h"
+#include "sillage/problem/write_results.h"
 
 #include "sillage/figures/figure.h"
 #include "sillage/figures/html.h"

@@ -11,9 +11,9 @@
 
 namespace sillage {
 
-using problem_detail::describe;
-using problem_detail::Document;
-using problem_detail::Fields;
+using detail::describe;
+using detail::Document;
+using detail::Fields;
 
 namespace {
 

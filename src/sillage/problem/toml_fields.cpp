@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace sillage::problem_detail {
+namespace sillage::detail {
 
 SourcePos Document::pos(const toml::source_region& r) const {
   return SourcePos{file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
@@ -98,4 +98,4 @@ std::string Fields::bound_text(const toml::node& n) const {
   throw ProblemError(doc_.pos(n), describe(n), expected);
 }
 
-}  // namespace sillage::problem_detail
+}  // namespace sillage::detail

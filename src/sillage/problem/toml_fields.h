@@ -10,7 +10,7 @@
 
 #include "sillage/problem/problem_error.h"
 
-namespace sillage::problem_detail {
+namespace sillage::detail {
 
 // The file name and its lines, to quote numbers exactly as written.
 struct Document {
@@ -49,4 +49,4 @@ class Fields {
   std::string where_;
 };
 
-}  // namespace sillage::problem_detail
+}  // namespace sillage::detail

@@ -4,7 +4,7 @@
 
 #include "sillage/expr/parser.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -120,4 +120,4 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
   return out;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

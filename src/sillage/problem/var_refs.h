@@ -13,7 +13,7 @@
 
 #include "sillage/problem/problem_error.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 struct VarRef {
   std::string var;
@@ -41,4 +41,4 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
 // pos moved `offset` characters to the right on its line.
 SourcePos shifted(const SourcePos& pos, std::size_t offset);
 
-}  // namespace sillage
+}  // namespace sillage::detail

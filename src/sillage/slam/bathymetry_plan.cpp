@@ -4,7 +4,7 @@
 
 #include "sillage/error.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -115,4 +115,4 @@ double BathymetryPlan::depth_rate(double t) const {
   return r;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -9,7 +9,7 @@
 // beta then back by pi + beta, beta chosen for the rail spacing).
 #include <vector>
 
-namespace sillage {
+namespace sillage::detail {
 
 class BathymetryPlan {
  public:
@@ -33,4 +33,4 @@ class BathymetryPlan {
   double x0_, y0_, yaw0_;
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -1,6 +1,6 @@
 #include "sillage/slam/bathymetry_rng.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 std::uint64_t splitmix64(std::uint64_t& x) {
@@ -35,4 +35,4 @@ double BathymetryRng::uniform(double lo, double hi) { return lo + (hi - lo) * un
 
 BathymetryRng BathymetryRng::fork(std::uint64_t stream) { return BathymetryRng(next() ^ (stream * 0xd1342543de82ef95ULL)); }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -5,7 +5,7 @@
 // (std::uniform_real_distribution is implementation-defined).
 #include <cstdint>
 
-namespace sillage {
+namespace sillage::detail {
 
 class BathymetryRng {
  public:
@@ -21,4 +21,4 @@ class BathymetryRng {
   std::uint64_t s_[4];
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail
