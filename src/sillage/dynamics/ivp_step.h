@@ -15,8 +15,9 @@
 //     remainder x_{p+1}([B̃])·h^{p+1}; the Jacobian of the polynomial over
 //     [X] from the variational coefficients, M = Σ V_k([X]) h^k;
 //  3. with inputs, the distance from a solution of the inclusion to the
-//     solution with u0 from the same start, by the logarithmic norm μ of
-//     s·J_x over [B]: |x - y|∞ ≤ δ·h·e^{μh}, δ ≥ |f(x,u) - f(x,u0)|∞;
+//     solution with u0 from the same start, componentwise by comparison
+//     with a Metzler majorant P of s·J_x over [B]: |x - y| ≤ h·e^{Ph}·δ,
+//     δ_i ≥ |f_i(x,u) - f_i(x,u0)| (mean value in u over [B] × [u]);
 //  4. Lohner's QR update: A' = Q of a QR factorisation of mid(M·A)
 //     (columns sorted by their length times the width of [r]), [r'] =
 //     Q⁻¹(M·A)[r] + Q⁻¹([z] - c'), with a rigorous enclosure of Q⁻¹.

@@ -220,3 +220,39 @@ TEST(CtcIvp, Laws) {
   o.idempotence = kit::Idempotence::ContractionOnly;
   EXPECT_TRUE(kit::check_laws(contract, gen, o));
 }
+
+TEST(CtcIvp, BoundedInputCoversTheExtremeInputs) {
+  // x' = -x + u, u(t) ∈ [-0.1, 0.1], x(0) = 1: x(t) ∈ e^{-t} ± 0.1 (1 - e^{-t}),
+  // both bounds reached by constant inputs; backward from x(3) too.
+  auto td = TDomain::create(0.0, 3.0, 0.25);
+  Tube x(td);
+  x.set_gate(0, Interval(1.0));
+  const Tube u(td, Interval(-0.1, 0.1));
+  const CtcIvp ctc(Function({"x", "u"}, "-x + u"), 1);
+  ASSERT_TRUE(ctc.contract(x, u));
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+    const Interval e = exp(-Interval(td->t(k)));
+    const Interval lo = e - Interval(0.1) * (Interval(1.0) - e), hi = e + Interval(0.1) * (Interval(1.0) - e);
+    EXPECT_TRUE(x.gate(k).intersects(lo) && x.gate(k).intersects(hi)) << k;
+    EXPECT_LT(x.gate(k).diam(), 1.5 * (hi - lo).ub() + 1e-9) << k;
+  }
+}
+
+TEST(CtcIvp, CausalChainKeepsExtremeTrajectories) {
+  // A chain x1' = -x1 + u, x2' = x1 - x2 (thesis 4.4.1 in spirit), u ∈ [0.9, 1.1],
+  // x(0) = (0, 0): the constant inputs 0.9 and 1.1 give the extreme
+  // trajectories x1 = u(1 - e^{-t}), x2 = u(1 - e^{-t} - t e^{-t}).
+  auto td = TDomain::create(0.0, 5.0, 0.5);
+  TubeVector x(td, 2);
+  x.set_gate(0, IntervalVector{Interval(0.0), Interval(0.0)});
+  const TubeVector u(td, 1, Interval(0.9, 1.1));
+  ASSERT_TRUE(CtcIvp(Function({"x1", "x2", "u"}, "(-x1 + u, x1 - x2)"), 1).contract(x, u));
+  for (double a : {0.9, 1.1}) {
+    for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+      const Interval t(td->t(k)), e = exp(-t);
+      EXPECT_TRUE(x.gate(k)[0].intersects(Interval(a) * (Interval(1.0) - e))) << k;
+      EXPECT_TRUE(x.gate(k)[1].intersects(Interval(a) * (Interval(1.0) - e - t * e))) << k;
+    }
+  }
+  EXPECT_LT(x.gate(td->nb_slices())[0].diam(), 0.4);
+}
