@@ -7,7 +7,8 @@ enclosure (4.24) for several delta: the approach is very pessimistic here (the
 slice-wise wrapping grows like delta * e^t). The closed-form truth
 x(t) = 2 atan(tan(1/2) e^-t) is checked inside on every slice and gate (its
 interval enclosure may stick out by 1e-9 at most). Fig. 4.7: sweeps 1-5 and the
-fixed point. Same computations and printed figures as examples/cpp/sin_ivp.cpp."""
+fixed point. Then CtcIvp (validated integration, docs/ivp.md) on the same
+slices, drawn beside the CtcDeriv fixed point. Same computations and printed figures as examples/cpp/sin_ivp.cpp."""
 import time
 
 import sillage
@@ -137,9 +138,31 @@ def main(deltas=(0.1, 0.01, 0.001, 0.0001), out=None):
     sillage.draw_tube(fig, fixed, sillage.TubeStyle(), truth)
     fig.save(str(out / "sin_ivp_py.svg"))
     ok = ok and truth_excess(fixed, truth) <= 1e-9 and all(truth_excess(s, truth) <= 1e-9 for s in snaps)
+    # Beside CtcDeriv: validated integration (CtcIvp, docs/ivp.md) on the same slices.
+    start = time.process_time()
+    xi = Tube(td)
+    xi.set_gate(0, Interval(1))
+    consistent = sillage.CtcIvp(Function(["x"], "-sin(x)")).contract(xi)
+    cpu = time.process_time() - start
+    ivp_ok = consistent and enclosure_ok(xi) and truth_excess(xi, truth) <= 1e-9
+    ok = ok and ivp_ok
+    print(f"CtcIvp (delta = 0.01, order 20): x(10) in [{xi.gate(n).lb():.14e}, {xi.gate(n).ub():.14e}], "
+          f"width {xi.gate(n).diam():.3g}, {cpu:.3f} s CPU; truth inside: {'yes' if ivp_ok else 'NO'}; "
+          f"CtcDeriv's fixed point: width {fixed.gate(n).diam():.3g}")
+    cmp = sillage.Figure(IntervalVector([Interval(0, TF), Interval(first.lb() - margin, first.ub() + margin)]),
+                         600, 300)
+    cmp.set_title("x' = -sin(x), x(0) = 1, delta = 0.01: CtcDeriv (grey) and CtcIvp (blue) (Python)")
+    cmp.set_labels("t", "x")
+    st = sillage.TubeStyle()
+    st.slices = sillage.Style("#bbbbbb", "none", 0, 1, "CtcDeriv")
+    sillage.draw_tube(cmp, fixed, st)
+    sillage.draw_tube(cmp, xi, sillage.TubeStyle(), truth)
+    cmp.save(str(out / "sin_ivp_ctc_ivp_py.svg"))
     print_result("sin_ivp", summary, ok,
                  [("sin_ivp_py.svg", "x' = -sin(x), x(0) = 1 (4.22): successive contractions and fixed point, "
-                                     "Fig. 4.7, Python; true solution in red")])
+                                     "Fig. 4.7, Python; true solution in red"),
+                  ("sin_ivp_ctc_ivp_py.svg", "the same with validated integration (CtcIvp, blue) beside the "
+                                             "CtcDeriv fixed point (grey), Python")])
     return ok, results
 
 

@@ -1,0 +1,100 @@
+// CtcIvp (validated integration on tubes, docs/ivp.md): the targets of the
+// design issue, each with its final width as a counter.
+//  - SinIvp: x' = -sin x, t ∈ [0, 10], 10 slices, forward only; x0 from a
+//    pool of 4096 points around 1 (the counter: width of x(10) for x0 = 1).
+//  - Harmonic: x1' = x2, x2' = -x1 over 100 periods from a point, 100 slices.
+//  - Lorenz: (10, 28, 8/3) from (15, 15, 36), t ∈ [0, 10], 100 slices.
+//  - DeadReckoning: thesis 3.4, inputs within 1/1000, x0 in the box (3.17),
+//    t ∈ [0, 64], δ = 0.5 (counters: the final x1, x2 bounds).
+// Each iteration copies a fresh tube (cheap beside the integration).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "sillage/dynamics/ctc_ivp.h"
+#include "sillage/tube/tdomain.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace {
+
+using namespace sillage;
+
+void BM_SinIvp(benchmark::State& state) {
+  const auto td = TDomain::create(0.0, 10.0, 1.0);
+  const CtcIvp ctc(Function({"x"}, "-sin(x)"), 0, static_cast<int>(state.range(0)), TimePropag::FORWARD);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> d(0.9, 1.1);
+  std::vector<double> pool(4096);
+  for (double& x0 : pool) x0 = d(rng);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    Tube x(td);
+    x.set_gate(0, Interval(pool[i++ % pool.size()]));
+    benchmark::DoNotOptimize(ctc.contract(x));
+  }
+  Tube x(td);
+  x.set_gate(0, Interval(1.0));
+  ctc.contract(x);
+  state.counters["width_x10"] = x.gate(td->nb_slices()).diam();
+}
+BENCHMARK(BM_SinIvp)->Arg(12)->Arg(16)->Arg(20)->Unit(benchmark::kMillisecond);
+
+void BM_Harmonic100Periods(benchmark::State& state) {
+  const double T = 200 * M_PI;
+  const auto td = TDomain::create(0.0, T, T / 100);
+  const CtcIvp ctc(Function({"x1", "x2"}, "(x2, -x1)"), 0, 20, TimePropag::FORWARD);
+  double w = 0;
+  for (auto _ : state) {
+    TubeVector x(td, 2);
+    x.set_gate(0, IntervalVector{Interval(0.0), Interval(1.0)});
+    benchmark::DoNotOptimize(ctc.contract(x));
+    w = x.gate(td->nb_slices()).max_diam();
+  }
+  state.counters["final_width"] = w;
+}
+BENCHMARK(BM_Harmonic100Periods)->Unit(benchmark::kMillisecond);
+
+void BM_Lorenz(benchmark::State& state) {
+  const auto td = TDomain::create(0.0, 10.0, 0.1);
+  const CtcIvp ctc(Function({"x", "y", "z"}, "(10*(y - x), x*(28 - z) - y, x*y - 8/3*z)"), 0, 20,
+                   TimePropag::FORWARD);
+  double w = 0;
+  for (auto _ : state) {
+    TubeVector x(td, 3);
+    x.set_gate(0, IntervalVector{Interval(15.0), Interval(15.0), Interval(36.0)});
+    benchmark::DoNotOptimize(ctc.contract(x));
+    w = x.gate(td->nb_slices()).max_diam();
+  }
+  state.counters["final_width"] = w;
+}
+BENCHMARK(BM_Lorenz)->Unit(benchmark::kMillisecond);
+
+void BM_DeadReckoning(benchmark::State& state) {
+  // The known part of the inputs is written in f with the time as a state
+  // (τ' = 1); only the noise is an input tube.
+  const auto td = TDomain::create(0.0, 64.0, 0.5);
+  const TubeVector u(td, 2, Interval(-1, 1) / Interval(1000));
+  const CtcIvp ctc(Function({"x1", "x2", "x3", "x4", "tau", "n1", "n2"},
+                            "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)"),
+                   2, 10, TimePropag::FORWARD);
+  const Interval c = Interval(-1, 1) / Interval(100);
+  const IntervalVector x0{Interval(-1, 1), Interval(-1, 1), Interval::half_pi() + c, c, Interval(0.0)};
+  IntervalVector end;
+  for (auto _ : state) {
+    TubeVector x(td, 5);
+    x.set_gate(0, x0);
+    benchmark::DoNotOptimize(ctc.contract(x, u));
+    end = x.gate(td->nb_slices());
+  }
+  state.counters["x1_lb"] = end[0].lb();
+  state.counters["x1_ub"] = end[0].ub();
+  state.counters["x2_lb"] = end[1].lb();
+  state.counters["x2_ub"] = end[1].ub();
+}
+BENCHMARK(BM_DeadReckoning)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,183 @@
+// CtcIvp: sweeps of validated integration over a tube (ctc_ivp.h).
+#include "sillage/dynamics/ctc_ivp.h"
+
+#include <cmath>
+
+#include "sillage/dynamics/ivp_step.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+enum class Crossing { Done, Lost, Empty };
+
+// The tube knows the set much better than the enclosure does in some
+// direction: start again from the box rather than keep a loose wrapping.
+bool much_tighter(const IntervalVector& before, const IntervalVector& after) {
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    if (after[i].diam() < 0.5 * before[i].diam()) return true;
+  }
+  return false;
+}
+
+// Intersects the set with a box known to hold the states; false if empty.
+bool meet(LohnerSet& set, const IntervalVector& known) {
+  const IntervalVector b = set.box & known;
+  if (b.is_empty()) return false;
+  if (much_tighter(set.box, b)) {
+    set = LohnerSet::from_box(b);
+  } else {
+    set.box = b;
+  }
+  return true;
+}
+
+// From t_from to t_to (a slice) in steps that end exactly at t_to; `range`
+// receives the hull of the enclosures over the steps.
+Crossing cross_slice(const IvpStepper& stepper, LohnerSet& set, double t_from, double t_to, const IntervalVector& u,
+                     const IntervalVector& slice, double sign, double tol, IntervalVector& range) {
+  double tau = t_from;
+  double hs = stepper.suggest(set, u, sign, tol);
+  int guard = 0;
+  while (tau != t_to) {
+    if (!(hs > 0.0) || ++guard > 100000) return Crossing::Lost;
+    const double rem = std::abs(t_to - tau);
+    const double next = hs >= 0.95 * rem ? t_to : tau + sign * hs;
+    const Interval h = sign > 0 ? Interval(next) - Interval(tau) : Interval(tau) - Interval(next);
+    IntervalVector r;
+    if (!stepper.step(set, h, u, sign, r)) {
+      hs = 0.5 * std::min(hs, rem);
+      if (hs < 1e-12 * rem) return Crossing::Lost;
+      continue;
+    }
+    range = range.is_empty() ? r : hull(range, r);
+    tau = next;
+    if (!meet(set, tau == t_to ? set.box : slice)) return Crossing::Empty;
+    hs = stepper.suggest(set, u, sign, tol);
+  }
+  return Crossing::Done;
+}
+
+void set_empty(TubeVector& x) {
+  for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
+}
+
+}  // namespace
+
+CtcIvp::CtcIvp(const Function& f, std::size_t nb_inputs, int order, TimePropag propag)
+    : ode_(std::make_shared<TaylorOde>(f)), order_(order), propag_(propag) {
+  if (ode_->nb_inputs() != nb_inputs) {
+    throw DimensionError("CtcIvp: f has " + std::to_string(f.nb_vars()) + " variables and " +
+                         std::to_string(f.image_dim()) + " outputs, so " + std::to_string(ode_->nb_inputs()) +
+                         " inputs, but nb_inputs = " + std::to_string(nb_inputs));
+  }
+  if (order < 1 || order > 60) throw Error("CtcIvp: the order must be in [1, 60], got " + std::to_string(order));
+}
+
+void CtcIvp::set_tolerance(double tol) {
+  if (!(tol > 0.0) || !std::isfinite(tol)) throw Error("CtcIvp::set_tolerance: expected a positive tolerance");
+  tol_ = tol;
+}
+
+bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
+  const std::size_t n = x.size(), N = x.nb_slices();
+  const TDomain& td = *x.tdomain();
+  const IvpStepper stepper(*ode_, order_);
+  std::vector<bool> changed(n, false);
+  auto write = [&](bool gate, std::size_t k, const IntervalVector& v) {
+    for (std::size_t i = 0; i < n; ++i) {
+      Interval& cur = gate ? x[i].data().gates[k] : x[i].data().slices[k];
+      const Interval nv = cur & v[i];
+      if (nv != cur) {
+        cur = nv;
+        changed[i] = true;
+      }
+    }
+  };
+  auto finish = [&] {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (changed[i]) x[i].touch();
+    }
+  };
+  LohnerSet set;
+  bool active = false;
+  for (std::size_t j = 0; j <= N; ++j) {
+    const std::size_t k = sign > 0 ? j : N - j;
+    const IntervalVector g = x.gate(k);
+    if (g.is_empty()) return finish(), false;
+    if (active) {
+      if (!meet(set, g)) return finish(), false;
+      write(true, k, set.box);
+    } else if (!g.is_unbounded()) {
+      set = LohnerSet::from_box(g);
+      active = true;
+    }
+    if (j == N || !active) continue;
+    const std::size_t s = sign > 0 ? k : k - 1;
+    const IntervalVector us = u ? u->slice(s) : IntervalVector(0);
+    const IntervalVector slice = x.slice(s);
+    IntervalVector range = IntervalVector::empty(n);
+    const double to = sign > 0 ? td.t(k + 1) : td.t(k - 1);
+    switch (cross_slice(stepper, set, td.t(k), to, us, slice, sign, tol_, range)) {
+      case Crossing::Lost: active = false; break;
+      case Crossing::Empty: return finish(), false;
+      case Crossing::Done:
+        write(false, s, range);
+        if (x.slice(s).is_empty()) return finish(), false;
+        break;
+    }
+  }
+  finish();
+  return true;
+}
+
+bool CtcIvp::contract(TubeVector& x, const TubeVector& u) const {
+  if (x.size() != nb_states()) {
+    throw DimensionError("CtcIvp::contract: x has " + std::to_string(x.size()) + " components, f has " +
+                         std::to_string(nb_states()) + " states");
+  }
+  if (u.size() != nb_inputs()) {
+    throw DimensionError("CtcIvp::contract: u has " + std::to_string(u.size()) + " components, f has " +
+                         std::to_string(nb_inputs()) + " inputs");
+  }
+  if (u.tdomain() != x.tdomain()) throw DimensionError("CtcIvp::contract: x and u are not on the same TDomain");
+  return contract_impl(x, &u);
+}
+
+bool CtcIvp::contract(TubeVector& x) const {
+  if (nb_inputs() != 0) {
+    throw DimensionError("CtcIvp::contract: f has " + std::to_string(nb_inputs()) +
+                         " inputs; give their tubes, contract(x, u)");
+  }
+  if (x.size() != nb_states()) {
+    throw DimensionError("CtcIvp::contract: x has " + std::to_string(x.size()) + " components, f has " +
+                         std::to_string(nb_states()) + " states");
+  }
+  return contract_impl(x, nullptr);
+}
+
+bool CtcIvp::contract(Tube& x) const {
+  TubeVector xv(std::vector<Tube>{x});
+  const bool ok = contract(xv);
+  x &= xv[0];
+  return ok && !x.is_empty();
+}
+
+bool CtcIvp::contract(Tube& x, const Tube& u) const {
+  TubeVector xv(std::vector<Tube>{x});
+  const TubeVector uv(std::vector<Tube>{u});
+  const bool ok = contract(xv, uv);
+  x &= xv[0];
+  return ok && !x.is_empty();
+}
+
+bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u) const {
+  bool ok = true;
+  if (has(propag_, TimePropag::FORWARD)) ok = sweep(x, u, 1.0);
+  if (ok && has(propag_, TimePropag::BACKWARD)) ok = sweep(x, u, -1.0);
+  if (!ok) set_empty(x);
+  return ok;
+}
+
+}  // namespace sillage

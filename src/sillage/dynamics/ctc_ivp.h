@@ -1,0 +1,72 @@
+#pragma once
+// CtcIvp: the contractor of x' = f(x, u) on a tube [x](·) by validated
+// integration (docs/ivp.md). From each gate whose box is bounded the flow is
+// enclosed by a Taylor method of order p with Lohner's QR wrapping
+// (dynamics/ivp_step.h) over the slices that follow (FORWARD) or precede
+// (BACKWARD, x' = -f backward in time); every slice and gate is intersected
+// with the enclosure, and the integration starts again from a gate that
+// the tube knows better than the enclosure.
+//
+// f: a Function of (x_1..x_n, u_1..u_m) with n outputs (m inputs, possibly
+// none). An input u is a tube with bounded uncertainty: over a slice, u(t)
+// is any function in the slice [u](k) (a differential inclusion); the
+// enclosure covers them all.
+//
+// Steps never cross a gate: a slice is crossed in steps of adaptive length
+// (the Taylor terms of order p and p+1 at the centre below `tolerance`).
+// If no enclosure can be validated (a blow-up, f not smooth there) the
+// integration stops and starts again at the next bounded gate: nothing is
+// contracted in between, nothing is lost.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/network_ctc.h"
+#include "sillage/dynamics/time_propag.h"
+#include "sillage/expr/function.h"
+#include "sillage/expr/taylor.h"
+#include "sillage/tube/tube.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+class CtcIvp : public NetworkCtc {
+ public:
+  // DimensionError if f's variables are not its outputs plus nb_inputs;
+  // Error if f uses an operation with no Taylor rule, or order < 1.
+  explicit CtcIvp(const Function& f, std::size_t nb_inputs = 0, int order = 20,
+                  TimePropag propag = TimePropag::FWD_BWD);
+
+  std::string name() const override { return "CtcIvp"; }
+  // cn.add(ctc, {x}) or cn.add(ctc, {x, u}): tubes or tube vectors.
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
+
+  std::size_t nb_states() const { return ode_->nb_states(); }
+  std::size_t nb_inputs() const { return ode_->nb_inputs(); }
+  int order() const { return order_; }
+  TimePropag time_propag() const { return propag_; }
+  const Function& function() const { return ode_->function(); }
+  // The bound of the last Taylor terms that sets the step (default 1e-16).
+  double tolerance() const { return tol_; }
+  void set_tolerance(double tol);
+
+  // Contracts x in place (touch()es what changed); false if x is now empty
+  // (then every slice and gate is empty). DimensionError on wrong sizes or
+  // TDomains.
+  bool contract(Tube& x) const;
+  bool contract(TubeVector& x) const;
+  bool contract(Tube& x, const Tube& u) const;
+  bool contract(TubeVector& x, const TubeVector& u) const;
+
+ private:
+  bool contract_impl(TubeVector& x, const TubeVector* u) const;
+  bool sweep(TubeVector& x, const TubeVector* u, double sign) const;
+
+  std::shared_ptr<const TaylorOde> ode_;
+  int order_;
+  TimePropag propag_;
+  double tol_ = 1e-16;
+};
+
+}  // namespace sillage

@@ -1,0 +1,258 @@
+// CtcIvp: validated integration on tubes, against closed-form flows and
+// sampled true trajectories (never lost), with the contractor laws.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "kit/contractor_kit.h"
+#include "sillage/dynamics/ctc_ivp.h"
+#include "sillage/error.h"
+#include "sillage/interval/elementary.h"
+
+using namespace sillage;
+
+namespace {
+
+// x' = -sin x: x(t) = 2 atan(e^{-t} tan(x0/2)), enclosed in interval arithmetic.
+Interval sin_flow(double x0, const Interval& t) {
+  return Interval(2.0) * atan(exp(-t) * tan(Interval(x0) / Interval(2.0)));
+}
+
+// A non-validated reference: RK4 in long double with a fine step (its error,
+// ~1e-16, is far below the widths compared to it).
+template <std::size_t N>
+using State = std::array<long double, N>;
+template <std::size_t N>
+State<N> rk4(const std::function<State<N>(const State<N>&)>& f, State<N> x, long double t, int steps) {
+  const long double h = t / steps;
+  for (int s = 0; s < steps; ++s) {
+    State<N> k1 = f(x), y = x;
+    for (std::size_t i = 0; i < N; ++i) y[i] = x[i] + h / 2 * k1[i];
+    State<N> k2 = f(y);
+    for (std::size_t i = 0; i < N; ++i) y[i] = x[i] + h / 2 * k2[i];
+    State<N> k3 = f(y);
+    for (std::size_t i = 0; i < N; ++i) y[i] = x[i] + h * k3[i];
+    State<N> k4 = f(y);
+    for (std::size_t i = 0; i < N; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  }
+  return x;
+}
+
+}  // namespace
+
+TEST(CtcIvp, SinMatchesTheClosedForm) {
+  auto td = TDomain::create(0.0, 10.0, 0.5);
+  Tube x(td);
+  x.set_gate(0, Interval(1.0));
+  ASSERT_TRUE(CtcIvp(Function({"x"}, "-sin(x)")).contract(x));
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+    EXPECT_TRUE(x.gate(k).intersects(sin_flow(1.0, Interval(td->t(k))))) << k;
+    EXPECT_LT(x.gate(k).diam(), 1e-13) << k;
+  }
+  for (std::size_t k = 0; k < td->nb_slices(); ++k) {
+    EXPECT_TRUE(sin_flow(1.0, td->slice_domain(k)).intersects(x.slice(k)));
+    for (int j = 1; j < 8; ++j) {
+      const double t = td->t(k) + j * (td->t(k + 1) - td->t(k)) / 8;
+      EXPECT_TRUE(x.slice(k).intersects(sin_flow(1.0, Interval(t)))) << k;
+    }
+    EXPECT_LT(x.slice(k).diam(), 0.5);
+  }
+}
+
+TEST(CtcIvp, SinBackwardFromTheLastGate) {
+  auto td = TDomain::create(0.0, 3.0, 0.25);
+  Tube x(td);
+  const Interval end = sin_flow(2.0, Interval(3.0));
+  x.set_gate(td->nb_slices(), end);
+  ASSERT_TRUE(CtcIvp(Function({"x"}, "-sin(x)")).contract(x));
+  EXPECT_TRUE(x.gate(0).contains(2.0)) << x.gate(0);
+  EXPECT_LT(x.gate(0).diam(), 1e-10);
+}
+
+TEST(CtcIvp, SinFromABoxKeepsItsCorners) {
+  auto td = TDomain::create(0.0, 5.0, 1.0);
+  Tube x(td);
+  x.set_gate(0, Interval(0.5, 1.5));
+  ASSERT_TRUE(CtcIvp(Function({"x"}, "-sin(x)")).contract(x));
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+    const Interval t(td->t(k));
+    // Monotone flow: the exact gate is [flow(0.5), flow(1.5)]; the mean-value
+    // form over a box this wide overestimates it a few times, no more.
+    EXPECT_TRUE(x.gate(k).intersects(sin_flow(0.5, t))) << k;
+    EXPECT_TRUE(x.gate(k).intersects(sin_flow(1.5, t))) << k;
+    EXPECT_LT(x.gate(k).diam(), 5.0 * (sin_flow(1.5, t).ub() - sin_flow(0.5, t).lb()) + 1e-12) << k;
+  }
+}
+
+TEST(CtcIvp, InconsistentGateEmptiesTheTube) {
+  auto td = TDomain::create(0.0, 2.0, 0.5);
+  Tube x(td);
+  x.set_gate(0, Interval(1.0));
+  x.set_gate(2, Interval(3.0, 4.0));
+  EXPECT_FALSE(CtcIvp(Function({"x"}, "-sin(x)")).contract(x));
+  EXPECT_TRUE(x.is_empty());
+}
+
+TEST(CtcIvp, HarmonicOscillatorOver100Periods) {
+  const double T = 200 * M_PI;
+  auto td = TDomain::create(0.0, T, T / 400);
+  TubeVector x(td, 2);
+  x.set_gate(0, IntervalVector{Interval(0.0), Interval(1.0)});
+  ASSERT_TRUE(CtcIvp(Function({"x1", "x2"}, "(x2, -x1)")).contract(x));
+  for (std::size_t k = 0; k <= td->nb_slices(); k += 7) {
+    const Interval t(td->t(k));
+    EXPECT_TRUE(x.gate(k)[0].intersects(sin(t))) << k;
+    EXPECT_TRUE(x.gate(k)[1].intersects(cos(t))) << k;
+  }
+  // Bounded wrapping: no exponential growth of the width.
+  EXPECT_LT(x.gate(td->nb_slices()).max_diam(), 1e-10) << x.gate(td->nb_slices());
+}
+
+TEST(CtcIvp, LinearSystemFromABox) {
+  // x' = A x, A = [[-1, 2], [-2, -1]]: x(t) = e^{-t} R(-2t) x0, a rotation that
+  // contracts; the corners of the initial box are true trajectories.
+  auto td = TDomain::create(0.0, 4.0, 0.25);
+  TubeVector x(td, 2);
+  x.set_gate(0, IntervalVector{Interval(0.9, 1.1), Interval(-0.1, 0.1)});
+  ASSERT_TRUE(CtcIvp(Function({"x1", "x2"}, "(-x1 + 2*x2, -2*x1 - x2)")).contract(x));
+  for (double a : {0.9, 1.1}) {
+    for (double b : {-0.1, 0.1}) {
+      for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+        const Interval t(td->t(k)), e = exp(-t), c = cos(Interval(2.0) * t), s = sin(Interval(2.0) * t);
+        EXPECT_TRUE(x.gate(k)[0].intersects(e * (Interval(a) * c + Interval(b) * s))) << k;
+        EXPECT_TRUE(x.gate(k)[1].intersects(e * (Interval(b) * c - Interval(a) * s))) << k;
+      }
+    }
+  }
+  // The image of the box is a rotated square of side 0.2 e^{-t}: its hull
+  // at most sqrt(2) times wider, with QR wrapping not much more.
+  const double w = 0.2 * std::exp(-4.0) * std::sqrt(2.0);
+  EXPECT_LT(x.gate(td->nb_slices()).max_diam(), 1.2 * w);
+}
+
+TEST(CtcIvp, LorenzShortHorizonKeepsSampledTrajectories) {
+  auto td = TDomain::create(0.0, 2.0, 0.1);
+  TubeVector x(td, 3);
+  const double r = 1e-6;
+  x.set_gate(0, IntervalVector{Interval(15.0 - r, 15.0 + r), Interval(15.0 - r, 15.0 + r), Interval(36.0 - r, 36.0 + r)});
+  ASSERT_TRUE(CtcIvp(Function({"x", "y", "z"}, "(10*(y - x), x*(28 - z) - y, x*y - 8/3*z)")).contract(x));
+  const std::function<State<3>(const State<3>&)> f = [](const State<3>& s) {
+    return State<3>{10 * (s[1] - s[0]), s[0] * (28 - s[2]) - s[1], s[0] * s[1] - 8.0L / 3 * s[2]};
+  };
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-r, r);
+  for (int sample = 0; sample < 6; ++sample) {
+    State<3> s0{15.0L + u(rng), 15.0L + u(rng), 36.0L + u(rng)};
+    for (std::size_t k : {5u, 10u, 20u}) {
+      const State<3> s = rk4<3>(f, s0, td->t(k), 4000 * static_cast<int>(k));
+      for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_TRUE(x.gate(k)[i].inflate(1e-9).contains(static_cast<double>(s[i]))) << k << " " << i;
+      }
+    }
+  }
+  EXPECT_LT(x.gate(20).max_diam(), 1e-2);
+}
+
+TEST(CtcIvp, VanDerPolKeepsSampledTrajectories) {
+  auto td = TDomain::create(0.0, 6.0, 0.5);
+  TubeVector x(td, 2);
+  const double r = 1e-3;
+  x.set_gate(0, IntervalVector{Interval(2.0 - r, 2.0 + r), Interval(-r, r)});
+  ASSERT_TRUE(CtcIvp(Function({"x1", "x2"}, "(x2, (1 - x1^2)*x2 - x1)")).contract(x));
+  const std::function<State<2>(const State<2>&)> f = [](const State<2>& s) {
+    return State<2>{s[1], (1 - s[0] * s[0]) * s[1] - s[0]};
+  };
+  for (double a : {-r, r}) {
+    for (double b : {-r, 0.0, r}) {
+      for (std::size_t k = 1; k <= td->nb_slices(); k += 3) {
+        const State<2> s = rk4<2>(f, State<2>{2.0L + a, b}, td->t(k), 4000 * static_cast<int>(k));
+        EXPECT_TRUE(x.gate(k)[0].inflate(1e-9).contains(static_cast<double>(s[0]))) << k;
+        EXPECT_TRUE(x.gate(k)[1].inflate(1e-9).contains(static_cast<double>(s[1]))) << k;
+      }
+    }
+  }
+  EXPECT_LT(x.gate(td->nb_slices()).max_diam(), 0.05);
+}
+
+TEST(CtcIvp, OnlyContractsWhatIsKnown) {
+  // A tube already tighter than the flow somewhere: never widened.
+  auto td = TDomain::create(0.0, 2.0, 0.5);
+  Tube x(td, Interval(-10.0, 10.0));
+  x.set_gate(0, Interval(0.9, 1.1));
+  x.set(Interval(0.0, 0.95), 2);
+  const Tube before = x;
+  ASSERT_TRUE(CtcIvp(Function({"x"}, "-sin(x)")).contract(x));
+  EXPECT_TRUE(x.is_subset(before));
+}
+
+TEST(CtcIvp, ArgumentErrors) {
+  EXPECT_THROW(CtcIvp(Function({"x"}, "abs(x)")), Error);
+  EXPECT_THROW(CtcIvp(Function({"x", "u"}, "u"), 0), DimensionError);
+  EXPECT_THROW(CtcIvp(Function({"x"}, "x"), 0, 0), Error);
+  auto td = TDomain::create(0.0, 1.0, 0.5);
+  TubeVector x(td, 2);
+  Tube y(td);
+  EXPECT_THROW(CtcIvp(Function({"x"}, "-x")).contract(x), DimensionError);
+  EXPECT_THROW(CtcIvp(Function({"x", "u"}, "u"), 1).contract(y), DimensionError);
+}
+
+TEST(CtcIvp, Laws) {
+  // x1' = x2, x2' = -x1 around a x1 = a sin(t + p), x2 = a cos(t + p).
+  const auto gen = [](std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> ua(0.3, 2.0), up(-3.0, 3.0);
+    const double a = ua(rng), p = up(rng);
+    const kit::Trajectory1 s = [a, p](const Interval& t) { return Interval(a) * sin(t + Interval(p)); };
+    const kit::Trajectory1 c = [a, p](const Interval& t) { return Interval(a) * cos(t + Interval(p)); };
+    const auto td = kit::random_tdomain(rng, 12);
+    kit::Case k;
+    k.domains = {TubeVector({kit::tube_around(td, s, rng, 0.2, 0.6), kit::tube_around(td, c, rng, 0.2, 0.6)})};
+    k.truth = {std::vector<kit::Trajectory1>{s, c}};
+    return k;
+  };
+  const CtcIvp ctc(Function({"x1", "x2"}, "(x2, -x1)"), 0, 12);
+  const auto contract = [&ctc](kit::Domains& d) { ctc.contract(std::get<TubeVector>(d[0])); };
+  kit::Options o;
+  o.cases = 15;
+  o.idempotence = kit::Idempotence::ContractionOnly;
+  EXPECT_TRUE(kit::check_laws(contract, gen, o));
+}
+
+TEST(CtcIvp, BoundedInputCoversTheExtremeInputs) {
+  // x' = -x + u, u(t) ∈ [-0.1, 0.1], x(0) = 1: x(t) ∈ e^{-t} ± 0.1 (1 - e^{-t}),
+  // both bounds reached by constant inputs; backward from x(3) too.
+  auto td = TDomain::create(0.0, 3.0, 0.25);
+  Tube x(td);
+  x.set_gate(0, Interval(1.0));
+  const Tube u(td, Interval(-0.1, 0.1));
+  const CtcIvp ctc(Function({"x", "u"}, "-x + u"), 1);
+  ASSERT_TRUE(ctc.contract(x, u));
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+    const Interval e = exp(-Interval(td->t(k)));
+    const Interval lo = e - Interval(0.1) * (Interval(1.0) - e), hi = e + Interval(0.1) * (Interval(1.0) - e);
+    EXPECT_TRUE(x.gate(k).intersects(lo) && x.gate(k).intersects(hi)) << k;
+    EXPECT_LT(x.gate(k).diam(), 1.5 * (hi - lo).ub() + 1e-9) << k;
+  }
+}
+
+TEST(CtcIvp, CausalChainKeepsExtremeTrajectories) {
+  // A chain x1' = -x1 + u, x2' = x1 - x2 (thesis 4.4.1 in spirit), u ∈ [0.9, 1.1],
+  // x(0) = (0, 0): the constant inputs 0.9 and 1.1 give the extreme
+  // trajectories x1 = u(1 - e^{-t}), x2 = u(1 - e^{-t} - t e^{-t}).
+  auto td = TDomain::create(0.0, 5.0, 0.5);
+  TubeVector x(td, 2);
+  x.set_gate(0, IntervalVector{Interval(0.0), Interval(0.0)});
+  const TubeVector u(td, 1, Interval(0.9, 1.1));
+  ASSERT_TRUE(CtcIvp(Function({"x1", "x2", "u"}, "(-x1 + u, x1 - x2)"), 1).contract(x, u));
+  for (double a : {0.9, 1.1}) {
+    for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+      const Interval t(td->t(k)), e = exp(-t);
+      EXPECT_TRUE(x.gate(k)[0].intersects(Interval(a) * (Interval(1.0) - e))) << k;
+      EXPECT_TRUE(x.gate(k)[1].intersects(Interval(a) * (Interval(1.0) - e - t * e))) << k;
+    }
+  }
+  EXPECT_LT(x.gate(td->nb_slices())[0].diam(), 0.4);
+}

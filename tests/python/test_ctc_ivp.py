@@ -1,0 +1,109 @@
+"""CtcIvp from Python: x' = -sin x against its closed form, the harmonic
+oscillator on a TubeVector, an input tube, a network, errors and the laws."""
+import math
+
+import pytest
+import sillage
+from sillage import CtcDeriv, CtcIvp, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
+
+import contractor_kit as kit
+
+
+def sin_flow(x0, t):
+    """x(t) = 2 atan(e^-t tan(x0/2)), enclosed in interval arithmetic."""
+    return Interval(2) * sillage.atan(sillage.exp(-t) * sillage.tan(Interval(x0) / Interval(2)))
+
+
+def test_sin_closed_form_and_width():
+    td = TDomain(0.0, 10.0, 0.5)
+    x = Tube(td)
+    x.set_gate(0, Interval(1))
+    assert CtcIvp(Function(["x"], "-sin(x)")).contract(x) is True
+    for k in range(td.nb_slices() + 1):
+        assert x.gate(k).intersects(sin_flow(1.0, Interval(td.t(k))))
+    assert x.gate(td.nb_slices()).diam() < 1e-15
+    assert x.gate(td.nb_slices()).intersects(sin_flow(1.0, Interval(10.0)))
+
+
+def test_tighter_than_ctc_deriv():
+    td = TDomain(0.0, 10.0, 0.01)
+    x = Tube(td)
+    x.set_gate(0, Interval(1))
+    v = Tube(td)
+    net = sillage.ContractorNetwork()
+    net.add(sillage.CtcFunction(Function(["v", "x"], "v + sin(x)")), [v, x])
+    net.add(CtcDeriv(), [x, v])
+    net.contract()
+    y = Tube(td)
+    y.set_gate(0, Interval(1))
+    CtcIvp(Function(["x"], "-sin(x)")).contract(y)
+    assert y.gate(td.nb_slices()).diam() < 1e-6 * x.gate(td.nb_slices()).diam()
+
+
+def test_harmonic_oscillator_tube_vector():
+    td = TDomain(0.0, 20 * math.pi, 0.5)
+    x = TubeVector(td, 2)
+    x.set_gate(0, IntervalVector([Interval(0), Interval(1)]))
+    ctc = CtcIvp(Function(["x1", "x2"], "(x2, -x1)"))
+    assert ctc.nb_states() == 2 and ctc.nb_inputs() == 0 and ctc.order() == 20
+    assert ctc.contract(x)
+    n = td.nb_slices()
+    t = Interval(td.t(n))
+    assert x.gate(n)[0].intersects(sillage.sin(t))
+    assert x.gate(n)[1].intersects(sillage.cos(t))
+    assert x.gate(n).max_diam() < 1e-11
+
+
+def test_input_tube_covers_every_input():
+    # x' = -x + u, u(t) in [-0.1, 0.1], x(0) = 1: x(t) in e^-t ± 0.1 (1 - e^-t), attained by u = ±0.1.
+    td = TDomain(0.0, 3.0, 0.25)
+    x = Tube(td)
+    x.set_gate(0, Interval(1))
+    u = Tube(td, Interval(-0.1, 0.1))
+    assert CtcIvp(Function(["x", "u"], "-x + u"), nb_inputs=1).contract(x, u)
+    for k in range(td.nb_slices() + 1):
+        t = Interval(td.t(k))
+        e = sillage.exp(-t)
+        lo, hi = e - Interval(0.1) * (Interval(1) - e), e + Interval(0.1) * (Interval(1) - e)
+        assert x.gate(k).intersects(lo) and x.gate(k).intersects(hi)
+        assert x.gate(k).diam() < 1.5 * (hi - lo).ub() + 1e-9
+
+
+def test_in_a_network():
+    td = TDomain(0.0, 4.0, 0.5)
+    x = TubeVector(td, 2)
+    x.set_gate(0, IntervalVector([Interval(0), Interval(1)]))
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcIvp(Function(["x1", "x2"], "(x2, -x1)")), [x])
+    cn.contract()
+    assert x.gate(td.nb_slices())[0].intersects(sillage.sin(Interval(4.0)))
+    assert x.gate(td.nb_slices()).max_diam() < 1e-12
+
+
+def test_errors():
+    with pytest.raises(sillage.DimensionError):
+        CtcIvp(Function(["x", "u"], "u"))
+    with pytest.raises(sillage.Error, match="abs"):
+        CtcIvp(Function(["x"], "abs(x)"))
+    td = TDomain(0.0, 1.0, 0.5)
+    with pytest.raises(sillage.DimensionError):
+        CtcIvp(Function(["x"], "-x")).contract(TubeVector(td, 2))
+    assert "CtcIvp" in repr(CtcIvp(Function(["x"], "-x")))
+
+
+def test_laws():
+    def generate(rng):
+        a, p = rng.uniform(0.3, 2.0), rng.uniform(-3.0, 3.0)
+
+        def s(t):
+            return Interval(a) * sillage.sin(t + Interval(p))
+
+        def c(t):
+            return Interval(a) * sillage.cos(t + Interval(p))
+
+        td = kit.random_tdomain(rng, 8)
+        return kit.Case([TubeVector([kit.tube_around(td, s, rng, 0.2, 0.6), kit.tube_around(td, c, rng, 0.2, 0.6)])],
+                        [[s, c]])
+
+    ctc = CtcIvp(Function(["x1", "x2"], "(x2, -x1)"), order=10)
+    kit.check_laws(lambda d: ctc.contract(d[0]), generate, cases=6, idempotence="contraction")
