@@ -71,6 +71,7 @@
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_increment.h"
+#include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ctc_qeval.h"
 #include "sillage/dynamics/gomne_tube.h"
 #include "sillage/dynamics/time_propag.h"

@@ -8,7 +8,7 @@
 
 #include "sillage/interval/elementary.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -261,4 +261,4 @@ bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u
   return true;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

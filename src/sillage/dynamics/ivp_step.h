@@ -30,7 +30,7 @@
 #include "sillage/interval/interval_matrix.h"
 #include "sillage/interval/interval_vector.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 struct LohnerSet {
   Vector c;
@@ -63,4 +63,4 @@ class IvpStepper {
   int order_;
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail

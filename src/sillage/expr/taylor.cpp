@@ -7,7 +7,7 @@
 #include "sillage/error.h"
 #include "sillage/interval/elementary.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -263,4 +263,4 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
   return true;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -22,7 +22,7 @@
 #include "sillage/expr/tape.h"
 #include "sillage/interval/interval.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 class TaylorOde {
  public:
@@ -53,4 +53,4 @@ class TaylorOde {
   detail::Tape var_tape_;  // f, then J_x row-major (n*n outputs)
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail

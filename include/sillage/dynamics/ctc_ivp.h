@@ -25,11 +25,14 @@
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/expr/function.h"
-#include "sillage/expr/taylor.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {
+
+namespace detail {
+class TaylorOde;  // expr/taylor.h (internal)
+}  // namespace detail
 
 class CtcIvp : public NetworkCtc {
  public:
@@ -63,7 +66,7 @@ class CtcIvp : public NetworkCtc {
   bool contract_impl(TubeVector& x, const TubeVector* u) const;
   bool sweep(TubeVector& x, const TubeVector* u, double sign) const;
 
-  std::shared_ptr<const TaylorOde> ode_;
+  std::shared_ptr<const detail::TaylorOde> ode_;
   int order_;
   TimePropag propag_;
   double tol_ = 1e-16;
