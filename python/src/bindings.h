@@ -49,4 +49,5 @@ void init_tube_figures(py::module_& m);
 void init_figures(py::module_& m);
 void init_loop_figures(py::module_& m);
 void init_qinter(py::module_& m);
+void init_slam(py::module_& m);
 }  // namespace sillage::python

@@ -26,4 +26,5 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_tube_figures(m);
   sillage::python::init_loop_figures(m);
   sillage::python::init_qinter(m);
+  sillage::python::init_slam(m);
 }

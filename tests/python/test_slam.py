@@ -1,0 +1,92 @@
+"""The slam/ layer from Python (thesis ch. 7): CtcT1T2 (Alg. 11) on hand cases
+and a drifting tube with a known loop, CtcOmega (Alg. 12) on a two-box paving,
+errors and reprs."""
+import math
+
+import pytest
+import sillage
+from sillage import CtcOmega, CtcT1T2, Interval, IntervalVector, TDomain, Tube, TubeVector
+
+
+def drifting_loop():
+    """p*(t) = cos(t) on [0, 2π]: thin early, drifting late; w thin."""
+    td = TDomain(0.0, 2 * math.pi, 0.01)
+    p = TubeVector([Tube(td, "cos(t) + [-1,1]*(0.02 + 0.1*t)")])
+    w = TubeVector([Tube(td, "-sin(t) + [-0.01,0.01]")])
+    return td, p, w, sillage.Trajectory("cos(t)", Interval(0, 2 * math.pi))
+
+
+def two_gates(g2, g7):
+    """p in [-10, 10] on [0, 10], w unknown, gates 2 and 7 given."""
+    td = TDomain(0.0, 10.0, 1.0)
+    p, w = Tube(td, Interval(-10, 10)), Tube(td, Interval())
+    p.set_gate(2, g2)
+    p.set_gate(7, g7)
+    return td, p, w
+
+
+def test_known_times_intersect_the_two_gates():
+    td, p, w = two_gates(Interval(0, 1), Interval(0.5, 2))
+    t1, t2 = Interval(2.0), Interval(7.0)
+    assert CtcT1T2().contract(t1, t2, p, w)
+    assert p.gate(2) == Interval(0.5, 1) and p.gate(7) == Interval(0.5, 1)
+
+
+def test_times_contracted_in_place():
+    td = TDomain(0.0, 10.0, 0.5)
+    p = TubeVector([Tube(td, "t")])
+    w = TubeVector([Tube(td, Interval(1.0))])
+    t1, t2 = Interval(1, 4), Interval(3, 8)
+    assert CtcT1T2().contract(t1, t2, p, w)
+    assert t1 == Interval(3, 4) and t2 == Interval(3, 4)
+
+
+def test_drifting_tube_pulled_back_truth_kept():
+    td, p, w, truth = drifting_loop()
+    before = p.copy()
+    t1, t2 = Interval(1.1, 1.3), Interval(4.9, 5.3)
+    assert CtcT1T2().contract(t1, t2, p, w)
+    assert p.is_subset(before) and p.volume() < before.volume()
+    assert p[0].contains(truth)
+    assert t1.contains(1.2) and t2.contains(2 * math.pi - 1.2)
+    k = td.slice_index(5.1)
+    assert before[0].thickness(k) > 1.0 and p[0].thickness(k) < 0.6
+
+
+def test_inconsistent_and_bad_input():
+    td, p, w = two_gates(Interval(0, 1), Interval(2, 3))
+    t1, t2 = Interval(2.0), Interval(7.0)
+    assert not CtcT1T2().contract(t1, t2, p, w)
+    assert t1.is_empty() and t2.is_empty() and p.is_empty()
+    with pytest.raises(sillage.DimensionError):
+        CtcT1T2().contract(Interval(1, 2), Interval(3, 4), TubeVector(td, 2), TubeVector(td, 3))
+    with pytest.raises(sillage.Error, match="t1"):
+        CtcT1T2().contract(Interval(20, 30), Interval(3, 4), TubeVector(td, 2), TubeVector(td, 2))
+    with pytest.raises(sillage.Error):
+        CtcT1T2(ratio=1.0)
+
+
+def test_omega_two_box_paving_is_the_hull_of_each_box():
+    td, p, w, truth = drifting_loop()
+    boxes = [IntervalVector([Interval(1.1, 1.3), Interval(4.9, 5.3)]),
+             IntervalVector([Interval(1.0, 1.1), Interval(5.2, 5.4)])]
+    expected = TubeVector(td, 1, Interval.empty())
+    for b in boxes:
+        q = p.copy()
+        t1, t2 = b[0], b[1]
+        assert CtcT1T2().contract(t1, t2, q, w)
+        expected |= q
+    before = p.copy()
+    assert CtcOmega().contract(boxes, p, w)
+    assert p == expected and p.is_subset(before) and p[0].contains(truth)
+    # an inconsistent box is left out; no consistent box: p emptied
+    q = before.copy()
+    assert CtcOmega().contract(boxes + [IntervalVector([Interval(1.1, 1.3), Interval(2.9, 3.3)])], q, w)
+    assert q == expected
+    assert not CtcOmega().contract([IntervalVector([Interval(1.1, 1.3), Interval(2.9, 3.3)])], q, w)
+    assert q.is_empty()
+
+
+def test_reprs():
+    assert repr(CtcT1T2()) == "CtcT1T2(ratio=0.001, max_passes=100)"
+    assert repr(CtcOmega()) == "<CtcOmega>"
