@@ -1,9 +1,11 @@
-// The slam/ layer (thesis ch. 7): CtcT1T2 (Alg. 11), CtcOmega (Alg. 12).
+// The slam/ layer (thesis ch. 7): CtcT1T2 (Alg. 11), CtcOmega (Alg. 12),
+// CtcPImpliesZ (Alg. 13-14) with its rows (Table 7.2).
 // Contractions run with the GIL released.
 #include <pybind11/stl.h>
 
 #include "bindings.h"
 #include "sillage/slam/ctc_omega.h"
+#include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/slam/ctc_t1t2.h"
 
 namespace sillage::python {
@@ -53,6 +55,53 @@ void init_slam(py::module_& m) {
           "Contracts the TubeVector p in place: p &= union over the t-boxes ([t1], [t2]) of CtcT1T2 on each. Boxes "
           "whose contraction is inconsistent are left out; if all are, p is emptied. Returns False if p is empty.")
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
+
+  py::class_<SlamRow>(m, "SlamRow", "One iteration of C_{p=>z} or of the temporal SLAM (a row of thesis Table 7.2).")
+      .def(py::init<>(), "An empty row.")
+      .def_readonly("iteration", &SlamRow::iteration, "1, 2, ...")
+      .def_readonly("fast", &SlamRow::fast, "Alg. 14 (True) or Alg. 13 (False).")
+      .def_readonly("nb_detections", &SlamRow::nb_detections, "Complete loop detections of the t-plane.")
+      .def_readonly("nb_proofs", &SlamRow::nb_proofs, "Detections proven to hold a loop (degree test).")
+      .def_readonly("seconds", &SlamRow::seconds, "Wall-clock time of the iteration.")
+      .def_readonly("cumulated_seconds", &SlamRow::cumulated_seconds, "Time since the first iteration.")
+      .def_readonly("contraction_tf", &SlamRow::contraction_tf, "1 - width(p(t_f)) / its input width (summed).")
+      .def_readonly("contraction_t0", &SlamRow::contraction_t0, "The same at t_0.")
+      .def_readonly("nb_atoms_touched", &SlamRow::nb_atoms_touched, "Gates and slices C_Omega worked on.")
+      .def("__repr__", [](const SlamRow& r) { return to_string(r); });
+
+  py::class_<CtcPImpliesZ, NetworkCtc, std::shared_ptr<CtcPImpliesZ>>(
+      m, "CtcPImpliesZ",
+      "The inter-temporal implication contractor C_{p=>z} (thesis (7.9), Alg. 13, fast=True: Alg. 14):\n"
+      "p(t1) = p(t2) => z(t1) = z(t2), p' = w. contract(p, w, z) contracts the 2-D TubeVector p to a fixed\n"
+      "point and returns one SlamRow per iteration; ContractorNetwork.add(CtcPImpliesZ(eps), [p, w, z]) binds it.")
+      .def(py::init<double, bool>(), py::arg("eps"), py::arg("fast") = false,
+           "The contractor; eps > 0 is the width of the t-boxes (about the time step).")
+      .def_property_readonly("eps", &CtcPImpliesZ::eps, "The width of the t-boxes.")
+      .def_property_readonly("fast", &CtcPImpliesZ::fast, "Alg. 14 (the hull of each component) or Alg. 13.")
+      .def("set_ratio", &CtcPImpliesZ::set_ratio, py::arg("ratio"),
+           "The fixed point: stop when no gate or slice of p shrinks by more than ratio (in [0, 1)).")
+      .def("set_max_iterations", &CtcPImpliesZ::set_max_iterations, py::arg("n"), "A cap on the iterations (>= 1).")
+      .def(
+          "contract",
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z) {
+            py::gil_scoped_release unlocked;
+            return c.contract(p, w, z);
+          },
+          py::arg("p"), py::arg("w"), py::arg("z"),
+          "Contracts the 2-D TubeVector p in place (w its derivative, z the observations, a TubeVector of any "
+          "dimension); returns the list of SlamRow, one per iteration. p is emptied when the observations "
+          "contradict a proven loop.")
+      .def(
+          "contract",
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const Tube& z) {
+            py::gil_scoped_release unlocked;
+            return c.contract(p, w, z);
+          },
+          py::arg("p"), py::arg("w"), py::arg("z"), "The same with a scalar observation Tube z.")
+      .def("__repr__", [](const CtcPImpliesZ& c) {
+        return "CtcPImpliesZ(eps=" + py::repr(py::float_(c.eps())).cast<std::string>() +
+               ", fast=" + (c.fast() ? "True" : "False") + ")";
+      });
 }
 
 }  // namespace sillage::python

@@ -5,7 +5,7 @@ import math
 
 import pytest
 import sillage
-from sillage import CtcOmega, CtcT1T2, Interval, IntervalVector, TDomain, Tube, TubeVector
+from sillage import CtcOmega, CtcPImpliesZ, CtcT1T2, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 
 def drifting_loop():
@@ -90,3 +90,64 @@ def test_omega_two_box_paving_is_the_hull_of_each_box():
 def test_reprs():
     assert repr(CtcT1T2()) == "CtcT1T2(ratio=0.001, max_passes=100)"
     assert repr(CtcOmega()) == "<CtcOmega>"
+
+
+def small_slam(bias="0"):
+    """The figure eight of tests/cpp/slam/small_slam.h: one self-crossing at
+    t1 = 1/2, t2 = 1/2 + π; dead reckoning from a start known to ±0.05 with
+    velocities to ±0.2; z = g(p) to ±0.01 (g never given)."""
+    td = TDomain(0.0, 5.0, 0.01)
+    w = TubeVector([Tube(td, "10*cos(t - 0.5) + [-0.2,0.2]"), Tube(td, "10*cos(2*t - 1) + [-0.2,0.2]")])
+    z = Tube(td, "sin(10*sin(t - 0.5)/3) + cos(5*sin(2*t - 1)/4) + sin(t - 0.5) + [-0.01,0.01] + " + bias)
+    p = TubeVector(td, 2)
+    p.set_gate(0, IntervalVector([Interval(-4.85, -4.75), Interval(-4.26, -4.16)]))
+    sillage.CtcDeriv().contract(p, w)
+    truth = [sillage.Trajectory("10*sin(t - 0.5)", Interval(0, 5)), sillage.Trajectory("5*sin(2*t - 1)", Interval(0, 5))]
+    return td, p, w, z, truth
+
+
+def test_p_implies_z_accurate_pulls_the_end_back_and_keeps_the_truth():
+    td, p, w, z, truth = small_slam()
+    dr = p.copy()
+    rows = CtcPImpliesZ(0.01).contract(p, w, z)
+    assert rows and rows[0].nb_proofs == 1 and not rows[0].fast
+    assert rows[-1].contraction_tf > 0.1
+    assert [r.iteration for r in rows] == list(range(1, len(rows) + 1))
+    assert p.is_subset(dr) and p.contains(truth)
+
+
+def test_p_implies_z_fast_then_accurate_never_wider():
+    td, p, w, z, truth = small_slam()
+    fast_rows = CtcPImpliesZ(0.01, fast=True).contract(p, w, z)
+    assert fast_rows[0].fast and p.contains(truth)
+    after_fast = p.copy()
+    CtcPImpliesZ(0.01).contract(p, w, z)
+    assert p.is_subset(after_fast) and p.contains(truth)
+
+
+def test_constant_bias_changes_nothing():
+    td, p, w, z, _ = small_slam()
+    _, q, wq, zq, _ = small_slam("3.25")
+    CtcPImpliesZ(0.01).contract(p, w, z)
+    CtcPImpliesZ(0.01).contract(q, wq, zq)
+    n = td.nb_slices()
+    assert all(p[i].slice(k) == q[i].slice(k) and p[i].gate(k) == q[i].gate(k) for i in range(2) for k in range(n))
+
+
+def test_p_implies_z_in_a_network():
+    td, p, w, z, truth = small_slam()
+    dr = p.copy()
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcPImpliesZ(0.01), [p, w, TubeVector([z])])
+    assert not cn.contract().empty
+    assert p.is_subset(dr) and p.volume() < dr.volume() and p.contains(truth)
+
+
+def test_p_implies_z_bad_input_and_repr():
+    td, p, w, z, truth = small_slam()
+    with pytest.raises(sillage.Error):
+        CtcPImpliesZ(0.0)
+    with pytest.raises(sillage.DimensionError):
+        CtcPImpliesZ(0.01).contract(TubeVector(td, 3), w, z)
+    assert repr(CtcPImpliesZ(0.01, fast=True)) == "CtcPImpliesZ(eps=0.01, fast=True)"
+    assert repr(sillage.SlamRow()).startswith("SlamRow(iteration=0, fast=False")

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "sillage/cn/tube_changes.h"
+#include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -32,8 +33,9 @@ void check_boxes(const std::vector<IntervalVector>& boxes, const char* where) {
 
 }  // namespace
 
-bool OmegaHull::apply_to(TubeVector& p) const {
+bool OmegaHull::apply_to(TubeVector& p, std::size_t* nb_shrunk, double ratio) const {
   if (empty) {
+    if (nb_shrunk && !p.is_empty()) ++*nb_shrunk;
     for (std::size_t i = 0; i < p.size(); ++i) p[i].set(Interval::empty());
     return false;
   }
@@ -42,6 +44,7 @@ bool OmegaHull::apply_to(TubeVector& p) const {
     Interval& x = atom_ref(p[a.component], a.atom);
     const Interval y = x & a.value;
     if (y != x) {
+      if (nb_shrunk && shrank(x, y, ratio)) ++*nb_shrunk;
       x = y;
       touched[a.component] = true;
     }

@@ -38,7 +38,9 @@ struct OmegaHull {
   std::size_t nb_touched = 0;     // atoms touched, summed over the boxes (the cost)
 
   // p ∩= the hull (empty: p emptied). Returns false if p is empty after.
-  bool apply_to(TubeVector& p) const;
+  // nb_shrunk, if given, is increased by the atoms that shrank by more than
+  // `ratio` (shrink.h).
+  bool apply_to(TubeVector& p, std::size_t* nb_shrunk = nullptr, double ratio = 0.0) const;
 };
 
 class CtcOmega {
