@@ -1,5 +1,6 @@
 // The slam/ layer (thesis ch. 7): CtcT1T2 (Alg. 11), CtcOmega (Alg. 12),
-// CtcPImpliesZ (Alg. 13-14) with its rows (Table 7.2).
+// CtcPImpliesZ (Alg. 13-14) with its rows (Table 7.2), temporal_slam
+// (Alg. 15), the bathymetric observation (7.29)-(7.30).
 // Contractions run with the GIL released.
 #include <pybind11/stl.h>
 
@@ -7,6 +8,9 @@
 #include "sillage/slam/ctc_omega.h"
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/slam/ctc_t1t2.h"
+#include "sillage/slam/observation.h"
+#include "sillage/slam/temporal_slam.h"
+#include "sillage/expr/function.h"
 
 namespace sillage::python {
 
@@ -102,6 +106,44 @@ void init_slam(py::module_& m) {
         return "CtcPImpliesZ(eps=" + py::repr(py::float_(c.eps())).cast<std::string>() +
                ", fast=" + (c.fast() ? "True" : "False") + ")";
       });
+
+  py::class_<TemporalSlamOptions>(m, "TemporalSlamOptions", "Options of temporal_slam.")
+      .def(py::init<>(), "eps=0.1, fast and accurate both on, max_rounds=20.")
+      .def_readwrite("eps", &TemporalSlamOptions::eps, "Width of the t-boxes (about the time step).")
+      .def_readwrite("fast", &TemporalSlamOptions::fast, "Run Alg. 14 to its fixed point.")
+      .def_readwrite("accurate", &TemporalSlamOptions::accurate, "Then Alg. 13 to its fixed point.")
+      .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, "Cap on the rounds per algorithm.")
+      .def("__repr__", [](const py::object& self) { return fields_repr(self); });
+
+  m.def(
+      "temporal_slam",
+      [](TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z, const Function& f, const Function& h,
+         const TemporalSlamOptions& o) {
+        py::gil_scoped_release unlocked;
+        return temporal_slam(x, v, u, z, f, h, o);
+      },
+      py::arg("x"), py::arg("v"), py::arg("u"), py::arg("z"), py::arg("f"), py::arg("h"),
+      py::arg("options") = TemporalSlamOptions(),
+      "The temporal SLAM of thesis Alg. 15: contracts the state tube x and its derivative v in place from\n"
+      "v = f(x, u), x' = v, p = h(x) (h linear, 2 outputs), w = h(v) and p(t1) = p(t2) => z(t1) = z(t2);\n"
+      "fast (Alg. 14) then accurate (Alg. 13), each to its fixed point. Returns the list of SlamRow.");
+
+  py::class_<TideModel>(m, "TideModel",
+                        "The sinusoidal tide (thesis (7.29)): range * sin^2((pi/2 * (t - t_ref)) / duration) + error.")
+      .def(py::init([](const Interval& range, const Interval& duration, const Interval& t_ref, const Interval& error) {
+             return TideModel{range, duration, t_ref, error};
+           }),
+           py::arg("range") = Interval(0.0), py::arg("duration") = Interval(1.0), py::arg("t_ref") = Interval(0.0),
+           py::arg("error") = Interval(0.0), "The model: tidal range, duration, time reference, bounded error.")
+      .def_readwrite("range", &TideModel::range, "The tidal range ma (m).")
+      .def_readwrite("duration", &TideModel::duration, "The duration Du of the tide (s).")
+      .def_readwrite("t_ref", &TideModel::t_ref, "The time reference (s).")
+      .def_readwrite("error", &TideModel::error, "The bounded error of the model (m).")
+      .def("__call__", &TideModel::operator(), py::arg("t"), "The tide over the time interval t, rigorous.")
+      .def("__repr__", [](const py::object& self) { return fields_repr(self); });
+  m.def("tide_tube", &tide_tube, py::arg("tdomain"), py::arg("tide"), "The tide as a Tube on tdomain.");
+  m.def("bathymetric_observation", &bathymetric_observation, py::arg("z_alt"), py::arg("z_depth"), py::arg("tide"),
+        "z = z_alt + z_depth + tide (thesis (7.30)), slice- and gate-wise, each term with its own bounded error.");
 }
 
 }  // namespace sillage::python

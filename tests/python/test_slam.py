@@ -151,3 +151,41 @@ def test_p_implies_z_bad_input_and_repr():
         CtcPImpliesZ(0.01).contract(TubeVector(td, 3), w, z)
     assert repr(CtcPImpliesZ(0.01, fast=True)) == "CtcPImpliesZ(eps=0.01, fast=True)"
     assert repr(sillage.SlamRow()).startswith("SlamRow(iteration=0, fast=False")
+
+
+def mission():
+    """The figure eight as a 3-D state (x1, x2, depth), f(x, u) = u, h(x) = (x1, x2)."""
+    td, p, w, z, truth = small_slam()
+    x, v = TubeVector(td, 3), TubeVector(td, 3)
+    x.set_gate(0, IntervalVector([p.gate(0)[0], p.gate(0)[1], Interval(-5.05, -4.95)]))
+    u = TubeVector([w[0], w[1], Tube(td, Interval(-0.01, 0.01))])
+    f = sillage.Function(["x1", "x2", "x3", "u1", "u2", "u3"], "(u1, u2, u3)")
+    h = sillage.Function(["x1", "x2", "x3"], "(x1, x2)")
+    truth = truth + [sillage.Trajectory("-5", Interval(0, 5))]
+    return x, v, u, TubeVector([z]), f, h, truth
+
+
+def test_temporal_slam_fast_then_accurate():
+    x, v, u, z, f, h, truth = mission()
+    o = sillage.TemporalSlamOptions()
+    o.eps = 0.01
+    rows = sillage.temporal_slam(x, v, u, z, f, h, o)
+    assert rows[0].fast and not rows[-1].fast
+    assert [r.iteration for r in rows] == list(range(1, len(rows) + 1))
+    assert rows[-1].contraction_tf > 0.1
+    assert x.contains(truth)
+    assert "eps=0.01" in repr(o)
+
+
+def test_tide_and_observation():
+    tide = sillage.TideModel(range=Interval(4.0), duration=Interval(21600.0))
+    assert tide(Interval(0.0)) == Interval(0.0)
+    assert tide(Interval(21600.0)).contains(4.0)
+    td = TDomain(0.0, 10.0, 1.0)
+    z = sillage.bathymetric_observation(Tube(td, Interval(10, 11)), Tube(td, Interval(5, 5.5)),
+                                        sillage.TideModel(range=Interval(2.0), duration=Interval(10.0)))
+    assert z.gate(0) == Interval(15, 16.5)
+    assert sillage.tide_tube(td, tide).gate(0) == Interval(0.0)
+    with pytest.raises(sillage.Error, match="duration"):
+        sillage.tide_tube(td, sillage.TideModel(duration=Interval(-1, 1)))
+    assert repr(tide).startswith("TideModel(")

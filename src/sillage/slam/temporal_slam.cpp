@@ -68,8 +68,9 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
   const std::size_t n = x.nb_slices();
   const auto at = [&](const TubeVector& y, std::size_t k, bool gate) { return gate ? y.gate(k) : y.slice(k); };
   TubeVector p(td, 2), w(td, 2);
-  eval_into(p, h, [&](std::size_t k, bool g) { return at(x, k, g); });
-  const IntervalVector tf0 = p.gate(n), t00 = p.gate(0);
+  // The reference of the contractions: dead reckoning, p after the first C_d/dt.
+  IntervalVector tf0(2), t00(2);
+  bool reference = false;
 
   std::vector<SlamRow> rows;
   double cumulated = 0.0;
@@ -84,6 +85,11 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
       eval_into(p, h, [&](std::size_t k, bool g) { return at(x, k, g); });
       eval_into(w, h, [&](std::size_t k, bool g) { return at(v, k, g); });
       if (x.is_empty() || p.is_empty()) return rows;
+      if (!reference) {
+        tf0 = p.gate(n);
+        t00 = p.gate(0);
+        reference = true;
+      }
       // 4. The inter-temporal implication.
       const std::vector<SlamRow> its = cpz.contract(p, w, z);
       for (SlamRow r : its) {

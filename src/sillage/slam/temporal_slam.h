@@ -32,7 +32,7 @@ struct TemporalSlamOptions {
 // size); f: (x, u) -> v, n outputs; h: x -> p, 2 outputs, linear. Every tube
 // on x's TDomain (z may cover a larger time domain). Returns one row per
 // iteration of C_{p⇒z}, numbered over the whole run; contractions of p(t_f)
-// and p(t_0) relative to h(x) at the call. DimensionError / Error on sizes,
+// and p(t_0) relative to dead reckoning (h(x) after the first C_d/dt). DimensionError / Error on sizes,
 // TDomains, eps or an option with nothing to run.
 std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
                                    const Function& f, const Function& h, const TemporalSlamOptions& options = {});

@@ -55,6 +55,7 @@ TEST(TemporalSlam, BothInOneCallNumberTheRows) {
   ASSERT_GE(rows.size(), 2u);
   EXPECT_TRUE(rows.front().fast);
   EXPECT_FALSE(rows.back().fast);
+  EXPECT_GT(rows.back().contraction_tf, 0.1);  // against dead reckoning
   for (std::size_t i = 0; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i].iteration, i + 1);
     if (i) EXPECT_GE(rows[i].cumulated_seconds, rows[i - 1].cumulated_seconds);
