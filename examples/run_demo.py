@@ -50,6 +50,7 @@ EXAMPLES = [
     ("loops_lissajous", "py", "loops_lissajous.py"),
     ("outliers_ranges", "cpp", "example_outliers_ranges"),
     ("outliers_ranges", "py", "outliers_ranges.py"),
+    ("temporal_slam_small", "py", "temporal_slam_small.py"),
 ]
 
 
