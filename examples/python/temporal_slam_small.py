@@ -56,15 +56,17 @@ def main():
 
     # The map: dead reckoning (grey), SLAM (blue), truth; the boxes [p](t_f) before and after.
     n = td.nb_slices()
-    fig = sillage.tube_vector_figure(dr, 0, 1, "Temporal SLAM: dead reckoning (grey), SLAM, truth",
-                                     TubeStyle(), truth[0], truth[1])
+    grey = TubeStyle()
+    grey.slices = Style("#e6e6e6", "#bdbdbd", 0.3, 1.0, "slice")
+    fig = sillage.tube_vector_figure(dr, 0, 1, "Temporal SLAM: dead reckoning (grey), SLAM (blue), truth (red)",
+                                     grey, truth[0], truth[1])
     if not x.is_empty():
         sillage.draw_tube_vector_2d(fig, x, 0, 1, TubeStyle())
         fig.draw_box(IntervalVector([dr.gate(n)[0], dr.gate(n)[1]]), Style("none", "#555555", 1.5, 1.0))
         fig.draw_box(IntervalVector([x.gate(n)[0], x.gate(n)[1]]), Style("none", "#d62728", 1.5, 1.0))
     fig.save(str(out / "temporal_slam_small_map.svg"))
     # x1(t): dead reckoning and SLAM.
-    ft = sillage.tube_figure(dr[0], "x1(t): dead reckoning and temporal SLAM", TubeStyle(), truth[0], 700, 300)
+    ft = sillage.tube_figure(dr[0], "x1(t): dead reckoning (grey) and temporal SLAM (blue)", grey, truth[0], 700, 300)
     if not x.is_empty():
         sillage.draw_tube(ft, x[0], TubeStyle(), truth[0])
     ft.save(str(out / "temporal_slam_small_x1.svg"))
