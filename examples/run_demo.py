@@ -53,6 +53,7 @@ EXAMPLES = [
     ("bathymetry_mission", "cpp", "example_bathymetry_mission"),
     ("bathymetry_mission", "py", "bathymetry_mission.py"),
     ("problem_file", "py", "problem_file.py"),
+    ("temporal_slam_small", "py", "temporal_slam_small.py"),
 ]
 
 

@@ -1,0 +1,126 @@
+#include "sillage/slam/ctc_omega.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+#include "sillage/cn/tube_changes.h"
+#include "sillage/ctc/shrink.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+struct Entry {
+  Interval hull = Interval::empty();
+  std::size_t count = 0;  // consistent boxes that touched the atom
+};
+
+Interval& atom_ref(Tube& x, std::size_t a) {
+  return a % 2 == 0 ? x.data().gates[a / 2] : x.data().slices[a / 2];
+}
+const Interval& atom_of(const Tube& x, std::size_t a) { return a % 2 == 0 ? x.gate(a / 2) : x.slice(a / 2); }
+
+void check_boxes(const std::vector<IntervalVector>& boxes, const char* where) {
+  for (std::size_t j = 0; j < boxes.size(); ++j) {
+    if (boxes[j].size() != 2) {
+      throw DimensionError(std::string(where) + ": t-box " + std::to_string(j) + " has " +
+                           std::to_string(boxes[j].size()) + " components, 2 expected ([t1], [t2])");
+    }
+  }
+}
+
+}  // namespace
+
+bool OmegaHull::apply_to(TubeVector& p, std::size_t* nb_shrunk, double ratio) const {
+  if (empty) {
+    if (nb_shrunk && !p.is_empty()) ++*nb_shrunk;
+    for (std::size_t i = 0; i < p.size(); ++i) p[i].set(Interval::empty());
+    return false;
+  }
+  std::vector<bool> touched(p.size(), false);
+  for (const Atom& a : atoms) {
+    Interval& x = atom_ref(p[a.component], a.atom);
+    const Interval y = x & a.value;
+    if (y != x) {
+      if (nb_shrunk && shrank(x, y, ratio)) ++*nb_shrunk;
+      x = y;
+      touched[a.component] = true;
+    }
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (touched[i]) p[i].touch();
+  }
+  return !p.is_empty();
+}
+
+OmegaHull CtcOmega::hull(const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w,
+                         TubeVector& work) const {
+  const char* where = "CtcOmega::hull(boxes, p, w, work)";
+  check_boxes(boxes, where);
+  if (work.size() != p.size() || work.tdomain() != p.tdomain() || work.nb_slices() != p.nb_slices()) {
+    throw DimensionError(std::string(where) + ": work must be a copy of p");
+  }
+  const std::size_t n = p.size(), atoms_per_tube = 2 * p.nb_slices() + 1;
+  std::vector<Tube*> wp;
+  std::vector<const Tube*> ww;
+  for (std::size_t i = 0; i < n; ++i) {
+    wp.push_back(&work[i]);
+    ww.push_back(&w[i]);
+  }
+  std::unordered_map<std::size_t, Entry> entries;
+  std::vector<std::vector<std::size_t>> logged(n);
+  OmegaHull out;
+  out.nb_boxes = boxes.size();
+  for (const IntervalVector& box : boxes) {
+    for (auto& l : logged) l.clear();
+    std::vector<TubeChanges> logs;
+    for (auto& l : logged) logs.emplace_back(l, 0, 0.0);
+    Interval t1 = box[0], t2 = box[1];
+    if (t1.is_empty() || t2.is_empty()) continue;
+    const bool ok = t1t2_.contract(t1, t2, wp, ww, logs);
+    if (ok) ++out.nb_consistent;
+    for (std::size_t i = 0; i < n; ++i) {
+      auto& l = logged[i];
+      std::sort(l.begin(), l.end());
+      l.erase(std::unique(l.begin(), l.end()), l.end());
+      out.nb_touched += l.size();
+      for (std::size_t a : l) {
+        if (ok) {
+          Entry& e = entries[i * atoms_per_tube + a];
+          e.hull |= atom_of(work[i], a);
+          ++e.count;
+        }
+        atom_ref(work[i], a) = atom_of(p[i], a);  // back to the reference
+      }
+      work[i].touch();
+    }
+    // An inconsistent contraction empties the whole working tube (CtcEval,
+    // Lemma 5.1): put all of it back.
+    if (!ok) work = p;
+  }
+  out.empty = out.nb_consistent == 0;
+  if (out.empty) return out;
+  for (const auto& [key, e] : entries) {
+    if (e.count != out.nb_consistent) continue;  // some box left it as it was
+    const std::size_t i = key / atoms_per_tube, a = key % atoms_per_tube;
+    if (e.hull != atom_of(p[i], a)) out.atoms.push_back({i, a, e.hull});
+  }
+  std::sort(out.atoms.begin(), out.atoms.end(), [](const OmegaHull::Atom& x, const OmegaHull::Atom& y) {
+    return x.component != y.component ? x.component < y.component : x.atom < y.atom;
+  });
+  return out;
+}
+
+bool CtcOmega::contract(const std::vector<IntervalVector>& boxes, TubeVector& p, const TubeVector& w) const {
+  check_boxes(boxes, "CtcOmega::contract(boxes, p, w)");
+  if (p.size() != w.size()) {
+    throw DimensionError("CtcOmega::contract(boxes, p, w): p has " + std::to_string(p.size()) + " components, w " +
+                         std::to_string(w.size()));
+  }
+  TubeVector work = p;  // one scratch tube for all the boxes
+  return hull(boxes, p, w, work).apply_to(p);
+}
+
+}  // namespace sillage

@@ -1,0 +1,35 @@
+#pragma once
+// The bathymetric observation of thesis (7.29)-(7.30):
+//   z = z_alt + z_depth + z_tide,  z_tide(t) = ma · sin²((π/2 · (t - t_ref)) / Du),
+// the seabed height below the tide reference sensed from the robot: altitude
+// (DVL or sounder) plus depth (pressure sensor) plus the tide's rise. Each
+// term carries its own bounded error (the tubes of the sensors; `error` for
+// the tide model). The reference level z_0 of the tide (and any constant
+// sensor bias) need not be known: z(t1) = z(t2) is unchanged by a constant
+// (7.4.3, Borda), so C_{p⇒z} gives the same contraction.
+#include <memory>
+
+#include "sillage/interval/interval.h"
+#include "sillage/tube/tube.h"
+
+namespace sillage {
+
+struct TideModel {
+  Interval range = Interval(0.0);     // ma, the tidal range (m)
+  Interval duration = Interval(1.0);  // Du, the duration of the tide (s), > 0
+  Interval t_ref = Interval(0.0);     // the time reference of Δt = t - t_ref (s)
+  Interval error = Interval(0.0);     // bounded error of the model (m), contains 0
+
+  // ma · sin²((π/2 · (t - t_ref)) / Du) + error, rigorous, for any [t].
+  Interval operator()(const Interval& t) const;
+};
+
+// The tide as a tube on td (slice k: over [t_k, t_{k+1}]).
+Tube tide_tube(const std::shared_ptr<TDomain>& td, const TideModel& tide);
+
+// z = z_alt + z_depth + tide, slice- and gate-wise. DimensionError if the two
+// sensor tubes are not on one TDomain; Error if the tide's duration does not
+// exclude 0 or its error does not contain 0.
+Tube bathymetric_observation(const Tube& z_alt, const Tube& z_depth, const TideModel& tide);
+
+}  // namespace sillage

@@ -1,0 +1,123 @@
+#include "sillage/slam/temporal_slam.h"
+
+#include <string>
+
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/error.h"
+#include "sillage/expr/function.h"
+#include "sillage/slam/ctc_p_implies_z.h"
+
+namespace sillage {
+
+namespace {
+
+IntervalVector concat(const IntervalVector& a, const IntervalVector& b) {
+  IntervalVector c(a.size() + b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) c[i] = a[i];
+  for (std::size_t i = 0; i < b.size(); ++i) c[a.size() + i] = b[i];
+  return c;
+}
+
+// Slice k (or gate k) of every component of y ∩= b.
+void intersect_atom(TubeVector& y, std::size_t k, bool gate, const IntervalVector& b) {
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    Interval& a = gate ? y[i].data().gates[k] : y[i].data().slices[k];
+    a &= b[i];
+  }
+}
+
+void touch(TubeVector& y) {
+  for (std::size_t i = 0; i < y.size(); ++i) y[i].touch();
+}
+
+// Every slice and gate of y ∩= g(arguments at that slice / gate).
+template <class Args>
+void eval_into(TubeVector& y, const Function& g, const Args& args) {
+  const std::size_t n = y.nb_slices();
+  for (std::size_t k = 0; k <= n; ++k) {
+    intersect_atom(y, k, true, g.eval_vector(args(k, true)));
+    if (k < n) intersect_atom(y, k, false, g.eval_vector(args(k, false)));
+  }
+  touch(y);
+}
+
+void check(const TubeVector& x, const TubeVector& v, const TubeVector& u, const Function& f, const Function& h,
+           const TemporalSlamOptions& o) {
+  const std::string where = "temporal_slam(x, v, u, z, f, h)";
+  if (v.size() != x.size() || v.tdomain() != x.tdomain()) {
+    throw DimensionError(where + ": v must have x's size (" + std::to_string(x.size()) + ") and TDomain");
+  }
+  if (u.size() > 0 && u.tdomain() != x.tdomain()) throw DimensionError(where + ": u must be on x's TDomain");
+  if (f.nb_vars() != x.size() + u.size() || f.image_dim() != x.size()) {
+    throw DimensionError(where + ": f must map the " + std::to_string(x.size() + u.size()) +
+                         " variables (x, u) to " + std::to_string(x.size()) + " values");
+  }
+  if (h.nb_vars() != x.size() || h.image_dim() != 2) {
+    throw DimensionError(where + ": h must map the " + std::to_string(x.size()) + " variables of x to 2 values");
+  }
+  if (!o.fast && !o.accurate) throw Error(where + ": options.fast and options.accurate are both off");
+  if (o.max_rounds == 0) throw Error(where + ": options.max_rounds must be at least 1");
+}
+
+}  // namespace
+
+std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
+                                   const Function& f, const Function& h, const TemporalSlamOptions& options) {
+  check(x, v, u, f, h, options);
+  const auto td = x.tdomain();
+  const std::size_t n = x.nb_slices();
+  const auto at = [&](const TubeVector& y, std::size_t k, bool gate) { return gate ? y.gate(k) : y.slice(k); };
+  TubeVector p(td, 2), w(td, 2);
+  // The reference of the contractions: dead reckoning, p after the first C_d/dt.
+  IntervalVector tf0(2), t00(2);
+  bool reference = false;
+
+  std::vector<SlamRow> rows;
+  double cumulated = 0.0;
+  for (bool fast : {true, false}) {
+    if ((fast && !options.fast) || (!fast && !options.accurate)) continue;
+    const CtcPImpliesZ cpz(options.eps, fast);
+    for (std::size_t round = 0; round < options.max_rounds; ++round) {
+      // 1-2. Evolution: v = f(x, u), x' = v.
+      eval_into(v, f, [&](std::size_t k, bool g) { return u.size() ? concat(at(x, k, g), at(u, k, g)) : at(x, k, g); });
+      CtcDeriv().contract(x, v);
+      // 3. Configurations p = h(x) and their derivative w = h(v).
+      eval_into(p, h, [&](std::size_t k, bool g) { return at(x, k, g); });
+      eval_into(w, h, [&](std::size_t k, bool g) { return at(v, k, g); });
+      if (x.is_empty() || p.is_empty()) return rows;
+      if (!reference) {
+        tf0 = p.gate(n);
+        t00 = p.gate(0);
+        reference = true;
+      }
+      // 4. The inter-temporal implication.
+      const std::vector<SlamRow> its = cpz.contract(p, w, z);
+      for (SlamRow r : its) {
+        r.iteration = rows.size() + 1;
+        cumulated += r.seconds;
+        r.cumulated_seconds = cumulated;
+        r.contraction_tf = detail::contraction(tf0, p.gate(n));
+        r.contraction_t0 = detail::contraction(t00, p.gate(0));
+        rows.push_back(r);
+      }
+      // 5. Back to the states: x ∩= h⁻¹(p).
+      for (std::size_t k = 0; k <= n; ++k) {
+        for (bool gate : {true, false}) {
+          if (!gate && k == n) continue;
+          IntervalVector b = gate ? x.gate(k) : x.slice(k);
+          h.hc4_revise(b, gate ? p.gate(k) : p.slice(k));
+          intersect_atom(x, k, gate, b);
+        }
+      }
+      touch(x);
+      if (p.is_empty()) {
+        for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
+        return rows;
+      }
+      if (its.size() <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
+    }
+  }
+  return rows;
+}
+
+}  // namespace sillage

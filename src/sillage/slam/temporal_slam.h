@@ -1,0 +1,40 @@
+#pragma once
+// temporal_slam: thesis Alg. 15 on the network (7.27):
+//   v = f(x, u),  x' = v,  p = h(x),  w = h(v) (7.26),  C_{p⇒z}(p, w, z),
+// applied as
+//   1. C_f:     v ∩= f(x, u)             (slice- and gate-wise, forward)
+//   2. C_d/dt:  x, v                     (CtcDeriv)
+//   3. C_h:     p = h(x), w = h(v)        (h linear, as (7.25): then dh/dx·v = h(v))
+//   4. C_{p⇒z}(p, w, z, eps)             (to its fixed point)
+//   5. C_h:     x ∩= h⁻¹(p)               (HC4 on each slice and gate)
+// repeated while C_{p⇒z} still contracts. The fast algorithm (Alg. 14) is
+// run to its fixed point first, then the accurate one (Alg. 13), as the
+// thesis does (7.3.2); each may be run alone.
+#include <cstddef>
+#include <vector>
+
+#include "sillage/slam/slam_row.h"
+#include "sillage/tube/tube_vector.h"
+
+namespace sillage {
+
+class Function;
+
+struct TemporalSlamOptions {
+  double eps = 0.1;       // width of the t-boxes (about the time step)
+  bool fast = true;       // run Alg. 14 to its fixed point
+  bool accurate = true;   // then Alg. 13 to its fixed point
+  std::size_t max_rounds = 20;  // cap on the rounds 1-5 per algorithm
+};
+
+// x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may
+// be empty: then f has the n variables of x only), z the observations (any
+// size); f: (x, u) -> v, n outputs; h: x -> p, 2 outputs, linear. Every tube
+// on x's TDomain (z may cover a larger time domain). Returns one row per
+// iteration of C_{p⇒z}, numbered over the whole run; contractions of p(t_f)
+// and p(t_0) relative to dead reckoning (h(x) after the first C_d/dt). DimensionError / Error on sizes,
+// TDomains, eps or an option with nothing to run.
+std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
+                                   const Function& f, const Function& h, const TemporalSlamOptions& options = {});
+
+}  // namespace sillage

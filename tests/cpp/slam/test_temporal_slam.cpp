@@ -1,0 +1,75 @@
+// temporal_slam (Alg. 15) on the figure eight with a 3-D state (x1, x2,
+// depth), f(x, u) = u (velocities measured), h(x) = (x1, x2): fast then
+// accurate, rows numbered, the truth in every gate and slice of x after each
+// algorithm, accurate never wider than fast; errors.
+#include <gtest/gtest.h>
+
+#include "small_slam.h"
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/error.h"
+#include "sillage/expr/function.h"
+#include "sillage/slam/temporal_slam.h"
+
+using namespace sillage;
+
+namespace {
+
+struct Mission {
+  slam_test::SmallSlam s;
+  TubeVector x{s.td, 3}, v{s.td, 3};
+  TubeVector u{std::vector<Tube>{s.w[0], s.w[1], Tube(s.td, Interval(-0.01, 0.01))}};
+  Function f{{"x1", "x2", "x3", "u1", "u2", "u3"}, "(u1, u2, u3)"};
+  Function h{{"x1", "x2", "x3"}, "(x1, x2)"};
+  std::vector<Trajectory> truth{s.truth[0], s.truth[1], Trajectory("-5", s.td->t0_tf())};
+  Mission() { x.set_gate(0, IntervalVector{s.p.gate(0)[0], s.p.gate(0)[1], Interval(-5.05, -4.95)}); }
+};
+
+}  // namespace
+
+TEST(TemporalSlam, FastThenAccurateKeepTheTruth) {
+  Mission m;
+  TemporalSlamOptions o;
+  o.eps = 0.01;
+  o.accurate = false;
+  const auto fast = temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o);
+  ASSERT_FALSE(fast.empty());
+  EXPECT_TRUE(fast.front().fast);
+  EXPECT_TRUE(m.x.contains(m.truth));
+  const TubeVector after_fast = m.x;
+  o.fast = false;
+  o.accurate = true;
+  const auto acc = temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o);
+  ASSERT_FALSE(acc.empty());
+  EXPECT_FALSE(acc.front().fast);
+  EXPECT_TRUE(m.x.contains(m.truth));
+  EXPECT_TRUE(m.x.is_subset(after_fast));
+  EXPECT_GT(acc.back().contraction_tf, 0.1);
+  EXPECT_EQ(acc.back().nb_proofs, 1u);
+}
+
+TEST(TemporalSlam, BothInOneCallNumberTheRows) {
+  Mission m;
+  TemporalSlamOptions o;
+  o.eps = 0.01;
+  const auto rows = temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o);
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_TRUE(rows.front().fast);
+  EXPECT_FALSE(rows.back().fast);
+  EXPECT_GT(rows.back().contraction_tf, 0.1);  // against dead reckoning
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].iteration, i + 1);
+    if (i) EXPECT_GE(rows[i].cumulated_seconds, rows[i - 1].cumulated_seconds);
+  }
+  EXPECT_TRUE(m.x.contains(m.truth));
+}
+
+TEST(TemporalSlam, BadInputSaysWhatAndWhere) {
+  Mission m;
+  TemporalSlamOptions o;
+  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, Function({"x1", "x2"}, "(x1, x2)"), m.h, o), DimensionError);
+  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, Function({"x1", "x2", "x3"}, "x1"), o), DimensionError);
+  TubeVector v2(m.s.td, 2);
+  EXPECT_THROW(temporal_slam(m.x, v2, m.u, m.s.z, m.f, m.h, o), DimensionError);
+  o.fast = o.accurate = false;
+  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o), Error);
+}
