@@ -96,6 +96,12 @@
 #include "sillage/slam/bathymetry_sensors.h"
 #include "sillage/slam/bathymetry_tide.h"
 #include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/slam/ctc_omega.h"
+#include "sillage/slam/ctc_p_implies_z.h"
+#include "sillage/slam/ctc_t1t2.h"
+#include "sillage/slam/observation.h"
+#include "sillage/slam/slam_row.h"
+#include "sillage/slam/temporal_slam.h"
 
 #include "sillage/problem/build_network.h"
 #include "sillage/problem/check_summary.h"

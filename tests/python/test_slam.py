@@ -178,14 +178,14 @@ def test_temporal_slam_fast_then_accurate():
 
 
 def test_tide_and_observation():
-    tide = sillage.TideModel(range=Interval(4.0), duration=Interval(21600.0))
+    tide = sillage.TideModel(range=4.0, duration=21600.0, t_low=0.0)
     assert tide(Interval(0.0)) == Interval(0.0)
     assert tide(Interval(21600.0)).contains(4.0)
     td = TDomain(0.0, 10.0, 1.0)
     z = sillage.bathymetric_observation(Tube(td, Interval(10, 11)), Tube(td, Interval(5, 5.5)),
-                                        sillage.TideModel(range=Interval(2.0), duration=Interval(10.0)))
+                                        sillage.TideModel(range=2.0, duration=10.0, t_low=0.0))
     assert z.gate(0) == Interval(15, 16.5)
     assert sillage.tide_tube(td, tide).gate(0) == Interval(0.0)
     with pytest.raises(sillage.Error, match="duration"):
-        sillage.tide_tube(td, sillage.TideModel(duration=Interval(-1, 1)))
+        sillage.tide_tube(td, sillage.TideModel(duration=-1.0))
     assert repr(tide).startswith("TideModel(")

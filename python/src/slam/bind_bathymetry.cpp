@@ -99,11 +99,18 @@ void init_bathymetry_data(py::module_& m) {
       "A synthetic seabed (slope, banks, sand waves, rocks, a smooth strip), deterministic from the seed.");
 
   py::class_<TideModel>(m, "TideModel", "The sinusoidal tide model (7.29): ma sin^2((pi/2)(t - t_low)/Du).")
-      .def(py::init<>(), "Defaults: range 5.2 m, duration 22320 s, low water 5400 s before the start.")
+      .def(py::init([](double range, double duration, double t_low, const Interval& error) {
+             return TideModel{range, duration, t_low, error};
+           }),
+           py::arg("range") = 5.2, py::arg("duration") = 22320.0, py::arg("t_low") = -5400.0,
+           py::arg("error") = Interval(0.0),
+           "Defaults: range 5.2 m, duration 22320 s, low water 5400 s before the start, no model error.")
       .def("__repr__", [](const TideModel& t) { return repr(t); }, "TideModel(range, duration, t_low).")
       .def_readwrite("range", &TideModel::range, "Tidal range ma (m).")
       .def_readwrite("duration", &TideModel::duration, "Duration of the rising tide Du (s).")
       .def_readwrite("t_low", &TideModel::t_low, "Time of low water (mission seconds).")
+      .def_readwrite("error", &TideModel::error, "The bounded error of the model (m), contains 0.")
+      .def("__call__", &TideModel::operator(), py::arg("t"), "height(t) + error: the tide over [t], rigorous.")
       .def("height", &TideModel::height, py::arg("t"), "The sea height above datum over [t], an enclosing Interval.")
       .def("height_value", &TideModel::height_value, py::arg("t"), "The model's height at t, a float.");
 

@@ -15,6 +15,11 @@ Interval TideModel::height(const Interval& t) const {
   return Interval(range) * sqr(sin(phase));
 }
 
+Interval TideModel::operator()(const Interval& t) const {
+  if (!error.contains(0.0)) throw Error("TideModel: the model's error " + error.str() + " must contain 0");
+  return height(t) + error;
+}
+
 double TideModel::height_value(double t) const {
   const double s = std::sin(1.5707963267948966 * (t - t_low) / duration);
   return range * s * s;
@@ -22,8 +27,9 @@ double TideModel::height_value(double t) const {
 
 std::string repr(const TideModel& m) {
   char buf[128];
-  std::snprintf(buf, sizeof buf, "TideModel(range=%g m, duration=%g s, t_low=%g s)", m.range, m.duration, m.t_low);
-  return buf;
+  std::snprintf(buf, sizeof buf, "TideModel(range=%g m, duration=%g s, t_low=%g s, error=", m.range, m.duration,
+                m.t_low);
+  return buf + m.error.str() + ")";
 }
 
 }  // namespace sillage

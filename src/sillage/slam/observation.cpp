@@ -1,5 +1,6 @@
 #include "sillage/slam/observation.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -11,8 +12,8 @@ namespace sillage {
 namespace {
 
 void check(const TideModel& m, const char* where) {
-  if (m.duration.is_empty() || m.duration.contains(0.0)) {
-    throw Error(std::string(where) + ": the tide's duration " + m.duration.str() + " must exclude 0");
+  if (!(m.duration > 0) || !std::isfinite(m.duration) || !std::isfinite(m.range) || !std::isfinite(m.t_low)) {
+    throw Error(std::string(where) + ": the tide's duration must be positive and its parameters finite");
   }
   if (!m.error.contains(0.0)) {
     throw Error(std::string(where) + ": the tide model's error " + m.error.str() + " must contain 0");
@@ -20,11 +21,6 @@ void check(const TideModel& m, const char* where) {
 }
 
 }  // namespace
-
-Interval TideModel::operator()(const Interval& t) const {
-  const Interval s = sin(Interval::pi() / Interval(2.0) * (t - t_ref) / duration);
-  return range * sqr(s) + error;
-}
 
 Tube tide_tube(const std::shared_ptr<TDomain>& td, const TideModel& tide) {
   check(tide, "tide_tube(tdomain, tide)");

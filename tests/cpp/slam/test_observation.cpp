@@ -14,8 +14,9 @@ using namespace sillage;
 
 TEST(Observation, TideIsZeroAtTheReferenceAndFullRangeAfterOneDuration) {
   TideModel tide;
-  tide.range = Interval(4.0);
-  tide.duration = Interval(21600.0);
+  tide.range = 4.0;
+  tide.duration = 21600.0;
+  tide.t_low = 0.0;
   EXPECT_EQ(tide(Interval(0.0)), Interval(0.0));
   const Interval full = tide(Interval(21600.0));
   EXPECT_TRUE(full.contains(4.0));
@@ -33,8 +34,9 @@ TEST(Observation, SumOfTheThreeTerms) {
   const auto td = TDomain::create(0.0, 10.0, 1.0);
   const Tube alt(td, Interval(10, 11)), depth(td, Interval(5, 5.5));
   TideModel tide;
-  tide.range = Interval(2.0);
-  tide.duration = Interval(10.0);
+  tide.range = 2.0;
+  tide.duration = 10.0;
+  tide.t_low = 0.0;
   const Tube z = bathymetric_observation(alt, depth, tide);
   EXPECT_EQ(z.gate(0), Interval(15, 16.5));
   EXPECT_TRUE(z.gate(10).contains(17.0) && z.gate(10).contains(18.5));
@@ -46,9 +48,9 @@ TEST(Observation, BadInputSaysWhatAndWhere) {
   const auto td = TDomain::create(0.0, 10.0, 1.0), other = TDomain::create(0.0, 10.0, 0.5);
   TideModel tide;
   EXPECT_THROW(bathymetric_observation(Tube(td), Tube(other), tide), DimensionError);
-  tide.duration = Interval(-1, 1);
+  tide.duration = -1.0;
   EXPECT_THROW(bathymetric_observation(Tube(td), Tube(td), tide), Error);
-  tide.duration = Interval(1.0);
+  tide.duration = 1.0;
   tide.error = Interval(0.1, 0.2);
   EXPECT_THROW(tide_tube(td, tide), Error);
 }
@@ -60,8 +62,9 @@ TEST(Observation, SlamFromAltitudeDepthAndTideKeepsTheTruthAndIgnoresTheReferenc
   slam_test::SmallSlam a, b;
   const auto td = a.td;
   TideModel tide;
-  tide.range = Interval(3.0);
-  tide.duration = Interval(40.0);  // fast on purpose: the model must be taken off
+  tide.range = 3.0;
+  tide.duration = 40.0;
+  tide.t_low = 0.0;  // fast on purpose: the model must be taken off
   tide.error = Interval(-0.002, 0.002);
   const Tube depth(td, "5 + 0.3*sin(t) + [-0.002,0.002]");
   // altitude = g(p) + z_0 - depth - tide (the true tide), sensed to ±0.005.
@@ -69,7 +72,7 @@ TEST(Observation, SlamFromAltitudeDepthAndTideKeepsTheTruthAndIgnoresTheReferenc
     Tube t = a.z[0];
     t += Interval(z0);
     t -= depth;
-    t -= tide_tube(td, TideModel{tide.range, tide.duration, tide.t_ref, Interval(0.0)});
+    t -= tide_tube(td, TideModel{tide.range, tide.duration, tide.t_low, Interval(0.0)});
     t += Interval(-0.005, 0.005);
     return t;
   };

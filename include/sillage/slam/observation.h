@@ -1,6 +1,6 @@
 #pragma once
 // The bathymetric observation of thesis (7.29)-(7.30):
-//   z = z_alt + z_depth + z_tide,  z_tide(t) = ma · sin²((π/2 · (t - t_ref)) / Du),
+//   z = z_alt + z_depth + z_tide,  z_tide(t) = ma · sin²((π/2 · (t - t_low)) / Du) (TideModel, bathymetry_tide.h),
 // the seabed height below the tide reference sensed from the robot: altitude
 // (DVL or sounder) plus depth (pressure sensor) plus the tide's rise. Each
 // term carries its own bounded error (the tubes of the sensors; `error` for
@@ -10,19 +10,11 @@
 #include <memory>
 
 #include "sillage/interval/interval.h"
+#include "sillage/slam/bathymetry_tide.h"
 #include "sillage/tube/tube.h"
 
 namespace sillage {
 
-struct TideModel {
-  Interval range = Interval(0.0);     // ma, the tidal range (m)
-  Interval duration = Interval(1.0);  // Du, the duration of the tide (s), > 0
-  Interval t_ref = Interval(0.0);     // the time reference of Δt = t - t_ref (s)
-  Interval error = Interval(0.0);     // bounded error of the model (m), contains 0
-
-  // ma · sin²((π/2 · (t - t_ref)) / Du) + error, rigorous, for any [t].
-  Interval operator()(const Interval& t) const;
-};
 
 // The tide as a tube on td (slice k: over [t_k, t_{k+1}]).
 Tube tide_tube(const std::shared_ptr<TDomain>& td, const TideModel& tide);

@@ -128,19 +128,6 @@ void init_slam(py::module_& m) {
       "v = f(x, u), x' = v, p = h(x) (h linear, 2 outputs), w = h(v) and p(t1) = p(t2) => z(t1) = z(t2);\n"
       "fast (Alg. 14) then accurate (Alg. 13), each to its fixed point. Returns the list of SlamRow.");
 
-  py::class_<TideModel>(m, "TideModel",
-                        "The sinusoidal tide (thesis (7.29)): range * sin^2((pi/2 * (t - t_ref)) / duration) + error.")
-      .def(py::init([](const Interval& range, const Interval& duration, const Interval& t_ref, const Interval& error) {
-             return TideModel{range, duration, t_ref, error};
-           }),
-           py::arg("range") = Interval(0.0), py::arg("duration") = Interval(1.0), py::arg("t_ref") = Interval(0.0),
-           py::arg("error") = Interval(0.0), "The model: tidal range, duration, time reference, bounded error.")
-      .def_readwrite("range", &TideModel::range, "The tidal range ma (m).")
-      .def_readwrite("duration", &TideModel::duration, "The duration Du of the tide (s).")
-      .def_readwrite("t_ref", &TideModel::t_ref, "The time reference (s).")
-      .def_readwrite("error", &TideModel::error, "The bounded error of the model (m).")
-      .def("__call__", &TideModel::operator(), py::arg("t"), "The tide over the time interval t, rigorous.")
-      .def("__repr__", [](const py::object& self) { return fields_repr(self); });
   m.def("tide_tube", &tide_tube, py::arg("tdomain"), py::arg("tide"), "The tide as a Tube on tdomain.");
   m.def("bathymetric_observation", &bathymetric_observation, py::arg("z_alt"), py::arg("z_depth"), py::arg("tide"),
         "z = z_alt + z_depth + tide (thesis (7.30)), slice- and gate-wise, each term with its own bounded error.");
