@@ -21,7 +21,7 @@ const BathymetryMission& mission() {
 }
 
 std::vector<IntervalVector> box_pool(double side) {
-  BathymetryRng r(static_cast<std::uint64_t>(side * 1000) + 1);
+  detail::BathymetryRng r(static_cast<std::uint64_t>(side * 1000) + 1);
   std::vector<IntervalVector> pool;
   for (int k = 0; k < 4096; ++k) {
     const double x = r.uniform(0, 500 - side), y = r.uniform(0, 500 - side);
@@ -81,7 +81,7 @@ BENCHMARK(BM_DemEvalCells)->Arg(1)->Arg(5)->Arg(20)->Arg(80)->Arg(300);
 
 void BM_DemPoint(benchmark::State& st) {
   const auto& dem = mission().dem();
-  BathymetryRng r(3);
+  detail::BathymetryRng r(3);
   std::vector<double> xs(4096), ys(4096);
   for (int k = 0; k < 4096; ++k) xs[k] = r.uniform(0, 500), ys[k] = r.uniform(0, 500);
   std::size_t k = 0;

@@ -45,11 +45,11 @@ class CtcIvp : public NetworkCtc {
   // cn.add(ctc, {x}) or cn.add(ctc, {x, u}): tubes or tube vectors.
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
-  std::size_t nb_states() const { return ode_->nb_states(); }
-  std::size_t nb_inputs() const { return ode_->nb_inputs(); }
+  std::size_t nb_states() const;
+  std::size_t nb_inputs() const;
   int order() const { return order_; }
   TimePropag time_propag() const { return propag_; }
-  const Function& function() const { return ode_->function(); }
+  const Function& function() const;
   // The bound of the last Taylor terms that sets the step (default 1e-16).
   double tolerance() const { return tol_; }
   void set_tolerance(double tol);

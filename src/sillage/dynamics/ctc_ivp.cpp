@@ -8,6 +8,10 @@
 
 namespace sillage {
 
+using detail::IvpStepper;
+using detail::LohnerSet;
+using detail::TaylorOde;
+
 namespace {
 
 enum class Crossing { Done, Lost, Empty };
@@ -22,7 +26,7 @@ bool much_tighter(const IntervalVector& before, const IntervalVector& after) {
 }
 
 // Intersects the set with a box known to hold the states; false if empty.
-bool meet(LohnerSet& set, const IntervalVector& known) {
+bool meet(detail::LohnerSet& set, const IntervalVector& known) {
   const IntervalVector b = set.box & known;
   if (b.is_empty()) return false;
   if (much_tighter(set.box, b)) {
@@ -66,7 +70,7 @@ void set_empty(TubeVector& x) {
 }  // namespace
 
 CtcIvp::CtcIvp(const Function& f, std::size_t nb_inputs, int order, TimePropag propag)
-    : ode_(std::make_shared<TaylorOde>(f)), order_(order), propag_(propag) {
+    : ode_(std::make_shared<detail::TaylorOde>(f)), order_(order), propag_(propag) {
   if (ode_->nb_inputs() != nb_inputs) {
     throw DimensionError("CtcIvp: f has " + std::to_string(f.nb_vars()) + " variables and " +
                          std::to_string(f.image_dim()) + " outputs, so " + std::to_string(ode_->nb_inputs()) +
@@ -100,7 +104,7 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
       if (changed[i]) x[i].touch();
     }
   };
-  LohnerSet set;
+  detail::LohnerSet set;
   bool active = false;
   for (std::size_t j = 0; j <= N; ++j) {
     const std::size_t k = sign > 0 ? j : N - j;
@@ -179,5 +183,9 @@ bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u) const {
   if (!ok) set_empty(x);
   return ok;
 }
+
+std::size_t CtcIvp::nb_states() const { return ode_->nb_states(); }
+std::size_t CtcIvp::nb_inputs() const { return ode_->nb_inputs(); }
+const Function& CtcIvp::function() const { return ode_->function(); }
 
 }  // namespace sillage

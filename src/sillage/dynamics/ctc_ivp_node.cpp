@@ -13,6 +13,7 @@
 
 namespace sillage {
 
+
 namespace {
 
 class IvpNode : public TubeNode {

@@ -11,6 +11,10 @@
 
 namespace sillage {
 
+using detail::RewrittenExpr;
+using detail::VarRef;
+using detail::rewrite_refs;
+
 namespace {
 
 Interval constant(const BoundSpec& b) {

@@ -11,6 +11,9 @@
 
 namespace sillage {
 
+using detail::rewrite_refs;
+using detail::shifted;
+
 using detail::describe;
 using detail::Document;
 using detail::Fields;
@@ -29,7 +32,7 @@ bool valid_name(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   for (char c : s)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  return s.find("__") == std::string::npos && !is_reserved_name(s);
+  return s.find("__") == std::string::npos && !detail::is_reserved_name(s);
 }
 
 class Loader {
@@ -126,7 +129,7 @@ class Loader {
     if (b.expr.empty()) return;
     const std::vector<std::string> vars = of_t ? std::vector<std::string>{"t"} : std::vector<std::string>{};
     try {
-      (void)parse_expr(vars, b.expr);
+      (void)detail::parse_expr(vars, b.expr);
     } catch (const ParseError& e) {
       throw ProblemError(b.pos, std::string("the bound \"") + b.expr + "\" (" + e.what() + ")",
                          of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""

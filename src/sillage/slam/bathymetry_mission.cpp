@@ -10,6 +10,9 @@
 
 namespace sillage {
 
+using detail::BathymetryPlan;
+using detail::BathymetryRng;
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846, kDeg = kPi / 180;
@@ -35,7 +38,7 @@ void check_options(const BathymetryMissionOptions& o) {
 BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMissionOptions& options)
     : seed_(seed), options_(options), seabed_((check_options(options), generate_seabed(seed, options.seabed))) {
   const auto& o = options_;
-  BathymetryRng rng(seed ^ 0x5eedba7f00dULL);
+  detail::BathymetryRng rng(seed ^ 0x5eedba7f00dULL);
   const BathymetryPlan plan(o.seabed.size, o.speed, o.turn_radius, o.rail_spacing, o.depth, o.duration);
   double ph[10];
   for (double& p : ph) p = rng.uniform(0, 2 * kPi);
@@ -97,7 +100,7 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
   }
 
   // Measurements, one independent stream per sensor.
-  BathymetryRng ins = rng.fork(1), dvl = rng.fork(2), prs = rng.fork(3), alt = rng.fork(4);
+  detail::BathymetryRng ins = rng.fork(1), dvl = rng.fork(2), prs = rng.fork(3), alt = rng.fork(4);
   const double b_yaw = ins.uniform(-0.02, 0.02) * kDeg, b_pitch = ins.uniform(-0.015, 0.015) * kDeg,
                b_roll = ins.uniform(-0.015, 0.015) * kDeg;
   double dvl_scale[3], dvl_off[3];

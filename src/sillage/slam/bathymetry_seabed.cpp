@@ -10,6 +10,8 @@
 
 namespace sillage {
 
+using detail::BathymetryRng;
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -32,7 +34,7 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
   if (!(o.size > 10) || !(o.cell > 0) || !std::isfinite(o.size) || !std::isfinite(o.base_depth) ||
       !(o.smooth_width >= 0) || o.smooth_width > o.size || o.nb_rocks < 0 || o.nb_banks < 0)
     throw Error("generate_seabed: size > 10, cell > 0, 0 <= smooth_width <= size, counts >= 0 expected");
-  BathymetryRng rng(seed);
+  detail::BathymetryRng rng(seed);
   const double L = o.size;
   // Regional slope: deeper towards the south-east, ~3-5 m across the area.
   const double sx = rng.uniform(0.004, 0.007), sy = -rng.uniform(0.002, 0.004);
@@ -80,7 +82,7 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
 
   const std::size_t n = static_cast<std::size_t>(std::llround(L / o.cell)) + 1;
   std::vector<double> z(n * n);
-  BathymetryRng noise = rng.fork(1);
+  detail::BathymetryRng noise = rng.fork(1);
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i) {
       const double x = static_cast<double>(i) * o.cell, y = static_cast<double>(j) * o.cell;

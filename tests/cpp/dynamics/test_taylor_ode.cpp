@@ -15,7 +15,7 @@ namespace {
 
 std::vector<Interval> coeffs(const Function& f, const std::vector<Interval>& x0, int order, double sign = 1.0,
                              const std::vector<Interval>& u = {}) {
-  TaylorOde ode(f);
+  detail::TaylorOde ode(f);
   std::vector<Interval> x = x0;
   EXPECT_TRUE(ode.coefficients(x, u.data(), order, sign));
   return x;
@@ -111,7 +111,7 @@ TEST(TaylorOde, ElementaryFunctionsOfTime) {
 
 TEST(TaylorOde, VariationalCoefficientsAreDerivatives) {
   // x' = -x^2: x(t) = x0/(1 + x0 t), x_k = (-1)^k x0^(k+1), d x_k/dx0 = (-1)^k (k+1) x0^k.
-  TaylorOde ode(Function({"x"}, "-x^2"));
+  detail::TaylorOde ode(Function({"x"}, "-x^2"));
   std::vector<Interval> x{Interval(0.5)}, v;
   ASSERT_TRUE(ode.coefficients(x, v, nullptr, 6, 1.0));
   for (int k = 0; k <= 6; ++k) {
@@ -129,12 +129,12 @@ TEST(TaylorOde, InputsAreHeldConstant) {
 }
 
 TEST(TaylorOde, OutsideTheDomainIsRefused) {
-  TaylorOde ode(Function({"x"}, "sqrt(x)"));
+  detail::TaylorOde ode(Function({"x"}, "sqrt(x)"));
   std::vector<Interval> x{Interval(-1.0, 1.0)};
   EXPECT_FALSE(ode.coefficients(x, nullptr, 4, 1.0));
 }
 
 TEST(TaylorOde, ErrorsNameTheProblem) {
-  EXPECT_THROW(TaylorOde(Function({"x"}, "abs(x)")), Error);
-  EXPECT_THROW(TaylorOde(Function({"x"}, "(x, x)")), DimensionError);
+  EXPECT_THROW(detail::TaylorOde(Function({"x"}, "abs(x)")), Error);
+  EXPECT_THROW(detail::TaylorOde(Function({"x"}, "(x, x)")), DimensionError);
 }

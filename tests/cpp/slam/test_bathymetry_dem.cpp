@@ -65,7 +65,7 @@ TEST(BathymetryDem, BadInputIsRefused) {
 
 TEST(BathymetryDem, PointEnclosuresContainTheBilinearValue) {
   const auto& d = seabed().dem;
-  BathymetryRng r(3);
+  detail::BathymetryRng r(3);
   for (int k = 0; k < 20000; ++k) {
     const double x = r.uniform(0, 500), y = r.uniform(0, 500);
     const Interval v = d(x, y);
@@ -78,7 +78,7 @@ TEST(BathymetryDem, PointEnclosuresContainTheBilinearValue) {
 
 TEST(BathymetryDem, BoxRangeIsExactAgainstBruteForce) {
   const auto& d = seabed().dem;
-  BathymetryRng r(5);
+  detail::BathymetryRng r(5);
   for (int k = 0; k < 300; ++k) {
     const double w = r.uniform(0, k % 3 == 0 ? 2.5 : 25), hgt = r.uniform(0, 25);
     const double x = r.uniform(0, 500 - w), y = r.uniform(0, 500 - hgt);
@@ -180,7 +180,7 @@ TEST(BathymetryFootprint, WiderWhenHigherAndBoundAtRandomPoints) {
   EXPECT_NEAR(rh / rl, 3, 1e-9);  // proportional to the altitude
   EXPECT_NEAR(sx, 0, 1e-9);       // symmetric about the nadir
   EXPECT_NEAR(sy, 0, 1e-9);
-  BathymetryRng r(9);
+  detail::BathymetryRng r(9);
   for (int k = 0; k < 5000; ++k) {
     const double a = r.uniform(1, 20), x = r.uniform(20, 480), y = r.uniform(20, 480), yaw = r.uniform(-4, 4);
     const double e = std::abs(footprint_depth(s.dem, x, y, yaw, a, b) - s.dem(x, y).mid());

@@ -52,7 +52,7 @@ TEST(BathymetryMission, DeterministicFromTheSeed) {
 
 TEST(BathymetryMission, GeneratorIsPlatformIndependent) {
   // xoshiro256** with splitmix64 seeding: integer arithmetic only, so fixed reference values.
-  BathymetryRng r(1);
+  detail::BathymetryRng r(1);
   EXPECT_EQ(r.next(), 12966619160104079557ULL);
   EXPECT_EQ(r.next(), 9600361134598540522ULL);
   // The DEM is quantized to the millimetre: libm's last-bit differences do not show.
@@ -60,7 +60,7 @@ TEST(BathymetryMission, GeneratorIsPlatformIndependent) {
   EXPECT_DOUBLE_EQ(d.node(250, 250), 19.369);
   EXPECT_DOUBLE_EQ(d.node(0, 0), 21.054);
   EXPECT_DOUBLE_EQ(d.node(500, 123), 23.565);
-  BathymetryRng u(42);
+  detail::BathymetryRng u(42);
   for (int k = 0; k < 1000; ++k) {
     const double x = u.uniform(-2, 3);
     ASSERT_GE(x, -2);
