@@ -5,6 +5,8 @@
 
 #include "sillage/cn/tube_changes.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/deriv_rounding.h"
+#include "sillage/dynamics/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
 
@@ -31,74 +33,118 @@ bool prepare_time(Interval& t, const Tube& y, bool sampling, const char* where) 
   return true;
 }
 
-// The gate fronts of (5.6); marks [glo, ghi] the gates it changed. False if a
-// gate became empty.
-bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi,
-                  const TubeChanges& log) {
+// The slices meeting the input [t]: the part of the tube the observation
+// teaches directly (gates first .. last+1, slices first .. last).
+struct Region {
+  std::size_t first = 0, last = 0;
+};
+
+// Narrows gate i to h (h ⊆ the gate); false if it is now empty.
+bool narrow_gate(TubeData& d, std::size_t i, const Interval& h, bool& changed) {
+  Interval& g = d.gates[i];
+  if (h == g) return !g.is_empty();
+  g = h;
+  changed = true;
+  return !g.is_empty();
+}
+
+// The gate fronts of (5.6) over the region, for t1 ∈ [t]:
+//   F(t_i) ⊇ y(t_i) for t1 <= t_i,  B(t_i) ⊇ y(t_i) for t1 >= t_i.
+// Across slice k a front moves by δ[w](k) and gains, when [t] meets the
+// slice on [c1, c2], the values through the part of [t] inside it:
+//   forward  ([y]([c1, c2]) ∩ [z]) + [t_{k+1} - c2, t_{k+1} - c1]·[w](k),
+//   backward ([y]([c1, c2]) ∩ [z]) - [c1 - t_k, c2 - t_k]·[w](k),
+// where [y]([c1, c2]) is the polygon of the slice over [c1, c2] when [t]
+// covers only a part of it (Tube::eval with the derivative), so that [t] is
+// never rounded out to whole slices. A gate after [t] is narrowed to F, one
+// before to B, one inside to F ∪ B. False if a gate became empty.
+bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed) {
   const TDomain& td = *y.tdomain();
   const auto ts = td.times();
-  const std::size_t n = td.nb_slices();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
-  std::size_t first = 0, last = 0;
-  slice_range(td, t, first, last, "CtcEval");
   const double ta = t.lb(), tb = t.ub();
   const auto in_t = [&](std::size_t i) { return ta <= ts[i] && ts[i] <= tb; };
-  // Slice k holds times of [t] strictly inside it.
-  const auto meets = [&](std::size_t k) { return ts[k] < tb && ts[k + 1] > ta; };
-  const auto mark = [&](std::size_t i) {
-    glo = std::min(glo, i);
-    ghi = std::max(ghi, i);
-  };
-  // Sets gate g to h (h ⊆ g); false if it is empty.
-  const auto narrow = [&](std::size_t i, const Interval& h) {
-    Interval& g = d.gates[i];
-    if (h == g) return true;
-    log.gate(i, g, h);
-    g = h;
-    mark(i);
-    return !g.is_empty();
-  };
-
-  // Forward: F encloses y(t_k) when t* <= t_k.
-  std::vector<Interval> inside;  // F at the gates inside [t], in order
-  Interval F = Interval::empty();
-  for (std::size_t k = first; k <= n; ++k) {
-    const Interval g = d.gates[k];
-    if (in_t(k)) F |= g & z;
-    F &= g;
-    if (ts[k] > tb) {
-      if (F == g && k > last + 1) break;  // the front holds the gate: nothing more to learn
-      if (!narrow(k, F)) return false;
-    } else if (in_t(k)) {
-      inside.push_back(F);
-    }
-    if (k == n) break;
-    const Interval dt = td.slice_width(k);
-    Interval next = F + dt * ws[k];
-    if (meets(k)) next |= (d.slices[k] & z) + Interval(0, dt.ub()) * ws[k];
-    F = next;
+  const std::size_t m = r.last - r.first + 1;
+  // Per slice of the region: the times of [t] in it and the hull there.
+  std::vector<Interval> part(m, Interval::empty()), hull(m, Interval::empty());
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t k = r.first + j;
+    if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
+    part[j] = t & Interval(ts[k], ts[k + 1]);
+    const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
+    hull[j] = (whole ? d.slices[k] : y.eval(part[j], w) & d.slices[k]) & z;
   }
-
-  // Backward: B encloses y(t_i) when t* >= t_i.
+  std::vector<Interval> front(m + 1);
+  Interval F = Interval::empty();
+  for (std::size_t j = 0;; ++j) {
+    const std::size_t k = r.first + j;
+    if (in_t(k)) F |= d.gates[k] & z;
+    F &= d.gates[k];
+    front[j] = F;
+    if (j == m) break;
+    F = F + td.slice_width(k) * ws[k];
+    if (!hull[j].is_empty()) F |= hull[j] + (Interval(ts[k + 1]) - part[j]) * ws[k];
+  }
   Interval B = Interval::empty();
-  std::size_t j = inside.size();
-  for (std::size_t i = last + 1;; --i) {
-    const Interval g = d.gates[i];
-    if (in_t(i)) B |= g & z;
-    B &= g;
-    if (ts[i] < ta) {
-      if (B == g && i + 1 < first) break;
-      if (!narrow(i, B)) return false;
-    } else if (in_t(i)) {
-      if (!narrow(i, g & (inside[--j] | B))) return false;
-    }
-    if (i == 0) break;
+  for (std::size_t j = m;; --j) {
+    const std::size_t i = r.first + j;
+    if (in_t(i)) B |= d.gates[i] & z;
+    B &= d.gates[i];
+    const Interval h = ts[i] > tb ? front[j] : ts[i] < ta ? B : (front[j] | B);
+    if (!narrow_gate(d, i, d.gates[i] & h, changed)) return false;
+    if (j == 0) break;
     const std::size_t k = i - 1;
-    const Interval dt = td.slice_width(k);
-    Interval next = B - dt * ws[k];
-    if (meets(k)) next |= (d.slices[k] & z) - Interval(0, dt.ub()) * ws[k];
-    B = next;
+    B = B - td.slice_width(k) * ws[k];
+    if (!hull[j - 1].is_empty()) B |= hull[j - 1] - (part[j - 1] - Interval(ts[k])) * ws[k];
+  }
+  return true;
+}
+
+// Outside the region the fronts only move: F forward from the last gate of
+// the region to t_N, B backward from its first gate to t_0, each to the end
+// of the domain (a sweep that stopped earlier would make the result depend
+// on how far the input already was contracted). False if a gate is empty.
+bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed) {
+  const TDomain& td = *y.tdomain();
+  TubeData& d = y.data();
+  const auto& ws = w.data().slices;
+  const std::size_t n = td.nb_slices();
+  for (std::size_t k = r.last + 1; k < n; ++k) {
+    if (!narrow_gate(d, k + 1, d.gates[k + 1] & (d.gates[k] + td.slice_width(k) * ws[k]), changed)) return false;
+  }
+  for (std::size_t i = r.first; i > 0; --i) {
+    if (!narrow_gate(d, i - 1, d.gates[i - 1] & (d.gates[i] - td.slice_width(i - 1) * ws[i - 1]), changed)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Slices a .. b ∩= the hull of their polygon (CtcDeriv's slice rule) from
+// their gates as they are: the gates are not changed, so that the result does
+// not depend on the order of the slices. False if a slice is empty.
+bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& changed) {
+  using R = deriv::SoftRounding;
+  const auto ts = y.tdomain()->times();
+  TubeData& d = y.data();
+  const auto& ws = w.data().slices;
+  for (std::size_t k = a; k <= b; ++k) {
+    const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
+    if (ga.is_empty() || gb.is_empty() || v.is_empty()) return false;
+    double plo, phi, lo, up;
+    deriv::scale<R>(v.lb(), v.ub(), deriv::width<R>(ts[k], ts[k + 1]), plo, phi);
+    deriv::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
+                                  deriv::straddles(v.lb(), v.ub()), lo, up);
+    Interval& s = d.slices[k];
+    if (s.is_empty()) return false;
+    const double lo2 = std::max(lo, s.lb()), up2 = std::min(up, s.ub());
+    const Interval next = lo2 <= up2 ? Interval::from_bounds_unchecked(lo2, up2) : Interval::empty();
+    if (next != s) {
+      s = next;
+      changed = true;
+    }
+    if (s.is_empty()) return false;
   }
   return true;
 }
@@ -112,49 +158,42 @@ bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
 }
 
 // The gate at a degenerate t that is a time point: ∩= [z].
-bool contract_gate(const Interval& t, const Interval& z, Tube& y, const TubeChanges& log) {
+bool contract_gate(const Interval& t, const Interval& z, Tube& y, bool& changed) {
   if (!t.is_degenerate()) return true;
   const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
   if (i < 0) return true;
-  Interval& g = y.data().gates[static_cast<std::size_t>(i)];
-  const Interval h = g & z;
-  if (h != g) {
-    log.gate(static_cast<std::size_t>(i), g, h);
-    g = h;
-    y.touch();
-  }
-  return !h.is_empty();
+  return narrow_gate(y.data(), static_cast<std::size_t>(i), y.data().gates[static_cast<std::size_t>(i)] & z, changed);
 }
 
-bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w, const TubeChanges& log) {
-  std::size_t glo = y.nb_slices() + 1, ghi = 0;
-  const bool ok = sweep_fronts(t, z, y, w, glo, ghi, log);
-  if (glo <= ghi) y.touch();
-  if (!ok) return false;
-  if (glo > ghi) return true;
-  // The slices around the changed gates, by CtcDeriv's slice rule.
-  const std::size_t n = y.nb_slices(), a = glo > 0 ? glo - 1 : 0, b = std::min(ghi, n - 1);
-  TubeData& d = y.data();
-  std::vector<Interval> before;
-  if (log.active()) {
-    for (std::size_t k = a; k <= b; ++k) before.insert(before.end(), {d.gates[k], d.slices[k]});
-    before.push_back(d.gates[b + 1]);
+// What the region held before, to report what shrank over the whole call
+// (several passes may each shrink an atom a little).
+struct RegionSnapshot {
+  std::vector<Interval> gates, slices;
+  void take(const Tube& y, Region r) {
+    const TubeData& d = y.data();
+    gates.assign(d.gates.begin() + static_cast<std::ptrdiff_t>(r.first),
+                 d.gates.begin() + static_cast<std::ptrdiff_t>(r.last + 2));
+    slices.assign(d.slices.begin() + static_cast<std::ptrdiff_t>(r.first),
+                  d.slices.begin() + static_cast<std::ptrdiff_t>(r.last + 1));
   }
-  const bool deriv_ok = CtcDeriv().contract(y, w, a, b);
-  if (log.active()) {
-    for (std::size_t k = a; k <= b; ++k) {
-      log.gate(k, before[2 * (k - a)], d.gates[k]);
-      log.slice(k, before[2 * (k - a) + 1], d.slices[k]);
-    }
-    log.gate(b + 1, before.back(), d.gates[b + 1]);
+  void report(const Tube& y, Region r, const TubeChanges& log) const {
+    const TubeData& d = y.data();
+    for (std::size_t j = 0; j < gates.size(); ++j) log.gate(r.first + j, gates[j], d.gates[r.first + j]);
+    for (std::size_t j = 0; j < slices.size(); ++j) log.slice(r.first + j, slices[j], d.slices[r.first + j]);
   }
-  return deriv_ok;
-}
+};
 
-// Every case on component tubes (w empty: no derivative), one [t];
-// logs[i] (if given) receives what shrank in y[i].
+// Passes over [t], [z] and the region until none changes anything, so that
+// one call is a fixed point (a network does not wake a contractor on its own
+// changes). Bounded, as a guard: each pass that goes on shrinks a bound.
+constexpr int kMaxPasses = 200;
+
+// Every case on component tubes (w empty: no derivative), one [t].
+// Standalone calls (outward) also carry the fronts to both ends of the
+// domain; network nodes leave that to the network's CtcDeriv, and their
+// logs[i] receive what shrank in y[i] (the region only: nothing else moves).
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, const char* where, const std::vector<TubeChanges>* logs) {
+                  bool sampling, bool outward, const char* where, const std::vector<TubeChanges>* logs) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -164,16 +203,39 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     if (y[i]->tdomain() != y[0]->tdomain()) throw DimensionError(std::string(where) + ": y is on several TDomains");
   }
   bool ok = prepare_time(t, *y[0], sampling, where) && !z.is_empty();
-  // [t] from every component first, then [z] and the tubes with the common [t].
-  for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
-    ok = !t.is_empty();
+  Region r;
+  if (ok) slice_range(*y[0]->tdomain(), t, r.first, r.last, where);
+  std::vector<RegionSnapshot> before(logs ? y.size() : 0);
+  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].take(*y[i], r);
+  for (int pass = 0; ok && pass < kMaxPasses; ++pass) {
+    const Interval t0 = t;
+    const IntervalVector z0 = z;
+    bool changed = false;
+    // [t] from every component first, then [z] and the tubes with the common [t].
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
+      ok = !t.is_empty();
+    }
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      bool moved = false;
+      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
+      if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
+      if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved);
+      if (ok && !w.empty()) ok = hull_slices(*y[i], *w[i], r.first, r.last, moved);
+      if (moved) y[i]->touch();
+      changed = changed || moved;
+    }
+    if (!changed && t == t0 && z == z0) break;
   }
-  for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    const TubeChanges log = logs ? (*logs)[i] : TubeChanges();
-    ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
-    if (ok) ok = w.empty() ? contract_gate(t, z[i], *y[i], log) : contract_tube(t, z[i], *y[i], *w[i], log);
+  const std::size_t n = y[0]->nb_slices();
+  for (std::size_t i = 0; ok && outward && !w.empty() && i < y.size(); ++i) {
+    bool moved = false;
+    ok = sweep_outward(*y[i], *w[i], r, moved);
+    if (ok && r.first > 0) ok = hull_slices(*y[i], *w[i], 0, r.first - 1, moved);
+    if (ok && r.last + 1 < n) ok = hull_slices(*y[i], *w[i], r.last + 1, n - 1, moved);
+    if (moved) y[i]->touch();
   }
+  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {
     t.set_empty();
     z.set_empty();
@@ -197,30 +259,30 @@ std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>&
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, "CtcEval::contract(t, z, y, w)", nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, true, "CtcEval::contract(t, z, y, w)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, true, "CtcEval::contract(t, z, y)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const {
-  return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_,
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_, true,
                       "CtcEval::contract(t, z, y, w)", nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
-  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, true, "CtcEval::contract(t, z, y)", nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                        const std::vector<TubeChanges>& changes) const {
-  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, changes)", &changes);
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
@@ -228,7 +290,7 @@ bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>&
   changed.assign(y.size(), {});
   std::vector<TubeChanges> logs;
   for (auto& c : changed) logs.emplace_back(c, 0, ratio);
-  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, ratio, changed)", &logs);
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, ratio, changed)", &logs);
 }
 
 }  // namespace sillage
