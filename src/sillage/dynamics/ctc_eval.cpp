@@ -101,52 +101,93 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   return true;
 }
 
+// Gate i ∩= [lo, hi] on raw bounds; false if it is now empty.
+bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed) {
+  Interval& g = d.gates[i];
+  lo = std::max(lo, g.lb());
+  hi = std::min(hi, g.ub());
+  if (!(lo <= hi)) return false;
+  if (lo != g.lb() || hi != g.ub()) {
+    g = Interval::from_bounds_unchecked(lo, hi);
+    changed = true;
+  }
+  return true;
+}
+
 // Outside the region the fronts only move: F forward from the last gate of
 // the region to t_N, B backward from its first gate to t_0, each to the end
 // of the domain (a sweep that stopped earlier would make the result depend
-// on how far the input already was contracted). False if a gate is empty.
+// on how far the input was already contracted). On raw bounds with the
+// rounding policy of CtcDeriv (it runs over the whole tube). False if a gate
+// or a slice of [w] is empty.
+template <class R>
 bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed) {
-  const TDomain& td = *y.tdomain();
+  const auto ts = y.tdomain()->times();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
-  const std::size_t n = td.nb_slices();
+  const std::size_t n = ts.size() - 1;
   for (std::size_t k = r.last + 1; k < n; ++k) {
-    if (!narrow_gate(d, k + 1, d.gates[k + 1] & (d.gates[k] + td.slice_width(k) * ws[k]), changed)) return false;
+    const Interval &a = d.gates[k], &v = ws[k];
+    if (v.is_empty()) return false;
+    double plo, phi;
+    deriv::scale<R>(v.lb(), v.ub(), deriv::width<R>(ts[k], ts[k + 1]), plo, phi);
+    if (!narrow_raw(d, k + 1, R::add_down(a.lb(), plo), R::add_up(a.ub(), phi), changed)) return false;
   }
   for (std::size_t i = r.first; i > 0; --i) {
-    if (!narrow_gate(d, i - 1, d.gates[i - 1] & (d.gates[i] - td.slice_width(i - 1) * ws[i - 1]), changed)) {
-      return false;
-    }
+    const Interval &b = d.gates[i], &v = ws[i - 1];
+    if (v.is_empty()) return false;
+    double plo, phi;
+    deriv::scale<R>(v.lb(), v.ub(), deriv::width<R>(ts[i - 1], ts[i]), plo, phi);
+    if (!narrow_raw(d, i - 1, R::sub_down(b.lb(), phi), R::sub_up(b.ub(), plo), changed)) return false;
   }
   return true;
 }
 
 // Slices a .. b ∩= the hull of their polygon (CtcDeriv's slice rule) from
 // their gates as they are: the gates are not changed, so that the result does
-// not depend on the order of the slices. False if a slice is empty.
+// not depend on the order of the slices. False if something is empty.
+template <class R>
 bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& changed) {
-  using R = deriv::SoftRounding;
   const auto ts = y.tdomain()->times();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
   for (std::size_t k = a; k <= b; ++k) {
     const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
-    if (ga.is_empty() || gb.is_empty() || v.is_empty()) return false;
+    Interval& s = d.slices[k];
+    if (ga.is_empty() || gb.is_empty() || v.is_empty() || s.is_empty()) return false;
     double plo, phi, lo, up;
     deriv::scale<R>(v.lb(), v.ub(), deriv::width<R>(ts[k], ts[k + 1]), plo, phi);
     deriv::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
                                   deriv::straddles(v.lb(), v.ub()), lo, up);
-    Interval& s = d.slices[k];
-    if (s.is_empty()) return false;
-    const double lo2 = std::max(lo, s.lb()), up2 = std::min(up, s.ub());
-    const Interval next = lo2 <= up2 ? Interval::from_bounds_unchecked(lo2, up2) : Interval::empty();
-    if (next != s) {
-      s = next;
+    lo = std::max(lo, s.lb());
+    up = std::min(up, s.ub());
+    if (!(lo <= up)) return false;
+    if (lo != s.lb() || up != s.ub()) {
+      s = Interval::from_bounds_unchecked(lo, up);
       changed = true;
     }
-    if (s.is_empty()) return false;
   }
   return true;
+}
+
+// f.template operator()<R>() with the faster rounding policy when the CPU
+// has it (both give the same bounds, bit for bit).
+template <class F>
+bool with_rounding(const F& f) {
+#if SILLAGE_DERIV_HARD_ROUNDING
+  if (deriv::hardware_rounding()) return f.template operator()<deriv::HardRounding>();
+#endif
+  return f.template operator()<deriv::SoftRounding>();
+}
+
+// The fronts and the slices outside the region.
+bool outward(Tube& y, const Tube& w, Region r, bool& changed) {
+  const std::size_t n = y.nb_slices();
+  return with_rounding([&]<class R>() {
+    if (!sweep_outward<R>(y, w, r, changed)) return false;
+    if (r.first > 0 && !hull_slices<R>(y, w, 0, r.first - 1, changed)) return false;
+    return r.last + 1 >= n || hull_slices<R>(y, w, r.last + 1, n - 1, changed);
+  });
 }
 
 // [t] ∩= [y]⁻¹([z]), [z] ∩= [y]([t]) (with the derivative when given).
@@ -189,11 +230,11 @@ struct RegionSnapshot {
 constexpr int kMaxPasses = 200;
 
 // Every case on component tubes (w empty: no derivative), one [t].
-// Standalone calls (outward) also carry the fronts to both ends of the
+// Standalone calls (outward_too) also carry the fronts to both ends of the
 // domain; network nodes leave that to the network's CtcDeriv, and their
 // logs[i] receive what shrank in y[i] (the region only: nothing else moves).
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, bool outward, const char* where, const std::vector<TubeChanges>* logs) {
+                  bool sampling, bool outward_too, const char* where, const std::vector<TubeChanges>* logs) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -221,18 +262,17 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
       if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
       if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved);
-      if (ok && !w.empty()) ok = hull_slices(*y[i], *w[i], r.first, r.last, moved);
+      if (ok && !w.empty()) {
+        ok = with_rounding([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
+      }
       if (moved) y[i]->touch();
       changed = changed || moved;
     }
     if (!changed && t == t0 && z == z0) break;
   }
-  const std::size_t n = y[0]->nb_slices();
-  for (std::size_t i = 0; ok && outward && !w.empty() && i < y.size(); ++i) {
+  for (std::size_t i = 0; ok && outward_too && !w.empty() && i < y.size(); ++i) {
     bool moved = false;
-    ok = sweep_outward(*y[i], *w[i], r, moved);
-    if (ok && r.first > 0) ok = hull_slices(*y[i], *w[i], 0, r.first - 1, moved);
-    if (ok && r.last + 1 < n) ok = hull_slices(*y[i], *w[i], r.last + 1, n - 1, moved);
+    ok = outward(*y[i], *w[i], r, moved);
     if (moved) y[i]->touch();
   }
   for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/error.h"
@@ -374,4 +375,40 @@ TEST(CtcEval, OneCallIsAFixedPoint) {
       EXPECT_EQ(y.gate(k + 1), y1.gate(k + 1)) << trial << " gate " << k + 1;
     }
   }
+}
+
+// y' ∈ [0, 1], y = 0 at some t ∈ [3.5, 4.5], slices of 1, in a network. The
+// exact set (5.6) at 3.75 is [-0.75, 0.25] (t1 <= 3.75: [0, 0.25]; t1 >=
+// 3.75: [-0.75, 0]). With the bounds of [t] as gates the network holds it;
+// without them the gates 3 and 4 only give [-0.75, 0.5] there.
+Interval network_value_at_3_75(bool gates_at_time_bounds) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto t = std::make_shared<Interval>(3.5, 4.5);
+  if (gates_at_time_bounds) td->sample(*t);
+  auto y = std::make_shared<Tube>(td);
+  auto w = std::make_shared<Tube>(td, Interval(0, 1));
+  auto z = std::make_shared<Interval>(0.0);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {y, w});
+  cn.add(std::make_shared<CtcEval>(), {t, z, y, w});
+  EXPECT_FALSE(cn.contract().empty);
+  return y->eval(Interval(3.75), *w);
+}
+
+TEST(CtcEval, TimeBoundsAsGatesMakeLaterQueriesInsideTight) {
+  EXPECT_EQ(network_value_at_3_75(true), Interval(-0.75, 0.25));
+  EXPECT_EQ(network_value_at_3_75(false), Interval(-0.75, 0.5));
+}
+
+TEST(CtcEval, TDomainSampledAtBothBoundsOfAnInterval) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  Tube y(td, Interval(-1, 1));
+  td->sample(Interval(3.5, 4.5));
+  EXPECT_EQ(td->nb_slices(), 12u);
+  EXPECT_TRUE(td->is_time_point(3.5) && td->is_time_point(4.5));
+  td->sample(Interval(-5.0, 4.0));  // -5 is outside, 4 already a time point
+  td->sample(Interval::empty());
+  EXPECT_EQ(td->nb_slices(), 12u);
+  EXPECT_EQ(y.nb_slices(), 12u);
+  EXPECT_THROW(td->sample(Interval(20.0, 30.0)), Error);
 }
