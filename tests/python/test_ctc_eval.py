@@ -117,3 +117,19 @@ def test_one_call_is_a_fixed_point():
     t1, z1 = Interval(t), Interval(z)
     assert c.contract(t, z, y, w)
     assert t == t1 and z == z1 and gates == [y.gate(k) for k in range(td.nb_slices() + 1)]
+
+
+def test_network_adds_the_time_bounds_as_gates():
+    td = TDomain(0.0, 10.0, 1.0)
+    y, w = Tube(td), Tube(td, Interval(0, 1))
+    t, z = Interval(3.5, 4.5), Interval(0.0)
+    cn = sillage.ContractorNetwork()
+    cn.add(sillage.CtcDeriv(), [y, w])
+    ev = sillage.CtcEval()
+    assert not ev.gates_at_time_bounds()
+    ev.enable_gates_at_time_bounds(True)
+    cn.add(ev, [t, z, y, w])
+    assert td.nb_slices() == 10
+    assert not cn.contract().empty
+    assert td.nb_slices() == 12 and td.is_time_point(3.5) and td.is_time_point(4.5)
+    assert y.eval(Interval(3.75), w) == Interval(-0.75, 0.25)  # the exact set of (5.6) there

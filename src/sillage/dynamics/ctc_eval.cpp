@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "sillage/cn/tube_changes.h"
+#include "sillage/cn/tube_domain.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/deriv_rounding.h"
 #include "sillage/dynamics/slice_deriv.h"
@@ -295,6 +296,18 @@ std::vector<T*> pointers(V& y) {
 
 std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>& args) const {
   return make_eval_node(*this, args);
+}
+
+NetworkCtc::Gates CtcEval::gates_for(const std::vector<DomainRef>& args) const {
+  if (!gates_at_bounds_ || args.size() < 3) return {};
+  const Interval t = args[0].domain()->atom(args[0].first());
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (const auto* y = dynamic_cast<const TubeDomain*>(args[i].domain().get())) {
+      if (t.is_empty()) return {};
+      return {y->tube().tdomain(), {t.lb(), t.ub()}};
+    }
+  }
+  return {};
 }
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {

@@ -51,6 +51,14 @@ class CtcEval : public NetworkCtc {
   // Allow (default) or not the sampling of the TDomain at a degenerate t.
   void enable_time_sampling(bool on) { sampling_ = on; }
   bool time_sampling() const { return sampling_; }
+  // In a ContractorNetwork: add the bounds of [t] (as given to add()) as
+  // time points of y's TDomain at the next contract(), so that the values at
+  // the ends of [t], and later queries inside those slices, are as tight as
+  // (5.6) allows (ContractorNetwork, "Gates"). Off by default: every tube of
+  // that TDomain gains up to two slices per observation.
+  void enable_gates_at_time_bounds(bool on) { gates_at_bounds_ = on; }
+  bool gates_at_time_bounds() const { return gates_at_bounds_; }
+  Gates gates_for(const std::vector<DomainRef>& args) const override;
 
   // z = y(t), y' ∈ w. DimensionError if y and w are not on one TDomain;
   // Error if t does not meet [t_0, t_N] (it is intersected with it).
@@ -72,6 +80,7 @@ class CtcEval : public NetworkCtc {
 
  private:
   bool sampling_ = true;
+  bool gates_at_bounds_ = false;
 };
 
 }  // namespace sillage

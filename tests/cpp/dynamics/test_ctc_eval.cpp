@@ -412,3 +412,34 @@ TEST(CtcEval, TDomainSampledAtBothBoundsOfAnInterval) {
   EXPECT_EQ(y.nb_slices(), 12u);
   EXPECT_THROW(td->sample(Interval(20.0, 30.0)), Error);
 }
+
+// The same network, the bounds of [t] added as gates by the network itself
+// (after CtcDeriv was bound to the tube): the nodes are rebuilt on the new
+// slices before the propagation.
+TEST(CtcEval, NetworkAddsTheTimeBoundsAsGates) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto y = std::make_shared<Tube>(td);
+  auto w = std::make_shared<Tube>(td, Interval(0, 1));
+  auto t = std::make_shared<Interval>(3.5, 4.5), z = std::make_shared<Interval>(0.0);
+  auto t2 = std::make_shared<Interval>(7.25, 8.0), z2 = std::make_shared<Interval>(1.0);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {y, w});
+  auto eval = std::make_shared<CtcEval>();
+  eval->enable_gates_at_time_bounds(true);
+  cn.add(eval, {t, z, y, w});
+  cn.add(eval, {t2, z2, y, w});
+  EXPECT_EQ(td->nb_slices(), 10u);  // not before contract()
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_EQ(td->nb_slices(), 13u);  // 3.5, 4.5, 7.25 (8 is one already)
+  EXPECT_EQ(y->eval(Interval(3.75), *w), Interval(-0.75, 0.25));
+  EXPECT_EQ(y->gate(td->time_index(7.25)), Interval(0.25, 1.0));  // y(8) = 1 at worst, y' <= 1 back from 8
+  EXPECT_EQ(y->gate(td->time_index(4.5)), Interval(0, 1));
+  // A second contract changes nothing and adds no gate.
+  const Tube before = *y;
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_EQ(td->nb_slices(), 13u);
+  for (std::size_t k = 0; k < td->nb_slices(); ++k) {
+    EXPECT_EQ(y->gate(k), before.gate(k)) << k;
+    EXPECT_EQ(y->slice(k), before.slice(k)) << k;
+  }
+}
