@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iostream>
 #include <memory>
+#include <random>
+#include <vector>
 
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
@@ -96,4 +99,47 @@ TEST(CtcEvalThenDeriv, UnknownTubeKeepsTheTruth) {
           run_case(dt, yc, wc, vm, sampling);
           if (HasFatalFailure()) return;
         }
+}
+
+// The random unknown tubes of test_ctc_eval.cpp (degenerate [w] on some
+// slices, irregular times, y unknown): CtcDeriv after CtcEval must not fail.
+TEST(CtcEvalThenDeriv, RandomUnknownTubesStayConsistent) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 60; ++trial) {
+    std::uniform_real_distribution<double> ud(0.3, 1.5);
+    std::vector<double> ts{0.0};
+    while (ts.back() < 10.0 - 1.5) ts.push_back(ts.back() + ud(rng));
+    ts.push_back(10.0);
+    const auto td = TDomain::create(ts);
+    std::vector<Interval> ws;
+    for (std::size_t k = 0; k < td->nb_slices(); ++k) {
+      const double a = 4 * u(rng) - 2, b = u(rng) < 0.3 ? a : a + 2 * u(rng);
+      ws.emplace_back(a, b);
+    }
+    Tube y(td);
+    Tube w(td, ws);
+    // Tube(td, slices) gives gates = the meet of adjacent slices: empty where
+    // they are disjoint (no trajectory then, and CtcDeriv rightly says so).
+    // A derivative may jump at a gate: its gate is the hull of both slices.
+    for (std::size_t k = 0; k <= td->nb_slices(); ++k)
+      w.set_gate(k, k == 0 ? ws[0] : (k == ws.size() ? ws.back() : ws[k - 1] | ws[k]));
+    const double ta = 10 * u(rng), tb = std::min(10.0, ta + (u(rng) < 0.2 ? 0.0 : 4 * u(rng)));
+    const double zc = 4 * u(rng) - 2;
+    Interval t(ta, tb), z(zc, zc + u(rng));
+    CtcEval ctc;
+    ctc.enable_time_sampling(false);
+    ASSERT_TRUE(ctc.contract(t, z, y, w)) << trial;
+    const Tube before = y;
+    const bool ok = CtcDeriv().contract(y, w);
+    if (!ok) {
+      for (std::size_t k = 0; k <= td->nb_slices(); ++k) {
+        std::cout.precision(17);
+        std::cout << "t" << k << "=" << td->t(k) << " gate " << before.gate(k);
+        if (k < td->nb_slices()) std::cout << " slice " << before.slice(k) << " w " << w.slice(k) << " wgate " << w.gate(k);
+        std::cout << "\n";
+      }
+    }
+    ASSERT_TRUE(ok) << "trial " << trial << " t " << t << " z " << z;
+  }
 }
