@@ -1,4 +1,5 @@
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_deriv.h"
 
 #include <string>
 #include <vector>
@@ -232,7 +233,9 @@ constexpr int kMaxPasses = 200;
 
 // Every case on component tubes (w empty: no derivative), one [t].
 // Standalone calls (outward_too) also carry the fronts to both ends of the
-// domain; network nodes leave that to the network's CtcDeriv, and their
+// domain and run CtcDeriv over the whole tube, inside the passes (so that one
+// call stays its own fixed point; CtcDeriv also reads the gates of [w], and
+// says empty when one is); network nodes leave that to the network's CtcDeriv, and their
 // logs[i] receive what shrank in y[i] (the region only: nothing else moves).
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                   bool sampling, bool outward_too, const char* where, const std::vector<TubeChanges>* logs) {
@@ -265,6 +268,14 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved);
       if (ok && !w.empty()) {
         ok = with_rounding([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
+      }
+      if (ok && outward_too && !w.empty()) {
+        ok = outward(*y[i], *w[i], r, moved);
+        if (ok) {
+          const Tube y0 = *y[i];
+          ok = CtcDeriv().contract(*y[i], *w[i]);
+          if (ok && !(*y[i] == y0)) moved = true;
+        }
       }
       if (moved) y[i]->touch();
       changed = changed || moved;

@@ -289,7 +289,9 @@ TEST(CtcEval, UnknownTubeMatchesTheDefinitionExactlyWithTimeBoundsAnywhere) {
       ws.emplace_back(a, b);
     }
     Tube y(td);
-    const Tube w(td, ws);
+    Tube w(td, ws);
+    for (std::size_t k = 0; k <= td->nb_slices(); ++k)
+      w.set_gate(k, k == 0 ? ws[0] : (k == ws.size() ? ws.back() : ws[k - 1] | ws[k]));
     const double ta = 10 * u(rng), tb = std::min(10.0, ta + (u(rng) < 0.2 ? 0.0 : 4 * u(rng)));
     const double zc = 4 * u(rng) - 2;
     const Interval t0(ta, tb), z0(zc, zc + u(rng));
