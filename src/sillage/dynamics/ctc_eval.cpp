@@ -1,4 +1,6 @@
 #include "sillage/dynamics/ctc_eval.h"
+
+#include <cstdint>
 #include "sillage/dynamics/ctc_deriv.h"
 
 #include <string>
@@ -272,9 +274,9 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       if (ok && outward_too && !w.empty()) {
         ok = outward(*y[i], *w[i], r, moved);
         if (ok) {
-          const Tube y0 = *y[i];
+          const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
           ok = CtcDeriv().contract(*y[i], *w[i]);
-          if (ok && !(*y[i] == y0)) moved = true;
+          if (ok && y[i]->version() != v0) moved = true;
         }
       }
       if (moved) y[i]->touch();
