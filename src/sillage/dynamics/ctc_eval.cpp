@@ -284,11 +284,6 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     }
     if (!changed && t == t0 && z == z0) break;
   }
-  for (std::size_t i = 0; ok && outward_too && !w.empty() && i < y.size(); ++i) {
-    bool moved = false;
-    ok = outward(*y[i], *w[i], r, moved);
-    if (moved) y[i]->touch();
-  }
   for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {
     t.set_empty();
