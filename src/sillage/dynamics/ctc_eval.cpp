@@ -254,6 +254,7 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
   if (ok) slice_range(*y[0]->tdomain(), t, r.first, r.last, where);
   std::vector<RegionSnapshot> before(logs ? y.size() : 0);
   for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].take(*y[i], r);
+  bool deriv_fresh = false;
   for (int pass = 0; ok && pass < kMaxPasses; ++pass) {
     const Interval t0 = t;
     const IntervalVector z0 = z;
@@ -271,18 +272,30 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       if (ok && !w.empty()) {
         ok = with_rounding([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
       }
-      if (ok && outward_too && !w.empty()) {
-        ok = outward(*y[i], *w[i], r, moved);
-        if (ok) {
-          const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
-          ok = CtcDeriv().contract(*y[i], *w[i]);
-          if (ok && y[i]->version() != v0) moved = true;
-        }
-      }
       if (moved) y[i]->touch();
       changed = changed || moved;
     }
-    if (!changed && t == t0 && z == z0) break;
+    if (changed || t != t0 || z != z0) {
+      deriv_fresh = false;
+      continue;
+    }
+    // The region is at its fixed point: the fronts to both ends and CtcDeriv
+    // over the whole tube (once more only if they shrank something).
+    if (!outward_too || w.empty() || deriv_fresh) break;
+    deriv_fresh = true;
+    bool moved_any = false;
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      bool moved = false;
+      ok = outward(*y[i], *w[i], r, moved);
+      if (ok) {
+        const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
+        ok = CtcDeriv().contract(*y[i], *w[i]);
+        if (ok && y[i]->version() != v0) moved = true;
+      }
+      if (moved) y[i]->touch();
+      moved_any = moved_any || moved;
+    }
+    if (!moved_any) break;
   }
   for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {
