@@ -76,3 +76,60 @@ def test_inverse_within_a_time_interval_and_memory():
     with pytest.raises(sillage.Error):
         y.inverse(Interval(3, 7), w, Interval(9, 11))
     assert y.memory_bytes() >= 32 * td.nb_slices()
+
+
+def issue_case():
+    """Slices of 2 over [-1, 7], w = -1, [-1, 1], -1, [-1, 1], nothing known of y."""
+    td = TDomain([-1.0, 1.0, 3.0, 5.0, 7.0])
+    w = Tube(td, [Interval(-1), Interval(-1, 1), Interval(-1), Interval(-1, 1)])
+    return td, Tube(td), w
+
+
+def test_time_inside_slices_gives_the_exact_set_of_the_definition():
+    td, y, w = issue_case()
+    c = sillage.CtcEval()
+    c.enable_time_sampling(False)
+    t, z = Interval(0.0, 6.0), Interval(-1.0, 1.0)
+    assert c.contract(t, z, y, w)
+    assert [y.gate(i) for i in range(5)] == [Interval(-1, 8), Interval(-3, 6), Interval(-4, 4), Interval(-6, 2),
+                                             Interval(-8, 3)]
+    assert y.eval(Interval(0.0), w) == Interval(-2, 7)
+
+
+def test_time_bounds_as_gates_give_the_exact_set_everywhere():
+    td, y, w = issue_case()
+    t, z = Interval(0.0, 6.0), Interval(-1.0, 1.0)
+    td.sample(t)  # gates at 0 and 6
+    assert td.nb_slices() == 6
+    assert sillage.CtcEval().contract(t, z, y, w)
+    expected = {-1: (-1, 8), 0: (-2, 7), 1: (-3, 6), 3: (-4, 4), 5: (-6, 2), 6: (-7, 2), 7: (-8, 3)}
+    for ti, (lo, hi) in expected.items():
+        assert y.gate(td.time_index(ti)) == Interval(lo, hi), ti
+
+
+def test_one_call_is_a_fixed_point():
+    td = TDomain(0.0, 10.0, 0.7)
+    y, w = Tube(td, "sin(t) + [-0.6, 0.6]"), Tube(td, "cos(t) + [-0.2, 0.2]")
+    c = sillage.CtcEval()
+    t, z = Interval(2.35, 4.1), Interval(0.5, 0.6)
+    assert c.contract(t, z, y, w)
+    gates = [y.gate(k) for k in range(td.nb_slices() + 1)]
+    t1, z1 = Interval(t), Interval(z)
+    assert c.contract(t, z, y, w)
+    assert t == t1 and z == z1 and gates == [y.gate(k) for k in range(td.nb_slices() + 1)]
+
+
+def test_network_adds_the_time_bounds_as_gates():
+    td = TDomain(0.0, 10.0, 1.0)
+    y, w = Tube(td), Tube(td, Interval(0, 1))
+    t, z = Interval(3.5, 4.5), Interval(0.0)
+    cn = sillage.ContractorNetwork()
+    cn.add(sillage.CtcDeriv(), [y, w])
+    ev = sillage.CtcEval()
+    assert not ev.gates_at_time_bounds()
+    ev.enable_gates_at_time_bounds(True)
+    cn.add(ev, [t, z, y, w])
+    assert td.nb_slices() == 10
+    assert not cn.contract().empty
+    assert td.nb_slices() == 12 and td.is_time_point(3.5) and td.is_time_point(4.5)
+    assert y.eval(Interval(3.75), w) == Interval(-0.75, 0.25)  # the exact set of (5.6) there

@@ -107,6 +107,7 @@ def test_ctc_qeval_network_form_is_the_direct_call():
     cn = ContractorNetwork()
     ctc = CtcQEval(1, obs)
     cn.add(ctc, [x, v])
+    cn.add(CtcDeriv(), [x, v])  # the node's CtcEval carries its fronts only while they shrink gates
     assert not cn.contract().empty
     assert x.is_subset(direct)
     assert len(ctc.observations()) == 4 and "4 observations" in repr(ctc)

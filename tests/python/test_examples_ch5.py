@@ -111,7 +111,7 @@ def test_clock_contracts_the_times(clock_fine):
     assert w1 < 0.35 * w0  # 0.959 -> 0.286 on average
     # key values of the example (dt = 0.01)
     t8 = p["t"][7]
-    assert abs(t8.lb() - 11.8781) < 1e-3 and abs(t8.ub() - 12.2642) < 1e-3
+    assert abs(t8.lb() - 11.8781) < 1e-3 and abs(t8.ub() - 12.2595) < 1e-3  # CtcEval exact inside slices
     assert p["h"].max_thickness() < 1.5 < h0.max_thickness()
 
 

@@ -33,6 +33,13 @@
 // when a domain becomes empty (that domain is set empty, the others keep their
 // last values, which remain valid enclosures; ContractStats::empty tells).
 //
+// Gates. A NetworkCtc may ask for time points (NetworkCtc::gates_for; CtcEval
+// with gates_at_time_bounds: the bounds of [t]). They are added to the TDomain
+// at the next contract(), before the propagation; the tube domains on it are
+// then re-laid out and every node is rebuilt from its add() on the new
+// slices. Not done (the tubes keep their slices) when a node given by
+// add_node acts on a tube of that TDomain: it could not be rebuilt.
+//
 // Emptiness is an answer (no trajectory, no solution fits the data and the
 // bounds), never a success: ContractStats says which contractor emptied which
 // domain, and where (the slice or gate of a tube, and its time), in words
@@ -145,6 +152,17 @@ class ContractorNetwork {
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
   std::vector<std::shared_ptr<const CnNode>> nodes_;
+  // Per node, how to build it again on a new layout (make empty: add_node).
+  struct Record {
+    std::vector<DomainRef> refs;
+    std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)> make;
+  };
+  std::vector<Record> records_;
+  std::vector<NetworkCtc::Gates> pending_gates_;
+  // Samples the pending gates, re-lays out the tube domains and rebuilds the
+  // nodes (see "Gates"); at the start of contract().
+  void add_pending_gates();
+  bool acts_on(const CnNode& node, const TDomain& td) const;
   double ratio_ = 0.01;
   Budget budget_;
   // True during contract(): a contractor calling back into the network (a

@@ -43,6 +43,10 @@ class Domain {
   virtual void check_layout(const std::string& label) const { (void)label; }
   // True when check_layout would throw (cheap: checked after every node run).
   virtual bool layout_changed() const { return false; }
+  // A fresh domain on the same object with its current layout, when the
+  // layout changed only because its TDomain gained time points; nullptr
+  // otherwise (the network then reports the change as an error).
+  virtual std::shared_ptr<Domain> relaid() const { return nullptr; }
   // The word for this kind of domain in reports: "interval", "box", "tube".
   virtual std::string noun() const { return "domain"; }
   // Where atom i lies (kind "" by default).

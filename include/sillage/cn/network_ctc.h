@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "sillage/cn/cn_node.h"
+#include "sillage/cn/domain_ref.h"
+#include "sillage/tube/tdomain.h"
 
 namespace sillage {
 
@@ -25,6 +27,18 @@ class NetworkCtc {
   // order). Throws DimensionError / Error, naming the contractor, when the
   // arguments are not what it acts on.
   virtual std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const = 0;
+
+  // Times this contractor wants as time points of a TDomain before the
+  // network contracts (CtcEval: the bounds of [t]); the network samples
+  // them at its next contract() and rebinds its nodes. None by default.
+  struct Gates {
+    std::shared_ptr<TDomain> tdomain;
+    std::vector<double> times;
+  };
+  virtual Gates gates_for(const std::vector<DomainRef>& args) const {
+    (void)args;
+    return {};
+  }
 };
 
 }  // namespace sillage

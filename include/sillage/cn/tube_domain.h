@@ -31,9 +31,12 @@ class TubeDomain : public Domain, public TubeAtoms {
   bool layout_changed() const override { return x_->nb_slices() != nb_slices_ || x_->tdomain() != td_; }
   std::string noun() const override { return "tube"; }
   AtomPlace place(std::size_t i) const override;
+  std::shared_ptr<Domain> relaid() const override;
 
   Tube& tube() const { return *x_; }
   const std::shared_ptr<Tube>& object() const { return x_; }
+  // The tube is still on the TDomain it had at registration.
+  bool same_tdomain() const { return x_->tdomain() == td_; }
 
  private:
   std::shared_ptr<Tube> x_;

@@ -7,20 +7,27 @@
 // [t] and [z] use the tube with its derivative (Tube::inverse(y, w),
 // Tube::eval(t, w): the polygon inside each slice, tighter than the boxes).
 //
-// The tube is contracted by two sweeps over the gates (design guide):
-// the forward front F(t_i) encloses y(t_i) for a measurement time t* <= t_i,
-//   F ← ((F ∩ [y](t_i)) ∪ ([y](t_i) ∩ [z] if t_i ∈ [t])) ... + δ[w](k)
-//        ∪ (([y](k) ∩ [z]) + [0, δ][w](k)) for a slice k meeting [t],
-// the backward front B(t_i) likewise for t* >= t_i. A gate after [t] is
-// intersected with F, one before with B, one inside with F ∪ B. A sweep stops
-// once its front holds the whole gate (nothing more to learn from it: the
-// network's CtcDeriv carries on). The slices between the changed gates are
-// then contracted by CtcDeriv's slice rule (their gates and [w]).
+// The tube, in the region of [t] (the slices meeting it and their gates),
+// by two fronts (docs/ctc_eval.md): F(t_i) encloses y(t_i) for a measurement
+// time t1 <= t_i, B(t_i) for t1 >= t_i. Across slice k a front moves by
+// δ[w](k) and gains, when [t] meets the slice on [c1, c2],
+//   F: ([y]([c1, c2]) ∩ [z]) + [t_{k+1} - c2, t_{k+1} - c1]·[w](k),
+//   B: ([y]([c1, c2]) ∩ [z]) - [c1 - t_k, c2 - t_k]·[w](k),
+// [y]([c1, c2]) being the slice's polygon over [c1, c2] (its box when [t]
+// covers it), so [t] is never rounded out to whole slices. A gate after [t]
+// is intersected with F, one before with B, one inside with F ∪ B; each slice
+// with the hull of its polygon. [t], [z] and the region are iterated until
+// nothing changes: one call is a fixed point. A standalone call then carries
+// F to t_N and B to t_0 and hulls every slice, always to the ends (so that
+// CtcEval is monotone). The overloads with `changes` (network nodes,
+// CtcT1T2, CtcQEval) carry the fronts only as far as they shrink gates and
+// hull the slices next to those; what lies further is CtcDeriv's business.
 //
 // A degenerate [t] = {t} that is not a time point samples the TDomain there
 // (a new gate, in every tube on it) when sampling is allowed (the default);
-// in a ContractorNetwork it is not (the layout is fixed): sample the TDomain
-// before building the network for the tightest result.
+// a network node never samples while it runs, but with
+// enable_gates_at_time_bounds(true) the network adds the bounds of [t] as
+// time points at its next contract() (ContractorNetwork, "Gates").
 //
 // Inconsistency (Lemma 5.1): when [t], [z] or a gate becomes empty, [t], [z]
 // and [y] are all set empty and contract returns false.
@@ -51,6 +58,14 @@ class CtcEval : public NetworkCtc {
   // Allow (default) or not the sampling of the TDomain at a degenerate t.
   void enable_time_sampling(bool on) { sampling_ = on; }
   bool time_sampling() const { return sampling_; }
+  // In a ContractorNetwork: add the bounds of [t] (as given to add()) as
+  // time points of y's TDomain at the next contract(), so that the values at
+  // the ends of [t], and later queries inside those slices, are as tight as
+  // (5.6) allows (ContractorNetwork, "Gates"). Off by default: every tube of
+  // that TDomain gains up to two slices per observation.
+  void enable_gates_at_time_bounds(bool on) { gates_at_bounds_ = on; }
+  bool gates_at_time_bounds() const { return gates_at_bounds_; }
+  Gates gates_for(const std::vector<DomainRef>& args) const override;
 
   // z = y(t), y' ∈ w. DimensionError if y and w are not on one TDomain;
   // Error if t does not meet [t_0, t_N] (it is intersected with it).
@@ -60,8 +75,9 @@ class CtcEval : public NetworkCtc {
   bool contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const;
   bool contract(Interval& t, IntervalVector& z, TubeVector& y) const;
   // For network nodes: the vector case on component tubes (w empty: no
-  // derivative); changes[i] (one per y[i]) receives the slices and gates of
-  // y[i] that shrank (TubeNode::changes()).
+  // derivative), the fronts beyond the region of [t] while they shrink gates;
+  // changes[i] (one per y[i]) receives the slices and gates of y[i] that
+  // shrank (TubeNode::changes()).
   bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                 const std::vector<TubeChanges>& changes) const;
   // Deprecated (the atom encoding leaks): changed[i] receives the atoms of
@@ -72,6 +88,7 @@ class CtcEval : public NetworkCtc {
 
  private:
   bool sampling_ = true;
+  bool gates_at_bounds_ = false;
 };
 
 }  // namespace sillage

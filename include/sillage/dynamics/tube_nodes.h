@@ -8,9 +8,11 @@
 //
 // Each run contracts [t], [z] and the tubes (fronts from [t]) and reports the
 // slices and gates that shrank, which wakes the pointwise contractors on
-// those slices only. In a network CtcEval does not sample the TDomain (the
-// layout is fixed). CtcDeriv and CtcIncrement use the generic TubePairNode
-// (cn/tube_pair_node.h).
+// those slices only. The node touches only the region of [t] (the tube's
+// CtcDeriv propagates further) and never samples the TDomain while it runs;
+// the bounds of [t] become gates at the next contract() when the CtcEval has
+// gates_at_time_bounds (CtcEval::gates_for). CtcDeriv and CtcIncrement use
+// the generic TubePairNode (cn/tube_pair_node.h).
 #include <memory>
 #include <vector>
 

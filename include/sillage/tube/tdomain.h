@@ -98,6 +98,13 @@ class TDomain {
   // Returns the index of the time point t. Error if t is NaN or outside.
   // Not to be called while other threads use this domain or its tubes.
   std::size_t sample(double t);
+  // Adds both bounds of t as time points (those strictly inside (t_0, t_N)
+  // that are not already), e.g. the time interval of an observation, so
+  // that the tube holds the values at its ends as gates (CtcEval is then as
+  // tight inside those slices as the definition allows). Empty t: nothing.
+  // Error if t does not meet [t_0, t_N].
+  // Same threading rule as sample(double).
+  void sample(const Interval& t);
 
   // Number of tubes (scalar components) currently attached and alive.
   std::size_t nb_attached() const;

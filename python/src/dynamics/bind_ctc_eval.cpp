@@ -18,6 +18,12 @@ void init_ctc_eval(py::module_& m) {
            "Allows (on=True, the default) or forbids a degenerate t that is not a time point to sample the TDomain "
            "there (a new gate in every tube on it). In a ContractorNetwork it is forbidden: the layout is fixed.")
       .def("time_sampling", &CtcEval::time_sampling, "Whether a degenerate t may sample the TDomain.")
+      .def("enable_gates_at_time_bounds", &CtcEval::enable_gates_at_time_bounds, py::arg("on"),
+           "In a ContractorNetwork: add the bounds of t as time points of y's TDomain at the next contract() "
+           "(before the propagation), so that y at the ends of t and inside those slices is as tight as (5.6) "
+           "allows. Off by default.")
+      .def("gates_at_time_bounds", &CtcEval::gates_at_time_bounds,
+           "Whether a network adds the bounds of t as time points.")
       .def(
           "contract",
           [](const CtcEval& c, Interval& t, Interval& z, Tube& y, const Tube* w) {

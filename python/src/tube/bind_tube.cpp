@@ -208,8 +208,11 @@ void init_tdomain(py::module_& m) {
       .def("slice_width", &TDomain::slice_width, py::arg("k"), "Rigorous enclosure of t_{k+1} - t_k.")
       .def("is_time_point", &TDomain::is_time_point, py::arg("t"), "True if t is one of the time points t_k.")
       .def("time_index", &TDomain::time_index, py::arg("t"), "The index k with t_k == t, or -1 if t is not a time point.")
-      .def("sample", &TDomain::sample, py::arg("t"),
+      .def("sample", py::overload_cast<double>(&TDomain::sample), py::arg("t"),
            "Adds the time point t and splits the slice containing it in every attached tube; returns its index.")
+      .def("sample", py::overload_cast<const Interval&>(&TDomain::sample), py::arg("t"),
+           "Adds both bounds of the Interval t (those strictly inside the domain) as time points, e.g. the time "
+           "interval of an observation before CtcEval.")
       .def("nb_attached", &TDomain::nb_attached, "Number of tube components attached to this domain and alive.")
       .def("__repr__",
            [](const TDomain& td) {

@@ -63,8 +63,18 @@ std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& d
   std::vector<BoundDomain> bound;
   for (const auto& r : domains) {
     for (const auto& p : r.parts()) {
-      const std::size_t d = add_domain(p.domain);
-      bound.push_back({domains_[d], {d, p.first, p.count}});
+      // A whole tube referred to before its TDomain gained time points: the
+      // whole tube as it is now.
+      std::shared_ptr<Domain> dom = p.domain;
+      std::size_t count = p.count;
+      if (dom->layout_changed() && p.first == 0 && p.count == dom->nb_atoms()) {
+        if (auto now = dom->relaid()) {
+          dom = now;
+          count = dom->nb_atoms();
+        }
+      }
+      const std::size_t d = add_domain(dom);
+      bound.push_back({domains_[d], {d, p.first, count}});
     }
   }
   return bound;
@@ -73,7 +83,7 @@ std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& d
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
   check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  add_bound(domains, [&](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
+  add_bound(domains, [ctc](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
     std::vector<AtomRange> ranges;
     bool any_tube = false;
     for (const auto& b : bound) {
@@ -89,7 +99,9 @@ void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<Do
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
   check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  add_bound(domains, [&](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
+  add_bound(domains, [ctc](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
+  NetworkCtc::Gates g = ctc->gates_for(domains);
+  if (g.tdomain && !g.times.empty()) pending_gates_.push_back(std::move(g));
 }
 
 void ContractorNetwork::add_bound(
@@ -100,7 +112,9 @@ void ContractorNetwork::add_bound(
   const std::size_t nb_before = domains_.size();
   try {
     add_node(make(bind(domains)));
+    records_.back() = {domains, make};
   } catch (...) {
+    if (records_.size() > nodes_.size()) records_.pop_back();
     while (domains_.size() > nb_before) {
       index_.erase(domains_.back()->key());
       domains_.pop_back();
@@ -127,6 +141,50 @@ void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
     if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first)});
   }
   nodes_.push_back(std::move(node));
+  records_.emplace_back();
+}
+
+bool ContractorNetwork::acts_on(const CnNode& node, const TDomain& td) const {
+  for (const auto& a : node.ranges()) {
+    const auto* t = dynamic_cast<const TubeDomain*>(domains_[a.domain].get());
+    if (t && t->tube().tdomain().get() == &td) return true;
+  }
+  return false;
+}
+
+void ContractorNetwork::add_pending_gates() {
+  if (pending_gates_.empty()) return;
+  const auto pending = std::move(pending_gates_);
+  pending_gates_.clear();
+  bool sampled = false;
+  const bool laid_out = std::none_of(domains_.begin(), domains_.end(), [](const auto& d) { return d->layout_changed(); });
+  for (const auto& g : pending) {
+    const bool rebuildable = std::none_of(nodes_.begin(), nodes_.end(), [&](const auto& n) {
+      return !records_[static_cast<std::size_t>(&n - nodes_.data())].make && acts_on(*n, *g.tdomain);
+    });
+    if (!rebuildable || !laid_out) continue;
+    for (const double t : g.times) {
+      if (t > g.tdomain->t0() && t < g.tdomain->tf() && !g.tdomain->is_time_point(t)) {
+        g.tdomain->sample(t);
+        sampled = true;
+      }
+    }
+  }
+  if (!sampled) return;
+  for (auto& d : domains_) {
+    if (!d->layout_changed()) continue;
+    if (auto now = d->relaid()) d = now;
+  }
+  // Every node again, in the same order (the watchers name nodes by index).
+  auto old = std::move(nodes_);
+  auto records = std::move(records_);
+  nodes_.clear();
+  records_.clear();
+  for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
+  for (std::size_t i = 0; i < old.size(); ++i) {
+    add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
+    records_.back() = std::move(records[i]);
+  }
 }
 
 void ContractorNetwork::set_ratio(double ratio) {
@@ -227,6 +285,7 @@ void ContractorNetwork::set_budget(const Budget& budget) {
 
 ContractStats ContractorNetwork::contract() {
   check_not_contracting("contract");
+  add_pending_gates();
   const auto start = std::chrono::steady_clock::now();
   struct Running {
     bool& flag;

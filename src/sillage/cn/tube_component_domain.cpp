@@ -40,4 +40,9 @@ void TubeComponentDomain::check_layout(const std::string& label) const {
   TubeDomain::check_layout(label);
 }
 
+std::shared_ptr<Domain> TubeComponentDomain::relaid() const {
+  if (vector_->size() != size_ || &(*vector_)[index_] != &tube() || !same_tdomain()) return nullptr;
+  return std::make_shared<TubeComponentDomain>(vector_, index_);
+}
+
 }  // namespace sillage::detail

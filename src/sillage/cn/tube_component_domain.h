@@ -20,6 +20,7 @@ class TubeComponentDomain : public TubeDomain {
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
   bool layout_changed() const override;
+  std::shared_ptr<Domain> relaid() const override;
 
  private:
   std::shared_ptr<TubeVector> vector_;

@@ -41,4 +41,8 @@ void TubeDomain::check_layout(const std::string& label) const {
   }
 }
 
+std::shared_ptr<Domain> TubeDomain::relaid() const {
+  return same_tdomain() ? std::make_shared<TubeDomain>(x_) : nullptr;
+}
+
 }  // namespace sillage

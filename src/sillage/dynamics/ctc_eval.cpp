@@ -1,10 +1,14 @@
 #include "sillage/dynamics/ctc_eval.h"
 
+#include <cstdint>
+
 #include <string>
 #include <vector>
 
 #include "sillage/cn/tube_changes.h"
+#include "sillage/cn/tube_domain.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
 
@@ -31,76 +35,189 @@ bool prepare_time(Interval& t, const Tube& y, bool sampling, const char* where) 
   return true;
 }
 
-// The gate fronts of (5.6); marks [glo, ghi] the gates it changed. False if a
-// gate became empty.
-bool sweep_fronts(const Interval& t, const Interval& z, Tube& y, const Tube& w, std::size_t& glo, std::size_t& ghi,
-                  const TubeChanges& log) {
+// The slices meeting the input [t]: the part of the tube the observation
+// teaches directly (gates first .. last+1, slices first .. last).
+struct Region {
+  std::size_t first = 0, last = 0;
+};
+
+// Narrows gate i to h (h ⊆ the gate); false if it is now empty.
+bool narrow_gate(TubeData& d, std::size_t i, const Interval& h, bool& changed) {
+  Interval& g = d.gates[i];
+  if (h == g) return !g.is_empty();
+  g = h;
+  changed = true;
+  return !g.is_empty();
+}
+
+// The gate fronts of (5.6) over the region, for t1 ∈ [t]:
+//   F(t_i) ⊇ y(t_i) for t1 <= t_i,  B(t_i) ⊇ y(t_i) for t1 >= t_i.
+// Across slice k a front moves by δ[w](k) and gains, when [t] meets the
+// slice on [c1, c2], the values through the part of [t] inside it:
+//   forward  ([y]([c1, c2]) ∩ [z]) + [t_{k+1} - c2, t_{k+1} - c1]·[w](k),
+//   backward ([y]([c1, c2]) ∩ [z]) - [c1 - t_k, c2 - t_k]·[w](k),
+// where [y]([c1, c2]) is the polygon of the slice over [c1, c2] when [t]
+// covers only a part of it (Tube::eval with the derivative), so that [t] is
+// never rounded out to whole slices. A gate after [t] is narrowed to F, one
+// before to B, one inside to F ∪ B. False if a gate became empty.
+bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed) {
   const TDomain& td = *y.tdomain();
   const auto ts = td.times();
-  const std::size_t n = td.nb_slices();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
-  std::size_t first = 0, last = 0;
-  slice_range(td, t, first, last, "CtcEval");
   const double ta = t.lb(), tb = t.ub();
   const auto in_t = [&](std::size_t i) { return ta <= ts[i] && ts[i] <= tb; };
-  // Slice k holds times of [t] strictly inside it.
-  const auto meets = [&](std::size_t k) { return ts[k] < tb && ts[k + 1] > ta; };
-  const auto mark = [&](std::size_t i) {
-    glo = std::min(glo, i);
-    ghi = std::max(ghi, i);
-  };
-  // Sets gate g to h (h ⊆ g); false if it is empty.
-  const auto narrow = [&](std::size_t i, const Interval& h) {
-    Interval& g = d.gates[i];
-    if (h == g) return true;
-    log.gate(i, g, h);
-    g = h;
-    mark(i);
-    return !g.is_empty();
-  };
-
-  // Forward: F encloses y(t_k) when t* <= t_k.
-  std::vector<Interval> inside;  // F at the gates inside [t], in order
-  Interval F = Interval::empty();
-  for (std::size_t k = first; k <= n; ++k) {
-    const Interval g = d.gates[k];
-    if (in_t(k)) F |= g & z;
-    F &= g;
-    if (ts[k] > tb) {
-      if (F == g && k > last + 1) break;  // the front holds the gate: nothing more to learn
-      if (!narrow(k, F)) return false;
-    } else if (in_t(k)) {
-      inside.push_back(F);
-    }
-    if (k == n) break;
-    const Interval dt = td.slice_width(k);
-    Interval next = F + dt * ws[k];
-    if (meets(k)) next |= (d.slices[k] & z) + Interval(0, dt.ub()) * ws[k];
-    F = next;
+  const std::size_t m = r.last - r.first + 1;
+  // Per slice of the region: the times of [t] in it and the hull there.
+  std::vector<Interval> part(m, Interval::empty()), hull(m, Interval::empty());
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t k = r.first + j;
+    if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
+    part[j] = t & Interval(ts[k], ts[k + 1]);
+    const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
+    hull[j] = (whole ? d.slices[k] : y.eval(part[j], w) & d.slices[k]) & z;
   }
-
-  // Backward: B encloses y(t_i) when t* >= t_i.
+  std::vector<Interval> front(m + 1);
+  Interval F = Interval::empty();
+  for (std::size_t j = 0;; ++j) {
+    const std::size_t k = r.first + j;
+    if (in_t(k)) F |= d.gates[k] & z;
+    F &= d.gates[k];
+    front[j] = F;
+    if (j == m) break;
+    F = F + td.slice_width(k) * ws[k];
+    if (!hull[j].is_empty()) F |= hull[j] + (Interval(ts[k + 1]) - part[j]) * ws[k];
+  }
   Interval B = Interval::empty();
-  std::size_t j = inside.size();
-  for (std::size_t i = last + 1;; --i) {
-    const Interval g = d.gates[i];
-    if (in_t(i)) B |= g & z;
-    B &= g;
-    if (ts[i] < ta) {
-      if (B == g && i + 1 < first) break;
-      if (!narrow(i, B)) return false;
-    } else if (in_t(i)) {
-      if (!narrow(i, g & (inside[--j] | B))) return false;
-    }
-    if (i == 0) break;
+  for (std::size_t j = m;; --j) {
+    const std::size_t i = r.first + j;
+    if (in_t(i)) B |= d.gates[i] & z;
+    B &= d.gates[i];
+    const Interval h = ts[i] > tb ? front[j] : ts[i] < ta ? B : (front[j] | B);
+    if (!narrow_gate(d, i, d.gates[i] & h, changed)) return false;
+    if (j == 0) break;
     const std::size_t k = i - 1;
-    const Interval dt = td.slice_width(k);
-    Interval next = B - dt * ws[k];
-    if (meets(k)) next |= (d.slices[k] & z) - Interval(0, dt.ub()) * ws[k];
-    B = next;
+    B = B - td.slice_width(k) * ws[k];
+    if (!hull[j - 1].is_empty()) B |= hull[j - 1] - (part[j - 1] - Interval(ts[k])) * ws[k];
   }
   return true;
+}
+
+// Gate i ∩= [lo, hi] on raw bounds, logged; false if it is now empty.
+bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed, const TubeChanges& log) {
+  Interval& g = d.gates[i];
+  lo = std::max(lo, g.lb());
+  hi = std::min(hi, g.ub());
+  if (!(lo <= hi)) return false;
+  if (lo != g.lb() || hi != g.ub()) {
+    const Interval h = Interval::from_bounds_unchecked(lo, hi);
+    log.gate(i, g, h);
+    g = h;
+    changed = true;
+  }
+  return true;
+}
+
+// How far the fronts go beyond the region:
+//  - kToEnds: F to t_N and B to t_0, whatever they meet (a sweep that
+//    stopped earlier would make the result depend on how far the input was
+//    already contracted: the standalone call, monotone);
+//  - kWhileShrinking: each front stops at the first gate it leaves as it was
+//    (for callers that are not followed by CtcDeriv on the whole tube: a
+//    node, CtcT1T2, CtcQEval; what lies further is CtcDeriv's business).
+enum class Reach { kToEnds, kWhileShrinking };
+
+// The gates the outward sweeps changed: [lo, r.first) and (r.last + 1, hi].
+struct Reached {
+  std::size_t lo = 0, hi = 0;
+};
+
+// Outside the region the fronts only move: F forward from the last gate of
+// the region, B backward from its first gate. On raw bounds with the
+// rounding policy of CtcDeriv. False if a gate or a slice of [w] is empty.
+template <class R>
+bool sweep_outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed, Reached& out,
+                   const TubeChanges& log) {
+  const auto ts = y.tdomain()->times();
+  TubeData& d = y.data();
+  const auto& ws = w.data().slices;
+  const std::size_t n = ts.size() - 1;
+  out = {r.first, r.last + 1};
+  for (std::size_t k = r.last + 1; k < n; ++k) {
+    const Interval &a = d.gates[k], &v = ws[k];
+    if (v.is_empty()) return false;
+    double plo, phi;
+    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
+    bool moved = false;
+    if (!narrow_raw(d, k + 1, R::add_down(a.lb(), plo), R::add_up(a.ub(), phi), moved, log)) return false;
+    if (moved) out.hi = k + 1, changed = true;
+    else if (reach == Reach::kWhileShrinking) break;
+  }
+  for (std::size_t i = r.first; i > 0; --i) {
+    const Interval &b = d.gates[i], &v = ws[i - 1];
+    if (v.is_empty()) return false;
+    double plo, phi;
+    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[i - 1], ts[i]), plo, phi);
+    bool moved = false;
+    if (!narrow_raw(d, i - 1, R::sub_down(b.lb(), phi), R::sub_up(b.ub(), plo), moved, log)) return false;
+    if (moved) out.lo = i - 1, changed = true;
+    else if (reach == Reach::kWhileShrinking) break;
+  }
+  return true;
+}
+
+// Slices a .. b ∩= the hull of their polygon (CtcDeriv's slice rule) from
+// their gates as they are: the gates are not changed, so that the result does
+// not depend on the order of the slices. Logged. False if something is empty.
+template <class R>
+bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& changed,
+                 const TubeChanges& log = TubeChanges()) {
+  const auto ts = y.tdomain()->times();
+  TubeData& d = y.data();
+  const auto& ws = w.data().slices;
+  for (std::size_t k = a; k <= b; ++k) {
+    const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
+    Interval& s = d.slices[k];
+    if (ga.is_empty() || gb.is_empty() || v.is_empty() || s.is_empty()) return false;
+    double plo, phi, lo, up;
+    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
+    detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
+                                  detail::straddles(v.lb(), v.ub()), lo, up);
+    lo = std::max(lo, s.lb());
+    up = std::min(up, s.ub());
+    if (!(lo <= up)) return false;
+    if (lo != s.lb() || up != s.ub()) {
+      const Interval h = Interval::from_bounds_unchecked(lo, up);
+      log.slice(k, s, h);
+      s = h;
+      changed = true;
+    }
+  }
+  return true;
+}
+
+// f.template operator()<R>() with the faster rounding policy when the CPU
+// has it (both give the same bounds, bit for bit).
+template <class F>
+bool with_rounding(const F& f) {
+#if SILLAGE_HARD_ROUNDING
+  if (detail::hardware_rounding()) return f.template operator()<detail::HardRounding>();
+#endif
+  return f.template operator()<detail::SoftRounding>();
+}
+
+// The fronts and the slices outside the region: every slice (kToEnds), or
+// those next to a gate the fronts changed (kWhileShrinking).
+bool outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed, const TubeChanges& log = TubeChanges()) {
+  const std::size_t n = y.nb_slices();
+  return with_rounding([&]<class R>() {
+    Reached g;
+    if (!sweep_outward<R>(y, w, r, reach, changed, g, log)) return false;
+    const std::size_t lo = reach == Reach::kToEnds ? 0 : (g.lo > 0 ? g.lo - 1 : 0);
+    const std::size_t hi = reach == Reach::kToEnds ? n - 1 : std::min(g.hi, n - 1);
+    if (r.first > lo && !hull_slices<R>(y, w, lo, r.first - 1, changed, log)) return false;
+    return r.last + 1 > hi || hull_slices<R>(y, w, r.last + 1, hi, changed, log);
+  });
 }
 
 // [t] ∩= [y]⁻¹([z]), [z] ∩= [y]([t]) (with the derivative when given).
@@ -112,49 +229,45 @@ bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
 }
 
 // The gate at a degenerate t that is a time point: ∩= [z].
-bool contract_gate(const Interval& t, const Interval& z, Tube& y, const TubeChanges& log) {
+bool contract_gate(const Interval& t, const Interval& z, Tube& y, bool& changed) {
   if (!t.is_degenerate()) return true;
   const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
   if (i < 0) return true;
-  Interval& g = y.data().gates[static_cast<std::size_t>(i)];
-  const Interval h = g & z;
-  if (h != g) {
-    log.gate(static_cast<std::size_t>(i), g, h);
-    g = h;
-    y.touch();
-  }
-  return !h.is_empty();
+  return narrow_gate(y.data(), static_cast<std::size_t>(i), y.data().gates[static_cast<std::size_t>(i)] & z, changed);
 }
 
-bool contract_tube(const Interval& t, const Interval& z, Tube& y, const Tube& w, const TubeChanges& log) {
-  std::size_t glo = y.nb_slices() + 1, ghi = 0;
-  const bool ok = sweep_fronts(t, z, y, w, glo, ghi, log);
-  if (glo <= ghi) y.touch();
-  if (!ok) return false;
-  if (glo > ghi) return true;
-  // The slices around the changed gates, by CtcDeriv's slice rule.
-  const std::size_t n = y.nb_slices(), a = glo > 0 ? glo - 1 : 0, b = std::min(ghi, n - 1);
-  TubeData& d = y.data();
-  std::vector<Interval> before;
-  if (log.active()) {
-    for (std::size_t k = a; k <= b; ++k) before.insert(before.end(), {d.gates[k], d.slices[k]});
-    before.push_back(d.gates[b + 1]);
+// What the region held before, to report what shrank over the whole call
+// (several passes may each shrink an atom a little).
+struct RegionSnapshot {
+  std::vector<Interval> gates, slices;
+  void take(const Tube& y, Region r) {
+    const TubeData& d = y.data();
+    gates.assign(d.gates.begin() + static_cast<std::ptrdiff_t>(r.first),
+                 d.gates.begin() + static_cast<std::ptrdiff_t>(r.last + 2));
+    slices.assign(d.slices.begin() + static_cast<std::ptrdiff_t>(r.first),
+                  d.slices.begin() + static_cast<std::ptrdiff_t>(r.last + 1));
   }
-  const bool deriv_ok = CtcDeriv().contract(y, w, a, b);
-  if (log.active()) {
-    for (std::size_t k = a; k <= b; ++k) {
-      log.gate(k, before[2 * (k - a)], d.gates[k]);
-      log.slice(k, before[2 * (k - a) + 1], d.slices[k]);
-    }
-    log.gate(b + 1, before.back(), d.gates[b + 1]);
+  void report(const Tube& y, Region r, const TubeChanges& log) const {
+    const TubeData& d = y.data();
+    for (std::size_t j = 0; j < gates.size(); ++j) log.gate(r.first + j, gates[j], d.gates[r.first + j]);
+    for (std::size_t j = 0; j < slices.size(); ++j) log.slice(r.first + j, slices[j], d.slices[r.first + j]);
   }
-  return deriv_ok;
-}
+};
 
-// Every case on component tubes (w empty: no derivative), one [t];
-// logs[i] (if given) receives what shrank in y[i].
+// Passes over [t], [z] and the region until none changes anything, so that
+// one call is a fixed point (a network does not wake a contractor on its own
+// changes). Bounded, as a guard: each pass that goes on shrinks a bound.
+constexpr int kMaxPasses = 200;
+
+// Every case on component tubes (w empty: no derivative), one [t].
+// Standalone calls (outward_too) also carry the fronts to both ends of the
+// domain and run CtcDeriv over the whole tube, inside the passes (so that one
+// call stays its own fixed point; CtcDeriv also reads the gates of [w], and
+// says empty when one is). Other callers (network nodes, CtcT1T2, CtcQEval)
+// carry the fronts beyond the region while they shrink gates and hull the
+// slices next to those gates; their logs[i] receive what shrank in y[i].
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, const char* where, const std::vector<TubeChanges>* logs) {
+                  bool sampling, bool outward_too, const char* where, const std::vector<TubeChanges>* logs) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -164,16 +277,60 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     if (y[i]->tdomain() != y[0]->tdomain()) throw DimensionError(std::string(where) + ": y is on several TDomains");
   }
   bool ok = prepare_time(t, *y[0], sampling, where) && !z.is_empty();
-  // [t] from every component first, then [z] and the tubes with the common [t].
-  for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
-    ok = !t.is_empty();
+  Region r;
+  if (ok) slice_range(*y[0]->tdomain(), t, r.first, r.last, where);
+  std::vector<RegionSnapshot> before(logs ? y.size() : 0);
+  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].take(*y[i], r);
+  bool deriv_fresh = false;
+  for (int pass = 0; ok && pass < kMaxPasses; ++pass) {
+    const Interval t0 = t;
+    const IntervalVector z0 = z;
+    bool changed = false;
+    // [t] from every component first, then [z] and the tubes with the common [t].
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
+      ok = !t.is_empty();
+    }
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      bool moved = false;
+      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
+      if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
+      if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved);
+      if (ok && !w.empty()) {
+        ok = with_rounding([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
+      }
+      if (moved) y[i]->touch();
+      changed = changed || moved;
+    }
+    if (changed || t != t0 || z != z0) {
+      deriv_fresh = false;
+      continue;
+    }
+    // The region is at its fixed point: the fronts to both ends and CtcDeriv
+    // over the whole tube (once more only if they shrank something).
+    if (!outward_too || w.empty() || deriv_fresh) break;
+    deriv_fresh = true;
+    bool moved_any = false;
+    for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      bool moved = false;
+      ok = outward(*y[i], *w[i], r, Reach::kToEnds, moved);
+      if (ok) {
+        const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
+        ok = CtcDeriv().contract(*y[i], *w[i]);
+        if (ok && y[i]->version() != v0) moved = true;
+      }
+      if (moved) y[i]->touch();
+      moved_any = moved_any || moved;
+    }
+    if (!moved_any) break;
   }
-  for (std::size_t i = 0; ok && i < y.size(); ++i) {
-    const TubeChanges log = logs ? (*logs)[i] : TubeChanges();
-    ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
-    if (ok) ok = w.empty() ? contract_gate(t, z[i], *y[i], log) : contract_tube(t, z[i], *y[i], *w[i], log);
+  // Other callers: the fronts beyond the region as long as they shrink gates.
+  for (std::size_t i = 0; ok && !outward_too && !w.empty() && i < y.size(); ++i) {
+    bool moved = false;
+    ok = outward(*y[i], *w[i], r, Reach::kWhileShrinking, moved, logs ? (*logs)[i] : TubeChanges());
+    if (moved) y[i]->touch();
   }
+  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {
     t.set_empty();
     z.set_empty();
@@ -195,32 +352,44 @@ std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>&
   return make_eval_node(*this, args);
 }
 
+NetworkCtc::Gates CtcEval::gates_for(const std::vector<DomainRef>& args) const {
+  if (!gates_at_bounds_ || args.size() < 3) return {};
+  const Interval t = args[0].domain()->atom(args[0].first());
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (const auto* y = dynamic_cast<const TubeDomain*>(args[i].domain().get())) {
+      if (t.is_empty()) return {};
+      return {y->tube().tdomain(), {t.lb(), t.ub()}};
+    }
+  }
+  return {};
+}
+
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y, const Tube& w) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, "CtcEval::contract(t, z, y, w)", nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {&w}, sampling_, true, "CtcEval::contract(t, z, y, w)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, Interval& z, Tube& y) const {
   IntervalVector zv{z};
-  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
+  const bool ok = contract_all(t, zv, {&y}, {}, sampling_, true, "CtcEval::contract(t, z, y)", nullptr);
   z = ok ? zv[0] : Interval::empty();
   return ok;
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const {
-  return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_,
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), pointers<const TubeVector, const Tube>(w), sampling_, true,
                       "CtcEval::contract(t, z, y, w)", nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
-  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, "CtcEval::contract(t, z, y)", nullptr);
+  return contract_all(t, z, pointers<TubeVector, Tube>(y), {}, sampling_, true, "CtcEval::contract(t, z, y)", nullptr);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                        const std::vector<TubeChanges>& changes) const {
-  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, changes)", &changes);
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
@@ -228,7 +397,7 @@ bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>&
   changed.assign(y.size(), {});
   std::vector<TubeChanges> logs;
   for (auto& c : changed) logs.emplace_back(c, 0, ratio);
-  return contract_all(t, z, y, w, sampling_, "CtcEval::contract(t, z, y, w, ratio, changed)", &logs);
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, ratio, changed)", &logs);
 }
 
 }  // namespace sillage

@@ -131,6 +131,16 @@ std::size_t TDomain::sample(double t) {
   return k + 1;
 }
 
+void TDomain::sample(const Interval& t) {
+  if (t.is_empty()) return;
+  if (!t.intersects(t0_tf())) {
+    throw Error("TDomain::sample(t): [t] = " + t.str() + " does not meet the domain " + t0_tf().str());
+  }
+  for (const double b : {t.lb(), t.ub()}) {
+    if (b > times_.front() && b < times_.back()) sample(b);
+  }
+}
+
 std::size_t TDomain::nb_attached() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return static_cast<std::size_t>(

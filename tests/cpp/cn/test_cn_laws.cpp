@@ -172,16 +172,11 @@ TEST(CnLaws, TubeNetworkRatioZeroOrder) {
                                            network_options()));
 }
 
-// Known gap, kept as a disabled test that reproduces it: with ratio 0 the tube
-// network does not reach the fixed point in the order kBackward (seed
-// 20170101: t2 ends at [3.9626, 4.5053]; one more CtcEval call on the result
-// gives [3.9626, 4.3680], the result of kForward). CtcEval is not idempotent
-// (its [t] uses [y] before the sweeps contract [y]) and the network never
-// wakes a contractor on its own changes (contractor_network.h), so the
-// result depends on the insertion order. The truth is kept in both orders
-// (TubeNetworkRatioZeroOrder). Enable when the network re-runs
-// non-idempotent contractors or CtcEval iterates to its own fixed point.
-TEST(CnLaws, DISABLED_TubeNetworkRatioZeroSameFixedPoint) {
+// With ratio 0 the tube network reaches the same fixed point in both orders,
+// bit for bit, and a second network changes nothing: CtcEval is monotone and
+// one call is its own fixed point (it iterates over [t], [z] and the slices
+// of [t]), so the network's result is the greatest common fixed point.
+TEST(CnLaws, TubeNetworkRatioZeroSameFixedPoint) {
   auto o = network_options();
   EXPECT_TRUE(kit::check_order_independent(tube_network(0.0), tube_network_case, kForward, kBackward, true, o));
   o.idempotence = kit::Idempotence::Exact;

@@ -10,6 +10,7 @@
 #include "dynamics/circle_mission.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
+#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_qeval.h"
 
 using namespace sillage;
@@ -115,6 +116,7 @@ TEST(CtcQEval, RangesWithOutliersInANetwork) {
     x->set_gate(0, IntervalVector{Interval(0.9, 1.1), Interval(-0.1, 0.1)});
     ContractorNetwork cn;
     cn.add(std::make_shared<CtcQEval>(q, obs), {x, v});
+    cn.add(std::make_shared<CtcDeriv>(), {x, v});  // CtcEval carries its fronts only while they shrink gates
     const ContractStats s = cn.contract();
     if (q == 1) {
       EXPECT_TRUE(s.empty);
