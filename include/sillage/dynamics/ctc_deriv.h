@@ -13,7 +13,7 @@
 // The last hull (the polygon of the design guide) has a closed form: its
 // upper bound is the maximum over τ of min(a⁺ + τv⁺, b⁺ - (δ-τ)v⁻), the
 // crossing of the two lines when v⁻ < 0 < v⁺, else an end of the slice
-// (dynamics/slice_deriv.h). Per slice this is the exact projection of the
+// (tube/slice_deriv.h). Per slice this is the exact projection of the
 // trajectories of the slice: every value it keeps is reached by a piecewise
 // linear trajectory with slopes in [v] through [a], the value and [b].
 //

@@ -121,7 +121,7 @@ class Tube {
   // consecutive slices/gates meeting y, in increasing time order.
   Interval inverse(const Interval& y, std::vector<Interval>& components) const;
 
-  // With a derivative tube v (x' ∈ v; dynamics/tube_eval_deriv.cpp): inside
+  // With a derivative tube v (x' ∈ v; tube/tube_eval_deriv.cpp): inside
   // slice k, x(t) ∈ ([x](t_k) + (t-t_k)[v](k)) ∩ ([x](t_{k+1}) - (t_{k+1}-t)[v](k))
   // ∩ [x](k), a polygon tighter than the slice box. eval: the hull of it over
   // t ∈ [t] (Error if [t] is not inside the domain; empty -> empty).

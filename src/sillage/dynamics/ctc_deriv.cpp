@@ -9,7 +9,7 @@
 #include "sillage/cn/tube_pair_node.h"
 #include "sillage/interval/rounding_policies.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
-#include "sillage/dynamics/slice_deriv.h"
+#include "sillage/tube/slice_deriv.h"
 #include "sillage/error.h"
 
 namespace sillage {

@@ -8,7 +8,7 @@
 #include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/dynamics/slice_deriv.h"
+#include "sillage/tube/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
 

@@ -6,10 +6,9 @@
 #include <span>
 #include <string>
 
-#include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/interval/rounding_policies.h"
-#include "sillage/dynamics/slice_deriv.h"
 #include "sillage/error.h"
+#include "sillage/interval/rounding_policies.h"
+#include "sillage/tube/slice_deriv.h"
 #include "sillage/tube/tube.h"
 
 namespace sillage {

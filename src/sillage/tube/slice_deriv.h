@@ -1,7 +1,8 @@
 #pragma once
-// The slice rule of CtcDeriv on raw bounds, inline (internal header of the
-// dynamics layer: CtcDeriv's sweeps and Tube::eval / Tube::inverse with a
-// derivative share it).
+// The slice rule of CtcDeriv on raw bounds, inline: the polygon of one slice
+// given its derivative. An internal header of the tube layer, where
+// Tube::eval / Tube::inverse with a derivative read a tube through it; the
+// sweeps of CtcDeriv and CtcEval (dynamics/) share it.
 //
 // On a slice [t_k, t_{k+1}] of width δ, with gates [a] = [x](t_k),
 // [b] = [x](t_{k+1}) and derivative bounds [v] = [q, p] (q = v⁻, p = v⁺), a
