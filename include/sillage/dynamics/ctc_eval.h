@@ -17,11 +17,12 @@
 // covers it), so [t] is never rounded out to whole slices. A gate after [t]
 // is intersected with F, one before with B, one inside with F ∪ B; each slice
 // with the hull of its polygon. [t], [z] and the region are iterated until
-// nothing changes: one call is a fixed point. A standalone call then carries
-// F to t_N and B to t_0 and hulls every slice, always to the ends (so that
-// CtcEval is monotone). The overloads with `changes` (network nodes,
-// CtcT1T2, CtcQEval) carry the fronts only as far as they shrink gates and
-// hull the slices next to those; what lies further is CtcDeriv's business.
+// nothing changes: one call is a fixed point. Beyond the region the fronts go
+// on while they shrink gates (further they would only repeat CtcDeriv), and
+// the slices next to those gates are hulled. A standalone call then runs
+// CtcDeriv over the whole tube, so that CtcEval is monotone whatever its
+// input; the overloads with `changes` (network nodes, CtcT1T2, CtcQEval)
+// leave that to the network's CtcDeriv.
 //
 // A degenerate [t] = {t} that is not a time point samples the TDomain there
 // (a new gate, in every tube on it) when sampling is allowed (the default);

@@ -118,15 +118,11 @@ bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed,
   return true;
 }
 
-// How far the fronts go beyond the region:
-//  - kToEnds: F to t_N and B to t_0, whatever they meet (a sweep that
-//    stopped earlier would make the result depend on how far the input was
-//    already contracted: the standalone call, monotone);
-//  - kWhileShrinking: each front stops at the first gate it leaves as it was
-//    (for callers that are not followed by CtcDeriv on the whole tube: a
-//    node, CtcT1T2, CtcQEval; what lies further is CtcDeriv's business).
-enum class Reach { kToEnds, kWhileShrinking };
-
+// Beyond the region the fronts go on while they shrink gates. Past the first
+// gate a front leaves as it was, the front encloses what CtcDeriv carries
+// forward (backward) from that gate, so going further would only repeat
+// CtcDeriv: standalone calls run it over the whole tube after this (and are
+// monotone, whatever the input), other callers leave it to their network.
 // The gates the outward sweeps changed: [lo, r.first) and (r.last + 1, hi].
 struct Reached {
   std::size_t lo = 0, hi = 0;
@@ -136,7 +132,7 @@ struct Reached {
 // the region, B backward from its first gate. On raw bounds with the
 // rounding policy of CtcDeriv. False if a gate or a slice of [w] is empty.
 template <class R>
-bool sweep_outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed, Reached& out,
+bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed, Reached& out,
                    const TubeChanges& log) {
   const auto ts = y.tdomain()->times();
   TubeData& d = y.data();
@@ -151,7 +147,7 @@ bool sweep_outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed,
     bool moved = false;
     if (!narrow_raw(d, k + 1, R::add_down(a.lb(), plo), R::add_up(a.ub(), phi), moved, log)) return false;
     if (moved) out.hi = k + 1, changed = true;
-    else if (reach == Reach::kWhileShrinking) break;
+    else break;
   }
   for (std::size_t i = r.first; i > 0; --i) {
     const Interval &b = d.gates[i], &v = ws[i - 1];
@@ -161,7 +157,7 @@ bool sweep_outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed,
     bool moved = false;
     if (!narrow_raw(d, i - 1, R::sub_down(b.lb(), phi), R::sub_up(b.ub(), plo), moved, log)) return false;
     if (moved) out.lo = i - 1, changed = true;
-    else if (reach == Reach::kWhileShrinking) break;
+    else break;
   }
   return true;
 }
@@ -206,15 +202,13 @@ bool with_rounding(const F& f) {
   return f.template operator()<detail::SoftRounding>();
 }
 
-// The fronts and the slices outside the region: every slice (kToEnds), or
-// those next to a gate the fronts changed (kWhileShrinking).
-bool outward(Tube& y, const Tube& w, Region r, Reach reach, bool& changed, const TubeChanges& log = TubeChanges()) {
+// The fronts outside the region, and the slices next to the gates they changed.
+bool outward(Tube& y, const Tube& w, Region r, bool& changed, const TubeChanges& log = TubeChanges()) {
   const std::size_t n = y.nb_slices();
   return with_rounding([&]<class R>() {
     Reached g;
-    if (!sweep_outward<R>(y, w, r, reach, changed, g, log)) return false;
-    const std::size_t lo = reach == Reach::kToEnds ? 0 : (g.lo > 0 ? g.lo - 1 : 0);
-    const std::size_t hi = reach == Reach::kToEnds ? n - 1 : std::min(g.hi, n - 1);
+    if (!sweep_outward<R>(y, w, r, changed, g, log)) return false;
+    const std::size_t lo = g.lo > 0 ? g.lo - 1 : 0, hi = std::min(g.hi, n - 1);
     if (r.first > lo && !hull_slices<R>(y, w, lo, r.first - 1, changed, log)) return false;
     return r.last + 1 > hi || hull_slices<R>(y, w, r.last + 1, hi, changed, log);
   });
@@ -260,14 +254,14 @@ struct RegionSnapshot {
 constexpr int kMaxPasses = 200;
 
 // Every case on component tubes (w empty: no derivative), one [t].
-// Standalone calls (outward_too) also carry the fronts to both ends of the
-// domain and run CtcDeriv over the whole tube, inside the passes (so that one
-// call stays its own fixed point; CtcDeriv also reads the gates of [w], and
-// says empty when one is). Other callers (network nodes, CtcT1T2, CtcQEval)
-// carry the fronts beyond the region while they shrink gates and hull the
-// slices next to those gates; their logs[i] receive what shrank in y[i].
+// Beyond the region the fronts go on while they shrink gates, and the slices
+// next to those gates are hulled. Standalone calls (whole_tube) then run
+// CtcDeriv over the whole tube, inside the passes (so that one call stays its
+// own fixed point; CtcDeriv also reads the gates of [w], and says empty when
+// one is). Other callers (network nodes, CtcT1T2, CtcQEval) leave that to
+// their network; their logs[i] receive what shrank in y[i].
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, bool outward_too, const char* where, const std::vector<TubeChanges>* logs) {
+                  bool sampling, bool whole_tube, const char* where, const std::vector<TubeChanges>* logs) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -306,14 +300,14 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       deriv_fresh = false;
       continue;
     }
-    // The region is at its fixed point: the fronts to both ends and CtcDeriv
+    // The region is at its fixed point: the fronts beyond it and CtcDeriv
     // over the whole tube (once more only if they shrank something).
-    if (!outward_too || w.empty() || deriv_fresh) break;
+    if (!whole_tube || w.empty() || deriv_fresh) break;
     deriv_fresh = true;
     bool moved_any = false;
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
       bool moved = false;
-      ok = outward(*y[i], *w[i], r, Reach::kToEnds, moved);
+      ok = outward(*y[i], *w[i], r, moved);
       if (ok) {
         const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
         ok = CtcDeriv().contract(*y[i], *w[i]);
@@ -325,9 +319,9 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     if (!moved_any) break;
   }
   // Other callers: the fronts beyond the region as long as they shrink gates.
-  for (std::size_t i = 0; ok && !outward_too && !w.empty() && i < y.size(); ++i) {
+  for (std::size_t i = 0; ok && !whole_tube && !w.empty() && i < y.size(); ++i) {
     bool moved = false;
-    ok = outward(*y[i], *w[i], r, Reach::kWhileShrinking, moved, logs ? (*logs)[i] : TubeChanges());
+    ok = outward(*y[i], *w[i], r, moved, logs ? (*logs)[i] : TubeChanges());
     if (moved) y[i]->touch();
   }
   for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
