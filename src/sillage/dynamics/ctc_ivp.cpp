@@ -30,7 +30,7 @@ bool meet(detail::LohnerSet& set, const IntervalVector& known) {
   const IntervalVector b = set.box & known;
   if (b.is_empty()) return false;
   if (much_tighter(set.box, b)) {
-    set = LohnerSet::from_box(b);
+    set = LohnerSet::from_box(b, set.zonotope);
   } else {
     set.box = b;
   }
@@ -114,7 +114,7 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
       if (!meet(set, g)) return finish(), false;
       write(true, k, set.box);
     } else if (!g.is_unbounded()) {
-      set = LohnerSet::from_box(g);
+      set = LohnerSet::from_box(g, u != nullptr && nb_inputs() > 0);
       active = true;
     }
     if (j == N || !active) continue;
