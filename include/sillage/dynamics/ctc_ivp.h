@@ -32,6 +32,7 @@ namespace sillage {
 
 namespace detail {
 class TaylorOde;  // expr/taylor.h (internal)
+struct IvpMemory;  // dynamics/ivp_memory.h (internal)
 }  // namespace detail
 
 class CtcIvp : public NetworkCtc {
@@ -61,10 +62,15 @@ class CtcIvp : public NetworkCtc {
   bool contract(TubeVector& x) const;
   bool contract(Tube& x, const Tube& u) const;
   bool contract(TubeVector& x, const TubeVector& u) const;
+  // The same (u null without inputs), remembering the run in `memory`: the
+  // next call re-integrates only from the first gate or slice of x or u
+  // that changed since (the network node's way; internal type).
+  bool contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory) const;
 
  private:
-  bool contract_impl(TubeVector& x, const TubeVector* u) const;
-  bool sweep(TubeVector& x, const TubeVector* u, double sign) const;
+  void check(const TubeVector& x, const TubeVector* u) const;
+  bool contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const;
+  bool sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const;
 
   std::shared_ptr<const detail::TaylorOde> ode_;
   int order_;

@@ -10,6 +10,7 @@
 
 #include "kit/contractor_kit.h"
 #include "sillage/dynamics/ctc_ivp.h"
+#include "sillage/dynamics/ivp_memory.h"
 #include "sillage/error.h"
 #include "sillage/interval/elementary.h"
 
@@ -321,4 +322,74 @@ TEST(CtcIvp, PointStartWithBoundedInputs) {
   // The heading integrates the noise exactly: width 2 · 8 / 1000 (plus rounding).
   EXPECT_LT(end[2].diam(), 0.0161) << end;
   EXPECT_GT(end[2].diam(), 0.0159) << end;
+}
+
+// The memory of the network node (ivp_memory.h): a second run resumes at
+// the first change and stays sound; a tube changed behind its back (even
+// widened) is detected and integrated again in full.
+TEST(CtcIvpMemory, ResumesAtTheChangeAndKeepsTheTruth) {
+  auto td = TDomain::create(0.0, 10.0, 0.1);
+  const CtcIvp ctc(Function({"x"}, "-sin(x)"));
+  TubeVector x(td, 1);
+  x.set_gate(0, IntervalVector{Interval(0.5, 1.5)});
+  detail::IvpMemory memory;
+  ASSERT_TRUE(ctc.contract(x, nullptr, memory));
+  const std::size_t N = td->nb_slices(), k_obs = 80;
+  // An observation at t = 8 of the trajectory from x0 = 1.2.
+  x[0].set_gate(k_obs, x.gate(k_obs)[0] & sin_flow(1.2, Interval(td->t(k_obs))).inflate(1e-6));
+  const TubeVector before = x;
+  EXPECT_EQ(memory.first_change(x, nullptr, 1.0), k_obs);
+  EXPECT_EQ(memory.first_change(x, nullptr, -1.0), N - k_obs);
+  TubeVector full = x;
+  ASSERT_TRUE(ctc.contract(x, nullptr, memory));
+  ASSERT_TRUE(ctc.contract(full));
+  EXPECT_TRUE(x.is_subset(before));
+  for (std::size_t k = 0; k <= N; ++k) {
+    EXPECT_TRUE(x.gate(k)[0].contains(sin_flow(1.2, Interval(td->t(k))).mid())) << k;
+    // As tight as the full integration, up to the wrapping of the older sets.
+    EXPECT_LT(x.gate(k)[0].diam(), 2.0 * full.gate(k)[0].diam() + 1e-12) << k;
+  }
+  EXPECT_LT(x.gate(0)[0].diam(), 1e-2);  // the observation reached back to t = 0 (width 1 before)
+  // Nothing changed: nothing to do, nothing changes.
+  EXPECT_EQ(memory.first_change(x, nullptr, 1.0), N + 1);
+  const TubeVector same = x;
+  ASSERT_TRUE(ctc.contract(x, nullptr, memory));
+  EXPECT_TRUE(x == same);
+}
+
+TEST(CtcIvpMemory, AWidenedTubeIsIntegratedAgainInFull) {
+  auto td = TDomain::create(0.0, 4.0, 0.25);
+  const CtcIvp ctc(Function({"x"}, "-sin(x)"));
+  TubeVector x(td, 1);
+  x.set_gate(0, IntervalVector{Interval(1.0)});
+  detail::IvpMemory memory;
+  ASSERT_TRUE(ctc.contract(x, nullptr, memory));
+  // The user starts again from another initial state on the same TDomain.
+  TubeVector y(td, 1);
+  y.set_gate(0, IntervalVector{Interval(2.0)});
+  TubeVector fresh = y;
+  EXPECT_EQ(memory.first_change(y, nullptr, 1.0), 0u);
+  ASSERT_TRUE(ctc.contract(y, nullptr, memory));
+  ASSERT_TRUE(ctc.contract(fresh));
+  EXPECT_TRUE(y == fresh);
+  // Another TDomain (refined): no reuse either.
+  auto td2 = TDomain::create(0.0, 4.0, 0.125);
+  TubeVector z(td2, 1);
+  z.set_gate(0, IntervalVector{Interval(2.0)});
+  EXPECT_EQ(memory.first_change(z, nullptr, 1.0), 0u);
+}
+
+TEST(CtcIvpMemory, InputChangesCount) {
+  auto td = TDomain::create(0.0, 3.0, 0.25);
+  const CtcIvp ctc(Function({"x", "u"}, "-x + u"), 1);
+  TubeVector x(td, 1), u(td, 1, Interval(-0.1, 0.1));
+  x.set_gate(0, IntervalVector{Interval(1.0)});
+  detail::IvpMemory memory;
+  ASSERT_TRUE(ctc.contract(x, &u, memory));
+  u[0].set(Interval(0.0, 0.1), 5);  // the input known better on slice 5
+  EXPECT_EQ(memory.first_change(x, &u, 1.0), 5u);
+  const TubeVector before = x;
+  ASSERT_TRUE(ctc.contract(x, &u, memory));
+  EXPECT_TRUE(x.is_subset(before));
+  EXPECT_LT(x.gate(td->nb_slices())[0].diam(), before.gate(td->nb_slices())[0].diam());
 }
