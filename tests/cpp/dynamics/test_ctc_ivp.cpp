@@ -98,20 +98,7 @@ TEST(CtcIvp, InconsistentGateEmptiesTheTube) {
   EXPECT_TRUE(x.is_empty());
 }
 
-TEST(CtcIvp, HarmonicOscillatorOver100Periods) {
-  const double T = 200 * M_PI;
-  auto td = TDomain::create(0.0, T, T / 400);
-  TubeVector x(td, 2);
-  x.set_gate(0, IntervalVector{Interval(0.0), Interval(1.0)});
-  ASSERT_TRUE(CtcIvp(Function({"x1", "x2"}, "(x2, -x1)")).contract(x));
-  for (std::size_t k = 0; k <= td->nb_slices(); k += 7) {
-    const Interval t(td->t(k));
-    EXPECT_TRUE(x.gate(k)[0].intersects(sin(t))) << k;
-    EXPECT_TRUE(x.gate(k)[1].intersects(cos(t))) << k;
-  }
-  // Bounded wrapping: no exponential growth of the width.
-  EXPECT_LT(x.gate(td->nb_slices()).max_diam(), 1e-10) << x.gate(td->nb_slices());
-}
+// The harmonic oscillator over 100 periods: test_ctc_ivp_mpfr.cpp (exact containment).
 
 TEST(CtcIvp, LinearSystemFromABox) {
   // x' = A x, A = [[-1, 2], [-2, -1]]: x(t) = e^{-t} R(-2t) x0, a rotation that
