@@ -38,7 +38,9 @@ struct IvpMemory;  // dynamics/ivp_memory.h (internal)
 class CtcIvp : public NetworkCtc {
  public:
   // DimensionError if f's variables are not its outputs plus nb_inputs;
-  // Error if f uses an operation with no Taylor rule, or order < 1.
+  // Error if order is not in [1, 60]. Every operation has a Taylor rule;
+  // the non-smooth ones (abs, sign, min, max) only where they are smooth
+  // over a step: elsewhere the integration stops there (nothing lost).
   explicit CtcIvp(const Function& f, std::size_t nb_inputs = 0, int order = 20,
                   TimePropag propag = TimePropag::FWD_BWD);
 
