@@ -6,6 +6,9 @@
 //  - Lorenz: (10, 28, 8/3) from (15, 15, 36), t ∈ [0, 10], 100 slices.
 //  - DeadReckoning: thesis 3.4, inputs within 1/1000, x0 in the box (3.17),
 //    t ∈ [0, 64], δ = 0.5 (counters: the final x1, x2 bounds).
+//  - DeadReckoningCtcDeriv/δ: the same data through the CtcDeriv network of
+//    the example (3.18) (examples/cpp/dead_reckoning_network.h), δ = 0.5,
+//    0.05, 0.005 (slices are its only lever).
 //  - ObservationRerun/0|1: a tube of 1000 slices from x0 ∈ [0.9, 1.1] already
 //    contracted; an observation narrows one gate in the second half (pool
 //    of 4096 observations) and CtcIvp runs again: /0 integrates the whole
@@ -18,6 +21,7 @@
 #include <random>
 #include <vector>
 
+#include "dead_reckoning_network.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ivp_memory.h"
 #include "sillage/interval/elementary.h"
@@ -144,6 +148,30 @@ void BM_DeadReckoning(benchmark::State& state) {
   state.counters["x2_ub"] = end[1].ub();
 }
 BENCHMARK(BM_DeadReckoning)->Unit(benchmark::kMillisecond);
+
+void BM_DeadReckoningCtcDeriv(benchmark::State& state) {
+  const double dt = state.range(0) / 1000.0;
+  const auto td = TDomain::create(0.0, 64.0, dt);
+  const Tube u1(td, "-9/20*cos(t/5) + [-0.001,0.001]"), u2(td, "1/10 + sin(t/4) + [-0.001,0.001]");
+  const Interval c = Interval(-1, 1) / Interval(100);
+  const IntervalVector x0{Interval(-1, 1), Interval(-1, 1), Interval::half_pi() + c, c};
+  IntervalVector end;
+  for (auto _ : state) {
+    auto x = std::make_shared<TubeVector>(td, 4), v = std::make_shared<TubeVector>(td, 4);
+    x->set_gate(0, x0);
+    (*v)[2] = u1;
+    (*v)[3] = u2;
+    ContractorNetwork cn;
+    dead_reckoning::add_constraints(cn, x, v);
+    benchmark::DoNotOptimize(cn.contract());
+    end = x->gate(td->nb_slices());
+  }
+  state.counters["x1_lb"] = end[0].lb();
+  state.counters["x1_ub"] = end[0].ub();
+  state.counters["x2_lb"] = end[1].lb();
+  state.counters["x2_ub"] = end[1].ub();
+}
+BENCHMARK(BM_DeadReckoningCtcDeriv)->Arg(500)->Arg(50)->Arg(5)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
