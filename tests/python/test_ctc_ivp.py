@@ -83,12 +83,23 @@ def test_in_a_network():
 def test_errors():
     with pytest.raises(sillage.DimensionError):
         CtcIvp(Function(["x", "u"], "u"))
-    with pytest.raises(sillage.Error, match="abs"):
-        CtcIvp(Function(["x"], "abs(x)"))
+    with pytest.raises(sillage.Error, match="order"):
+        CtcIvp(Function(["x"], "-x"), order=0)
     td = TDomain(0.0, 1.0, 0.5)
     with pytest.raises(sillage.DimensionError):
         CtcIvp(Function(["x"], "-x")).contract(TubeVector(td, 2))
     assert "CtcIvp" in repr(CtcIvp(Function(["x"], "-x")))
+
+
+def test_abs_where_it_is_smooth():
+    # x' = -abs(x) from x0 = 1 stays positive: x = e^{-t}; abs has a Taylor
+    # rule where its operand keeps its sign.
+    td = TDomain(0.0, 2.0, 0.5)
+    x = Tube(td)
+    x.set_gate(0, Interval(1))
+    assert CtcIvp(Function(["x"], "-abs(x)")).contract(x)
+    assert x.gate(td.nb_slices()).contains(math.exp(-2.0))
+    assert x.gate(td.nb_slices()).diam() < 1e-12
 
 
 def test_laws():

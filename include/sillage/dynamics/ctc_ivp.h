@@ -32,12 +32,15 @@ namespace sillage {
 
 namespace detail {
 class TaylorOde;  // expr/taylor.h (internal)
+struct IvpMemory;  // dynamics/ivp_memory.h (internal)
 }  // namespace detail
 
 class CtcIvp : public NetworkCtc {
  public:
   // DimensionError if f's variables are not its outputs plus nb_inputs;
-  // Error if f uses an operation with no Taylor rule, or order < 1.
+  // Error if order is not in [1, 60]. Every operation has a Taylor rule;
+  // the non-smooth ones (abs, sign, min, max) only where they are smooth
+  // over a step: elsewhere the integration stops there (nothing lost).
   explicit CtcIvp(const Function& f, std::size_t nb_inputs = 0, int order = 20,
                   TimePropag propag = TimePropag::FWD_BWD);
 
@@ -61,10 +64,15 @@ class CtcIvp : public NetworkCtc {
   bool contract(TubeVector& x) const;
   bool contract(Tube& x, const Tube& u) const;
   bool contract(TubeVector& x, const TubeVector& u) const;
+  // The same (u null without inputs), remembering the run in `memory`: the
+  // next call re-integrates only from the first gate or slice of x or u
+  // that changed since (the network node's way; internal type).
+  bool contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory) const;
 
  private:
-  bool contract_impl(TubeVector& x, const TubeVector* u) const;
-  bool sweep(TubeVector& x, const TubeVector* u, double sign) const;
+  void check(const TubeVector& x, const TubeVector* u) const;
+  bool contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const;
+  bool sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const;
 
   std::shared_ptr<const detail::TaylorOde> ode_;
   int order_;

@@ -2,7 +2,9 @@
 #include "sillage/dynamics/ctc_ivp.h"
 
 #include <cmath>
+#include <optional>
 
+#include "sillage/dynamics/ivp_memory.h"
 #include "sillage/dynamics/ivp_step.h"
 #include "sillage/error.h"
 
@@ -30,7 +32,7 @@ bool meet(detail::LohnerSet& set, const IntervalVector& known) {
   const IntervalVector b = set.box & known;
   if (b.is_empty()) return false;
   if (much_tighter(set.box, b)) {
-    set = LohnerSet::from_box(b);
+    set = LohnerSet::from_box(b, set.zonotope);
   } else {
     set.box = b;
   }
@@ -84,7 +86,7 @@ void CtcIvp::set_tolerance(double tol) {
   tol_ = tol;
 }
 
-bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
+bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const {
   const std::size_t n = x.size(), N = x.nb_slices();
   const TDomain& td = *x.tdomain();
   const IvpStepper stepper(*ode_, order_);
@@ -106,15 +108,29 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
   };
   detail::LohnerSet set;
   bool active = false;
-  for (std::size_t j = 0; j <= N; ++j) {
+  // With a memory: resume at the first step whose tubes changed.
+  std::size_t first = 0;
+  std::vector<std::optional<LohnerSet>>* arriving = nullptr;
+  if (memory) {
+    first = memory->first_change(x, u, sign);
+    arriving = &memory->arriving[sign > 0 ? 0 : 1];
+    if (first > N) return true;  // nothing changed since the last run
+    if (first > 0 && (*arriving)[first]) {
+      set = *(*arriving)[first];
+      active = true;
+    }
+    arriving->resize(N + 1);
+  }
+  for (std::size_t j = first; j <= N; ++j) {
     const std::size_t k = sign > 0 ? j : N - j;
+    if (arriving) (*arriving)[j] = active ? std::optional<LohnerSet>(set) : std::nullopt;
     const IntervalVector g = x.gate(k);
     if (g.is_empty()) return finish(), false;
     if (active) {
       if (!meet(set, g)) return finish(), false;
       write(true, k, set.box);
     } else if (!g.is_unbounded()) {
-      set = LohnerSet::from_box(g);
+      set = LohnerSet::from_box(g, u != nullptr && nb_inputs() > 0);
       active = true;
     }
     if (j == N || !active) continue;
@@ -136,21 +152,8 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign) const {
   return true;
 }
 
-bool CtcIvp::contract(TubeVector& x, const TubeVector& u) const {
-  if (x.size() != nb_states()) {
-    throw DimensionError("CtcIvp::contract: x has " + std::to_string(x.size()) + " components, f has " +
-                         std::to_string(nb_states()) + " states");
-  }
-  if (u.size() != nb_inputs()) {
-    throw DimensionError("CtcIvp::contract: u has " + std::to_string(u.size()) + " components, f has " +
-                         std::to_string(nb_inputs()) + " inputs");
-  }
-  if (u.tdomain() != x.tdomain()) throw DimensionError("CtcIvp::contract: x and u are not on the same TDomain");
-  return contract_impl(x, &u);
-}
-
-bool CtcIvp::contract(TubeVector& x) const {
-  if (nb_inputs() != 0) {
+void CtcIvp::check(const TubeVector& x, const TubeVector* u) const {
+  if (!u && nb_inputs() != 0) {
     throw DimensionError("CtcIvp::contract: f has " + std::to_string(nb_inputs()) +
                          " inputs; give their tubes, contract(x, u)");
   }
@@ -158,7 +161,22 @@ bool CtcIvp::contract(TubeVector& x) const {
     throw DimensionError("CtcIvp::contract: x has " + std::to_string(x.size()) + " components, f has " +
                          std::to_string(nb_states()) + " states");
   }
-  return contract_impl(x, nullptr);
+  if (!u) return;
+  if (u->size() != nb_inputs()) {
+    throw DimensionError("CtcIvp::contract: u has " + std::to_string(u->size()) + " components, f has " +
+                         std::to_string(nb_inputs()) + " inputs");
+  }
+  if (u->tdomain() != x.tdomain()) throw DimensionError("CtcIvp::contract: x and u are not on the same TDomain");
+}
+
+bool CtcIvp::contract(TubeVector& x, const TubeVector& u) const {
+  check(x, &u);
+  return contract_impl(x, &u, nullptr);
+}
+
+bool CtcIvp::contract(TubeVector& x) const {
+  check(x, nullptr);
+  return contract_impl(x, nullptr, nullptr);
 }
 
 bool CtcIvp::contract(Tube& x) const {
@@ -176,12 +194,24 @@ bool CtcIvp::contract(Tube& x, const Tube& u) const {
   return ok && !x.is_empty();
 }
 
-bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u) const {
+bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const {
   bool ok = true;
-  if (has(propag_, TimePropag::FORWARD)) ok = sweep(x, u, 1.0);
-  if (ok && has(propag_, TimePropag::BACKWARD)) ok = sweep(x, u, -1.0);
+  if (has(propag_, TimePropag::FORWARD)) ok = sweep(x, u, 1.0, memory);
+  if (ok && has(propag_, TimePropag::BACKWARD)) ok = sweep(x, u, -1.0, memory);
   if (!ok) set_empty(x);
+  if (memory) {
+    if (ok) {
+      memory->remember(x, u);
+    } else {
+      memory->forget();
+    }
+  }
   return ok;
+}
+
+bool CtcIvp::contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory) const {
+  check(x, u);
+  return contract_impl(x, u, &memory);
 }
 
 std::size_t CtcIvp::nb_states() const { return ode_->nb_states(); }

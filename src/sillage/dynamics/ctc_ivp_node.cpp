@@ -1,14 +1,18 @@
 // The network node of CtcIvp: cn.add(ctc, {x}) or cn.add(ctc, {x, u}), x
 // with the n states (a tube, tube components or a tube vector), u with the
-// m inputs. Each run integrates over the whole tube and reports the slices
-// and gates that shrank; it runs again when a gate or slice of x or u
-// changes (a gate known better starts the integration again from it).
+// m inputs. It runs again when a gate or slice of x or u changes (a gate
+// known better starts the integration again from it), and re-integrates
+// only from the first change forward and from the last one backward: the
+// node remembers its last run (ivp_memory.h), behind a mutex since a node
+// may be shared; the memory checks itself, a stale one is never used.
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "sillage/cn/tube_node.h"
 #include "sillage/dynamics/ctc_ivp.h"
+#include "sillage/dynamics/ivp_memory.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -33,11 +37,15 @@ class IvpNode : public TubeNode {
     for (const auto& d : x_) xs.push_back(d->tube());
     TubeVector x(std::move(xs));
     bool ok = true;
-    if (u_.empty()) {
-      ok = ctc_.contract(x);
-    } else {
-      for (const auto& d : u_) us.push_back(d->tube());
-      ok = ctc_.contract(x, TubeVector(std::move(us)));
+    {
+      const std::lock_guard<std::mutex> lock(*mutex_);
+      if (u_.empty()) {
+        ok = ctc_.contract(x, nullptr, *memory_);
+      } else {
+        for (const auto& d : u_) us.push_back(d->tube());
+        const TubeVector u(std::move(us));
+        ok = ctc_.contract(x, &u, *memory_);
+      }
     }
     for (std::size_t i = 0; i < x_.size(); ++i) {
       const bool alive = contract_tube(r, i, [&](Tube& xi) {
@@ -51,6 +59,8 @@ class IvpNode : public TubeNode {
 
  private:
   CtcIvp ctc_;
+  std::shared_ptr<std::mutex> mutex_ = std::make_shared<std::mutex>();
+  std::shared_ptr<detail::IvpMemory> memory_ = std::make_shared<detail::IvpMemory>();
   std::vector<std::shared_ptr<TubeDomain>> x_, u_;
 };
 

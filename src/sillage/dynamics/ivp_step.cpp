@@ -106,14 +106,77 @@ bool inverse_enclosure(const Matrix& q, IntervalMatrix& inv) {
   return true;
 }
 
+// [-|x|, |x|]: x times a symbol w in [-1, 1].
+Interval symmetric(const Interval& x) { return Interval(-x.mag(), x.mag()); }
+
+// The point part of an interval generator; the rest, times w ∈ [-1, 1],
+// goes to the box `extra`.
+Vector split_generator(const IntervalVector& g, IntervalVector& extra) {
+  Vector mid = g.mid();
+  for (std::size_t i = 0; i < g.size(); ++i) extra[i] += symmetric(g[i] - Interval(mid[i]));
+  return mid;
+}
+
+// Past this many generators the cheapest to box (Girard: ‖g‖₁ − ‖g‖∞,
+// zero for a generator along an axis) become a box: their correlation with
+// the rest is lost, not their bound.
+constexpr std::size_t kMaxGenerators = 256;
+
+void reduce_generators(std::vector<Vector>& G, IntervalVector& extra) {
+  if (G.size() <= kMaxGenerators) return;
+  std::vector<std::pair<double, std::size_t>> cost;
+  for (std::size_t j = 0; j < G.size(); ++j) {
+    double l1 = 0.0, linf = 0.0;
+    for (double x : G[j]) l1 += std::abs(x), linf = std::max(linf, std::abs(x));
+    cost.emplace_back(l1 - linf, j);
+  }
+  std::sort(cost.begin(), cost.end());
+  const std::size_t drop = G.size() - kMaxGenerators / 2;
+  std::vector<bool> gone(G.size(), false);
+  for (std::size_t k = 0; k < drop; ++k) {
+    const Vector& g = G[cost[k].second];
+    for (std::size_t i = 0; i < g.size(); ++i) extra[i] += Interval(-std::abs(g[i]), std::abs(g[i]));
+    gone[cost[k].second] = true;
+  }
+  std::vector<Vector> kept;
+  for (std::size_t j = 0; j < G.size(); ++j) {
+    if (!gone[j]) kept.push_back(std::move(G[j]));
+  }
+  G = std::move(kept);
+}
+
+// A symmetric box as generators along the axes (the zero ones skipped).
+void box_to_generators(const IntervalVector& box, std::vector<Vector>& G) {
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    const double m = box[i].mag();
+    if (m == 0.0) continue;
+    Vector g(box.size(), 0.0);
+    g[i] = m;
+    G.push_back(std::move(g));
+  }
+}
+
 }  // namespace
 
-LohnerSet LohnerSet::from_box(const IntervalVector& x) {
+IntervalVector LohnerSet::hull() const {
+  IntervalVector b = IntervalVector::from_point(c) + A * r;
+  for (const Vector& g : G) {
+    for (std::size_t i = 0; i < g.size(); ++i) b[i] += Interval(-std::abs(g[i]), std::abs(g[i]));
+  }
+  return b;
+}
+
+LohnerSet LohnerSet::from_box(const IntervalVector& x, bool zonotope) {
   LohnerSet s;
   s.c = x.mid();
   s.A = IntervalMatrix::identity(x.size());
   s.r = x - IntervalVector::from_point(s.c);
   s.box = x;
+  s.zonotope = zonotope;
+  if (zonotope) {
+    box_to_generators(s.r, s.G);
+    s.r = IntervalVector(x.size(), Interval(0.0));
+  }
   return s;
 }
 
@@ -146,7 +209,7 @@ bool IvpStepper::a_priori(const IntervalVector& X, const std::vector<Interval>& 
   const int q = inputs ? 1 : p + 1;
   IntervalVector guess = inflated(base);
   std::vector<Interval> cs;
-  for (int attempt = 0; attempt < 10; ++attempt) {
+  for (int attempt = 0; attempt < 12; ++attempt) {
     cs.assign(guess.components().begin(), guess.components().end());
     if (!ode_.coefficients(cs, u.components().data(), q, sign)) return false;
     IntervalVector y(n);
@@ -158,18 +221,17 @@ bool IvpStepper::a_priori(const IntervalVector& X, const std::vector<Interval>& 
       for (std::size_t i = 0; i < n; ++i) last[i] = cs[static_cast<std::size_t>(q) * n + i];
       return true;
     }
-    guess = inflated(hull(y, guess));
+    // Inflate the new candidate, not the hull with the old one: the hull
+    // keeps every overshoot and, when a component's slope grows with the
+    // others' widths, never settles.
+    guess = inflated(y);
   }
   return false;
 }
 
-IntervalVector IvpStepper::input_deviation(const IntervalVector& B, const Interval& h, const IntervalVector& u,
+IntervalVector IvpStepper::input_deviation(const IntervalMatrix& J, const Interval& h, const IntervalVector& u,
                                            const IntervalVector& u0, double sign) const {
   const std::size_t n = ode_.nb_states(), m = ode_.nb_inputs();
-  IntervalVector bu(n + m);
-  bu.put(0, B);
-  bu.put(n, u);
-  const IntervalMatrix J = ode_.function().jacobian(bu);
   // e = x - y: |e|' ≤ P|e| + δ componentwise (Kamke's comparison; P is
   // Metzler: P_ii = max(s·J_ii, 0)⁺, P_ij = |J_ij|), δ_i ≥ |J_u (u - u0)|_i,
   // so |e(h)| ≤ ∫_0^h e^{P(h-τ)} δ dτ ≤ h·e^{Ph}·δ.
@@ -185,25 +247,75 @@ IntervalVector IvpStepper::input_deviation(const IntervalVector& B, const Interv
       P(i, j) = Interval(pij) * H;
     }
   }
-  // e^{Ph}δ ≤ Σ_{k≤K} (Ph)^k δ / k! + |Ph|^{K+1}/(K+1)! e^{|Ph|} |δ| (norms ∞).
-  constexpr int K = 12;
+  // e^{Ph}δ = Σ_k (Ph)^k δ / k!, every term ≥ 0. Past K, with t_K the K-th
+  // term, Σ_{j≥1} (Ph)^j t_K K!/(K+j)! ≤ |t_K|∞ Σ_j (|Ph|∞/(K+1))^j: a
+  // geometric tail, zero when P is nilpotent (t_K = 0), as in chains of
+  // integrators. K grows until the ratio is below 1/2.
+  const double np = norm_inf(P);
+  if (!std::isfinite(np)) return IntervalVector(n);
   IntervalVector term = delta, sum = delta;
-  for (int k = 1; k <= K; ++k) {
+  int k = 0;
+  Interval ratio;
+  do {
+    ++k;
     term = P * term;
     for (std::size_t i = 0; i < n; ++i) term[i] = term[i] / Interval(static_cast<double>(k));
     sum += term;
-  }
-  const Interval np(norm_inf(P));
-  double dmax = 0.0;
-  for (std::size_t i = 0; i < n; ++i) dmax = std::max(dmax, delta[i].ub());
-  Interval tail = exp(np) * Interval(dmax);
-  for (int k = 1; k <= K + 1; ++k) tail = tail * np / Interval(static_cast<double>(k));
+    ratio = Interval(np) / Interval(static_cast<double>(k + 1));
+  } while (k < 12 || (ratio.ub() >= 0.5 && k < 400));
+  if (!(ratio.ub() < 1.0)) return IntervalVector(n);
+  double tmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) tmax = std::max(tmax, term[i].mag());
+  const Interval tail = Interval(tmax) * ratio / (Interval(1.0) - ratio);
   IntervalVector out(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double dev = (H * (sum[i] + tail)).ub();
     out[i] = std::isfinite(dev) ? Interval(-dev, dev) : Interval();
   }
   return out;
+}
+
+bool IvpStepper::input_share(const IntervalVector& B, const Vector& c, const Interval& h, const IntervalVector& u,
+                             const IntervalVector& u0, double sign, std::vector<Vector>& G,
+                             IntervalVector& extra, IntervalVector& box) const {
+  const std::size_t n = ode_.nb_states(), m = ode_.nb_inputs();
+  IntervalVector bu(n + m), cu(n + m);
+  bu.put(0, B);
+  bu.put(n, u);
+  cu.put(0, IntervalVector::from_point(c));
+  cu.put(n, u0);
+  const IntervalMatrix J = ode_.function().jacobian(bu);
+  const IntervalMatrix Jc = ode_.function().jacobian(cu);
+  if (J.is_unbounded() || Jc.is_unbounded()) return false;
+  // e = x - y (x with u(·), y with u0, same start):
+  //   e(h) = ∫ J_x(ξ) e + ∫ J_u(y, η)(u - u0)
+  //        ∈ s·h·J_u^c·ū + s·h·(J_u - J_u^c)·([u] - u0) + s·h·J_x·[E],
+  // ū = the mean of u - u0 over the step, any point of [u] - u0 (a new
+  // symbol per input: a generator), [E] ⊇ e over the step.
+  const IntervalVector E = input_deviation(J, h, u, u0, sign);
+  if (E.is_unbounded()) return false;
+  const Interval sh = Interval(sign) * h;
+  IntervalVector rest(n, Interval(0.0));
+  for (std::size_t j = 0; j < m; ++j) {
+    const Interval du = u[j] - u0[j];
+    IntervalVector g(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Interval jc(Jc(i, n + j).mid());
+      g[i] = sh * jc * Interval(du.mag());
+      rest[i] += sh * (J(i, n + j) - jc) * du;
+    }
+    G.push_back(split_generator(g, rest));
+    for (std::size_t i = 0; i < n; ++i) box[i] += Interval(-std::abs(G.back()[i]), std::abs(G.back()[i]));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Interval s(0.0);
+    for (std::size_t l = 0; l < n; ++l) s += J(i, l) * E[l];
+    rest[i] += sh * s;
+  }
+  for (std::size_t i = 0; i < n; ++i) rest[i] = symmetric(rest[i]);
+  box += rest;
+  extra += rest;
+  return true;
 }
 
 bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u, double sign,
@@ -225,20 +337,32 @@ bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u
     if (!ode_.coefficients(bs, u0.components().data(), p + 1, sign)) return false;
     for (std::size_t i = 0; i < n; ++i) last[i] = bs[static_cast<std::size_t>(p + 1) * n + i];
   }
-  // The polynomial at the centre, plus the remainder (and the inputs' share).
+  // The polynomial at the centre, plus the remainder: the flow with u0.
   std::vector<Interval> cs(n);
   for (std::size_t i = 0; i < n; ++i) cs[i] = Interval(set.c[i]);
   if (!ode_.coefficients(cs, u0.components().data(), p, sign)) return false;
   const Interval hp1 = pow(h, p + 1);
   IntervalVector z(n);
   for (std::size_t i = 0; i < n; ++i) z[i] = horner(cs, n, i, p, h) + last[i] * hp1;
-  if (inputs) z += input_deviation(B, h, u, u0, sign);
   // M = Σ_k V_k([X]) h^k, entry by entry.
   IntervalMatrix M(n, n);
   for (std::size_t e = 0; e < n * n; ++e) {
     Interval s = vs[static_cast<std::size_t>(p) * n * n + e];
     for (int k = p - 1; k >= 0; --k) s = s * h + vs[static_cast<std::size_t>(k) * n * n + e];
     M(e / n, e % n) = s;
+  }
+  // The generators follow the linear part: M·g = mid(M·g) + a residual box.
+  IntervalVector extra(n, Interval(0.0));
+  std::vector<Vector> G;
+  G.reserve(set.G.size() + ode_.nb_inputs());
+  for (const Vector& g : set.G) G.push_back(split_generator(M * IntervalVector::from_point(g), extra));
+  // The inputs' share: new generators and their remainder (input_share).
+  IntervalVector input_box(n, Interval(0.0));
+  if (inputs && !input_share(B, set.c, h, u, u0, sign, G, extra, input_box)) return false;
+  reduce_generators(G, extra);
+  if (set.zonotope) {
+    box_to_generators(extra, G);
+    extra = IntervalVector(n, Interval(0.0));
   }
   const IntervalMatrix MA = M * set.A;
   Vector weight(n);
@@ -249,12 +373,16 @@ bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u
     Q = IntervalMatrix::identity(n).mid();
     Qinv = IntervalMatrix::identity(n);
   }
+  const IntervalVector zt = z + extra;
   LohnerSet next;
-  next.c = z.mid();
+  next.c = zt.mid();
   next.A = IntervalMatrix::from_point(Q);
-  next.r = (Qinv * MA) * set.r + Qinv * (z - IntervalVector::from_point(next.c));
-  next.box = IntervalVector::from_point(next.c) + next.A * next.r;
-  next.box &= z + M * (X - IntervalVector::from_point(set.c));  // M holds over Xc ⊇ the segments
+  next.r = (Qinv * MA) * set.r + Qinv * (zt - IntervalVector::from_point(next.c));
+  next.G = std::move(G);
+  next.zonotope = set.zonotope;
+  next.box = next.hull();
+  // The mean-value form (M holds over Xc ⊇ the segments), plus the inputs' share.
+  next.box &= z + input_box + M * (X - IntervalVector::from_point(set.c));
   if (next.box.is_empty() || next.box.is_unbounded() || next.r.is_unbounded()) return false;
   set = std::move(next);
   range = B;

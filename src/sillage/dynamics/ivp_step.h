@@ -36,9 +36,19 @@ struct LohnerSet {
   Vector c;
   IntervalMatrix A;
   IntervalVector r;
+  // Input generators (columns g_j, a symbol w_j ∈ [-1, 1] each): the set is
+  // c + A·[r] + Σ g_j w_j.
+  std::vector<Vector> G;
   IntervalVector box;
-  // The box itself: c = mid, A = I, [r] = box - c.
-  static LohnerSet from_box(const IntervalVector& x);
+  // Zonotope mode (for inputs): the errors of each step become generators
+  // too, instead of joining [r] where a shearing flow wraps them step after
+  // step; [r] then keeps only rounding-level terms.
+  bool zonotope = false;
+  // The box itself: c = mid, A = I, [r] = box - c, no generator; in
+  // zonotope mode, [r] = 0 and one generator per side of the box.
+  static LohnerSet from_box(const IntervalVector& x, bool zonotope = false);
+  // An enclosure of c + A·[r] + Σ g_j [-1, 1].
+  IntervalVector hull() const;
 };
 
 class IvpStepper {
@@ -56,8 +66,15 @@ class IvpStepper {
  private:
   bool a_priori(const IntervalVector& X, const std::vector<Interval>& xs, const Interval& h, const IntervalVector& u,
                 double sign, bool inputs, IntervalVector& B, IntervalVector& last) const;
-  IntervalVector input_deviation(const IntervalVector& B, const Interval& h, const IntervalVector& u,
+  // A bound of |x - y| over the step, x with any u(·) ∈ [u], y with u0,
+  // from the same start; J = ∂f/∂(x, u) over [B] × [u].
+  IntervalVector input_deviation(const IntervalMatrix& J, const Interval& h, const IntervalVector& u,
                                  const IntervalVector& u0, double sign) const;
+  // The inputs' share of the step: appends one generator per input to G,
+  // adds the remainder box to `extra` and the whole share's hull to `box`.
+  bool input_share(const IntervalVector& B, const Vector& c, const Interval& h, const IntervalVector& u,
+                   const IntervalVector& u0, double sign, std::vector<Vector>& G, IntervalVector& extra,
+                   IntervalVector& box) const;
 
   const TaylorOde& ode_;
   int order_;

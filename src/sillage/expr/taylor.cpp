@@ -17,8 +17,11 @@ using detail::Instr;
 // tan, the powers a², ..., a^|n| for an integer power, ...
 std::size_t aux_series(const Instr& in) {
   switch (in.op) {
-    case Op::Sin: case Op::Cos: case Op::Sinh: case Op::Cosh: case Op::Tan: case Op::Atan:
+    case Op::Sin: case Op::Cos: case Op::Sinh: case Op::Cosh: case Op::Tan: case Op::Atan: case Op::Tanh:
+    case Op::Asin: case Op::Acos: case Op::Atan2:
       return 1;
+    case Op::Pow:  // log a, then b·log a
+      return 2;
     case Op::PowInt:
       return std::abs(in.n) >= 2 ? static_cast<std::size_t>(std::abs(in.n) - 1) : 0;
     default:
@@ -26,22 +29,23 @@ std::size_t aux_series(const Instr& in) {
   }
 }
 
+// Every operation has one; abs, min, max and sign only where they are
+// smooth (their operands away from the kink over the whole box).
 bool has_taylor_rule(Op op) {
   switch (op) {
     case Op::Const: case Op::Var: case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Neg:
-    case Op::Sqr: case Op::Sqrt: case Op::PowInt: case Op::Exp: case Op::Log: case Op::Sin: case Op::Cos:
-    case Op::Tan: case Op::Atan: case Op::Sinh: case Op::Cosh:
+    case Op::Sqr: case Op::Sqrt: case Op::PowInt: case Op::Pow: case Op::Root: case Op::Exp: case Op::Log:
+    case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos: case Op::Atan: case Op::Atan2:
+    case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Abs: case Op::Min: case Op::Max: case Op::Sign:
       return true;
-    default:
-      return false;
   }
+  return false;
 }
 
 void check_rules(const detail::Tape& tape) {
   for (const Instr& in : tape.code()) {
     if (!has_taylor_rule(in.op)) {
-      throw Error(std::string("TaylorOde: the operation \"") + op_name(in.op) +
-                  "\" has no Taylor rule (supported: + - * / sqr sqrt ^n exp log sin cos tan atan sinh cosh)");
+      throw Error(std::string("TaylorOde: the operation \"") + op_name(in.op) + "\" has no Taylor rule");
     }
   }
 }
@@ -80,6 +84,24 @@ bool recip_series(Interval* w, const Interval* b, std::size_t k) {
   w[k] = -conv(w, b, k, 0, k - 1) / b[0];
   // conv sums w_j b_{k-j} for j < k: the terms of b_1..b_k
   return true;
+}
+
+// Order k ≥ 1 of w when q·w' = r' with the series of q and r known to
+// order k (w to k - 1): k q_0 w_k = k r_k - Σ_{i=1}^{k-1} (k - i) q_i w_{k-i}.
+Interval quotient_rule(const Interval* w, const Interval* q, const Interval& k_r_k, std::size_t k) {
+  Interval s(0.0);
+  for (std::size_t i = 1; i < k; ++i) s += q[i] * Interval(static_cast<double>(k - i)) * w[k - i];
+  return (k_r_k - s) / (Interval(static_cast<double>(k)) * q[0]);
+}
+
+// Order k ≥ 1 of w = a^c (c a constant), from a·w' = c·a'·w:
+// k a_0 w_k = Σ_{j=1}^{k} (c j - (k - j)) a_j w_{k-j}.
+Interval power_rule(const Interval* w, const Interval* a, const Interval& c, std::size_t k) {
+  Interval s(0.0);
+  for (std::size_t j = 1; j <= k; ++j) {
+    s += (c * Interval(static_cast<double>(j)) - Interval(static_cast<double>(k - j))) * a[j] * w[k - j];
+  }
+  return s / (Interval(static_cast<double>(k)) * a[0]);
 }
 
 }  // namespace
@@ -209,14 +231,81 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           break;
         case Op::Atan:  // q·w' = a' with q = 1 + a²
           q[k] = sqr_series(a, k) + (k == 0 ? Interval(1.0) : Interval(0.0));
+          w[k] = k == 0 ? atan(a[0]) : quotient_rule(w, q, kk * a[k], k);
+          break;
+        case Op::Asin: case Op::Acos: {  // q·w' = ±a' with q = sqrt(1 - a²)
+          const Interval s2 = (k == 0 ? Interval(1.0) : Interval(0.0)) - sqr_series(a, k);
           if (k == 0) {
-            w[0] = atan(a[0]);
+            if (!(s2.lb() > 0.0)) return false;
+            q[0] = sqrt(s2);
+            w[0] = in.op == Op::Asin ? asin(a[0]) : acos(a[0]);
           } else {
-            Interval s2(0.0);
-            for (std::size_t i = 1; i < k; ++i) s2 += q[i] * Interval(static_cast<double>(k - i)) * w[k - i];
-            w[k] = (kk * a[k] - s2) / (kk * q[0]);
+            q[k] = (s2 - conv(q, q, k, 1, k - 1)) / (Interval(2.0) * q[0]);
+            w[k] = quotient_rule(w, q, (in.op == Op::Asin ? kk : -kk) * a[k], k);
           }
           break;
+        }
+        case Op::Tanh:  // w' = a'·q with q = 1 - w²
+          if (k == 0) {
+            w[0] = tanh(a[0]);
+          } else {
+            w[k] = dconv(a, q, k);
+          }
+          q[k] = (k == 0 ? Interval(1.0) : Interval(0.0)) - sqr_series(w, k);
+          break;
+        case Op::Atan2: {  // w = atan2(a, b): q·w' = b·a' - a·b' with q = a² + b²
+          if (k == 0) {
+            // smooth away from the cut (b ≤ 0, a = 0) and the origin
+            if (a[0].contains(0.0) && !(b[0].lb() > 0.0)) return false;
+            w[0] = atan2(a[0], b[0]);
+          }
+          q[k] = sqr_series(a, k) + sqr_series(b, k);
+          if (k > 0) {
+            Interval r(0.0);
+            for (std::size_t j = 1; j <= k; ++j) r += Interval(static_cast<double>(j)) * (b[k - j] * a[j] - a[k - j] * b[j]);
+            w[k] = quotient_rule(w, q, r, k);
+          }
+          break;
+        }
+        case Op::Pow: {  // w = exp(b·log a), a > 0: L = log a in q, P = b·L in q + K
+          Interval* L = q;
+          Interval* P = q + K;
+          if (k == 0) {
+            if (!(a[0].lb() > 0.0)) return false;
+            L[0] = log(a[0]);
+          } else {
+            Interval s2(0.0);
+            for (std::size_t j = 1; j < k; ++j) s2 += Interval(static_cast<double>(j)) * L[j] * a[k - j];
+            L[k] = (a[k] - s2 / kk) / a[0];
+          }
+          P[k] = conv(b, L, k, 0, k);
+          w[k] = k == 0 ? pow(a[0], b[0]) & exp(P[0]) : dconv(P, w, k);
+          if (w[k].is_empty()) return false;
+          break;
+        }
+        case Op::Root:  // w = a^(1/n): a·w' = (1/n)·a'·w, a away from 0
+          if (k == 0) {
+            if (a[0].contains(0.0) || a[0].is_empty()) return false;
+            w[0] = root(a[0], in.n);
+            if (w[0].is_empty()) return false;
+          } else {
+            w[k] = power_rule(w, a, Interval(1.0) / Interval(static_cast<double>(in.n)), k);
+          }
+          break;
+        case Op::Abs:  // ±a where a keeps its sign
+          if (k == 0 && (a[0].contains(0.0) || a[0].is_empty())) return false;
+          w[k] = a[0].lb() > 0.0 ? a[k] : -a[k];
+          break;
+        case Op::Sign:  // constant where a keeps its sign
+          if (k == 0 && (a[0].contains(0.0) || a[0].is_empty())) return false;
+          w[k] = k == 0 ? Interval(a[0].lb() > 0.0 ? 1.0 : -1.0) : Interval(0.0);
+          break;
+        case Op::Min: case Op::Max: {  // one operand where they do not cross
+          if (k == 0 && !(a[0].ub() < b[0].lb() || b[0].ub() < a[0].lb())) return false;
+          const bool a_below = a[0].ub() < b[0].lb();
+          w[k] = (in.op == Op::Min) == a_below ? a[k] : b[k];
+          break;
+        }
         case Op::PowInt: {
           const int e = std::abs(in.n);
           if (e == 0) { w[k] = k == 0 ? Interval(1.0) : Interval(0.0); break; }
@@ -234,8 +323,6 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           }
           break;
         }
-        default:
-          return false;  // excluded at construction
       }
     }
     const Interval next(static_cast<double>(k + 1));

@@ -13,8 +13,8 @@
 // Over a box X of initial states every result encloses the coefficients of
 // every solution starting in X. Operations outside their domain of
 // smoothness (sqrt or log of a non-positive, division by an interval
-// containing 0) make the call return false: there is nothing to enclose
-// rigorously.
+// containing 0, abs of an interval containing 0, ...) make the call return
+// false: there is nothing to enclose rigorously.
 #include <cstddef>
 #include <vector>
 
@@ -28,8 +28,10 @@ class TaylorOde {
  public:
   // n = f.image_dim() states, m = f.nb_vars() - n inputs. DimensionError if
   // f has fewer variables than outputs; Error naming the operation if f
-  // uses one with no Taylor rule (supported: + - * / neg sqr sqrt integer
-  // power exp log sin cos tan atan sinh cosh).
+  // uses one with no Taylor rule (every operation of expr.h has one today;
+  // abs, sign, min and max only where their operands stay off the kink,
+  // atan2 off its cut, pow of a positive, root of a non-zero: elsewhere
+  // coefficients() returns false).
   explicit TaylorOde(const Function& f);
 
   std::size_t nb_states() const { return n_; }

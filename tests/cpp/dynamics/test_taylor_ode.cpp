@@ -135,6 +135,52 @@ TEST(TaylorOde, OutsideTheDomainIsRefused) {
 }
 
 TEST(TaylorOde, ErrorsNameTheProblem) {
-  EXPECT_THROW(detail::TaylorOde(Function({"x"}, "abs(x)")), Error);
   EXPECT_THROW(detail::TaylorOde(Function({"x"}, "(x, x)")), DimensionError);
+}
+
+TEST(TaylorOde, RulesOfTheOtherOperationsMatchIdentities) {
+  // s' = 1 from s0 = 0.3 and x' = g(s), y' = h(s) with g = h as functions:
+  // the coefficients of x and y (orders 1..6) must intersect, and be tight.
+  struct Row {
+    const char* g;
+    const char* h;
+  };
+  const Row rows[] = {
+      {"tanh(s)", "sinh(s)/cosh(s)"},
+      {"asin(s/2)", "atan((s/2)/sqrt(1 - (s/2)^2))"},
+      {"acos(s/2) + asin(s/2)", "1.5707963267948966"},
+      {"atan2(sin(s) + 0.5, 2 + s)", "atan((sin(s) + 0.5)/(2 + s))"},
+      {"atan2(-1 - s, -2 + s)", "atan((-1 - s)/(-2 + s)) - 3.141592653589793"},
+      {"(1 + s)^2.5", "sqrt(1 + s)^5"},
+      {"(1 + s)^(s)", "exp(s*log(1 + s))"},
+      {"root(1 + s, 3)", "exp(log(1 + s)/3)"},
+      {"root(s - 2, 3)", "-exp(log(2 - s)/3)"},
+      {"abs(s - 2)", "2 - s"},
+      {"abs(s + 2)", "s + 2"},
+      {"sign(s - 2)*s", "-s"},
+      {"min(s, s + 1)", "s"},
+      {"max(cos(s), 2 + s)", "2 + s"},
+  };
+  for (const Row& r : rows) {
+    const auto x = coeffs(Function({"s", "x", "y"}, std::string("(1, ") + r.g + ", " + r.h + ")"),
+                          {Interval(0.3), Interval(0.0), Interval(0.0)}, 6);
+    for (int k = 1; k <= 6; ++k) {
+      const Interval& a = x[3 * k + 1];
+      const Interval& b = x[3 * k + 2];
+      EXPECT_TRUE(a.intersects(b.inflate(1e-15))) << r.g << " order " << k << " " << a << " " << b;
+      EXPECT_LT(a.diam(), 1e-12) << r.g << " order " << k;
+    }
+  }
+}
+
+TEST(TaylorOde, NonSmoothPointsAreRefused) {
+  // abs, sign, min, max at their kinks, atan2 on its cut, asin at |a| = 1,
+  // pow of a non-positive, an even root of a negative: no series.
+  const char* gs[] = {"abs(s)", "sign(s)", "min(s, -s)", "max(s, 0)", "atan2(s, -1)",
+                      "asin(s + 1)", "acos(s - 1)", "(s)^1.5", "root(s - 1, 2)"};
+  for (const char* g : gs) {
+    detail::TaylorOde ode(Function({"s", "x"}, std::string("(1, ") + g + ")"));
+    std::vector<Interval> x{Interval(0.0), Interval(0.0)};
+    EXPECT_FALSE(ode.coefficients(x, nullptr, 3, 1.0)) << g;
+  }
 }
