@@ -28,7 +28,10 @@
 //    contraction, reports its changes and locates its emptiness.
 //
 // A node holds no mutable state: run() is const, and its scratch lives in
-// run() (a node shared by two networks must not race).
+// run() (a node shared by two networks must not race). The one exception is
+// a cache that only saves work: behind a mutex, and checked against the
+// tubes before each use, so a stale or foreign entry is never trusted
+// (CtcIvp's node remembers its last integration).
 #include <cstddef>
 #include <functional>
 #include <memory>
