@@ -64,13 +64,21 @@ struct ConstraintSpec {
   // the tube's name), the row's columns and other variables.
   std::string expr;
   SourcePos expr_pos;
-  std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: y, y' = v
-  // Eval: one CtcEval per row of `data`, at time column `time` ± time_error;
-  // each column c of `errors` is c ± errors[c] (other columns: exact). The
+  std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: ys[0], vs[0]
+  // Eval: per kept row of `data`, one time t_i and one CtcEval z = y(t_i) per
+  // tube y of `ys` (with y' = vs[j] unless ""), all at the same t_i. t_i is
+  // the stamp column ± time_error (one column), the hull of two columns
+  // [lb, ub] ± time_error, or the whole time domain (no column: an unknown
+  // time the observations contract). Each column c of `errors` is c ±
+  // errors[c] (other columns: the cell as written, enclosed to one ulp). The
   // errors are kept as written (decimal text), enclosed rigorously.
-  std::string data, time_column;
+  std::vector<std::string> ys, vs;
+  std::string data;
+  std::vector<std::string> time_columns;
   std::string time_error = "0";
   std::map<std::string, std::string> errors;
+  std::map<std::string, double> where;  // rows kept: column == value (all of them)
+  bool gates = false;                   // time points at the bounds of every t_i
   SourcePos pos;
 };
 
@@ -87,6 +95,14 @@ struct OutputSpec {
   std::optional<TruthSpec> truth;
 };
 
+// [network]: how the propagation runs. ratio: a contractor's arguments wake
+// their other contractors when they shrank by more than this share (0: the
+// true fixed point; none: the network's default).
+struct NetworkSpec {
+  std::optional<double> ratio;
+  SourcePos pos;
+};
+
 struct Problem {
   std::string file, text;  // the path as given, and its text
   std::string hash;        // FNV-1a 64 of the text, hex
@@ -95,6 +111,7 @@ struct Problem {
   std::vector<VarSpec> vars;
   std::vector<ConstraintSpec> constraints;
   OutputSpec output;
+  NetworkSpec network;
 
   const VarSpec* var(const std::string& name) const;
   const DataSpec* table(const std::string& name) const;

@@ -28,6 +28,58 @@ Interval constant_text(const std::string& text, const SourcePos& pos) {
   return x;
 }
 
+// A CSV cell as written: its decimal text is within half an ulp of the
+// double read, so the double's neighbours enclose it.
+Interval cell(double d) { return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)); }
+
+bool row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values) {
+  for (const auto& [col, value] : c.where)
+    if (values[table.column(col)] != value) return false;
+  return true;
+}
+
+// The time of an eval row: the stamp ± error, or [lb, ub] ± error, or the
+// whole domain (unknown), within the domain (empty: outside it).
+Interval row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
+                  const Interval& terr, const Interval& domain) {
+  if (c.time_columns.empty()) return domain;
+  Interval t = cell(values[table.column(c.time_columns[0])]);
+  if (c.time_columns.size() == 2) t |= cell(values[table.column(c.time_columns[1])]);
+  return (t + Interval(-1, 1) * terr) & domain;
+}
+
+// The observation when it only says "each evaluated value is a column"
+// ("y - z", "(h - tau, y - z)"): per tube of c.ys its column, so z_i is the
+// column's interval itself, as a hand-written network does (no CtcFunction,
+// and CtcEval starts from the measurement). None for any other expression.
+std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, const CsvTable& table,
+                                                       const std::vector<const VarDomain*>& ys) {
+  std::string e;
+  for (char ch : c.expr)
+    if (!std::isspace(static_cast<unsigned char>(ch))) e += ch;
+  if (ys.size() > 1) {
+    if (e.size() < 2 || e.front() != '(' || e.back() != ')') return std::nullopt;
+    e = e.substr(1, e.size() - 2);
+  }
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = e.find(',', start);
+    parts.push_back(e.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != ys.size()) return std::nullopt;
+  std::vector<std::string> cols(ys.size());
+  for (std::size_t j = 0; j < ys.size(); ++j) {
+    const std::size_t minus = parts[j].find('-');
+    if (minus == std::string::npos || ys[j]->spec->kind != VarKind::Tube) return std::nullopt;
+    const std::string y = parts[j].substr(0, minus), col = parts[j].substr(minus + 1);
+    if (y != c.ys[j] || !table.has_column(col)) return std::nullopt;
+    cols[j] = col;
+  }
+  return cols;
+}
+
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
   if (b.expr.empty()) return Tube(td);
   return Tube(td, Function({"t"}, b.expr));
@@ -78,8 +130,21 @@ BuiltProblem build_network(const Problem& p, double delta) {
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
       if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
+  for (const ConstraintSpec& c : p.constraints) {
+    if (c.kind != ConstraintKind::Eval || !c.gates) continue;
+    const CsvTable& table = p.table(c.data)->table;
+    const Interval terr = constant_text(c.time_error, c.pos);
+    for (std::size_t row = 0; row < table.nb_rows(); ++row) {
+      if (!row_kept(c, table, table.row(row))) continue;
+      const Interval t = row_time(c, table, table.row(row), terr, b.td->t0_tf());
+      if (t.is_empty()) continue;
+      for (const double s : {t.lb(), t.ub()})
+        if (s > p.time.t0 && s < p.time.tf) b.td->sample(s);
+    }
+  }
   b.cn = std::make_unique<ContractorNetwork>();
   ContractorNetwork& cn = *b.cn;
+  if (p.network.ratio) cn.set_ratio(*p.network.ratio);
   for (const VarSpec& v : p.vars) {
     VarDomain d;
     d.spec = std::make_shared<const VarSpec>(v);
@@ -134,14 +199,25 @@ BuiltProblem build_network(const Problem& p, double delta) {
       }
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
-        const VarDomain& y = b.var(c.x);
-        const bool scalar = y.spec->kind == VarKind::Tube;
+        std::vector<const VarDomain*> ys;
+        for (const std::string& y : c.ys) ys.push_back(&b.var(y));
+        const auto y_index = [&](const std::string& n) {
+          for (std::size_t j = 0; j < c.ys.size(); ++j)
+            if (c.ys[j] == n) return j;
+          return c.ys.size();
+        };
+        const auto whole = [](const VarDomain& y) {
+          return y.spec->kind == VarKind::Tube ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
+        };
         auto dims_eval = [&](const std::string& n) -> std::optional<std::size_t> {
-          if (n == c.x) return y.spec->dim;
+          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->dim;
           if (data.table.has_column(n)) return 1;
           return dims(n);
         };
-        auto vec_eval = [&](const std::string& n) { return n == c.x ? !scalar : !data.table.has_column(n) && vec(n); };
+        auto vec_eval = [&](const std::string& n) {
+          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->kind == VarKind::TubeVector;
+          return !data.table.has_column(n) && vec(n);
+        };
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims_eval, vec_eval, "");
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();
@@ -149,31 +225,38 @@ BuiltProblem build_network(const Problem& p, double delta) {
         const Interval terr = constant_text(c.time_error, c.pos);
         std::map<std::string, Interval> errs;
         for (const auto& [col, text] : c.errors) errs[col] = constant_text(text, c.pos);
-        const std::size_t tcol = data.table.column(c.time_column);
+        const auto measured = [&](const std::vector<double>& values, const std::string& col) {
+          const auto it = errs.find(col);
+          const Interval e = it == errs.end() ? Interval(0) : it->second;
+          return cell(values[data.table.column(col)]) + Interval(-1, 1) * e;
+        };
+        const auto direct = direct_columns(c, data.table, ys);
         for (std::size_t row = 0; row < data.table.nb_rows(); ++row) {
           const std::vector<double>& values = data.table.row(row);
-          auto t = std::make_shared<Interval>((Interval(values[tcol]) + Interval(-1, 1) * terr) & b.td->t0_tf());
+          if (!row_kept(c, data.table, values)) continue;
+          auto t = std::make_shared<Interval>(row_time(c, data.table, values, terr, b.td->t0_tf()));
           if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
-          std::vector<DomainRef> args;
-          std::shared_ptr<Interval> z1;
-          std::shared_ptr<IntervalVector> zn;
-          if (scalar) z1 = std::make_shared<Interval>();
-          else zn = std::make_shared<IntervalVector>(y.spec->dim);
-          DomainRef y_ref = scalar ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
-          std::vector<DomainRef> eval_args{t, scalar ? DomainRef(z1) : DomainRef(zn), y_ref};
-          if (!c.v.empty()) {
-            const VarDomain& w = b.var(c.v);
-            eval_args.push_back(scalar ? DomainRef(w.tubes->shared_component(0)) : DomainRef(w.tubes));
+          ++b.extra_domains;
+          // One z per evaluated tube, all at the same time t.
+          std::vector<std::shared_ptr<Interval>> z1(ys.size());
+          std::vector<std::shared_ptr<IntervalVector>> zn(ys.size());
+          for (std::size_t j = 0; j < ys.size(); ++j) {
+            const VarDomain& y = *ys[j];
+            if (y.spec->kind == VarKind::Tube) z1[j] = std::make_shared<Interval>(direct ? measured(values, (*direct)[j]) : Interval());
+            else zn[j] = std::make_shared<IntervalVector>(y.spec->dim);
+            std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), whole(y)};
+            if (!c.vs[j].empty()) eval_args.push_back(whole(b.var(c.vs[j])));
+            cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
+            ++b.extra_domains;
           }
-          cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
-          b.extra_domains += 2;
+          if (direct) continue;
+          std::vector<DomainRef> args;
           for (const VarRef& ref : r.refs) {
-            if (ref.var == c.x) {
-              args.push_back(scalar ? DomainRef(z1) : DomainRef::component(zn, ref.component));
+            const std::size_t j = y_index(ref.var);
+            if (j < ys.size()) {
+              args.push_back(z1[j] ? DomainRef(z1[j]) : DomainRef::component(zn[j], ref.component));
             } else if (data.table.has_column(ref.var)) {
-              const auto it = errs.find(ref.var);
-              const Interval e = it == errs.end() ? Interval(0) : it->second;
-              args.push_back(std::make_shared<Interval>(Interval(values[data.table.column(ref.var)]) + Interval(-1, 1) * e));
+              args.push_back(std::make_shared<Interval>(measured(values, ref.var)));
               ++b.extra_domains;
             } else {
               args.push_back(b.var(ref.var).component(ref.component));

@@ -55,7 +55,7 @@ class Loader {
       throw ProblemError(doc_.pos(e.source()), "invalid TOML: " + std::string(e.description()),
                          "a TOML file (https://toml.io)");
     }
-    const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output"});
+    const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output", "network"});
     read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
     if (const toml::node* d = top.find("data"))
       for (auto&& [key, node] : top.table(*d, "tables [data.NAME]")) read_data(std::string(key.str()), key, node);
@@ -64,6 +64,7 @@ class Loader {
     const toml::node& cs = top.require("constraint", "one or more [[constraint]] tables");
     for (const toml::node& c : top.array(cs, "[[constraint]] tables")) read_constraint(top, c);
     if (const toml::node* o = top.find("output")) read_output(top.table(*o, "a table [output]"));
+    if (const toml::node* n = top.find("network")) read_network(top.table(*n, "a table [network]"));
     return std::move(p_);
   }
 
@@ -216,7 +217,10 @@ class Loader {
   }
 
   const VarSpec& tube_var(const Fields& f, const char* key) {
-    const toml::node& n = f.require(key, "the name of a tube variable");
+    return tube_var(f, f.require(key, "the name of a tube variable"));
+  }
+
+  const VarSpec& tube_var(const Fields& f, const toml::node& n) {
     const std::string name = f.string(n, "the name of a tube variable (string)");
     const VarSpec* v = p_.var(name);
     if (!v || !v->is_tube())
@@ -262,7 +266,7 @@ class Loader {
       c.v = v.name;
       c.label = where + ": " + (ks == "deriv" ? c.x + "' = " + c.v : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
     } else if (ks == "eval") {
-      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "expr"}), c, where);
+      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "expr"}), c, where);
     } else {
       throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
     }
@@ -277,6 +281,18 @@ class Loader {
     (void)rewrite_refs(c.expr, c.expr_pos, dims, vec, known);
   }
 
+  // A string or an array of strings (at least one).
+  std::vector<const toml::node*> one_or_many(const Fields& f, const toml::node& n, const std::string& expected) {
+    std::vector<const toml::node*> out;
+    if (n.is_array()) {
+      for (const toml::node& e : f.array(n, expected)) out.push_back(&e);
+      if (out.empty()) throw ProblemError(doc_.pos(n), "an empty array", expected);
+    } else {
+      out.push_back(&n);
+    }
+    return out;
+  }
+
   void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where) {
     c.kind = ConstraintKind::Eval;
     const toml::node& dn = f.require("data", "the name of a [data.NAME] table");
@@ -287,14 +303,32 @@ class Loader {
       for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
       throw ProblemError(doc_.pos(dn), "the unknown table '" + c.data + "'", "a [data.NAME] table (" + names + ")");
     }
-    const VarSpec& y = tube_var(f, "y");
-    c.x = y.name;
-    if (f.find("v")) {
-      const VarSpec& v = tube_var(f, "v");
-      if (v.dim != y.dim || v.kind != y.kind)
-        throw ProblemError(doc_.pos(*f.find("v")), "'" + v.name + "'", "a derivative of the kind and dimension of '" + y.name + "'");
-      c.v = v.name;
+    std::vector<const VarSpec*> ys;
+    for (const toml::node* n : one_or_many(f, f.require("y", "a tube name or an array of them"),
+                                           "a tube name or an array of them")) {
+      const VarSpec& y = tube_var(f, *n);
+      for (const VarSpec* o : ys)
+        if (o == &y) throw ProblemError(doc_.pos(*n), "'" + y.name + "' twice", "distinct tubes in y");
+      ys.push_back(&y);
+      c.ys.push_back(y.name);
     }
+    c.vs.assign(ys.size(), "");
+    if (const toml::node* vn = f.find("v")) {
+      const auto vs = one_or_many(f, *vn, "a derivative tube per tube of y");
+      if (vs.size() != ys.size())
+        throw ProblemError(doc_.pos(*vn), std::to_string(vs.size()) + " derivative(s)",
+                           std::to_string(ys.size()) + " (one per tube of y, \"\" for none)");
+      for (std::size_t j = 0; j < vs.size(); ++j) {
+        if (vs[j]->is_string() && vs[j]->as_string()->get().empty()) continue;
+        const VarSpec& v = tube_var(f, *vs[j]);
+        if (v.dim != ys[j]->dim || v.kind != ys[j]->kind)
+          throw ProblemError(doc_.pos(*vs[j]), "'" + v.name + "'",
+                             "a derivative of the kind and dimension of '" + ys[j]->name + "'");
+        c.vs[j] = v.name;
+      }
+    }
+    c.x = c.ys[0];
+    c.v = c.vs[0];
     auto column = [&](const toml::node& n) {
       const std::string col = f.string(n, "a column name (string)");
       if (!d->table.has_column(col)) {
@@ -304,9 +338,16 @@ class Loader {
       }
       return col;
     };
-    c.time_column = column(f.require("time", "the time column of the table"));
+    if (const toml::node* tn = f.find("time")) {
+      const std::string expected = "a time column, or two columns [lb, ub]";
+      const auto cols = one_or_many(f, *tn, expected);
+      if (cols.size() > 2) throw ProblemError(doc_.pos(*tn), describe(*tn), expected);
+      for (const toml::node* n : cols) c.time_columns.push_back(column(*n));
+    }
     if (const toml::node* te = f.find("time_error")) {
       if (f.number(*te, "a time error >= 0") < 0) throw ProblemError(doc_.pos(*te), "a negative time error", "a time error >= 0");
+      if (c.time_columns.empty())
+        throw ProblemError(doc_.pos(*te), "a time error without a time column", "time = \"column\" with it");
       c.time_error = f.bound_text(*te);
     }
     if (const toml::node* er = f.find("errors")) {
@@ -319,28 +360,62 @@ class Loader {
         c.errors[std::string(key.str())] = f.bound_text(node);
       }
     }
-    // In the observation: the evaluated value is named as y, the columns by name.
+    if (const toml::node* wn = f.find("where")) {
+      for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
+        if (!d->table.has_column(std::string(key.str())))
+          throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
+                                                         c.data + "'", "a column of it");
+        c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
+      }
+    }
+    if (const toml::node* g = f.find("gates")) {
+      if (!g->is_boolean()) throw ProblemError(doc_.pos(*g), describe(*g), "true or false");
+      c.gates = g->as_boolean()->get();
+    }
+    // In the observation: the evaluated values are named as their tubes, the columns by name.
+    const auto y_of = [&](const std::string& n) -> const VarSpec* {
+      for (const VarSpec* y : ys)
+        if (y->name == n) return y;
+      return nullptr;
+    };
     auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
-      if (n == y.name) return y.dim;
+      if (const VarSpec* y = y_of(n)) return y->dim;
       if (d->table.has_column(n)) return 1;
       const VarSpec* v = p_.var(n);
       if (v && !v->is_tube()) return v->dim;
       return std::nullopt;
     };
     auto vec = [&](const std::string& n) {
-      if (n == y.name) return y.kind == VarKind::TubeVector;
+      if (const VarSpec* y = y_of(n)) return y->kind == VarKind::TubeVector;
       const VarSpec* v = p_.var(n);
       return !d->table.has_column(n) && v && v->kind == VarKind::Box;
     };
-    std::string known = y.name + (y.kind == VarKind::TubeVector ? "[i]" : "") + " (the value y(t)), the columns of '" +
-                        c.data + "'";
+    std::string known, names;
+    for (const VarSpec* y : ys) {
+      known += y->name + (y->kind == VarKind::TubeVector ? "[i]" : "") + " (the value " + y->name + "(t)), ";
+      names += (names.empty() ? "" : ", ") + y->name;
+    }
+    known += "the columns of '" + c.data + "'";
     for (const VarSpec& v : p_.vars)
       if (!v.is_tube()) known += ", " + v.name;
     read_expr(f, c, dims, vec, known);
     for (const auto& col : d->table.columns())
-      if (p_.var(col) && col != y.name)
+      if (p_.var(col) && !y_of(col))
         throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
-    c.label = where + ": " + c.expr + " = 0 at " + y.name + "(" + c.time_column + ") for every row of '" + c.data + "'";
+    c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
+              (c.time_columns.empty() ? std::string("t unknown") : c.time_columns[0]) + ") for every row of '" +
+              c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");
+  }
+
+  // ---- [network] ----
+  void read_network(const toml::table& t) {
+    const Fields f(doc_, t, "[network]", {"ratio"});
+    p_.network.pos = f.pos();
+    if (const toml::node* r = f.find("ratio")) {
+      const double v = f.number(*r, "a ratio in [0, 1)");
+      if (!(v >= 0 && v < 1)) throw ProblemError(doc_.pos(*r), "ratio = " + doc_.raw(*r), "a ratio in [0, 1)");
+      p_.network.ratio = v;
+    }
   }
 
   // ---- [output] ----
