@@ -67,3 +67,21 @@ def test_drifting_clock_corrected(tmp_path):
     # h(0) = 0 and h' in [phi] alone give h(13) in [19.37, 24.18] (width
     # 0.02*13^2 + 0.11*13 = 4.81); the eight ranges (Table 5.3) correct it.
     assert h["h_ub"][-1] - h["h_lb"][-1] < 4.81 / 3
+
+
+PLAZA1 = Path(__file__).resolve().parents[3] / "shared" / "data" / "plaza1"
+
+
+@pytest.mark.skipif(not (PLAZA1 / "odometry.csv").exists(), reason="no plaza1 data")
+def test_plaza1_real_data(tmp_path):
+    """The real data read in place (${SILLAGE_DATA}, or the folder next to
+    the repository): every ground-truth sample inside the position tube."""
+    res = solve("plaza1.toml", tmp_path)
+    assert res["status"] == "solved" and res["schedule"][0]["slices"] == 9657
+    assert "19316 of 19316 truth samples inside" in (tmp_path / "report.html").read_text()
+    p = gates(tmp_path, "p")
+    truth = np.genfromtxt(PLAZA1 / "ground_truth.csv", delimiter=",", names=True)
+    assert len(p) == len(truth)
+    assert np.all((p["p0_lb"] <= truth["x_m"]) & (truth["x_m"] <= p["p0_ub"]))
+    # The ranges bound the position box all along (odometry alone: over 3 km wide at the end).
+    assert np.max(p["p0_ub"] - p["p0_lb"]) < 200

@@ -16,7 +16,11 @@ namespace sillage {
 
 struct TimeSpec {
   double t0 = 0, tf = 0;
-  std::optional<double> delta;  // none: "auto"
+  std::optional<double> delta;  // none: "auto" (or the time points of a table)
+  // points = {data, column}: the time points are a table's column (strictly
+  // increasing), one slice between consecutive stamps; no delta then.
+  std::vector<double> points;
+  std::string points_data;
   SourcePos pos;
 };
 
@@ -43,17 +47,26 @@ struct GateSpec {
   SourcePos pos;
 };
 
+// The slices of a tube from a table (one row per slice of the time points of
+// [time] points = {...}): `value` is an expression of the row's columns and
+// dt (the slice's width), e.g. "delta_heading + dt*[-0.005, 0.005]".
+struct SliceDataSpec {
+  std::string data;
+  BoundSpec value;
+};
+
 struct VarSpec {
   std::string name;
   VarKind kind = VarKind::Tube;
   std::size_t dim = 1;
   std::vector<BoundSpec> value;  // one per component
   std::vector<GateSpec> at;      // tubes only
+  std::optional<SliceDataSpec> slices;  // scalar tubes only, with time points from data
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -64,6 +77,9 @@ struct ConstraintSpec {
   // the tube's name), the row's columns and other variables.
   std::string expr;
   SourcePos expr_pos;
+  // Heading (CtcHeading): position p (tube_vector, dim 2), heading psi,
+  // distance per slice dist, turn rate omega (tubes), track error (rad, as written).
+  std::string p, psi, dist, omega, track = "0";
   std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: ys[0], vs[0]
   // Eval: per kept row of `data`, one time t_i and one CtcEval z = y(t_i) per
   // tube y of `ys` (with y' = vs[j] unless ""), all at the same t_i. t_i is
@@ -78,6 +94,9 @@ struct ConstraintSpec {
   std::string time_error = "0";
   std::map<std::string, std::string> errors;
   std::map<std::string, double> where;  // rows kept: column == value (all of them)
+  // join = {data, on}: each row also has the columns of the row of table
+  // join_data with the same value in column join_on (ranges -> beacons).
+  std::string join_data, join_on;
   bool gates = false;                   // time points at the bounds of every t_i
   SourcePos pos;
 };

@@ -5,6 +5,7 @@
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
@@ -80,6 +81,33 @@ std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, 
   return cols;
 }
 
+// The slices of x from a table (row k: slice k of [time] points), after the
+// time points added since (gates of 'at', of evals) split some of them.
+// Gate k: the hull of the slices around it (a value per period, not a
+// continuous trajectory: it may jump at the stamps).
+void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
+  const CsvTable& table = p.table(s.data)->table;
+  std::vector<std::string> names = table.columns();
+  names.push_back("dt");
+  const Function f(names, s.value.expr);
+  const std::vector<double>& pts = p.time.points;
+  const TDomain& td = *x.tdomain();
+  IntervalVector args(names.size());
+  std::vector<Interval> slices(x.nb_slices());
+  std::size_t row = 0;
+  for (std::size_t k = 0; k < x.nb_slices(); ++k) {
+    while (row + 1 < table.nb_rows() && pts[row + 1] <= td.t(k)) ++row;
+    const std::vector<double>& values = table.row(row);
+    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+    args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
+    slices[k] = x.slice(k) & f.eval(args);
+  }
+  std::vector<Interval> gates(slices.size() + 1);
+  for (std::size_t k = 0; k < gates.size(); ++k)
+    gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < slices.size() ? slices[k] : slices[k - 1]);
+  x = Tube(x.tdomain(), slices, gates);
+}
+
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
   if (b.expr.empty()) return Tube(td);
   return Tube(td, Function({"t"}, b.expr));
@@ -121,12 +149,13 @@ std::size_t BuiltProblem::memory_bytes() const {
 }
 
 std::size_t nb_slices_for(const Problem& p, double delta) {
+  if (!p.time.points.empty()) return p.time.points.size() - 1;
   return static_cast<std::size_t>(std::ceil((p.time.tf - p.time.t0) / delta));
 }
 
 BuiltProblem build_network(const Problem& p, double delta) {
   BuiltProblem b;
-  b.td = TDomain::create(p.time.t0, p.time.tf, delta);
+  b.td = p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points);
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
       if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
@@ -151,6 +180,7 @@ BuiltProblem build_network(const Problem& p, double delta) {
     if (v.is_tube()) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
+      if (v.slices) set_slices(comps[0], p, *v.slices);
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
       for (const GateSpec& g : v.at) {
         const std::size_t k = static_cast<std::size_t>(b.td->time_index(g.t));
@@ -197,8 +227,20 @@ BuiltProblem build_network(const Problem& p, double delta) {
         else cn.add(ctc, {x.tubes, v.tubes});
         break;
       }
+      case ConstraintKind::Heading: {
+        const VarDomain& pos = b.var(c.p);
+        const auto scalar = [&](const std::string& n) { return b.var(n).tubes->shared_component(0); };
+        cn.add(std::make_shared<CtcHeading>(constant_text(c.track, c.pos).ub()),
+               {pos.tubes, scalar(c.psi), scalar(c.dist), scalar(c.omega)});
+        break;
+      }
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
+        const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;
+        std::map<double, std::size_t> join_rows;  // value of join_on -> row of the joined table
+        if (joined)
+          for (std::size_t r = 0; r < joined->nb_rows(); ++r) join_rows.emplace(joined->row(r)[joined->column(c.join_on)], r);
+        const auto has_column = [&](const std::string& n) { return data.table.has_column(n) || (joined && joined->has_column(n)); };
         std::vector<const VarDomain*> ys;
         for (const std::string& y : c.ys) ys.push_back(&b.var(y));
         const auto y_index = [&](const std::string& n) {
@@ -211,12 +253,12 @@ BuiltProblem build_network(const Problem& p, double delta) {
         };
         auto dims_eval = [&](const std::string& n) -> std::optional<std::size_t> {
           if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->dim;
-          if (data.table.has_column(n)) return 1;
+          if (has_column(n)) return 1;
           return dims(n);
         };
         auto vec_eval = [&](const std::string& n) {
           if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->kind == VarKind::TubeVector;
-          return !data.table.has_column(n) && vec(n);
+          return !has_column(n) && vec(n);
         };
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims_eval, vec_eval, "");
         const Function f(r.ids(), r.text);
@@ -225,15 +267,25 @@ BuiltProblem build_network(const Problem& p, double delta) {
         const Interval terr = constant_text(c.time_error, c.pos);
         std::map<std::string, Interval> errs;
         for (const auto& [col, text] : c.errors) errs[col] = constant_text(text, c.pos);
+        const std::vector<double>* join_values = nullptr;  // the joined row of the current row
         const auto measured = [&](const std::vector<double>& values, const std::string& col) {
           const auto it = errs.find(col);
           const Interval e = it == errs.end() ? Interval(0) : it->second;
-          return cell(values[data.table.column(col)]) + Interval(-1, 1) * e;
+          const double v = data.table.has_column(col) ? values[data.table.column(col)] : (*join_values)[joined->column(col)];
+          return cell(v) + Interval(-1, 1) * e;
         };
         const auto direct = direct_columns(c, data.table, ys);
         for (std::size_t row = 0; row < data.table.nb_rows(); ++row) {
           const std::vector<double>& values = data.table.row(row);
           if (!row_kept(c, data.table, values)) continue;
+          if (joined) {
+            const auto j = join_rows.find(values[data.table.column(c.join_on)]);
+            if (j == join_rows.end())
+              throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' with " + c.join_on + " = " +
+                                            number_text(values[data.table.column(c.join_on)]) + ", not in '" + c.join_data + "'",
+                                 "a matching row in '" + c.join_data + "'");
+            join_values = &joined->row(j->second);
+          }
           auto t = std::make_shared<Interval>(row_time(c, data.table, values, terr, b.td->t0_tf()));
           if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
           ++b.extra_domains;
@@ -255,7 +307,7 @@ BuiltProblem build_network(const Problem& p, double delta) {
             const std::size_t j = y_index(ref.var);
             if (j < ys.size()) {
               args.push_back(z1[j] ? DomainRef(z1[j]) : DomainRef::component(zn[j], ref.component));
-            } else if (data.table.has_column(ref.var)) {
+            } else if (has_column(ref.var)) {
               args.push_back(std::make_shared<Interval>(measured(values, ref.var)));
               ++b.extra_domains;
             } else {

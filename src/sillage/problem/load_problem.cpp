@@ -56,9 +56,9 @@ class Loader {
                          "a TOML file (https://toml.io)");
     }
     const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output", "network"});
-    read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
     if (const toml::node* d = top.find("data"))
       for (auto&& [key, node] : top.table(*d, "tables [data.NAME]")) read_data(std::string(key.str()), key, node);
+    read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
     const toml::node& vars = top.require("var", "tables [var.NAME]");
     for (auto&& [key, node] : top.table(vars, "tables [var.NAME]")) read_var(std::string(key.str()), key, node);
     const toml::node& cs = top.require("constraint", "one or more [[constraint]] tables");
@@ -71,7 +71,8 @@ class Loader {
  private:
   // ---- [time] ----
   void read_time(const toml::table& t) {
-    const Fields f(doc_, t, "[time]", {"domain", "delta"});
+    const Fields f(doc_, t, "[time]", {"domain", "delta", "points"});
+    if (const toml::node* pn = f.find("points")) return read_time_points(f, *pn);
     const toml::node& d = f.require("domain", "[t0, tf]");
     const toml::array& a = f.array(d, "[t0, tf], two numbers");
     if (a.size() != 2) throw ProblemError(doc_.pos(d), describe(d), "[t0, tf], two numbers");
@@ -93,6 +94,41 @@ class Loader {
     }
   }
 
+  // [time] points = {data, column}: the stamps of a table.
+  void read_time_points(const Fields& f, const toml::node& pn) {
+    for (const char* k : {"domain", "delta"})
+      if (const toml::node* n = f.find(k))
+        throw ProblemError(doc_.pos(*n), std::string("'") + k + "' with 'points'",
+                           "either points = {data, column} or domain and delta");
+    const Fields pf(doc_, f.table(pn, "a table {data = \"NAME\", column = \"t\"}"), "[time] points", {"data", "column"});
+    const toml::node& dn = pf.require("data", "a [data.NAME] table");
+    const DataSpec& d = data_table(pf, dn);
+    const toml::node& cn = pf.require("column", "its time column");
+    const std::string col = pf.string(cn, "a column name (string)");
+    if (!d.table.has_column(col)) throw ProblemError(doc_.pos(cn), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+    p_.time.points = d.table.values(col);
+    p_.time.points_data = d.name;
+    p_.time.pos = doc_.pos(pn);
+    if (p_.time.points.size() < 2)
+      throw ProblemError(doc_.pos(cn), std::to_string(p_.time.points.size()) + " time point(s)", "at least 2");
+    for (std::size_t i = 1; i < p_.time.points.size(); ++i)
+      if (!(p_.time.points[i] > p_.time.points[i - 1]))
+        throw ProblemError(doc_.pos(cn), "the stamps of rows " + std::to_string(i - 1) + " and " + std::to_string(i) + " of '" +
+                                             d.name + "' not increasing (" + number_text(p_.time.points[i - 1]) + ", " +
+                                             number_text(p_.time.points[i]) + ")",
+                           "strictly increasing time points");
+    p_.time.t0 = p_.time.points.front();
+    p_.time.tf = p_.time.points.back();
+  }
+
+  const DataSpec& data_table(const Fields& f, const toml::node& dn) {
+    const std::string name = f.string(dn, "a data table name (string)");
+    if (const DataSpec* d = p_.table(name)) return *d;
+    std::string names;
+    for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
+    throw ProblemError(doc_.pos(dn), "the unknown table '" + name + "'", "a [data.NAME] table (" + names + ")");
+  }
+
   // ---- [data.NAME] ----
   void read_data(const std::string& name, const toml::key& key, const toml::node& node) {
     const SourcePos kp = doc_.pos(key.source());
@@ -103,7 +139,7 @@ class Loader {
     d.name = name;
     d.pos = kp;
     const toml::node& fn = f.require("file", "a CSV path relative to the problem file");
-    const std::string file = f.string(fn, "a CSV path (string)");
+    const std::string file = detail::expand_env(f.string(fn, "a CSV path (string)"), doc_.pos(fn));
     d.path = (base_ / file).lexically_normal().string();
     if (std::filesystem::is_directory(d.path))
       throw ProblemError(doc_.pos(fn), "the directory " + d.path, "a CSV file");
@@ -164,7 +200,7 @@ class Loader {
       throw ProblemError(kp, "the variable name '" + name + "'",
                          "an identifier (letters, digits, _; not __, not a function name)");
     const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
-                   "[var." + name + "]", {"kind", "dim", "value", "at"});
+                   "[var." + name + "]", {"kind", "dim", "value", "at", "slices"});
     VarSpec v;
     v.name = name;
     v.pos = kp;
@@ -202,8 +238,34 @@ class Loader {
         v.at.push_back(std::move(gs));
       }
     }
+    if (const toml::node* sn = f.find("slices")) v.slices = read_slices(f, *sn, v);
     if (p_.table(name)) throw ProblemError(kp, "the variable '" + name + "' named as a data table", "distinct names");
     p_.vars.push_back(std::move(v));
+  }
+
+  SliceDataSpec read_slices(const Fields& f, const toml::node& sn, const VarSpec& v) {
+    if (v.kind != VarKind::Tube) throw ProblemError(doc_.pos(sn), "'slices' for the " + std::string(kind_name(v.kind)) + " '" + v.name + "'", "'slices' on a tube");
+    if (p_.time.points.empty())
+      throw ProblemError(doc_.pos(sn), "'slices' without time points from data", "[time] points = {data, column}");
+    const Fields sf(doc_, f.table(sn, "a table {data = \"NAME\", value = \"expression\"}"), "the slices of " + v.name, {"data", "value"});
+    SliceDataSpec s;
+    const toml::node& dn = sf.require("data", "a [data.NAME] table, one row per slice");
+    const DataSpec& d = data_table(sf, dn);
+    s.data = d.name;
+    if (d.table.nb_rows() + 1 != p_.time.points.size())
+      throw ProblemError(doc_.pos(dn), "the table '" + d.name + "' of " + std::to_string(d.table.nb_rows()) + " rows",
+                         "one row per slice: " + std::to_string(p_.time.points.size() - 1) + " rows");
+    const toml::node& vn = sf.require("value", "an expression of the row's columns and dt");
+    s.value = {sf.bound_text(vn), detail::shifted(doc_.pos(vn), vn.is_string() ? 1 : 0)};
+    std::vector<std::string> names = d.table.columns();
+    names.push_back("dt");
+    try {
+      (void)detail::parse_expr(names, s.value.expr);
+    } catch (const ParseError& e) {
+      throw ProblemError(s.value.pos, std::string("the value \"") + s.value.expr + "\" (" + e.what() + ")",
+                         "an expression of the columns of '" + d.name + "' and dt");
+    }
+    return s;
   }
 
   // ---- [[constraint]] ----
@@ -235,7 +297,7 @@ class Loader {
     const toml::node* kn = t.get("kind");
     ConstraintSpec c;
     c.pos = doc_.pos(node);
-    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\" or \"eval\"";
+    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\", \"eval\" or \"heading\"";
     if (!kn) throw ProblemError(c.pos, "constraint " + std::to_string(index) + " without a kind", expected_kind);
     const std::string ks = top.string(*kn, expected_kind);
     const std::string where = "constraint " + std::to_string(index) + " (" + ks + ")";
@@ -265,8 +327,26 @@ class Loader {
       c.x = x.name;
       c.v = v.name;
       c.label = where + ": " + (ks == "deriv" ? c.x + "' = " + c.v : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
+    } else if (ks == "heading") {
+      const Fields f(doc_, t, where, {"kind", "p", "psi", "dist", "omega", "track"});
+      c.kind = ConstraintKind::Heading;
+      const VarSpec& p = tube_var(f, "p");
+      if (p.kind != VarKind::TubeVector || p.dim != 2)
+        throw ProblemError(doc_.pos(*f.find("p")), "'" + p.name + "' (" + kind_name(p.kind) + ", dim " + std::to_string(p.dim) + ")",
+                           "a position: a tube_vector of dim 2");
+      c.p = p.name;
+      for (auto [key, out] : {std::pair{"psi", &c.psi}, std::pair{"dist", &c.dist}, std::pair{"omega", &c.omega}}) {
+        const VarSpec& s = tube_var(f, key);
+        if (s.kind != VarKind::Tube) throw ProblemError(doc_.pos(*f.find(key)), "the tube_vector '" + s.name + "'", "a scalar tube");
+        *out = s.name;
+      }
+      if (const toml::node* tr = f.find("track")) {
+        if (!(f.number(*tr, "a track error >= 0 (rad)") >= 0)) throw ProblemError(doc_.pos(*tr), "a negative track error", "a track error >= 0");
+        c.track = f.bound_text(*tr);
+      }
+      c.label = where + ": " + c.p + " from " + c.dist + " along " + c.psi + " (track error " + c.track + ")";
     } else if (ks == "eval") {
-      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "expr"}), c, where);
+      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr"}), c, where);
     } else {
       throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
     }
@@ -372,6 +452,20 @@ class Loader {
       if (!g->is_boolean()) throw ProblemError(doc_.pos(*g), describe(*g), "true or false");
       c.gates = g->as_boolean()->get();
     }
+    const DataSpec* joined = nullptr;
+    if (const toml::node* jn = f.find("join")) {
+      const Fields jf(doc_, f.table(*jn, "a table {data = \"NAME\", on = \"column\"}"), where + " join", {"data", "on"});
+      joined = &data_table(jf, jf.require("data", "a [data.NAME] table"));
+      const toml::node& on = jf.require("on", "a column of both tables");
+      c.join_on = jf.string(on, "a column name (string)");
+      c.join_data = joined->name;
+      if (!d->table.has_column(c.join_on) || !joined->table.has_column(c.join_on))
+        throw ProblemError(doc_.pos(on), "the column '" + c.join_on + "'", "a column of both '" + c.data + "' and '" + joined->name + "'");
+      for (const auto& col : joined->table.columns())
+        if (col != c.join_on && d->table.has_column(col))
+          throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
+    }
+    const auto has_column = [&](const std::string& n) { return d->table.has_column(n) || (joined && joined->table.has_column(n)); };
     // In the observation: the evaluated values are named as their tubes, the columns by name.
     const auto y_of = [&](const std::string& n) -> const VarSpec* {
       for (const VarSpec* y : ys)
@@ -380,7 +474,7 @@ class Loader {
     };
     auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
       if (const VarSpec* y = y_of(n)) return y->dim;
-      if (d->table.has_column(n)) return 1;
+      if (has_column(n)) return 1;
       const VarSpec* v = p_.var(n);
       if (v && !v->is_tube()) return v->dim;
       return std::nullopt;
@@ -388,18 +482,20 @@ class Loader {
     auto vec = [&](const std::string& n) {
       if (const VarSpec* y = y_of(n)) return y->kind == VarKind::TubeVector;
       const VarSpec* v = p_.var(n);
-      return !d->table.has_column(n) && v && v->kind == VarKind::Box;
+      return !has_column(n) && v && v->kind == VarKind::Box;
     };
     std::string known, names;
     for (const VarSpec* y : ys) {
       known += y->name + (y->kind == VarKind::TubeVector ? "[i]" : "") + " (the value " + y->name + "(t)), ";
       names += (names.empty() ? "" : ", ") + y->name;
     }
-    known += "the columns of '" + c.data + "'";
+    known += "the columns of '" + c.data + "'" + (joined ? " and '" + joined->name + "'" : "");
     for (const VarSpec& v : p_.vars)
       if (!v.is_tube()) known += ", " + v.name;
     read_expr(f, c, dims, vec, known);
-    for (const auto& col : d->table.columns())
+    std::vector<std::string> cols = d->table.columns();
+    if (joined) cols.insert(cols.end(), joined->table.columns().begin(), joined->table.columns().end());
+    for (const auto& col : cols)
       if (p_.var(col) && !y_of(col))
         throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
     c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
