@@ -107,18 +107,32 @@ struct TruthSpec {
   SourcePos pos;
 };
 
+// Fixed points drawn on every map (beacons, landmarks): one per row of a table.
+struct LandmarksSpec {
+  std::string data, x, y;  // the table and its two coordinate columns
+  SourcePos pos;
+};
+
 struct OutputSpec {
   std::vector<double> times;                             // results table rows
   std::vector<std::pair<std::string, std::size_t>> plot_tubes;  // variable, component; empty: all
   std::vector<std::pair<std::string, std::pair<std::size_t, std::size_t>>> maps;  // variable, (i, j)
   std::optional<TruthSpec> truth;
+  std::optional<LandmarksSpec> landmarks;
 };
 
 // [network]: how the propagation runs. ratio: a contractor's arguments wake
 // their other contractors when they shrank by more than this share (0: the
-// true fixed point; none: the network's default).
+// true fixed point; none: the network's default). order: the order the
+// constraints enter the network, hence their order in the first round and in
+// the queue: "file" (as written), or "cost" (the cheap ones first: the
+// evaluations, which touch a few slices, then the pointwise expressions, and
+// the whole-tube contractors last).
+enum class ConstraintOrder { File, Cost };
+
 struct NetworkSpec {
   std::optional<double> ratio;
+  ConstraintOrder order = ConstraintOrder::File;
   SourcePos pos;
 };
 

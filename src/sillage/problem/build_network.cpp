@@ -1,5 +1,6 @@
 #include "sillage/problem/build_network.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sillage/ctc/ctc_function.h"
@@ -137,9 +138,29 @@ const VarDomain& BuiltProblem::var(const std::string& name) const {
 }
 
 std::size_t BuiltProblem::constraint_of_node(std::size_t n) const {
-  std::size_t c = 0;
-  while (c + 1 < first_node.size() && first_node[c + 1] <= n) ++c;
+  std::size_t c = order.empty() ? 0 : order[0];  // the last one, in add order, to start at or before n
+  for (const std::size_t i : order)
+    if (first_node[i] <= n) c = i;
   return c;
+}
+
+std::vector<std::size_t> constraint_order(const Problem& p) {
+  std::vector<std::size_t> order(p.constraints.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (p.network.order == ConstraintOrder::Cost) {
+    const auto rank = [&](std::size_t i) {
+      switch (p.constraints[i].kind) {
+        case ConstraintKind::Eval: return 0;
+        case ConstraintKind::Expr: return 1;
+        case ConstraintKind::Increment: return 2;
+        case ConstraintKind::Heading: return 3;
+        case ConstraintKind::Deriv: return 4;
+      }
+      return 5;
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  }
+  return order;
 }
 
 std::size_t BuiltProblem::memory_bytes() const {
@@ -207,8 +228,11 @@ BuiltProblem build_network(const Problem& p, double delta) {
     const VarSpec* v = p.var(n);
     return v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
   };
-  for (const ConstraintSpec& c : p.constraints) {
-    b.first_node.push_back(cn.nb_ctc());
+  b.first_node.assign(p.constraints.size(), 0);
+  b.order = constraint_order(p);
+  for (const std::size_t ci : b.order) {
+    const ConstraintSpec& c = p.constraints[ci];
+    b.first_node[ci] = cn.nb_ctc();
     switch (c.kind) {
       case ConstraintKind::Expr: {
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims, vec, "");

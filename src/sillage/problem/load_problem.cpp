@@ -505,7 +505,12 @@ class Loader {
 
   // ---- [network] ----
   void read_network(const toml::table& t) {
-    const Fields f(doc_, t, "[network]", {"ratio"});
+    const Fields f(doc_, t, "[network]", {"ratio", "order"});
+    if (const toml::node* o = f.find("order")) {
+      const std::string os = f.string(*o, "\"file\" or \"cost\"");
+      if (os == "cost") p_.network.order = ConstraintOrder::Cost;
+      else if (os != "file") throw ProblemError(doc_.pos(*o), describe(*o), "\"file\" or \"cost\"");
+    }
     p_.network.pos = f.pos();
     if (const toml::node* r = f.find("ratio")) {
       const double v = f.number(*r, "a ratio in [0, 1)");
@@ -540,7 +545,26 @@ class Loader {
   }
 
   void read_output(const toml::table& t) {
-    const Fields f(doc_, t, "[output]", {"times", "plots", "maps", "truth"});
+    const Fields f(doc_, t, "[output]", {"times", "plots", "maps", "truth", "landmarks"});
+    if (const toml::node* ln = f.find("landmarks")) {
+      const Fields lf(doc_, f.table(*ln, "a table {data = \"NAME\", columns = [\"x\", \"y\"]}"), "[output] landmarks",
+                      {"data", "columns"});
+      LandmarksSpec l;
+      l.pos = doc_.pos(*ln);
+      const DataSpec& d = data_table(lf, lf.require("data", "a [data.NAME] table"));
+      l.data = d.name;
+      const toml::node& cn = lf.require("columns", "two columns [\"x\", \"y\"]");
+      const toml::array& a = lf.array(cn, "two columns [\"x\", \"y\"]");
+      if (a.size() != 2) throw ProblemError(doc_.pos(cn), describe(cn), "two columns [\"x\", \"y\"]");
+      for (const toml::node& c : a) {
+        const std::string col = lf.string(c, "a column name");
+        if (!d.table.has_column(col))
+          throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+      }
+      l.x = a.get(0)->as_string()->get();
+      l.y = a.get(1)->as_string()->get();
+      p_.output.landmarks = l;
+    }
     if (const toml::node* ts = f.find("times"))
       for (const toml::node& n : f.array(*ts, "an array of times")) {
         const double v = f.number(n, "a time (number)");

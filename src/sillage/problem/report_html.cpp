@@ -127,9 +127,19 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       std::optional<Trajectory> ti, tj;
       if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
       const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
+      const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
       h << figure_block(
-          [&] { return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr); },
-          "Map " + title + (cols ? " (truth in red)" : ""));
+          [&] {
+            Figure f = tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr);
+            if (marks) {
+              const CsvTable& t = p.table(marks->data)->table;
+              for (std::size_t r = 0; r < t.nb_rows(); ++r)
+                f.draw_point(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]}, 5.0,
+                             Style{"#e53935", "#b71c1c", 1.0, 1.0, ""});
+            }
+            return f;
+          },
+          "Map " + title + (cols ? " (truth in red)" : "") + (marks ? ", landmarks of '" + marks->data + "' as red dots" : ""));
     }
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())

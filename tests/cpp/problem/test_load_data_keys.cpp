@@ -146,3 +146,42 @@ TEST(LoadDataKeys, EnvironmentInDataPaths) {
   expect_error("[data.s]\nfile = \"${SILLAGE_TEST_DIR:-" + data_dir() + "}/nothing.csv\"\n", data_dir() + "/nothing.csv");
   expect_error("[data.s]\nfile = \"${SILLAGE_TEST_DIR/stamps.csv\"\n", "found an unclosed ${");
 }
+
+TEST(LoadDataKeys, LandmarksOnTheMaps) {
+  const std::string head = "[time]\ndomain = [0, 2]\ndelta = 0.5\n" + table("beacons", "beacons.csv") +
+                           "[var.p]\nkind = \"tube_vector\"\ndim = 2\nvalue = [\"[-1, 12]\", \"[-1, 12]\"]\n"
+                           "[[constraint]]\nkind = \"expr\"\nexpr = \"p[0] - p[1]\"\n[output]\n";
+  const Problem p = parse(head + "landmarks = { data = \"beacons\", columns = [\"bx\", \"by\"] }\n");
+  ASSERT_TRUE(p.output.landmarks);
+  EXPECT_EQ(p.output.landmarks->x, "bx");
+  expect_error(head + "landmarks = { data = \"beacons\", columns = [\"bx\", \"bz\"] }\n",
+               "found the column 'bz' missing from table 'beacons'");
+  expect_error(head + "landmarks = { data = \"beacons\", columns = [\"bx\"] }\n",
+               "found an array of 1 element(s), expected two columns [\"x\", \"y\"]");
+}
+
+// [network] order = "cost": the same fixed point (ratio 0), constraints
+// entering the network cheap first; an emptiness still names the constraint
+// of the file that found it.
+TEST(LoadDataKeys, CostOrderSameFixedPoint) {
+  std::string text = problem_test::read_file(problem_test::problems_dir() + "/drifting_clock.toml");
+  Problem file = parse(text);
+  Problem cost = file;
+  cost.network.order = ConstraintOrder::Cost;
+  const std::vector<std::size_t> order = constraint_order(cost);
+  EXPECT_EQ(order.front(), 5u);  // the eval first
+  const SolveResult a = solve_problem(file), b = solve_problem(cost);
+  ASSERT_FALSE(a.empty || b.empty);
+  for (const char* v : {"h", "y", "w"}) {
+    const Tube &ta = (*a.built.var(v).tubes)[0], &tb = (*b.built.var(v).tubes)[0];
+    for (std::size_t k = 0; k < ta.nb_slices(); ++k) ASSERT_EQ(ta.slice(k), tb.slice(k)) << v << " slice " << k;
+  }
+  expect_error(text.replace(text.find("ratio = 0"), 9, "ratio = 0\norder = \"fast\""),
+               "found a string \"fast\", expected \"file\" or \"cost\"");
+  text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  text.replace(text.find("value = \"[-10, 10]\""), 19, "value = \"[5, 10]\"");
+  Problem bad = parse(text + "[network]\norder = \"cost\"\n");
+  const SolveResult e = solve_problem(bad);
+  ASSERT_TRUE(e.empty);
+  EXPECT_NE(e.why_empty.find("constraint"), std::string::npos) << e.why_empty;
+}
