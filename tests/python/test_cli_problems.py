@@ -89,3 +89,20 @@ def test_plaza1_real_data(tmp_path):
     html = (tmp_path / "report.html").read_text()
     first_map = html[html.index("<svg"):html.index("</svg>")]
     assert first_map.count('<circle') == 4 and first_map.count('fill="#e53935"') == 4
+
+
+def test_loops_in_the_report(tmp_path):
+    """[output] loops: the t-plane of the velocity in the report, the one
+    crossing of the figure eight proven, its figures drawn in Chromium."""
+    from test_cli_report import PROBE, chromium_console
+    solve("figure_eight.toml", tmp_path)
+    html = (tmp_path / "report.html").read_text()
+    assert "1 detections, 1 complete, 1 proven loops (degree test), 1 unique loops (Newton)" in html
+    assert "The t-plane: detections of loops" in html and "The loops on the map" in html
+    nb_svg = html.count("<svg")
+    probe = tmp_path / "probe.html"
+    probe.write_text(html.replace("</body>", PROBE + "</body>"))
+    lines = chromium_console(probe)
+    assert [l for l in lines if not l.startswith("SVG ")] == []
+    sizes = [l for l in lines if l.startswith("SVG ")]
+    assert len(sizes) == nb_svg and all(float(l[4:].split("x")[0]) > 100 for l in sizes)

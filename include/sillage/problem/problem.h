@@ -113,12 +113,22 @@ struct LandmarksSpec {
   SourcePos pos;
 };
 
+// Loops of the path (thesis ch. 6): the t-plane of the velocity v (a 2-D
+// tube vector), or of the position p and its derivative v (7.28) when p is
+// given; paving down to eps (time units; default (tf - t0)/2000).
+struct LoopsSpec {
+  std::string v, p;
+  std::optional<double> eps;
+  SourcePos pos;
+};
+
 struct OutputSpec {
   std::vector<double> times;                             // results table rows
   std::vector<std::pair<std::string, std::size_t>> plot_tubes;  // variable, component; empty: all
   std::vector<std::pair<std::string, std::pair<std::size_t, std::size_t>>> maps;  // variable, (i, j)
   std::optional<TruthSpec> truth;
   std::optional<LandmarksSpec> landmarks;
+  std::optional<LoopsSpec> loops;
 };
 
 // [network]: how the propagation runs. ratio: a contractor's arguments wake

@@ -2,9 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "sillage/figures/html.h"
+#include "sillage/figures/loops_map_figure.h"
+#include "sillage/figures/tplane_figure.h"
+#include "sillage/problem/problem_loops.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
@@ -49,6 +53,38 @@ std::string figure_block(const std::function<Figure()>& make, const std::string&
     return "<figure><p class=\"note\">" + xml_escape(caption) + ": not drawn (" + xml_escape(e.what()) + ")</p></figure>\n";
   }
   return "<figure>" + svg + "<figcaption>" + xml_escape(caption) + "</figcaption></figure>\n";
+}
+
+// [output] loops: the counts, the complete detections and the t-plane and map figures.
+std::string loops_section(const Problem& p, const BuiltProblem& b) {
+  std::ostringstream h;
+  h << "<h2>Loops (t-plane)</h2>\n";
+  std::optional<TPlane> tp;
+  try {
+    tp = find_loops(p, b);
+  } catch (const Error& e) {
+    h << "<p class=\"note\">Loops not computed: " << xml_escape(e.what()) << "</p>\n";
+    return h.str();
+  }
+  const LoopsSpec& l = *p.output.loops;
+  h << "<p id=\"loops\">t-plane of " << xml_escape(l.p.empty() ? l.v : l.p + ", " + l.v) << " paved to ε = " << fmt(tp->eps())
+    << ": " << tp->nb_detections() << " detections, " << tp->nb_complete_detections() << " complete, " << tp->nb_proofs()
+    << " proven loops (degree test), " << tp->nb_newton_proofs() << " unique loops (Newton).</p>\n";
+  h << "<table id=\"loop_table\"><tr><th>[t1]</th><th>[t2]</th><th>map box</th><th>degree</th><th>loops</th></tr>";
+  for (const Loop& loop : tp->detections()) {
+    if (!loop.complete()) continue;
+    h << "<tr><td>" << itv(loop.t_box()[0]) << "</td><td>" << itv(loop.t_box()[1]) << "</td><td>"
+      << itv(loop.map_box()[0]) << " × " << itv(loop.map_box()[1]) << "</td><td>"
+      << (loop.degree() ? std::to_string(*loop.degree()) : std::string("?")) << "</td><td>"
+      << (loop.count() ? std::to_string(*loop.count()) : std::string("?")) << "</td></tr>";
+  }
+  h << "</table>\n";
+  h << figure_block([&] { return tplane_figure(*tp, nullptr, "t-plane of " + (l.p.empty() ? l.v : l.p)); },
+                    "The t-plane: detections of loops, proven ones marked");
+  const TubeVector* pos = l.p.empty() ? nullptr : b.var(l.p).tubes.get();
+  h << figure_block([&] { return loops_map_figure(*tp, nullptr, nullptr, pos, nullptr, "Loops on the map"); },
+                    std::string("The loops on the map") + (pos ? "" : " (positions relative to the start)"));
+  return h.str();
 }
 
 }  // namespace
@@ -162,6 +198,8 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       }
     }
   }
+
+  if (p.output.loops && !r.empty) h << loops_section(p, b);
 
   h << "<h2>Truth check</h2>\n";
   if (!p.output.truth) h << "<p class=\"note\">No ground truth given ([output.truth]).</p>\n";
