@@ -2,7 +2,9 @@
 examples/problems/line_ranges.toml (x' = v, v = cos(t) ± 0.01, an unknown start,
 ranges to beacons at uncertain times), solved by sillage.solve without writing
 a network; the stated bounds go through example_args.bound. The same file runs
-with `sillage solve examples/problems/line_ranges.toml`."""
+with `sillage solve examples/problems/line_ranges.toml`. Then the loops of
+examples/problems/figure_eight.toml (a path known from its velocity within
+± 0.01), found by sillage.find_loops from the file's [output] loops."""
 import math
 from pathlib import Path
 
@@ -28,6 +30,25 @@ def problem_text():
     return text.replace('file = "data/', f'file = "{PROBLEMS.as_posix()}/data/')
 
 
+def figure_eight_loops(out):
+    """The proven loops of figure_eight.toml: its one crossing (t = pi/2, 3 pi/2)."""
+    e = bound(0.01)
+    text = (PROBLEMS / "figure_eight.toml").read_text().replace("[-0.01, 0.01]", f"[{-e!r}, {e!r}]")
+    path = out / "figure_eight.toml"
+    path.write_text(text)
+    p = sillage.load_problem(str(path))
+    r = sillage.solve_problem(p)
+    if r.empty:
+        print(f"  figure eight: NO SOLUTION: {r.why_empty}")
+        return False
+    tp = sillage.find_loops(p, r)
+    proven = [l for l in tp.detections() if l.complete() and l.proven()]
+    print(f"  figure eight: {tp.nb_detections()} detection(s), {len(proven)} proven loop(s)",
+          *[f"t1 in {l.t_box()[0]}, t2 in {l.t_box()[1]}" for l in proven])
+    return len(proven) == 1 and proven[0].t_box()[0].contains(math.pi / 2) and \
+        proven[0].t_box()[1].contains(3 * math.pi / 2)
+
+
 def main():
     out = out_dir(__doc__)
     path = out / "line_ranges.toml"
@@ -38,12 +59,12 @@ def main():
     if not r.empty:  # the truth: x(t) = sin(t) + 1, v(t) = cos(t)
         inside = sum(1 for i in range(201)
                      if x(0.1 * i).contains(math.sin(0.1 * i) + 1) and v(0.1 * i).contains(math.cos(0.1 * i)))
-    ok = not r.empty and inside == 201
     print("A robot on a line localised by ranges, from a problem file")
     if r.empty:
         print(f"  NO SOLUTION: {r.why_empty}")
     else:
         print(f"  x(0) in {x(0.0)} (truth 1), max thickness {x.max_thickness():.3g}, 201 truth samples: {inside} inside")
+    ok = not r.empty and inside == 201 and figure_eight_loops(out)
     fig, ax = plt.subplots(figsize=(8, 3))
     if not r.empty:
         plot.plot_tube(ax, x)

@@ -108,6 +108,7 @@
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem.h"
 #include "sillage/problem/problem_error.h"
+#include "sillage/problem/problem_loops.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/write_results.h"

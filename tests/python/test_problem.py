@@ -48,3 +48,14 @@ def test_load_problem_errors_name_the_place(tmp_path):
     assert "3 nodes" in sillage.check_summary(p)
     r = sillage.solve_problem(p, delta=0.5)
     assert r.schedule[0]["slices"] == 128
+
+
+def test_find_loops_and_constraint_order():
+    p = sillage.load_problem(str(PROBLEMS / "figure_eight.toml"))
+    r = sillage.solve_problem(p)
+    tp = sillage.find_loops(p, r)
+    assert isinstance(tp, sillage.TPlane)
+    assert tp.nb_complete_detections() == 1 and tp.nb_proofs() == 1
+    (loop,) = [l for l in tp.detections() if l.complete()]
+    assert loop.t_box()[0].contains(math.pi / 2) and loop.t_box()[1].contains(3 * math.pi / 2)
+    assert sillage.constraint_order(sillage.load_problem(str(PROBLEMS / "drifting_clock.toml"))) == [0, 1, 2, 3, 4, 5]

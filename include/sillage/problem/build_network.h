@@ -33,13 +33,17 @@ struct BuiltProblem {
   std::shared_ptr<TDomain> td;
   std::vector<VarDomain> vars;  // in the order of Problem::vars
   std::unique_ptr<ContractorNetwork> cn;
-  std::vector<std::size_t> first_node;  // per constraint: its first node in the network
+  std::vector<std::size_t> first_node;  // per constraint (file order): its first node in the network
+  std::vector<std::size_t> order;       // the constraints in the order they entered the network
   std::size_t extra_domains = 0;        // per-row times, values and columns of the evals
   const VarDomain& var(const std::string& name) const;
   // The constraint that added node n.
   std::size_t constraint_of_node(std::size_t n) const;
   std::size_t memory_bytes() const;  // the tubes and boxes
 };
+
+// The order the constraints of p enter the network (indices into p.constraints).
+std::vector<std::size_t> constraint_order(const Problem& p);
 
 // δ > 0. Error (ProblemError) for a bound or a row that cannot be built.
 BuiltProblem build_network(const Problem& p, double delta);

@@ -16,7 +16,11 @@ namespace sillage {
 
 struct TimeSpec {
   double t0 = 0, tf = 0;
-  std::optional<double> delta;  // none: "auto"
+  std::optional<double> delta;  // none: "auto" (or the time points of a table)
+  // points = {data, column}: the time points are a table's column (strictly
+  // increasing), one slice between consecutive stamps; no delta then.
+  std::vector<double> points;
+  std::string points_data;
   SourcePos pos;
 };
 
@@ -43,17 +47,26 @@ struct GateSpec {
   SourcePos pos;
 };
 
+// The slices of a tube from a table (one row per slice of the time points of
+// [time] points = {...}): `value` is an expression of the row's columns and
+// dt (the slice's width), e.g. "delta_heading + dt*[-0.005, 0.005]".
+struct SliceDataSpec {
+  std::string data;
+  BoundSpec value;
+};
+
 struct VarSpec {
   std::string name;
   VarKind kind = VarKind::Tube;
   std::size_t dim = 1;
   std::vector<BoundSpec> value;  // one per component
   std::vector<GateSpec> at;      // tubes only
+  std::optional<SliceDataSpec> slices;  // scalar tubes only, with time points from data
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -64,13 +77,27 @@ struct ConstraintSpec {
   // the tube's name), the row's columns and other variables.
   std::string expr;
   SourcePos expr_pos;
-  std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: y, y' = v
-  // Eval: one CtcEval per row of `data`, at time column `time` ± time_error;
-  // each column c of `errors` is c ± errors[c] (other columns: exact). The
+  // Heading (CtcHeading): position p (tube_vector, dim 2), heading psi,
+  // distance per slice dist, turn rate omega (tubes), track error (rad, as written).
+  std::string p, psi, dist, omega, track = "0";
+  std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: ys[0], vs[0]
+  // Eval: per kept row of `data`, one time t_i and one CtcEval z = y(t_i) per
+  // tube y of `ys` (with y' = vs[j] unless ""), all at the same t_i. t_i is
+  // the stamp column ± time_error (one column), the hull of two columns
+  // [lb, ub] ± time_error, or the whole time domain (no column: an unknown
+  // time the observations contract). Each column c of `errors` is c ±
+  // errors[c] (other columns: the cell as written, enclosed to one ulp). The
   // errors are kept as written (decimal text), enclosed rigorously.
-  std::string data, time_column;
+  std::vector<std::string> ys, vs;
+  std::string data;
+  std::vector<std::string> time_columns;
   std::string time_error = "0";
   std::map<std::string, std::string> errors;
+  std::map<std::string, double> where;  // rows kept: column == value (all of them)
+  // join = {data, on}: each row also has the columns of the row of table
+  // join_data with the same value in column join_on (ranges -> beacons).
+  std::string join_data, join_on;
+  bool gates = false;                   // time points at the bounds of every t_i
   SourcePos pos;
 };
 
@@ -80,11 +107,43 @@ struct TruthSpec {
   SourcePos pos;
 };
 
+// Fixed points drawn on every map (beacons, landmarks): one per row of a table.
+struct LandmarksSpec {
+  std::string data, x, y;  // the table and its two coordinate columns
+  SourcePos pos;
+};
+
+// Loops of the path (thesis ch. 6): the t-plane of the velocity v (a 2-D
+// tube vector), or of the position p and its derivative v (7.28) when p is
+// given; paving down to eps (time units; default (tf - t0)/2000).
+struct LoopsSpec {
+  std::string v, p;
+  std::optional<double> eps;
+  SourcePos pos;
+};
+
 struct OutputSpec {
   std::vector<double> times;                             // results table rows
   std::vector<std::pair<std::string, std::size_t>> plot_tubes;  // variable, component; empty: all
   std::vector<std::pair<std::string, std::pair<std::size_t, std::size_t>>> maps;  // variable, (i, j)
   std::optional<TruthSpec> truth;
+  std::optional<LandmarksSpec> landmarks;
+  std::optional<LoopsSpec> loops;
+};
+
+// [network]: how the propagation runs. ratio: a contractor's arguments wake
+// their other contractors when they shrank by more than this share (0: the
+// true fixed point; none: the network's default). order: the order the
+// constraints enter the network, hence their order in the first round and in
+// the queue: "file" (as written), or "cost" (the cheap ones first: the
+// evaluations, which touch a few slices, then the pointwise expressions, and
+// the whole-tube contractors last).
+enum class ConstraintOrder { File, Cost };
+
+struct NetworkSpec {
+  std::optional<double> ratio;
+  ConstraintOrder order = ConstraintOrder::File;
+  SourcePos pos;
 };
 
 struct Problem {
@@ -95,6 +154,7 @@ struct Problem {
   std::vector<VarSpec> vars;
   std::vector<ConstraintSpec> constraints;
   OutputSpec output;
+  NetworkSpec network;
 
   const VarSpec* var(const std::string& name) const;
   const DataSpec* table(const std::string& name) const;

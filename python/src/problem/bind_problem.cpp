@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
+#include "sillage/problem/problem_loops.h"
 #include "sillage/problem/solve_problem.h"
 
 namespace sillage::python {
@@ -104,6 +105,17 @@ void init_problem(py::module_& m) {
       py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
       py::arg("budget_seconds") = 60.0,
       "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
+  m.def(
+      "find_loops",
+      [](const Problem& p, const SolveResult& r) {
+        py::gil_scoped_release release;
+        return find_loops(p, r.built);
+      },
+      py::arg("problem"), py::arg("result"),
+      "The loops asked by the problem's [output] loops over the solved domains (GIL released): a TPlane with "
+      "its detections and proofs (thesis ch. 6).");
+  m.def("constraint_order", &constraint_order, py::arg("problem"),
+        "The order the problem's constraints enter the network ([network] order): indices into the file's constraints.");
 }
 
 }  // namespace sillage::python

@@ -1,10 +1,12 @@
 #include "sillage/problem/build_network.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
@@ -26,6 +28,85 @@ Interval constant_text(const std::string& text, const SourcePos& pos) {
   const Interval x = constant(BoundSpec{text, pos});
   if (x.is_empty() || x.lb() < 0) throw ProblemError(pos, "the error " + text, "an error >= 0");
   return x;
+}
+
+// A CSV cell as written: its decimal text is within half an ulp of the
+// double read, so the double's neighbours enclose it.
+Interval cell(double d) { return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)); }
+
+bool row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values) {
+  for (const auto& [col, value] : c.where)
+    if (values[table.column(col)] != value) return false;
+  return true;
+}
+
+// The time of an eval row: the stamp ± error, or [lb, ub] ± error, or the
+// whole domain (unknown), within the domain (empty: outside it).
+Interval row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
+                  const Interval& terr, const Interval& domain) {
+  if (c.time_columns.empty()) return domain;
+  Interval t = cell(values[table.column(c.time_columns[0])]);
+  if (c.time_columns.size() == 2) t |= cell(values[table.column(c.time_columns[1])]);
+  return (t + Interval(-1, 1) * terr) & domain;
+}
+
+// The observation when it only says "each evaluated value is a column"
+// ("y - z", "(h - tau, y - z)"): per tube of c.ys its column, so z_i is the
+// column's interval itself, as a hand-written network does (no CtcFunction,
+// and CtcEval starts from the measurement). None for any other expression.
+std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, const CsvTable& table,
+                                                       const std::vector<const VarDomain*>& ys) {
+  std::string e;
+  for (char ch : c.expr)
+    if (!std::isspace(static_cast<unsigned char>(ch))) e += ch;
+  if (ys.size() > 1) {
+    if (e.size() < 2 || e.front() != '(' || e.back() != ')') return std::nullopt;
+    e = e.substr(1, e.size() - 2);
+  }
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = e.find(',', start);
+    parts.push_back(e.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != ys.size()) return std::nullopt;
+  std::vector<std::string> cols(ys.size());
+  for (std::size_t j = 0; j < ys.size(); ++j) {
+    const std::size_t minus = parts[j].find('-');
+    if (minus == std::string::npos || ys[j]->spec->kind != VarKind::Tube) return std::nullopt;
+    const std::string y = parts[j].substr(0, minus), col = parts[j].substr(minus + 1);
+    if (y != c.ys[j] || !table.has_column(col)) return std::nullopt;
+    cols[j] = col;
+  }
+  return cols;
+}
+
+// The slices of x from a table (row k: slice k of [time] points), after the
+// time points added since (gates of 'at', of evals) split some of them.
+// Gate k: the hull of the slices around it (a value per period, not a
+// continuous trajectory: it may jump at the stamps).
+void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
+  const CsvTable& table = p.table(s.data)->table;
+  std::vector<std::string> names = table.columns();
+  names.push_back("dt");
+  const Function f(names, s.value.expr);
+  const std::vector<double>& pts = p.time.points;
+  const TDomain& td = *x.tdomain();
+  IntervalVector args(names.size());
+  std::vector<Interval> slices(x.nb_slices());
+  std::size_t row = 0;
+  for (std::size_t k = 0; k < x.nb_slices(); ++k) {
+    while (row + 1 < table.nb_rows() && pts[row + 1] <= td.t(k)) ++row;
+    const std::vector<double>& values = table.row(row);
+    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+    args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
+    slices[k] = x.slice(k) & f.eval(args);
+  }
+  std::vector<Interval> gates(slices.size() + 1);
+  for (std::size_t k = 0; k < gates.size(); ++k)
+    gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < slices.size() ? slices[k] : slices[k - 1]);
+  x = Tube(x.tdomain(), slices, gates);
 }
 
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
@@ -57,9 +138,29 @@ const VarDomain& BuiltProblem::var(const std::string& name) const {
 }
 
 std::size_t BuiltProblem::constraint_of_node(std::size_t n) const {
-  std::size_t c = 0;
-  while (c + 1 < first_node.size() && first_node[c + 1] <= n) ++c;
+  std::size_t c = order.empty() ? 0 : order[0];  // the last one, in add order, to start at or before n
+  for (const std::size_t i : order)
+    if (first_node[i] <= n) c = i;
   return c;
+}
+
+std::vector<std::size_t> constraint_order(const Problem& p) {
+  std::vector<std::size_t> order(p.constraints.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (p.network.order == ConstraintOrder::Cost) {
+    const auto rank = [&](std::size_t i) {
+      switch (p.constraints[i].kind) {
+        case ConstraintKind::Eval: return 0;
+        case ConstraintKind::Expr: return 1;
+        case ConstraintKind::Increment: return 2;
+        case ConstraintKind::Heading: return 3;
+        case ConstraintKind::Deriv: return 4;
+      }
+      return 5;
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  }
+  return order;
 }
 
 std::size_t BuiltProblem::memory_bytes() const {
@@ -69,23 +170,38 @@ std::size_t BuiltProblem::memory_bytes() const {
 }
 
 std::size_t nb_slices_for(const Problem& p, double delta) {
+  if (!p.time.points.empty()) return p.time.points.size() - 1;
   return static_cast<std::size_t>(std::ceil((p.time.tf - p.time.t0) / delta));
 }
 
 BuiltProblem build_network(const Problem& p, double delta) {
   BuiltProblem b;
-  b.td = TDomain::create(p.time.t0, p.time.tf, delta);
+  b.td = p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points);
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
       if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
+  for (const ConstraintSpec& c : p.constraints) {
+    if (c.kind != ConstraintKind::Eval || !c.gates) continue;
+    const CsvTable& table = p.table(c.data)->table;
+    const Interval terr = constant_text(c.time_error, c.pos);
+    for (std::size_t row = 0; row < table.nb_rows(); ++row) {
+      if (!row_kept(c, table, table.row(row))) continue;
+      const Interval t = row_time(c, table, table.row(row), terr, b.td->t0_tf());
+      if (t.is_empty()) continue;
+      for (const double s : {t.lb(), t.ub()})
+        if (s > p.time.t0 && s < p.time.tf) b.td->sample(s);
+    }
+  }
   b.cn = std::make_unique<ContractorNetwork>();
   ContractorNetwork& cn = *b.cn;
+  if (p.network.ratio) cn.set_ratio(*p.network.ratio);
   for (const VarSpec& v : p.vars) {
     VarDomain d;
     d.spec = std::make_shared<const VarSpec>(v);
     if (v.is_tube()) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
+      if (v.slices) set_slices(comps[0], p, *v.slices);
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
       for (const GateSpec& g : v.at) {
         const std::size_t k = static_cast<std::size_t>(b.td->time_index(g.t));
@@ -112,8 +228,11 @@ BuiltProblem build_network(const Problem& p, double delta) {
     const VarSpec* v = p.var(n);
     return v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
   };
-  for (const ConstraintSpec& c : p.constraints) {
-    b.first_node.push_back(cn.nb_ctc());
+  b.first_node.assign(p.constraints.size(), 0);
+  b.order = constraint_order(p);
+  for (const std::size_t ci : b.order) {
+    const ConstraintSpec& c = p.constraints[ci];
+    b.first_node[ci] = cn.nb_ctc();
     switch (c.kind) {
       case ConstraintKind::Expr: {
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims, vec, "");
@@ -132,16 +251,39 @@ BuiltProblem build_network(const Problem& p, double delta) {
         else cn.add(ctc, {x.tubes, v.tubes});
         break;
       }
+      case ConstraintKind::Heading: {
+        const VarDomain& pos = b.var(c.p);
+        const auto scalar = [&](const std::string& n) { return b.var(n).tubes->shared_component(0); };
+        cn.add(std::make_shared<CtcHeading>(constant_text(c.track, c.pos).ub()),
+               {pos.tubes, scalar(c.psi), scalar(c.dist), scalar(c.omega)});
+        break;
+      }
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
-        const VarDomain& y = b.var(c.x);
-        const bool scalar = y.spec->kind == VarKind::Tube;
+        const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;
+        std::map<double, std::size_t> join_rows;  // value of join_on -> row of the joined table
+        if (joined)
+          for (std::size_t r = 0; r < joined->nb_rows(); ++r) join_rows.emplace(joined->row(r)[joined->column(c.join_on)], r);
+        const auto has_column = [&](const std::string& n) { return data.table.has_column(n) || (joined && joined->has_column(n)); };
+        std::vector<const VarDomain*> ys;
+        for (const std::string& y : c.ys) ys.push_back(&b.var(y));
+        const auto y_index = [&](const std::string& n) {
+          for (std::size_t j = 0; j < c.ys.size(); ++j)
+            if (c.ys[j] == n) return j;
+          return c.ys.size();
+        };
+        const auto whole = [](const VarDomain& y) {
+          return y.spec->kind == VarKind::Tube ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
+        };
         auto dims_eval = [&](const std::string& n) -> std::optional<std::size_t> {
-          if (n == c.x) return y.spec->dim;
-          if (data.table.has_column(n)) return 1;
+          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->dim;
+          if (has_column(n)) return 1;
           return dims(n);
         };
-        auto vec_eval = [&](const std::string& n) { return n == c.x ? !scalar : !data.table.has_column(n) && vec(n); };
+        auto vec_eval = [&](const std::string& n) {
+          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->kind == VarKind::TubeVector;
+          return !has_column(n) && vec(n);
+        };
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims_eval, vec_eval, "");
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();
@@ -149,31 +291,48 @@ BuiltProblem build_network(const Problem& p, double delta) {
         const Interval terr = constant_text(c.time_error, c.pos);
         std::map<std::string, Interval> errs;
         for (const auto& [col, text] : c.errors) errs[col] = constant_text(text, c.pos);
-        const std::size_t tcol = data.table.column(c.time_column);
+        const std::vector<double>* join_values = nullptr;  // the joined row of the current row
+        const auto measured = [&](const std::vector<double>& values, const std::string& col) {
+          const auto it = errs.find(col);
+          const Interval e = it == errs.end() ? Interval(0) : it->second;
+          const double v = data.table.has_column(col) ? values[data.table.column(col)] : (*join_values)[joined->column(col)];
+          return cell(v) + Interval(-1, 1) * e;
+        };
+        const auto direct = direct_columns(c, data.table, ys);
         for (std::size_t row = 0; row < data.table.nb_rows(); ++row) {
           const std::vector<double>& values = data.table.row(row);
-          auto t = std::make_shared<Interval>((Interval(values[tcol]) + Interval(-1, 1) * terr) & b.td->t0_tf());
-          if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
-          std::vector<DomainRef> args;
-          std::shared_ptr<Interval> z1;
-          std::shared_ptr<IntervalVector> zn;
-          if (scalar) z1 = std::make_shared<Interval>();
-          else zn = std::make_shared<IntervalVector>(y.spec->dim);
-          DomainRef y_ref = scalar ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
-          std::vector<DomainRef> eval_args{t, scalar ? DomainRef(z1) : DomainRef(zn), y_ref};
-          if (!c.v.empty()) {
-            const VarDomain& w = b.var(c.v);
-            eval_args.push_back(scalar ? DomainRef(w.tubes->shared_component(0)) : DomainRef(w.tubes));
+          if (!row_kept(c, data.table, values)) continue;
+          if (joined) {
+            const auto j = join_rows.find(values[data.table.column(c.join_on)]);
+            if (j == join_rows.end())
+              throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' with " + c.join_on + " = " +
+                                            number_text(values[data.table.column(c.join_on)]) + ", not in '" + c.join_data + "'",
+                                 "a matching row in '" + c.join_data + "'");
+            join_values = &joined->row(j->second);
           }
-          cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
-          b.extra_domains += 2;
+          auto t = std::make_shared<Interval>(row_time(c, data.table, values, terr, b.td->t0_tf()));
+          if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
+          ++b.extra_domains;
+          // One z per evaluated tube, all at the same time t.
+          std::vector<std::shared_ptr<Interval>> z1(ys.size());
+          std::vector<std::shared_ptr<IntervalVector>> zn(ys.size());
+          for (std::size_t j = 0; j < ys.size(); ++j) {
+            const VarDomain& y = *ys[j];
+            if (y.spec->kind == VarKind::Tube) z1[j] = std::make_shared<Interval>(direct ? measured(values, (*direct)[j]) : Interval());
+            else zn[j] = std::make_shared<IntervalVector>(y.spec->dim);
+            std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), whole(y)};
+            if (!c.vs[j].empty()) eval_args.push_back(whole(b.var(c.vs[j])));
+            cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
+            ++b.extra_domains;
+          }
+          if (direct) continue;
+          std::vector<DomainRef> args;
           for (const VarRef& ref : r.refs) {
-            if (ref.var == c.x) {
-              args.push_back(scalar ? DomainRef(z1) : DomainRef::component(zn, ref.component));
-            } else if (data.table.has_column(ref.var)) {
-              const auto it = errs.find(ref.var);
-              const Interval e = it == errs.end() ? Interval(0) : it->second;
-              args.push_back(std::make_shared<Interval>(Interval(values[data.table.column(ref.var)]) + Interval(-1, 1) * e));
+            const std::size_t j = y_index(ref.var);
+            if (j < ys.size()) {
+              args.push_back(z1[j] ? DomainRef(z1[j]) : DomainRef::component(zn[j], ref.component));
+            } else if (has_column(ref.var)) {
+              args.push_back(std::make_shared<Interval>(measured(values, ref.var)));
               ++b.extra_domains;
             } else {
               args.push_back(b.var(ref.var).component(ref.component));

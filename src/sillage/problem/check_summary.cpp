@@ -24,10 +24,16 @@ std::string line(const char* f, ...) {
 std::string check_summary(const Problem& p) {
   const double delta = p.time.delta ? *p.time.delta : (p.time.tf - p.time.t0) / 64;
   std::size_t slices = nb_slices_for(p, delta);
+  for (const ConstraintSpec& c : p.constraints)  // an upper bound: two gates per row
+    if (c.kind == ConstraintKind::Eval && c.gates) slices += 2 * p.table(c.data)->table.nb_rows();
   for (const VarSpec& v : p.vars) slices += v.at.size();  // an upper bound: 'at' times may sample the domain
   std::string s = line("%s: valid (hash %s)\n", p.file.c_str(), p.hash.c_str());
-  s += line("time [%g, %g], δ = %g%s, %zu slices at most\n", p.time.t0, p.time.tf, delta,
-            p.time.delta ? "" : " (auto: the first step)", slices);
+  if (p.time.points.empty())
+    s += line("time [%g, %g], δ = %g%s, %zu slices at most\n", p.time.t0, p.time.tf, delta,
+              p.time.delta ? "" : " (auto: the first step)", slices);
+  else
+    s += line("time [%g, %g], the %zu stamps of '%s', %zu slices at most\n", p.time.t0, p.time.tf, p.time.points.size(),
+              p.time.points_data.c_str(), slices);
   std::size_t bytes = 0, domains = 0, nodes = 0;
   s += "variables:\n";
   for (const VarSpec& v : p.vars) {

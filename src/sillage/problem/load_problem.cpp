@@ -55,22 +55,24 @@ class Loader {
       throw ProblemError(doc_.pos(e.source()), "invalid TOML: " + std::string(e.description()),
                          "a TOML file (https://toml.io)");
     }
-    const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output"});
-    read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
+    const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output", "network"});
     if (const toml::node* d = top.find("data"))
       for (auto&& [key, node] : top.table(*d, "tables [data.NAME]")) read_data(std::string(key.str()), key, node);
+    read_time(top.table(top.require("time", "a table [time] with domain = [t0, tf]"), "a table [time]"));
     const toml::node& vars = top.require("var", "tables [var.NAME]");
     for (auto&& [key, node] : top.table(vars, "tables [var.NAME]")) read_var(std::string(key.str()), key, node);
     const toml::node& cs = top.require("constraint", "one or more [[constraint]] tables");
     for (const toml::node& c : top.array(cs, "[[constraint]] tables")) read_constraint(top, c);
     if (const toml::node* o = top.find("output")) read_output(top.table(*o, "a table [output]"));
+    if (const toml::node* n = top.find("network")) read_network(top.table(*n, "a table [network]"));
     return std::move(p_);
   }
 
  private:
   // ---- [time] ----
   void read_time(const toml::table& t) {
-    const Fields f(doc_, t, "[time]", {"domain", "delta"});
+    const Fields f(doc_, t, "[time]", {"domain", "delta", "points"});
+    if (const toml::node* pn = f.find("points")) return read_time_points(f, *pn);
     const toml::node& d = f.require("domain", "[t0, tf]");
     const toml::array& a = f.array(d, "[t0, tf], two numbers");
     if (a.size() != 2) throw ProblemError(doc_.pos(d), describe(d), "[t0, tf], two numbers");
@@ -92,6 +94,41 @@ class Loader {
     }
   }
 
+  // [time] points = {data, column}: the stamps of a table.
+  void read_time_points(const Fields& f, const toml::node& pn) {
+    for (const char* k : {"domain", "delta"})
+      if (const toml::node* n = f.find(k))
+        throw ProblemError(doc_.pos(*n), std::string("'") + k + "' with 'points'",
+                           "either points = {data, column} or domain and delta");
+    const Fields pf(doc_, f.table(pn, "a table {data = \"NAME\", column = \"t\"}"), "[time] points", {"data", "column"});
+    const toml::node& dn = pf.require("data", "a [data.NAME] table");
+    const DataSpec& d = data_table(pf, dn);
+    const toml::node& cn = pf.require("column", "its time column");
+    const std::string col = pf.string(cn, "a column name (string)");
+    if (!d.table.has_column(col)) throw ProblemError(doc_.pos(cn), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+    p_.time.points = d.table.values(col);
+    p_.time.points_data = d.name;
+    p_.time.pos = doc_.pos(pn);
+    if (p_.time.points.size() < 2)
+      throw ProblemError(doc_.pos(cn), std::to_string(p_.time.points.size()) + " time point(s)", "at least 2");
+    for (std::size_t i = 1; i < p_.time.points.size(); ++i)
+      if (!(p_.time.points[i] > p_.time.points[i - 1]))
+        throw ProblemError(doc_.pos(cn), "the stamps of rows " + std::to_string(i - 1) + " and " + std::to_string(i) + " of '" +
+                                             d.name + "' not increasing (" + number_text(p_.time.points[i - 1]) + ", " +
+                                             number_text(p_.time.points[i]) + ")",
+                           "strictly increasing time points");
+    p_.time.t0 = p_.time.points.front();
+    p_.time.tf = p_.time.points.back();
+  }
+
+  const DataSpec& data_table(const Fields& f, const toml::node& dn) {
+    const std::string name = f.string(dn, "a data table name (string)");
+    if (const DataSpec* d = p_.table(name)) return *d;
+    std::string names;
+    for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
+    throw ProblemError(doc_.pos(dn), "the unknown table '" + name + "'", "a [data.NAME] table (" + names + ")");
+  }
+
   // ---- [data.NAME] ----
   void read_data(const std::string& name, const toml::key& key, const toml::node& node) {
     const SourcePos kp = doc_.pos(key.source());
@@ -102,7 +139,7 @@ class Loader {
     d.name = name;
     d.pos = kp;
     const toml::node& fn = f.require("file", "a CSV path relative to the problem file");
-    const std::string file = f.string(fn, "a CSV path (string)");
+    const std::string file = detail::expand_env(f.string(fn, "a CSV path (string)"), doc_.pos(fn));
     d.path = (base_ / file).lexically_normal().string();
     if (std::filesystem::is_directory(d.path))
       throw ProblemError(doc_.pos(fn), "the directory " + d.path, "a CSV file");
@@ -163,7 +200,7 @@ class Loader {
       throw ProblemError(kp, "the variable name '" + name + "'",
                          "an identifier (letters, digits, _; not __, not a function name)");
     const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
-                   "[var." + name + "]", {"kind", "dim", "value", "at"});
+                   "[var." + name + "]", {"kind", "dim", "value", "at", "slices"});
     VarSpec v;
     v.name = name;
     v.pos = kp;
@@ -201,8 +238,34 @@ class Loader {
         v.at.push_back(std::move(gs));
       }
     }
+    if (const toml::node* sn = f.find("slices")) v.slices = read_slices(f, *sn, v);
     if (p_.table(name)) throw ProblemError(kp, "the variable '" + name + "' named as a data table", "distinct names");
     p_.vars.push_back(std::move(v));
+  }
+
+  SliceDataSpec read_slices(const Fields& f, const toml::node& sn, const VarSpec& v) {
+    if (v.kind != VarKind::Tube) throw ProblemError(doc_.pos(sn), "'slices' for the " + std::string(kind_name(v.kind)) + " '" + v.name + "'", "'slices' on a tube");
+    if (p_.time.points.empty())
+      throw ProblemError(doc_.pos(sn), "'slices' without time points from data", "[time] points = {data, column}");
+    const Fields sf(doc_, f.table(sn, "a table {data = \"NAME\", value = \"expression\"}"), "the slices of " + v.name, {"data", "value"});
+    SliceDataSpec s;
+    const toml::node& dn = sf.require("data", "a [data.NAME] table, one row per slice");
+    const DataSpec& d = data_table(sf, dn);
+    s.data = d.name;
+    if (d.table.nb_rows() + 1 != p_.time.points.size())
+      throw ProblemError(doc_.pos(dn), "the table '" + d.name + "' of " + std::to_string(d.table.nb_rows()) + " rows",
+                         "one row per slice: " + std::to_string(p_.time.points.size() - 1) + " rows");
+    const toml::node& vn = sf.require("value", "an expression of the row's columns and dt");
+    s.value = {sf.bound_text(vn), detail::shifted(doc_.pos(vn), vn.is_string() ? 1 : 0)};
+    std::vector<std::string> names = d.table.columns();
+    names.push_back("dt");
+    try {
+      (void)detail::parse_expr(names, s.value.expr);
+    } catch (const ParseError& e) {
+      throw ProblemError(s.value.pos, std::string("the value \"") + s.value.expr + "\" (" + e.what() + ")",
+                         "an expression of the columns of '" + d.name + "' and dt");
+    }
+    return s;
   }
 
   // ---- [[constraint]] ----
@@ -216,7 +279,10 @@ class Loader {
   }
 
   const VarSpec& tube_var(const Fields& f, const char* key) {
-    const toml::node& n = f.require(key, "the name of a tube variable");
+    return tube_var(f, f.require(key, "the name of a tube variable"));
+  }
+
+  const VarSpec& tube_var(const Fields& f, const toml::node& n) {
     const std::string name = f.string(n, "the name of a tube variable (string)");
     const VarSpec* v = p_.var(name);
     if (!v || !v->is_tube())
@@ -231,7 +297,7 @@ class Loader {
     const toml::node* kn = t.get("kind");
     ConstraintSpec c;
     c.pos = doc_.pos(node);
-    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\" or \"eval\"";
+    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\", \"eval\" or \"heading\"";
     if (!kn) throw ProblemError(c.pos, "constraint " + std::to_string(index) + " without a kind", expected_kind);
     const std::string ks = top.string(*kn, expected_kind);
     const std::string where = "constraint " + std::to_string(index) + " (" + ks + ")";
@@ -261,8 +327,26 @@ class Loader {
       c.x = x.name;
       c.v = v.name;
       c.label = where + ": " + (ks == "deriv" ? c.x + "' = " + c.v : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
+    } else if (ks == "heading") {
+      const Fields f(doc_, t, where, {"kind", "p", "psi", "dist", "omega", "track"});
+      c.kind = ConstraintKind::Heading;
+      const VarSpec& p = tube_var(f, "p");
+      if (p.kind != VarKind::TubeVector || p.dim != 2)
+        throw ProblemError(doc_.pos(*f.find("p")), "'" + p.name + "' (" + kind_name(p.kind) + ", dim " + std::to_string(p.dim) + ")",
+                           "a position: a tube_vector of dim 2");
+      c.p = p.name;
+      for (auto [key, out] : {std::pair{"psi", &c.psi}, std::pair{"dist", &c.dist}, std::pair{"omega", &c.omega}}) {
+        const VarSpec& s = tube_var(f, key);
+        if (s.kind != VarKind::Tube) throw ProblemError(doc_.pos(*f.find(key)), "the tube_vector '" + s.name + "'", "a scalar tube");
+        *out = s.name;
+      }
+      if (const toml::node* tr = f.find("track")) {
+        if (!(f.number(*tr, "a track error >= 0 (rad)") >= 0)) throw ProblemError(doc_.pos(*tr), "a negative track error", "a track error >= 0");
+        c.track = f.bound_text(*tr);
+      }
+      c.label = where + ": " + c.p + " from " + c.dist + " along " + c.psi + " (track error " + c.track + ")";
     } else if (ks == "eval") {
-      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "expr"}), c, where);
+      read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr"}), c, where);
     } else {
       throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
     }
@@ -277,6 +361,18 @@ class Loader {
     (void)rewrite_refs(c.expr, c.expr_pos, dims, vec, known);
   }
 
+  // A string or an array of strings (at least one).
+  std::vector<const toml::node*> one_or_many(const Fields& f, const toml::node& n, const std::string& expected) {
+    std::vector<const toml::node*> out;
+    if (n.is_array()) {
+      for (const toml::node& e : f.array(n, expected)) out.push_back(&e);
+      if (out.empty()) throw ProblemError(doc_.pos(n), "an empty array", expected);
+    } else {
+      out.push_back(&n);
+    }
+    return out;
+  }
+
   void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where) {
     c.kind = ConstraintKind::Eval;
     const toml::node& dn = f.require("data", "the name of a [data.NAME] table");
@@ -287,14 +383,32 @@ class Loader {
       for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
       throw ProblemError(doc_.pos(dn), "the unknown table '" + c.data + "'", "a [data.NAME] table (" + names + ")");
     }
-    const VarSpec& y = tube_var(f, "y");
-    c.x = y.name;
-    if (f.find("v")) {
-      const VarSpec& v = tube_var(f, "v");
-      if (v.dim != y.dim || v.kind != y.kind)
-        throw ProblemError(doc_.pos(*f.find("v")), "'" + v.name + "'", "a derivative of the kind and dimension of '" + y.name + "'");
-      c.v = v.name;
+    std::vector<const VarSpec*> ys;
+    for (const toml::node* n : one_or_many(f, f.require("y", "a tube name or an array of them"),
+                                           "a tube name or an array of them")) {
+      const VarSpec& y = tube_var(f, *n);
+      for (const VarSpec* o : ys)
+        if (o == &y) throw ProblemError(doc_.pos(*n), "'" + y.name + "' twice", "distinct tubes in y");
+      ys.push_back(&y);
+      c.ys.push_back(y.name);
     }
+    c.vs.assign(ys.size(), "");
+    if (const toml::node* vn = f.find("v")) {
+      const auto vs = one_or_many(f, *vn, "a derivative tube per tube of y");
+      if (vs.size() != ys.size())
+        throw ProblemError(doc_.pos(*vn), std::to_string(vs.size()) + " derivative(s)",
+                           std::to_string(ys.size()) + " (one per tube of y, \"\" for none)");
+      for (std::size_t j = 0; j < vs.size(); ++j) {
+        if (vs[j]->is_string() && vs[j]->as_string()->get().empty()) continue;
+        const VarSpec& v = tube_var(f, *vs[j]);
+        if (v.dim != ys[j]->dim || v.kind != ys[j]->kind)
+          throw ProblemError(doc_.pos(*vs[j]), "'" + v.name + "'",
+                             "a derivative of the kind and dimension of '" + ys[j]->name + "'");
+        c.vs[j] = v.name;
+      }
+    }
+    c.x = c.ys[0];
+    c.v = c.vs[0];
     auto column = [&](const toml::node& n) {
       const std::string col = f.string(n, "a column name (string)");
       if (!d->table.has_column(col)) {
@@ -304,9 +418,16 @@ class Loader {
       }
       return col;
     };
-    c.time_column = column(f.require("time", "the time column of the table"));
+    if (const toml::node* tn = f.find("time")) {
+      const std::string expected = "a time column, or two columns [lb, ub]";
+      const auto cols = one_or_many(f, *tn, expected);
+      if (cols.size() > 2) throw ProblemError(doc_.pos(*tn), describe(*tn), expected);
+      for (const toml::node* n : cols) c.time_columns.push_back(column(*n));
+    }
     if (const toml::node* te = f.find("time_error")) {
       if (f.number(*te, "a time error >= 0") < 0) throw ProblemError(doc_.pos(*te), "a negative time error", "a time error >= 0");
+      if (c.time_columns.empty())
+        throw ProblemError(doc_.pos(*te), "a time error without a time column", "time = \"column\" with it");
       c.time_error = f.bound_text(*te);
     }
     if (const toml::node* er = f.find("errors")) {
@@ -319,28 +440,109 @@ class Loader {
         c.errors[std::string(key.str())] = f.bound_text(node);
       }
     }
-    // In the observation: the evaluated value is named as y, the columns by name.
+    if (const toml::node* wn = f.find("where")) {
+      for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
+        if (!d->table.has_column(std::string(key.str())))
+          throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
+                                                         c.data + "'", "a column of it");
+        c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
+      }
+    }
+    if (const toml::node* g = f.find("gates")) {
+      if (!g->is_boolean()) throw ProblemError(doc_.pos(*g), describe(*g), "true or false");
+      c.gates = g->as_boolean()->get();
+    }
+    const DataSpec* joined = nullptr;
+    if (const toml::node* jn = f.find("join")) {
+      const Fields jf(doc_, f.table(*jn, "a table {data = \"NAME\", on = \"column\"}"), where + " join", {"data", "on"});
+      joined = &data_table(jf, jf.require("data", "a [data.NAME] table"));
+      const toml::node& on = jf.require("on", "a column of both tables");
+      c.join_on = jf.string(on, "a column name (string)");
+      c.join_data = joined->name;
+      if (!d->table.has_column(c.join_on) || !joined->table.has_column(c.join_on))
+        throw ProblemError(doc_.pos(on), "the column '" + c.join_on + "'", "a column of both '" + c.data + "' and '" + joined->name + "'");
+      for (const auto& col : joined->table.columns())
+        if (col != c.join_on && d->table.has_column(col))
+          throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
+    }
+    const auto has_column = [&](const std::string& n) { return d->table.has_column(n) || (joined && joined->table.has_column(n)); };
+    // In the observation: the evaluated values are named as their tubes, the columns by name.
+    const auto y_of = [&](const std::string& n) -> const VarSpec* {
+      for (const VarSpec* y : ys)
+        if (y->name == n) return y;
+      return nullptr;
+    };
     auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
-      if (n == y.name) return y.dim;
-      if (d->table.has_column(n)) return 1;
+      if (const VarSpec* y = y_of(n)) return y->dim;
+      if (has_column(n)) return 1;
       const VarSpec* v = p_.var(n);
       if (v && !v->is_tube()) return v->dim;
       return std::nullopt;
     };
     auto vec = [&](const std::string& n) {
-      if (n == y.name) return y.kind == VarKind::TubeVector;
+      if (const VarSpec* y = y_of(n)) return y->kind == VarKind::TubeVector;
       const VarSpec* v = p_.var(n);
-      return !d->table.has_column(n) && v && v->kind == VarKind::Box;
+      return !has_column(n) && v && v->kind == VarKind::Box;
     };
-    std::string known = y.name + (y.kind == VarKind::TubeVector ? "[i]" : "") + " (the value y(t)), the columns of '" +
-                        c.data + "'";
+    std::string known, names;
+    for (const VarSpec* y : ys) {
+      known += y->name + (y->kind == VarKind::TubeVector ? "[i]" : "") + " (the value " + y->name + "(t)), ";
+      names += (names.empty() ? "" : ", ") + y->name;
+    }
+    known += "the columns of '" + c.data + "'" + (joined ? " and '" + joined->name + "'" : "");
     for (const VarSpec& v : p_.vars)
       if (!v.is_tube()) known += ", " + v.name;
     read_expr(f, c, dims, vec, known);
-    for (const auto& col : d->table.columns())
-      if (p_.var(col) && col != y.name)
+    std::vector<std::string> cols = d->table.columns();
+    if (joined) cols.insert(cols.end(), joined->table.columns().begin(), joined->table.columns().end());
+    for (const auto& col : cols)
+      if (p_.var(col) && !y_of(col))
         throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
-    c.label = where + ": " + c.expr + " = 0 at " + y.name + "(" + c.time_column + ") for every row of '" + c.data + "'";
+    c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
+              (c.time_columns.empty() ? std::string("t unknown") : c.time_columns[0]) + ") for every row of '" +
+              c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");
+  }
+
+  void read_loops(const Fields& f, const toml::node& ln) {
+    const Fields lf(doc_, f.table(ln, "a table {v = \"velocity\", p = \"position\", eps = width}"), "[output] loops",
+                    {"v", "p", "eps"});
+    LoopsSpec l;
+    l.pos = doc_.pos(ln);
+    for (auto [key, out] : {std::pair{"v", &l.v}, std::pair{"p", &l.p}}) {
+      const toml::node* n = lf.find(key);
+      if (!n) {
+        if (std::string(key) == "v") lf.require("v", "the velocity, a tube_vector of dim 2");
+        continue;
+      }
+      const VarSpec& v = tube_var(lf, *n);
+      if (v.kind != VarKind::TubeVector || v.dim != 2)
+        throw ProblemError(doc_.pos(*n), "'" + v.name + "' (" + kind_name(v.kind) + ", dim " + std::to_string(v.dim) + ")",
+                           "a tube_vector of dim 2");
+      *out = v.name;
+    }
+    if (const toml::node* e = lf.find("eps")) {
+      const double eps = lf.number(*e, "a paving width > 0 (time units)");
+      if (!(eps > 0) || (p_.time.tf - p_.time.t0) / eps > 1e6)
+        throw ProblemError(doc_.pos(*e), "eps = " + doc_.raw(*e), "a paving width in (0, tf - t0], at least (tf - t0)/1e6");
+      l.eps = eps;
+    }
+    p_.output.loops = l;
+  }
+
+  // ---- [network] ----
+  void read_network(const toml::table& t) {
+    const Fields f(doc_, t, "[network]", {"ratio", "order"});
+    if (const toml::node* o = f.find("order")) {
+      const std::string os = f.string(*o, "\"file\" or \"cost\"");
+      if (os == "cost") p_.network.order = ConstraintOrder::Cost;
+      else if (os != "file") throw ProblemError(doc_.pos(*o), describe(*o), "\"file\" or \"cost\"");
+    }
+    p_.network.pos = f.pos();
+    if (const toml::node* r = f.find("ratio")) {
+      const double v = f.number(*r, "a ratio in [0, 1)");
+      if (!(v >= 0 && v < 1)) throw ProblemError(doc_.pos(*r), "ratio = " + doc_.raw(*r), "a ratio in [0, 1)");
+      p_.network.ratio = v;
+    }
   }
 
   // ---- [output] ----
@@ -369,7 +571,27 @@ class Loader {
   }
 
   void read_output(const toml::table& t) {
-    const Fields f(doc_, t, "[output]", {"times", "plots", "maps", "truth"});
+    const Fields f(doc_, t, "[output]", {"times", "plots", "maps", "truth", "landmarks", "loops"});
+    if (const toml::node* ln = f.find("loops")) read_loops(f, *ln);
+    if (const toml::node* ln = f.find("landmarks")) {
+      const Fields lf(doc_, f.table(*ln, "a table {data = \"NAME\", columns = [\"x\", \"y\"]}"), "[output] landmarks",
+                      {"data", "columns"});
+      LandmarksSpec l;
+      l.pos = doc_.pos(*ln);
+      const DataSpec& d = data_table(lf, lf.require("data", "a [data.NAME] table"));
+      l.data = d.name;
+      const toml::node& cn = lf.require("columns", "two columns [\"x\", \"y\"]");
+      const toml::array& a = lf.array(cn, "two columns [\"x\", \"y\"]");
+      if (a.size() != 2) throw ProblemError(doc_.pos(cn), describe(cn), "two columns [\"x\", \"y\"]");
+      for (const toml::node& c : a) {
+        const std::string col = lf.string(c, "a column name");
+        if (!d.table.has_column(col))
+          throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+      }
+      l.x = a.get(0)->as_string()->get();
+      l.y = a.get(1)->as_string()->get();
+      p_.output.landmarks = l;
+    }
     if (const toml::node* ts = f.find("times"))
       for (const toml::node& n : f.array(*ts, "an array of times")) {
         const double v = f.number(n, "a time (number)");

@@ -30,6 +30,7 @@ const char* kind_name(ConstraintKind k) {
     case ConstraintKind::Deriv: return "deriv";
     case ConstraintKind::Increment: return "increment";
     case ConstraintKind::Eval: return "eval";
+    case ConstraintKind::Heading: return "heading";
   }
   return "?";
 }

@@ -2,9 +2,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "sillage/figures/html.h"
+#include "sillage/figures/loops_map_figure.h"
+#include "sillage/figures/tplane_figure.h"
+#include "sillage/problem/problem_loops.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
@@ -49,6 +53,38 @@ std::string figure_block(const std::function<Figure()>& make, const std::string&
     return "<figure><p class=\"note\">" + xml_escape(caption) + ": not drawn (" + xml_escape(e.what()) + ")</p></figure>\n";
   }
   return "<figure>" + svg + "<figcaption>" + xml_escape(caption) + "</figcaption></figure>\n";
+}
+
+// [output] loops: the counts, the complete detections and the t-plane and map figures.
+std::string loops_section(const Problem& p, const BuiltProblem& b) {
+  std::ostringstream h;
+  h << "<h2>Loops (t-plane)</h2>\n";
+  std::optional<TPlane> tp;
+  try {
+    tp = find_loops(p, b);
+  } catch (const Error& e) {
+    h << "<p class=\"note\">Loops not computed: " << xml_escape(e.what()) << "</p>\n";
+    return h.str();
+  }
+  const LoopsSpec& l = *p.output.loops;
+  h << "<p id=\"loops\">t-plane of " << xml_escape(l.p.empty() ? l.v : l.p + ", " + l.v) << " paved to ε = " << fmt(tp->eps())
+    << ": " << tp->nb_detections() << " detections, " << tp->nb_complete_detections() << " complete, " << tp->nb_proofs()
+    << " proven loops (degree test), " << tp->nb_newton_proofs() << " unique loops (Newton).</p>\n";
+  h << "<table id=\"loop_table\"><tr><th>[t1]</th><th>[t2]</th><th>map box</th><th>degree</th><th>loops</th></tr>";
+  for (const Loop& loop : tp->detections()) {
+    if (!loop.complete()) continue;
+    h << "<tr><td>" << itv(loop.t_box()[0]) << "</td><td>" << itv(loop.t_box()[1]) << "</td><td>"
+      << itv(loop.map_box()[0]) << " × " << itv(loop.map_box()[1]) << "</td><td>"
+      << (loop.degree() ? std::to_string(*loop.degree()) : std::string("?")) << "</td><td>"
+      << (loop.count() ? std::to_string(*loop.count()) : std::string("?")) << "</td></tr>";
+  }
+  h << "</table>\n";
+  h << figure_block([&] { return tplane_figure(*tp, nullptr, "t-plane of " + (l.p.empty() ? l.v : l.p)); },
+                    "The t-plane: detections of loops, proven ones marked");
+  const TubeVector* pos = l.p.empty() ? nullptr : b.var(l.p).tubes.get();
+  h << figure_block([&] { return loops_map_figure(*tp, nullptr, nullptr, pos, nullptr, "Loops on the map"); },
+                    std::string("The loops on the map") + (pos ? "" : " (positions relative to the start)"));
+  return h.str();
 }
 
 }  // namespace
@@ -127,9 +163,19 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       std::optional<Trajectory> ti, tj;
       if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
       const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
+      const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
       h << figure_block(
-          [&] { return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr); },
-          "Map " + title + (cols ? " (truth in red)" : ""));
+          [&] {
+            Figure f = tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr);
+            if (marks) {
+              const CsvTable& t = p.table(marks->data)->table;
+              for (std::size_t r = 0; r < t.nb_rows(); ++r)
+                f.draw_point(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]}, 5.0,
+                             Style{"#e53935", "#b71c1c", 1.0, 1.0, ""});
+            }
+            return f;
+          },
+          "Map " + title + (cols ? " (truth in red)" : "") + (marks ? ", landmarks of '" + marks->data + "' as red dots" : ""));
     }
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())
@@ -152,6 +198,8 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       }
     }
   }
+
+  if (p.output.loops && !r.empty) h << loops_section(p, b);
 
   h << "<h2>Truth check</h2>\n";
   if (!p.output.truth) h << "<p class=\"note\">No ground truth given ([output.truth]).</p>\n";

@@ -52,6 +52,13 @@ double mean_thickness(const BuiltProblem& b) {
 SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
   std::optional<double> fixed = o.delta ? o.delta : p.time.delta;
   if (o.auto_delta) fixed.reset();
+  if (!p.time.points.empty()) {
+    if (o.delta || o.auto_delta)
+      throw ProblemError(p.time.pos, "a delta (" + std::string(o.auto_delta ? "auto" : number_text(*o.delta)) +
+                                         ") for time points from the table '" + p.time.points_data + "'",
+                         "no delta: the slices are the periods of the data");
+    fixed = (p.time.tf - p.time.t0) / static_cast<double>(p.time.points.size() - 1);  // the mean period, for the reports
+  }
   SolveResult r;
   const auto start = std::chrono::steady_clock::now();
   double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;

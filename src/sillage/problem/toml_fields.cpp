@@ -1,6 +1,7 @@
 #include "sillage/problem/toml_fields.h"
 
 #include <cmath>
+#include <cstdlib>
 
 namespace sillage::detail {
 
@@ -96,6 +97,27 @@ std::string Fields::bound_text(const toml::node& n) const {
     return raw;
   }
   throw ProblemError(doc_.pos(n), describe(n), expected);
+}
+
+std::string expand_env(const std::string& path, const SourcePos& pos) {
+  std::string out;
+  for (std::size_t i = 0; i < path.size();) {
+    if (path.compare(i, 2, "${") != 0) {
+      out += path[i++];
+      continue;
+    }
+    const std::size_t end = path.find('}', i);
+    if (end == std::string::npos) throw ProblemError(pos, "an unclosed ${ in \"" + path + "\"", "${NAME} or ${NAME:-default}");
+    const std::string inner = path.substr(i + 2, end - i - 2);
+    const std::size_t sep = inner.find(":-");
+    const std::string name = inner.substr(0, sep);
+    const char* value = std::getenv(name.c_str());
+    if (value && *value) out += value;
+    else if (sep != std::string::npos) out += inner.substr(sep + 2);
+    else throw ProblemError(pos, "the environment variable " + name + " unset", "it set, or a default: ${" + name + ":-path}");
+    i = end + 1;
+  }
+  return out;
 }
 
 }  // namespace sillage::detail

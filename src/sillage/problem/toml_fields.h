@@ -22,6 +22,12 @@ struct Document {
   std::string raw(const toml::node& n) const;
 };
 
+// A path with ${NAME} or ${NAME:-default} replaced by the environment
+// variable NAME (or the default when NAME is unset or empty), so a problem
+// can name a data folder that lives outside the repository. ProblemError at
+// pos for an unset variable without a default or an unclosed ${.
+std::string expand_env(const std::string& path, const SourcePos& pos);
+
 // "a string \"abc\"", "an integer 3", "an array of 2 elements", "a table".
 std::string describe(const toml::node& n);
 

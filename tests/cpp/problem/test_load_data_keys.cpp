@@ -1,0 +1,187 @@
+// Keys that tie a problem to its data tables: [time] points (the stamps of a
+// table), tubes whose slices come from a table, the heading constraint
+// (CtcHeading), eval rows joined to another table, and ${VAR:-default} in
+// data paths. What they build, and their errors at their place.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "problem_text.h"
+#include "sillage/problem/solve_problem.h"
+
+using namespace sillage;
+using problem_test::error_of;
+using problem_test::parse;
+
+namespace {
+
+// A folder of small tables: 4 stamps, 3 periods, 2 beacons, 2 ranges.
+std::string data_dir() {
+  static const std::string dir = [] {
+    const auto d = std::filesystem::temp_directory_path() / ("sillage_data_keys_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    std::ofstream(d / "stamps.csv") << "t\n0\n0.5\n1.5\n2\n";
+    std::ofstream(d / "odo.csv") << "d,h\n0.5,0.1\n1,0.2\n0.5,0.3\n";
+    std::ofstream(d / "beacons.csv") << "id,bx,by\n3,10,0\n7,0,10\n";
+    std::ofstream(d / "ranges.csv") << "t,id,r\n1,3,9\n1.6,7,9\n1.8,9,1\n";
+    return d.string();
+  }();
+  return dir;
+}
+
+std::string table(const std::string& name, const std::string& file) {
+  return "[data." + name + "]\nfile = \"" + data_dir() + "/" + file + "\"\n";
+}
+
+const std::string kStamps = "[time]\npoints = { data = \"stamps\", column = \"t\" }\n";  // line 2 after the tables
+
+void expect_error(const std::string& text, const std::string& part) {
+  const std::string msg = error_of(text);
+  EXPECT_NE(msg.find(part), std::string::npos) << msg;
+}
+
+}  // namespace
+
+TEST(LoadDataKeys, TimePointsAndSlicesFromTables) {
+  const Problem p = parse(table("stamps", "stamps.csv") + table("odo", "odo.csv") + kStamps +
+                          "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d/dt + [-0.01, 0.01]\" }\n"
+                          "[var.x]\nkind = \"tube\"\nat = [{ t = 0, value = 0 }]\n"
+                          "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"d\"\n");
+  EXPECT_EQ(p.time.points, (std::vector<double>{0, 0.5, 1.5, 2}));
+  const SolveResult r = solve_problem(p);
+  ASSERT_FALSE(r.empty);
+  const Tube& d = (*r.built.var("d").tubes)[0];
+  ASSERT_EQ(d.nb_slices(), 3u);
+  EXPECT_TRUE(d.slice(0).contains(1.0) && d.slice(1).contains(1.0) && d.slice(2).contains(1.0));
+  EXPECT_LT(d.slice(1).diam(), 0.03);
+  EXPECT_TRUE(d.gate(1).contains(1.0));  // the hull of the slices around it
+  const Tube& x = (*r.built.var("x").tubes)[0];
+  EXPECT_TRUE(x.gate(3).contains(2.0));  // x' = 1 over [0, 2]
+  EXPECT_LT(x.gate(3).diam(), 0.05);
+  // A delta for time points from data is an error, not ignored.
+  SolveOptions o;
+  o.delta = 0.1;
+  EXPECT_THROW((void)solve_problem(p, o), ProblemError);
+}
+
+TEST(LoadDataKeys, TimePointsErrors) {
+  expect_error(table("stamps", "stamps.csv") + "[time]\npoints = { data = \"stamps\", column = \"t\" }\ndelta = 0.1\n",
+               "found 'delta' with 'points', expected either points = {data, column} or domain and delta");
+  expect_error(table("odo", "odo.csv") + "[time]\npoints = { data = \"odo\", column = \"d\" }\n",
+               "not increasing (1, 0.5), expected strictly increasing time points");
+  expect_error(table("stamps", "stamps.csv") + "[time]\npoints = { data = \"stamps\", column = \"u\" }\n",
+               "test.toml:4:38: found the column 'u' missing from table 'stamps'");
+  expect_error(table("stamps", "stamps.csv") + table("beacons", "beacons.csv") + kStamps +
+                   "[var.d]\nkind = \"tube\"\nslices = { data = \"beacons\", value = \"bx\" }\n",
+               "found the table 'beacons' of 2 rows, expected one row per slice: 3 rows");
+  expect_error("[time]\ndomain = [0, 1]\ndelta = 0.1\n" + table("odo", "odo.csv") +
+                   "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d\" }\n",
+               "found 'slices' without time points from data, expected [time] points = {data, column}");
+  expect_error(table("stamps", "stamps.csv") + table("odo", "odo.csv") + kStamps +
+                   "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d + q\" }\n",
+               "expected an expression of the columns of 'odo' and dt");
+}
+
+TEST(LoadDataKeys, HeadingConstraint) {
+  const std::string vars = "[var.p]\nkind = \"tube_vector\"\ndim = 2\nat = [{ t = 0, value = [0, 0] }]\n"
+                           "[var.psi]\nkind = \"tube\"\nvalue = \"[-0.01, 0.01]\"\n"
+                           "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d + [-0.01, 0.01]\" }\n"
+                           "[var.w]\nkind = \"tube\"\nvalue = \"[-0.1, 0.1]\"\n";
+  const std::string head = table("stamps", "stamps.csv") + table("odo", "odo.csv") + kStamps + vars;
+  const SolveResult r = solve_problem(parse(head + "[[constraint]]\nkind = \"heading\"\np = \"p\"\npsi = \"psi\"\n"
+                                               "dist = \"d\"\nomega = \"w\"\ntrack = 0.01\n"));
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  const TubeVector& p = *r.built.var("p").tubes;
+  // Heading about 0: the robot goes east by 0.5 + 1 + 0.5 = 2 (each ± 0.01).
+  EXPECT_TRUE(p[0].gate(3).contains(2.0));
+  EXPECT_LT(p[0].gate(3).diam(), 0.1);
+  EXPECT_LT(p[1].gate(3).diam(), 0.1);
+  expect_error(head + "[[constraint]]\nkind = \"heading\"\np = \"psi\"\npsi = \"psi\"\ndist = \"d\"\nomega = \"w\"\n",
+               "found 'psi' (tube, dim 1), expected a position: a tube_vector of dim 2");
+  expect_error(head + "[[constraint]]\nkind = \"heading\"\np = \"p\"\npsi = \"p\"\ndist = \"d\"\nomega = \"w\"\n",
+               "found the tube_vector 'p', expected a scalar tube");
+}
+
+// The ranges (t, id, r) joined to the beacons (id, bx, by): row 2's id 9 has
+// no beacon, an error naming the row; without it the robot is localised.
+TEST(LoadDataKeys, EvalRowsJoinedToAnotherTable) {
+  const std::string head = "[time]\ndomain = [0, 2]\ndelta = 0.1\n" + table("beacons", "beacons.csv") +
+                           table("ranges", "ranges.csv") +
+                           "[var.p]\nkind = \"tube_vector\"\ndim = 2\nvalue = [\"[-20, 20]\", \"[-20, 20]\"]\n"
+                           "[var.v]\nkind = \"tube_vector\"\ndim = 2\nvalue = [\"[-1, 1]\", \"[-1, 1]\"]\n"
+                           "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\njoin = { data = \"beacons\", on = \"id\" }\n"
+                           "y = \"p\"\nv = \"v\"\ntime = \"t\"\n";
+  const std::string obs = "expr = \"sqrt((p[0] - bx)^2 + (p[1] - by)^2) - r + [-0.1, 0.1]\"\n";
+  std::string msg;
+  try {
+    (void)solve_problem(parse(head + obs));
+  } catch (const ProblemError& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("row 2 of 'ranges' with id = 9, not in 'beacons'"), std::string::npos) << msg;
+  const SolveResult r = solve_problem(parse(head + "where = { r = 9 }\n" + obs));
+  ASSERT_FALSE(r.empty);
+  const TubeVector& p = *r.built.var("p").tubes;
+  // At t = 1 (a cell: 1 ± an ulp, so across gate 10) the robot is 9 ± 0.1
+  // from (10, 0): x >= 0.9 then, and >= 0.9 - 0.1 (|x'| <= 1 over a slice) at the gate.
+  EXPECT_GE(p[0].gate(10).lb(), 0.8 - 1e-9);
+  EXPECT_LT(p[0].gate(5).lb(), 0.8);
+  expect_error(head + "where = { r = 9 }\n" + obs + "", "");  // valid: no error
+  expect_error(table("beacons", "beacons.csv") + table("ranges", "ranges.csv") + "[time]\ndomain = [0, 2]\ndelta = 0.1\n" +
+                   "[var.p]\nkind = \"tube_vector\"\ndim = 2\n[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\n"
+                   "join = { data = \"beacons\", on = \"r\" }\ny = \"p\"\n" + obs,
+               "found the column 'r', expected a column of both 'ranges' and 'beacons'");
+}
+
+TEST(LoadDataKeys, EnvironmentInDataPaths) {
+  ::setenv("SILLAGE_TEST_DIR", data_dir().c_str(), 1);
+  const Problem p = parse("[data.s]\nfile = \"${SILLAGE_TEST_DIR}/stamps.csv\"\n" + kStamps.substr(0, 7) +
+                          "points = { data = \"s\", column = \"t\" }\n[var.x]\nkind = \"tube\"\n"
+                          "[[constraint]]\nkind = \"expr\"\nexpr = \"x\"\n");
+  EXPECT_EQ(p.time.points.size(), 4u);
+  ::unsetenv("SILLAGE_TEST_DIR");
+  expect_error("[data.s]\nfile = \"${SILLAGE_TEST_DIR}/stamps.csv\"\n", "test.toml:2:8: found the environment variable SILLAGE_TEST_DIR unset");
+  expect_error("[data.s]\nfile = \"${SILLAGE_TEST_DIR:-" + data_dir() + "}/nothing.csv\"\n", data_dir() + "/nothing.csv");
+  expect_error("[data.s]\nfile = \"${SILLAGE_TEST_DIR/stamps.csv\"\n", "found an unclosed ${");
+}
+
+TEST(LoadDataKeys, LandmarksOnTheMaps) {
+  const std::string head = "[time]\ndomain = [0, 2]\ndelta = 0.5\n" + table("beacons", "beacons.csv") +
+                           "[var.p]\nkind = \"tube_vector\"\ndim = 2\nvalue = [\"[-1, 12]\", \"[-1, 12]\"]\n"
+                           "[[constraint]]\nkind = \"expr\"\nexpr = \"p[0] - p[1]\"\n[output]\n";
+  const Problem p = parse(head + "landmarks = { data = \"beacons\", columns = [\"bx\", \"by\"] }\n");
+  ASSERT_TRUE(p.output.landmarks);
+  EXPECT_EQ(p.output.landmarks->x, "bx");
+  expect_error(head + "landmarks = { data = \"beacons\", columns = [\"bx\", \"bz\"] }\n",
+               "found the column 'bz' missing from table 'beacons'");
+  expect_error(head + "landmarks = { data = \"beacons\", columns = [\"bx\"] }\n",
+               "found an array of 1 element(s), expected two columns [\"x\", \"y\"]");
+}
+
+// [network] order = "cost": the same fixed point (ratio 0), constraints
+// entering the network cheap first; an emptiness still names the constraint
+// of the file that found it.
+TEST(LoadDataKeys, CostOrderSameFixedPoint) {
+  std::string text = problem_test::read_file(problem_test::problems_dir() + "/drifting_clock.toml");
+  Problem file = parse(text);
+  Problem cost = file;
+  cost.network.order = ConstraintOrder::Cost;
+  const std::vector<std::size_t> order = constraint_order(cost);
+  EXPECT_EQ(order.front(), 5u);  // the eval first
+  const SolveResult a = solve_problem(file), b = solve_problem(cost);
+  ASSERT_FALSE(a.empty || b.empty);
+  for (const char* v : {"h", "y", "w"}) {
+    const Tube &ta = (*a.built.var(v).tubes)[0], &tb = (*b.built.var(v).tubes)[0];
+    for (std::size_t k = 0; k < ta.nb_slices(); ++k) ASSERT_EQ(ta.slice(k), tb.slice(k)) << v << " slice " << k;
+  }
+  expect_error(text.replace(text.find("ratio = 0"), 9, "ratio = 0\norder = \"fast\""),
+               "found a string \"fast\", expected \"file\" or \"cost\"");
+  text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  text.replace(text.find("value = \"[-10, 10]\""), 19, "value = \"[5, 10]\"");
+  Problem bad = parse(text + "[network]\norder = \"cost\"\n");
+  const SolveResult e = solve_problem(bad);
+  ASSERT_TRUE(e.empty);
+  EXPECT_NE(e.why_empty.find("constraint"), std::string::npos) << e.why_empty;
+}

@@ -1,0 +1,108 @@
+// The keys of an eval constraint beyond one stamped tube: several tubes at one
+// time (y, v arrays), an unknown time (no time column), a time interval from
+// two columns, rows kept by 'where', gates at the times; and [network] ratio.
+// What the loader reads, its errors at their place, and what the network does
+// with them.
+#include <gtest/gtest.h>
+
+#include "problem_text.h"
+#include "sillage/problem/solve_problem.h"
+
+using namespace sillage;
+using problem_test::error_of;
+using problem_test::parse;
+
+namespace {
+
+// beacon_ranges.csv: t, b, r (nine rows, b in {2, -1}).
+const std::string kHead = "[time]\ndomain = [0, 20]\ndelta = 0.05\n[data.ranges]\nfile = \"data/beacon_ranges.csv\"\n"
+                          "[var.x]\nkind = \"tube\"\nvalue = \"[-10, 10]\"\n"
+                          "[var.v]\nkind = \"tube\"\nvalue = \"cos(t) + [-0.01, 0.01]\"\n"
+                          "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"v\"\n";  // 15 lines
+
+std::string eval(const std::string& keys) {
+  return kHead + "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\n" + keys + "expr = \"abs(x - b) - r\"\n";
+}
+
+void expect_error(const std::string& text, const std::string& part) {
+  const std::string msg = error_of(text);
+  EXPECT_NE(msg.find(part), std::string::npos) << msg;
+}
+
+}  // namespace
+
+TEST(LoadEval, ReadsTheNewKeys) {
+  const Problem p = parse(eval("y = [\"x\"]\nv = [\"v\"]\ntime = [\"t\", \"t\"]\ntime_error = 0.01\nwhere = { b = 2 }\n"
+                               "gates = true\nerrors = { r = 0.001 }\n") + "[network]\nratio = 0\n");
+  const ConstraintSpec& c = p.constraints[1];
+  EXPECT_EQ(c.ys, std::vector<std::string>{"x"});
+  EXPECT_EQ(c.vs, std::vector<std::string>{"v"});
+  EXPECT_EQ(c.time_columns, (std::vector<std::string>{"t", "t"}));
+  EXPECT_EQ(c.where.at("b"), 2.0);
+  EXPECT_TRUE(c.gates);
+  ASSERT_TRUE(p.network.ratio);
+  EXPECT_EQ(*p.network.ratio, 0.0);
+}
+
+TEST(LoadEval, ErrorsAtTheirPlace) {
+  expect_error(eval("y = \"x\"\ntime = [\"t\", \"b\", \"r\"]\n"),
+               "test.toml:20:8: found an array of 3 element(s), expected a time column, or two columns [lb, ub]");
+  expect_error(eval("y = [\"x\", \"v\"]\nv = \"v\"\ntime = \"t\"\n"),
+               "test.toml:20:5: found 1 derivative(s), expected 2 (one per tube of y, \"\" for none)");
+  expect_error(eval("y = \"x\"\ntime = \"t\"\nwhere = { beacon = 2 }\n"),
+               "test.toml:21:11: found the column 'beacon' missing from table 'ranges'");
+  expect_error(eval("y = \"x\"\ntime = \"t\"\ngates = 1\n"), "test.toml:21:9: found an integer 1, expected true or false");
+  expect_error(eval("y = \"x\"\ntime_error = 0.1\n"), "test.toml:20:14: found a time error without a time column");
+  expect_error(eval("y = [\"x\", \"x\"]\ntime = \"t\"\n"), "found 'x' twice, expected distinct tubes in y");
+  expect_error(eval("y = []\ntime = \"t\"\n"), "test.toml:19:5: found an empty array");
+  expect_error(eval("y = \"x\"\ntime = \"t\"\n") + "[network]\nratio = 1\n", "found ratio = 1, expected a ratio in [0, 1)");
+}
+
+TEST(LoadEval, WhereKeepsTheRowsAndGatesSampleTheTimes) {
+  const auto all = build_network(parse(eval("y = \"x\"\nv = \"v\"\ntime = \"t\"\ntime_error = 0.01\n")), 0.05);
+  const auto two = build_network(parse(eval("y = \"x\"\nv = \"v\"\ntime = \"t\"\ntime_error = 0.01\nwhere = { b = 2 }\n")), 0.05);
+  EXPECT_EQ(all.cn->nb_ctc(), 1u + 9 * 2);  // the deriv, then per row a CtcEval and its observation
+  const CsvTable table = CsvTable::read(problem_test::problems_dir() + "/data/beacon_ranges.csv");
+  std::size_t rows_b2 = 0;
+  for (std::size_t i = 0; i < table.nb_rows(); ++i) rows_b2 += table.row(i)[table.column("b")] == 2;
+  EXPECT_EQ(two.cn->nb_ctc(), 1 + 2 * rows_b2);
+  EXPECT_GT(rows_b2, 0u);
+  EXPECT_LT(rows_b2, 9u);
+  EXPECT_EQ(all.td->nb_slices(), 400u);
+  const auto gated = build_network(parse(eval("y = \"x\"\nv = \"v\"\ntime = \"t\"\ntime_error = 0.01\ngates = true\n")), 0.05);
+  EXPECT_GT(gated.td->nb_slices(), 400u);
+  const double t0 = table.row(0)[table.column("t")];
+  bool lower_is_a_gate = false;  // t - 0.01, enclosed outward: a time point just below
+  for (std::size_t k = 0; k <= gated.td->nb_slices(); ++k)
+    lower_is_a_gate |= gated.td->t(k) <= t0 - 0.01 && gated.td->t(k) > t0 - 0.01 - 1e-12;
+  EXPECT_TRUE(lower_is_a_gate);
+}
+
+// Without a time column the time is unknown: the evaluations contract it.
+// x = sin(t) + 1 ranges, two tubes at one time: x and a copy u = x.
+TEST(LoadEval, UnknownTimeSharedByTwoTubes) {
+  const Problem p = parse(kHead + "[var.u]\nkind = \"tube\"\n[[constraint]]\nkind = \"expr\"\nexpr = \"u - x\"\n"
+                          "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\ny = [\"x\", \"u\"]\nv = [\"v\", \"\"]\n"
+                          "expr = \"(abs(x - b) - r, u - x)\"\n");
+  const SolveResult r = solve_problem(p);
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  EXPECT_EQ(r.built.cn->nb_ctc(), 2u + 9 * 3);  // per row: two CtcEval, one observation
+  EXPECT_EQ(r.built.extra_domains, 9u * (1 + 2 + 2));  // t, two z, the columns b and r
+  // The truth stays inside.
+  const Tube& x = (*r.built.var("x").tubes)[0];
+  for (int i = 0; i <= 20; ++i) EXPECT_TRUE(x(i * 1.0).contains(std::sin(i * 1.0) + 1)) << i;
+}
+
+// A CSV cell is its decimal as written: the double read and its neighbours
+// enclose it. One row kept (where t = 1.90), its r (0.053700) copied into a
+// constant.
+TEST(LoadEval, CellsEncloseTheirDecimal) {
+  const SolveResult r = solve_problem(parse(kHead + "[var.a]\nkind = \"interval\"\n" +
+                                            "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\ny = \"x\"\n"
+                                            "time = \"t\"\nwhere = { t = 1.90 }\nexpr = \"a - r + 0*x\"\n"));
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  const Interval decimal = Function({"t"}, "0.053700").eval(IntervalVector{Interval(0)});
+  const Interval& a = *r.built.var("a").interval;
+  EXPECT_TRUE(decimal.is_subset(a)) << a;
+  EXPECT_LT(a.diam(), 1e-16);
+}
