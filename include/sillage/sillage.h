@@ -70,6 +70,7 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"
+#include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ctc_qeval.h"
