@@ -5,6 +5,7 @@
 // slice per odometry period):
 //   ψ(t_{k+1}) − ψ(t_k) ∈ Δψ_k + δ_k [−b, b]        (CtcIncrement: gyro bias b)
 //   ψ' ∈ [−ω_max, ω_max]                             (CtcDeriv: the slices of ψ)
+//   ψ'' ∈ [−α, α]                                    (CtcSecondDeriv: the slices of ψ)
 //   p(t_{k+1}) − p(t_k) ∈ d_k (cos, sin)(ψ over the slice ± track),
 //     d_k ∈ (d_k [1 − ε, 1 + ε] + [−o, u]) ∩ [0, ∞)  (CtcHeading, both ways:
 //                                                      positions and heading)
@@ -31,6 +32,7 @@
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_qeval.h"
+#include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/interval/elementary.h"
 
@@ -83,6 +85,8 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   ContractorNetwork cn;
   cn.add(std::make_shared<CtcIncrement>(), {psi, dpsi_t});
   cn.add(std::make_shared<CtcDeriv>(), {psi, omega});
+  // |ψ''| <= α: inside a period the heading stays within α δ² / 8 of the chord of its gates.
+  cn.add(std::make_shared<CtcSecondDeriv>(), {psi, std::make_shared<Tube>(td, Interval(-b.turn_accel, b.turn_accel))});
   // The odometry increments, both ways: the heading gives the positions, the positions the heading.
   cn.add(std::make_shared<CtcHeading>(b.track), {s.p, psi, dist_t, omega});
   // The same over windows of heading_window seconds, one every eighth of a window: the heading

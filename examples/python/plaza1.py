@@ -19,7 +19,7 @@ import plaza1_bounds
 from bound_audit import print_audit
 from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
 from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
-                     Function,
+                     CtcSecondDeriv, Function,
                      Interval, IntervalVector, TDomain, Tube, TubeObservation, TubeVector)
 
 def load(folder):
@@ -66,6 +66,8 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None):
     dist_t, dpsi_t = slice_tube(td, dist), slice_tube(td, dpsi)
     cn.add(CtcIncrement(), [psi, dpsi_t])
     cn.add(CtcDeriv(), [psi, omega])
+    # |psi''| <= alpha: inside a period the heading stays within alpha delta^2 / 8 of the chord of its gates
+    cn.add(CtcSecondDeriv(), [psi, Tube(td, Interval(-b.turn_accel, b.turn_accel))])
     # the odometry increments, both ways: the heading gives the positions, the positions the heading
     cn.add(CtcHeading(b.track), [p, psi, dist_t, omega])
     # the same over windows, one every eighth of a window: the heading from the direction of travel

@@ -74,6 +74,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ctc_qeval.h"
+#include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/gomne_tube.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/dynamics/tube_nodes.h"
