@@ -3,7 +3,7 @@
 bow of a parabola, the network form and errors."""
 import pytest
 import sillage
-from sillage import ContractorNetwork, CtcSecondDeriv, Interval, TDomain, Tube, TubeVector
+from sillage import ContractorNetwork, CtcSecondDeriv, Interval, TDomain, Tube
 
 import contractor_kit as kit
 
@@ -54,4 +54,4 @@ def test_ctc_second_deriv_empty_and_errors():
     assert not CtcSecondDeriv().contract(x, Tube(td, Interval.empty()))
     assert x.is_empty()
     with pytest.raises(sillage.DimensionError):
-        CtcSecondDeriv().contract(TubeVector(td, 2), TubeVector(td, 3))
+        CtcSecondDeriv().contract(Tube(td), Tube(TDomain(0.0, 1.0, 0.5)))

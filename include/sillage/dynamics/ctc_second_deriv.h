@@ -11,14 +11,13 @@
 //
 // Empty: an empty slice or gate of x, or an empty [a], empties x; contract
 // returns false. In a ContractorNetwork: cn.add(ctc, {x, a}) with tubes or
-// tube vectors.
+// tube vectors (as many components).
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "sillage/cn/network_ctc.h"
 #include "sillage/tube/tube.h"
-#include "sillage/tube/tube_vector.h"
 
 namespace sillage {
 
@@ -28,9 +27,9 @@ class CtcSecondDeriv : public NetworkCtc {
   std::string name() const override { return "CtcSecondDeriv"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
-  // DimensionError if x and a are not on one TDomain (or differ in size).
+  // DimensionError if x and a are not on one TDomain. Tube vectors: in a
+  // network, cn.add(ctc, {x, a}), component by component.
   bool contract(Tube& x, const Tube& a) const;
-  bool contract(TubeVector& x, const TubeVector& a) const;
 };
 
 }  // namespace sillage

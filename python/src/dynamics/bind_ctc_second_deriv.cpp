@@ -24,14 +24,8 @@ ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
             return c.contract(x, a);
           },
           py::arg("x"), py::arg("a"),
-          "Contracts the slices of the tube x in place with x'' in the slices of a; returns False if x is empty.")
-      .def(
-          "contract",
-          [](const CtcSecondDeriv& c, TubeVector& x, const TubeVector& a) {
-            py::gil_scoped_release release;
-            return c.contract(x, a);
-          },
-          py::arg("x"), py::arg("a"), "The same for a tube vector x, component by component.");
+          "Contracts the slices of the tube x in place with x'' in the slices of a; returns False if x is empty. "
+          "Tube vectors: ContractorNetwork.add(CtcSecondDeriv(), [x, a]).");
 }
 
 }  // namespace sillage::python

@@ -25,17 +25,6 @@ bool CtcSecondDeriv::contract(Tube& x, const Tube& a) const {
   return ok;
 }
 
-bool CtcSecondDeriv::contract(TubeVector& x, const TubeVector& a) const {
-  if (x.size() != a.size()) {
-    throw DimensionError("CtcSecondDeriv::contract(x, a): x has " + std::to_string(x.size()) + " components, a " +
-                         std::to_string(a.size()));
-  }
-  bool ok = true;
-  for (std::size_t c = 0; c < x.size() && ok; ++c) ok = contract(x[c], a[c]);
-  if (!ok) x.set(IntervalVector(x.size(), Interval::empty()));  // no trajectory: every component empty
-  return ok;
-}
-
 std::shared_ptr<const CnNode> CtcSecondDeriv::make_node(const std::vector<BoundDomain>& args) const {
   return make_tube_pair_node(*this, args);
 }

@@ -100,15 +100,17 @@ TEST(CtcSecondDeriv, NetworkEqualsTheDirectCall) {
   EXPECT_TRUE(nx->is_subset(x) && x.is_subset(*nx));
 }
 
-TEST(CtcSecondDeriv, TubeVectorsAndErrors) {
+TEST(CtcSecondDeriv, TubeVectorsInANetworkAndErrors) {
   const auto td = TDomain::create(std::vector<double>{0.0, 1.0});
-  TubeVector x(td, 2);
-  x.set_gate(0, IntervalVector{Interval(0.0), Interval(1.0)});
-  x.set_gate(1, IntervalVector{Interval(0.0), Interval(1.0)});
-  ASSERT_TRUE(CtcSecondDeriv().contract(x, TubeVector(td, IntervalVector{Interval(-8.0, 8.0), Interval(0.0)})));
-  EXPECT_EQ(x[0].slice(0), Interval(-1.0, 1.0));
-  EXPECT_EQ(x[1].slice(0), Interval(1.0));
-  EXPECT_THROW(CtcSecondDeriv().contract(x, TubeVector(td, 3)), DimensionError);
+  auto x = std::make_shared<TubeVector>(td, 2);
+  x->set_gate(0, IntervalVector{Interval(0.0), Interval(1.0)});
+  x->set_gate(1, IntervalVector{Interval(0.0), Interval(1.0)});
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcSecondDeriv>(),
+         {x, std::make_shared<TubeVector>(td, IntervalVector{Interval(-8.0, 8.0), Interval(0.0)})});
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_EQ((*x)[0].slice(0), Interval(-1.0, 1.0));
+  EXPECT_EQ((*x)[1].slice(0), Interval(1.0));
   Tube y(td);
   EXPECT_THROW(CtcSecondDeriv().contract(y, Tube(TDomain::create(0.0, 1.0, 0.5))), DimensionError);
 }
