@@ -89,11 +89,11 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   cn.add(std::make_shared<CtcSecondDeriv>(), {psi, std::make_shared<Tube>(td, Interval(-b.turn_accel, b.turn_accel))});
   // The odometry increments, both ways: the heading gives the positions, the positions the heading.
   cn.add(std::make_shared<CtcHeading>(b.track), {s.p, psi, dist_t, omega});
-  // The same over windows of heading_window seconds, one every eighth of a window: the heading
+  // The same over windows of heading_window seconds, one every quarter of a window: the heading
   // from the direction of travel measured by the positions, against the gyro's relative heading.
   if (heading_window > 0) {
     const double dt = (d.t.back() - d.t.front()) / static_cast<double>(n);
-    const auto stride = static_cast<std::size_t>(std::max(1.0, std::round(heading_window / 8 / dt)));
+    const auto stride = static_cast<std::size_t>(std::max(1.0, std::round(heading_window / 4 / dt)));
     cn.add(std::make_shared<CtcHeadingWindow>(heading_window, b.track, b.turn_accel, stride),
            {s.p, psi, dist_t, dpsi_t, omega});
   }

@@ -70,10 +70,10 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None):
     cn.add(CtcSecondDeriv(), [psi, Tube(td, Interval(-b.turn_accel, b.turn_accel))])
     # the odometry increments, both ways: the heading gives the positions, the positions the heading
     cn.add(CtcHeading(b.track), [p, psi, dist_t, omega])
-    # the same over windows, one every eighth of a window: the heading from the direction of travel
+    # the same over windows, one every quarter of a window: the heading from the direction of travel
     # measured by the positions, against the gyro's relative heading
     if window > 0:
-        stride = max(1, round(window / 8 / ((d["t"][-1] - d["t"][0]) / n)))
+        stride = max(1, round(window / 4 / ((d["t"][-1] - d["t"][0]) / n)))
         cn.add(CtcHeadingWindow(window, b.track, b.turn_accel, stride), [p, psi, dist_t, dpsi_t, omega])
     cn.add(CtcFunction(Function(["a", "s", "h", "e"], "a - s*cos(h + e)")), [v[0], speed, psi, track])
     cn.add(CtcFunction(Function(["a", "s", "h", "e"], "a - s*sin(h + e)")), [v[1], speed, psi, track])

@@ -16,47 +16,53 @@ namespace {
 constexpr double kCell = 0.01;
 constexpr int kMaxCells = 128;
 
-// The model of the turn: ψ(τ) − ψ(t_j) on slice j, from the increment, the
-// turn rate and the turn acceleration.
-struct Turn {
-  const TDomain& td;
-  const TubeData &dpsi, &w;
-  double accel;
-  Interval inside(std::size_t j) const {
-    const Interval delta = td.slice_width(j), inc = dpsi.slices[j];
-    Interval r = Interval::all_reals();
-    // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
-    if (!w.slices[j].is_unbounded()) r &= (inc + Interval(-1, 1) * Interval(w.slices[j].mag()) * delta) / Interval(2.0);
-    // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
-    if (std::isfinite(accel)) r &= (Interval(0.0) | inc) + Interval(-1, 1) * Interval(accel) * sqr(delta) / Interval(8.0);
-    return r;
+// Per slice j, what every window reads: the distance [d](j) ∩ [0, ∞), the
+// increment [Δψ](j), and the spread of the direction of travel about ψ(t_j):
+// the turn inside the slice (from the turn rate and the turn acceleration)
+// plus the track error.
+struct WindowSlices {
+  std::vector<Interval> dist, spread;
+  const std::vector<Interval>& inc;
+  bool empty = false;  // d is empty somewhere
+  WindowSlices(const TDomain& td, const TubeData& d, const TubeData& dpsi, const TubeData& w, double accel,
+               const Interval& tr)
+      : dist(d.slices.size()), spread(d.slices.size()), inc(dpsi.slices) {
+    for (std::size_t j = 0; j < dist.size(); ++j) {
+      dist[j] = d.slices[j] & Interval::pos_reals();
+      empty = empty || dist[j].is_empty();
+      const Interval delta = td.slice_width(j);
+      Interval r = Interval::all_reals();
+      // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
+      if (!w.slices[j].is_unbounded()) {
+        r &= (inc[j] + Interval(-1, 1) * Interval(w.slices[j].mag()) * delta) / Interval(2.0);
+      }
+      // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
+      if (std::isfinite(accel)) r &= (Interval(0.0) | inc[j]) + Interval(-1, 1) * Interval(accel) * sqr(delta) / Interval(8.0);
+      spread[j] = r + tr;
+    }
   }
 };
 
 // V = Σ_j [d](j) (cos, sin)(R_j ± track) over slices a..b−1, R_j relative to
-// gate c, and the hull `cone` of the R_j ± track; false when d is empty somewhere.
-bool window_sum(const Turn& turn, const TubeData& d, std::size_t a, std::size_t b, std::size_t c, const Interval& tr,
-                Interval& vx, Interval& vy, Interval& cone) {
+// gate c, and the hull `cone` of the R_j ± track.
+void window_sum(const WindowSlices& sl, std::size_t a, std::size_t b, std::size_t c, Interval& vx, Interval& vy,
+                Interval& cone) {
   vx = Interval(0.0), vy = Interval(0.0), cone = Interval::empty();
   const auto add = [&](std::size_t j, const Interval& rel) {
-    const Interval dj = d.slices[j] & Interval::pos_reals();
-    if (dj.is_empty()) return false;
-    const Interval dir = rel + turn.inside(j) + tr;
-    vx += dj * cos(dir), vy += dj * sin(dir);
+    const Interval dir = rel + sl.spread[j];
+    vx += sl.dist[j] * cos(dir), vy += sl.dist[j] * sin(dir);
     cone |= dir;
-    return true;
   };
   Interval rel(0.0);  // ψ(t_j) − ψ(t_c)
   for (std::size_t j = c; j < b; ++j) {
-    if (!add(j, rel)) return false;
-    rel += turn.dpsi.slices[j];
+    add(j, rel);
+    rel += sl.inc[j];
   }
   rel = Interval(0.0);
   for (std::size_t j = c; j-- > a;) {
-    rel -= turn.dpsi.slices[j];
-    if (!add(j, rel)) return false;
+    rel -= sl.inc[j];
+    add(j, rel);
   }
-  return true;
 }
 
 // The direction of a nonzero v in the box V whose parts each point into the
@@ -82,10 +88,12 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     if (t->tdomain() != td) throw DimensionError("CtcHeadingWindow::contract: the tubes are not on one TDomain");
   }
   const std::size_t n = px_t.nb_slices();
-  bool ok = !d_t.is_empty() && !dpsi_t.is_empty() && !w_t.is_empty();
+  // An empty input anywhere: no trajectory (checked before reading the slices).
+  if (d_t.is_empty() || dpsi_t.is_empty() || w_t.is_empty()) return detail::finish_heading(false, px_t, py_t, psi_t);
   TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
-  const Turn turn{*td, dpsi_t.data(), w_t.data(), ctc.turn_accel()};
-  const Interval tr = Interval(-1, 1) * Interval(ctc.track());
+  const WindowSlices sl(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(),
+                        Interval(-1, 1) * Interval(ctc.track()));
+  bool ok = !sl.empty;
   std::size_t b = 0;
   for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
     // The window: the least b with t_b − t_a >= window (none: the last windows are shorter, skipped).
@@ -95,10 +103,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     if (dirty && (*dirty)[2 * b + 1] == (*dirty)[2 * a]) continue;  // nothing changed in the window
     const std::size_t c = (a + b) / 2;
     Interval vx, vy, cone;
-    if (!window_sum(turn, d_t.data(), a, b, c, tr, vx, vy, cone)) {
-      ok = false;
-      break;
-    }
+    window_sum(sl, a, b, c, vx, vy, cone);
     // Heading: the directions of the displacement against those of V.
     const Interval dx = px.gates[b] - px.gates[a], dy = py.gates[b] - py.gates[a];
     const Interval dir_v = travel_direction(vx, vy, cone);
