@@ -89,7 +89,9 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
   }
   const std::size_t n = px_t.nb_slices();
   // An empty input anywhere: no trajectory (checked before reading the slices).
-  if (d_t.is_empty() || dpsi_t.is_empty() || w_t.is_empty()) return detail::finish_heading(false, px_t, py_t, psi_t);
+  if (d_t.is_empty() || dpsi_t.is_empty() || w_t.is_empty() || px_t.is_empty() || py_t.is_empty() || psi_t.is_empty()) {
+    return detail::finish_heading(false, px_t, py_t, psi_t);
+  }
   TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
   const WindowSlices sl(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(),
                         Interval(-1, 1) * Interval(ctc.track()));
