@@ -14,16 +14,22 @@
 // (ψ within turn_accel δ²/8 of the chord between its gates), so (s ≥ 0)
 //   p(t_b) − p(t_a) ∈ Rot(ψ(t_c)) V,  V = Σ_j [d](j) (cos, sin)(R_j + [−track, track]).
 // Both ways, for every window (one starts every `stride` slices):
-//   heading:   when V and Δ = [p](t_b) − [p](t_a) exclude 0, ψ(t_c) lies in
-//              dir(Δ) − dir(V) (mod 2π; ψ is an unwrapped angle);
-//   positions: [p](t_b) ∩= [p](t_a) + Rot([ψ](t_c)) V, [p](t_a) ∩= [p](t_b) − Rot([ψ](t_c)) V.
+//   heading:   [ψ](t_c) is cut into cells (at least 0.01 rad, at most 128); a
+//              cell θ whose Rot(θ) V misses Δ = [p](t_b) − [p](t_a) is removed.
+//              When Δ excludes 0, ψ(t_c) also lies in dir(Δ) − dir(v) (mod 2π;
+//              ψ is an unwrapped angle), dir(v) from the box V and, when all
+//              the R_j ± track lie in an arc narrower than π, from that arc
+//              (a positive sum of vectors in the arc points into it);
+//   positions: [p](t_b) ∩= [p](t_a) + the hull of Rot(θ) V over the cells kept,
+//              [p](t_a) ∩= [p](t_b) − the same.
+// In a network, only the windows holding an atom that changed are run again.
 // Unlike CtcHeading (one slice), a window holds the relative heading over
 // many slices while the path grows to many metres: the heading comes out of
 // position boxes much wider than one slice's step. The reference at the
 // middle halves the gyro drift accumulated over the window.
 // Outward rounded throughout (Interval operations). One pass over the windows.
 //
-// Empty: a gate becomes empty, or d is empty; p and psi are then set empty
+// Empty: an input is empty or a gate becomes empty; p and psi are then set empty
 // and contract returns false.
 // In a ContractorNetwork: cn.add(ctc, {p, psi, d, dpsi, w}) with p a 2-d tube
 // vector (or two tubes), psi, d, dpsi and w tubes, all on one TDomain.
