@@ -4,6 +4,10 @@
 //   BM_Plaza1/0   dead reckoning from the odometry alone
 //   BM_Plaza1/1   the same plus the 3529 ranges at uncertain times
 //   BM_Plaza1/2   the ranges q-relaxed, at most 2 wrong (one CtcQEval)
+//   BM_Plaza1Heading/W/U   odometry + ranges with CtcHeadingWindow over W s
+//                 windows (0: none), the start known (U = 0) or unknown (U = 1:
+//                 anywhere near the beacons, any heading)
+// (all with CtcHeadingWindow over 40 s windows, the example's default, but the last with W = 0)
 // Counters: rounds of the network ("iterations"), contractor calls, ranges.
 // Skipped with a message when the data folder is missing.
 #include <benchmark/benchmark.h>
@@ -41,6 +45,24 @@ void BM_Plaza1(benchmark::State& state) {
   state.SetLabel(q >= 0 ? "odometry + ranges, at most 2 wrong" : with_ranges ? "odometry + ranges" : "odometry only");
 }
 BENCHMARK(BM_Plaza1)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+void BM_Plaza1Heading(benchmark::State& state) {
+  if (!data()) {
+    state.SkipWithError(("no plaza1 data at " + kDir.string()).c_str());
+    return;
+  }
+  const auto window = static_cast<double>(state.range(0));
+  const plaza1::Bounds b =
+      state.range(1) ? plaza1::unknown_start({}, *data()) : plaza1::with_start({}, *data());
+  plaza1::Solution s;
+  for (auto _ : state) s = plaza1::solve(*data(), b, true, -1, window);
+  state.counters["iterations"] = static_cast<double>(s.stats.iterations);
+  state.counters["calls"] = static_cast<double>(s.stats.contractor_calls);
+  if (s.stats.empty) state.SkipWithError("empty result");
+  state.SetLabel(std::string(state.range(1) ? "unknown start" : "known start") +
+                 (window > 0 ? ", heading windows" : ", no heading windows"));
+}
+BENCHMARK(BM_Plaza1Heading)->ArgsProduct({{0, 40}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

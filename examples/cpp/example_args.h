@@ -14,7 +14,7 @@
 #include <vector>
 
 // The bound options of the plaza1 examples (plaza1_bounds.h checks that its table matches).
-#define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-bias=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X", "--track-err=X"
+#define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-bias=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X", "--track-err=X", "--turn-accel=X"
 
 namespace example {
 
@@ -25,7 +25,7 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
   static const std::vector<std::pair<std::string, std::vector<std::string>>> table = {
       {"drifting_clock", {"--dt=X", "--ratio=X"}},
       {"lowcost_beacons", {"--dt=X", "--ratio=X"}},
-      {"plaza1", {"--data", "--unknown-start=X", "--q-ranges=X", PLAZA1_BOUND_OPTIONS}},
+      {"plaza1", {"--data", "--unknown-start=X", "--q-ranges=X", "--heading-window=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_plaza1", {"--data", "--eps-div=X", "--reverse-below=X", "--glitch-above=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
       {"loops_utias", {"--data", "--robot"}},

@@ -6,6 +6,9 @@
 //   2. the same plus the 3529 ranges, each at an uncertain time (CtcEval);
 //   3. with --q-ranges Q: the ranges q-relaxed, at most Q of them wrong
 //      (one CtcQEval in the network), against the strict intersection of 2.
+// The odometry ties heading and positions both ways over each period
+// (CtcHeading) and over windows of 40 s (CtcHeadingWindow; --heading-window S,
+// 0: none), which keeps the heading bounded, even from an unknown start.
 // The stated error bounds (plaza1_bounds.h, each one an option) are the model; the check is that
 // every ground-truth sample lies in the position tube. The network is in
 // plaza1_network.h (shared with bench/bench_plaza1.cpp).
@@ -37,9 +40,9 @@ struct Result {
   double mean_diam = 0, max_diam = 0;
 };
 
-Result solve_and_check(const Plaza1Data& d, const Bounds& b, bool with_ranges, int q) {
+Result solve_and_check(const Plaza1Data& d, const Bounds& b, bool with_ranges, int q, double heading_window) {
   const double start = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-  const plaza1::Solution sol = plaza1::solve(d, b, with_ranges, q);
+  const plaza1::Solution sol = plaza1::solve(d, b, with_ranges, q, heading_window);
   Result res;
   res.p = sol.p;
   res.stats = sol.stats;
@@ -84,12 +87,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "plaza1: --q-ranges takes a whole number of ranges, got %g\n", q_ranges);
     return 2;
   }
+  // --heading-window S: CtcHeadingWindow over windows of S seconds (0: none).
+  const double heading_window = example::option_number(argc, argv, "--heading-window", plaza1::kHeadingWindow);
+  if (!(heading_window >= 0) || !std::isfinite(heading_window)) {
+    std::fprintf(stderr, "plaza1: --heading-window takes a length >= 0 in seconds, got %g\n", heading_window);
+    return 2;
+  }
   std::vector<int> runs = {-2, -1};  // -2: odometry only, -1: strict ranges, q >= 0: q-relaxed ranges
   if (q_ranges >= 0) runs.push_back(static_cast<int>(q_ranges));
   double strict_mean = NAN, strict_cpu = NAN;
   for (const int run : runs) {
     const bool with_ranges = run != -2;
-    const Result r = solve_and_check(d, b, with_ranges, run);
+    const Result r = solve_and_check(d, b, with_ranges, run, heading_window);
     const std::size_t n = d.t.size();
     const std::string qlabel = "odometry + ranges, at most " + std::to_string(run) + " wrong";
     const char* label = run >= 0 ? qlabel.c_str() : with_ranges ? "odometry + ranges" : "odometry only";
@@ -113,6 +122,11 @@ int main(int argc, char** argv) {
     for (const double dt : {0.0, 10.0, 30.0, 60.0, 120.0, 300.0, 600.0, 1200.0}) {
       const std::size_t k = static_cast<std::size_t>(std::lower_bound(d.t.begin(), d.t.end(), d.t[0] + dt) - d.t.begin());
       if (k < n) std::printf(" %.0f s: %.1f m;", dt, r.p->gate(k).max_diam());
+    }
+    std::printf("\n  heading half-width at t0 +");
+    for (const double dt : {0.0, 10.0, 30.0, 60.0, 120.0, 300.0, 600.0, 1200.0}) {
+      const std::size_t k = static_cast<std::size_t>(std::lower_bound(d.t.begin(), d.t.end(), d.t[0] + dt) - d.t.begin());
+      if (k < n) std::printf(" %.0f s: %.2f rad;", dt, r.psi->gate(k).diam() / 2);
     }
     std::size_t known = 0;
     double first_known = NAN, narrowest = INFINITY;

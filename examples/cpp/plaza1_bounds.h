@@ -33,6 +33,7 @@ struct Bounds {
   double range_long = 10.0; // m: measured - true <= range_long
   double time_err = 0.2;    // s: time stamps of the ranges
   double track = 0.05;      // rad: direction of travel vs heading
+  double turn_accel = 20.0; // rad/s^2: the turn inside a period (CtcHeadingWindow)
 };
 
 struct BoundSpec {
@@ -73,6 +74,9 @@ inline const std::vector<BoundSpec>& bound_table() {
        "logging PC (not real-time): reports of a serial radio reach it up to 0.2 s late or early"},
       {"--track-err", "track error", "rad", &Bounds::track,
        "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"},
+      {"--turn-accel", "turn acceleration", "rad/s^2", &Bounds::turn_accel,
+       "tyre grip (friction coefficient <= 1): each wheel accelerates at most 9.8 m/s^2, so on a 1 m track the turn "
+       "rate changes by at most 2 * 9.8 / 1 = 20 rad/s^2"},
   };
   return t;
 }
@@ -139,6 +143,14 @@ inline std::vector<example::AuditLine> audit(const example::Plaza1Data& d, const
   }
   r.push_back({"heading drift", "rad/s", b.gyro_bias, drift, "(|odometry heading - truth| - start error) / (t - t0)"});
   r.push_back({"turn rate", "rad/s", b.turn_max, turn, "true heading change per period"});
+  double accel = 0;  // change of the mean turn rate between neighbouring periods
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const double w0 = wrap(d.heading[k + 1] - d.heading[k]) / (d.t[k + 1] - d.t[k]);
+    const double w1 = wrap(d.heading[k + 2] - d.heading[k + 1]) / (d.t[k + 2] - d.t[k + 1]);
+    accel = std::max(accel, std::abs(w1 - w0) / ((d.t[k + 2] - d.t[k]) / 2));
+  }
+  r.push_back({"turn acceleration", "rad/s^2", b.turn_accel, accel,
+               "change of the true mean turn rate between neighbouring periods"});
   // The odometer: the straight-line truth step c_k is at most the path length.
   double dist = 0, chord = 0, under = 0, still = 0, speed = 0;
   for (std::size_t k = 0; k < n; ++k) {

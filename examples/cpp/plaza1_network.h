@@ -5,9 +5,12 @@
 // slice per odometry period):
 //   ψ(t_{k+1}) − ψ(t_k) ∈ Δψ_k + δ_k [−b, b]        (CtcIncrement: gyro bias b)
 //   ψ' ∈ [−ω_max, ω_max]                             (CtcDeriv: the slices of ψ)
+//   ψ'' ∈ [−α, α]                                    (CtcSecondDeriv: the slices of ψ)
 //   p(t_{k+1}) − p(t_k) ∈ d_k (cos, sin)(ψ over the slice ± track),
 //     d_k ∈ (d_k [1 − ε, 1 + ε] + [−o, u]) ∩ [0, ∞)  (CtcHeading, both ways:
 //                                                      positions and heading)
+//   the same over windows of 40 s, with the heading relative to the window's
+//     middle from the increments and |ψ''| <= α inside a slice  (CtcHeadingWindow)
 //   v = s (cos, sin)(ψ + e), s ∈ [0, s_max], |e| ≤ track; p' = v  (pointwise; CtcDeriv: slices)
 //   for each range j: q_j = p(t_j), t_j ∈ stamp ± τ  (CtcEval)
 //                     |q_j − beacon| ∈ r_j − [−e_short, e_long] (pointwise on the box q_j)
@@ -27,7 +30,9 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"
+#include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_qeval.h"
+#include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/interval/elementary.h"
 
@@ -45,9 +50,16 @@ struct Solution {
   std::size_t nb_ranges = 0;
 };
 
+// The length of the windows of CtcHeadingWindow, s (--heading-window; 0: none):
+// long enough for a path of tens of metres against position boxes of about 20 m,
+// short enough for the lawn-mower legs and the gyro drift (docs/plaza1.md).
+constexpr double kHeadingWindow = 40.0;
+
 // The network (with the ranges if `with_ranges`; q >= 0: at most q of them
-// wrong, one CtcQEval) at its fixed point.
-inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_ranges, int q = -1) {
+// wrong, one CtcQEval; CtcHeadingWindow over windows of `heading_window`
+// seconds if > 0) at its fixed point.
+inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_ranges, int q = -1,
+                      double heading_window = kHeadingWindow) {
   using example::slice_tube;
   const auto td = TDomain::create(d.t);
   const std::size_t n = td->nb_slices();
@@ -73,8 +85,18 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   ContractorNetwork cn;
   cn.add(std::make_shared<CtcIncrement>(), {psi, dpsi_t});
   cn.add(std::make_shared<CtcDeriv>(), {psi, omega});
+  // |ψ''| <= α: inside a period the heading stays within α δ² / 8 of the chord of its gates.
+  cn.add(std::make_shared<CtcSecondDeriv>(), {psi, std::make_shared<Tube>(td, Interval(-b.turn_accel, b.turn_accel))});
   // The odometry increments, both ways: the heading gives the positions, the positions the heading.
   cn.add(std::make_shared<CtcHeading>(b.track), {s.p, psi, dist_t, omega});
+  // The same over windows of heading_window seconds, one every quarter of a window: the heading
+  // from the direction of travel measured by the positions, against the gyro's relative heading.
+  if (heading_window > 0) {
+    const double dt = (d.t.back() - d.t.front()) / static_cast<double>(n);
+    const auto stride = static_cast<std::size_t>(std::max(1.0, std::round(heading_window / 4 / dt)));
+    cn.add(std::make_shared<CtcHeadingWindow>(heading_window, b.track, b.turn_accel, stride),
+           {s.p, psi, dist_t, dpsi_t, omega});
+  }
   cn.add(std::make_shared<CtcFunction>(Function({"a", "s", "h", "e"}, "a - s*cos(h + e)")),
          {DomainRef::component(v, 0), speed, psi, track});
   cn.add(std::make_shared<CtcFunction>(Function({"a", "s", "h", "e"}, "a - s*sin(h + e)")),

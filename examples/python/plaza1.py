@@ -3,18 +3,23 @@ to point elsewhere). Dead reckoning from the odometry (distance and drifting
 heading change per period), then the same plus the 3529 radio ranges to 4
 beacons, each at an uncertain time (CtcEval); with --q-ranges Q also the ranges
 q-relaxed, at most Q of them wrong (one CtcQEval). The odometry increments tie
-positions and heading both ways (CtcHeading). The same network and stated error
+positions and heading both ways, over each period (CtcHeading) and over windows of
+40 s (CtcHeadingWindow, --heading-window S; 0: none), which keeps the heading
+bounded, even from an unknown start. The same network and stated error
 bounds (plaza1_bounds.py, the table of examples/cpp/plaza1_bounds.h; each one an
 option) as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
 the position tube. Figures: the map (tube, truth, beacons) and the thickness."""
+import bisect
 import math
+import sys
 import time
 
 import sillage
 import plaza1_bounds
 from bound_audit import print_audit
 from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
-from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcIncrement, CtcQEval, Function,
+from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
+                     CtcSecondDeriv, Function,
                      Interval, IntervalVector, TDomain, Tube, TubeObservation, TubeVector)
 
 def load(folder):
@@ -33,9 +38,16 @@ def slice_tube(td, slices):
     return Tube(td, slices, gates)
 
 
-def solve(d, with_ranges, b=None, q=-1):
+# The length of the windows of CtcHeadingWindow, s (--heading-window; 0: none): long enough for a path of
+# tens of metres against position boxes of about 20 m, short enough for the lawn-mower legs and the gyro
+# drift (docs/plaza1.md).
+HEADING_WINDOW = 40.0
+
+
+def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None):
     """The position tube at the fixed point with the bounds b (default: the table); q >= 0: at most q
-    ranges wrong (one CtcQEval instead of a CtcEval per range)."""
+    ranges wrong (one CtcQEval instead of a CtcEval per range); window > 0: CtcHeadingWindow over windows
+    of that many seconds. heading: a list that receives the heading tube."""
     b = b or plaza1_bounds.bounds(None, d)
     t0 = time.process_time()
     td = TDomain(list(d["t"]))
@@ -51,10 +63,18 @@ def solve(d, with_ranges, b=None, q=-1):
     p.set_gate(0, IntervalVector([Interval(b.start_x - b.pos0, b.start_x + b.pos0),
                                   Interval(b.start_y - b.pos0, b.start_y + b.pos0)]))
     cn = sillage.ContractorNetwork()
-    cn.add(CtcIncrement(), [psi, slice_tube(td, dpsi)])
+    dist_t, dpsi_t = slice_tube(td, dist), slice_tube(td, dpsi)
+    cn.add(CtcIncrement(), [psi, dpsi_t])
     cn.add(CtcDeriv(), [psi, omega])
+    # |psi''| <= alpha: inside a period the heading stays within alpha delta^2 / 8 of the chord of its gates
+    cn.add(CtcSecondDeriv(), [psi, Tube(td, Interval(-b.turn_accel, b.turn_accel))])
     # the odometry increments, both ways: the heading gives the positions, the positions the heading
-    cn.add(CtcHeading(b.track), [p, psi, slice_tube(td, dist), omega])
+    cn.add(CtcHeading(b.track), [p, psi, dist_t, omega])
+    # the same over windows, one every quarter of a window: the heading from the direction of travel
+    # measured by the positions, against the gyro's relative heading
+    if window > 0:
+        stride = max(1, round(window / 4 / ((d["t"][-1] - d["t"][0]) / n)))
+        cn.add(CtcHeadingWindow(window, b.track, b.turn_accel, stride), [p, psi, dist_t, dpsi_t, omega])
     cn.add(CtcFunction(Function(["a", "s", "h", "e"], "a - s*cos(h + e)")), [v[0], speed, psi, track])
     cn.add(CtcFunction(Function(["a", "s", "h", "e"], "a - s*sin(h + e)")), [v[1], speed, psi, track])
     cn.add(CtcDeriv(), [p, v])
@@ -82,10 +102,18 @@ def solve(d, with_ranges, b=None, q=-1):
             cn.add(CtcQEval(q, obs), [p, v])
     stats = cn.contract()
     cpu = time.process_time() - t0
+    if heading is not None:
+        heading.append(psi)
     gx, gy = p[0].gates_array(), p[1].gates_array()
     inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
     diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]
     return p, stats, cpu, inside, sum(diam) / len(diam), max(diam), len(keep)
+
+
+def times_after(t, n):
+    """(dt, k): the first time index k at t0 + dt, for the times printed."""
+    return [(dt, bisect.bisect_left(t, t[0] + dt)) for dt in (0, 10, 30, 60, 120, 300, 600, 1200)
+            if bisect.bisect_left(t, t[0] + dt) < n]
 
 
 def add_options(ap):
@@ -93,6 +121,8 @@ def add_options(ap):
     plaza1_bounds.add_options(ap)
     ap.add_argument("--q-ranges", type=int, default=-1, metavar="Q",
                     help="Q >= 0: also solve with at most Q ranges wrong (CtcQEval), against the strict intersection")
+    ap.add_argument("--heading-window", type=float, default=HEADING_WINDOW, metavar="S",
+                    help=f"CtcHeadingWindow over windows of S seconds (default {HEADING_WINDOW:g}; 0: none)")
 
 
 def main():
@@ -100,6 +130,9 @@ def main():
     if parsed is None:
         return
     out, folder, args = parsed
+    if not args.heading_window >= 0 or not math.isfinite(args.heading_window):
+        print(f"plaza1: --heading-window takes a length >= 0 in seconds, got {args.heading_window}", file=sys.stderr)
+        sys.exit(2)
     d = load(folder)
     b = plaza1_bounds.bounds(args, d)
     # The audit reports; it changes no bound. A bound the truth violates voids the guarantee,
@@ -110,7 +143,8 @@ def main():
     strict = None
     for run in runs:
         with_ranges = run != -2
-        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b, run)
+        heading = []
+        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b, run, args.heading_window, heading)
         n = len(d["t"])
         label = (f"odometry + ranges, at most {run} wrong" if run >= 0
                  else "odometry + ranges" if with_ranges else "odometry only")
@@ -118,6 +152,8 @@ def main():
               f"{cpu:.2f} s CPU; truth inside at {inside}/{n} time points; box diameter mean {mean_d:.2f} m, "
               f"max {max_d:.2f} m")
         ok = check_stats(stats, label) and enclosure_ok(p) and inside == n and ok
+        print("  heading half-width at t0 + " + "; ".join(
+            f"{dt:.0f} s: {heading[0].gate(k).diam() / 2:.2f} rad" for dt, k in times_after(d["t"], n)))
         if run == -1:
             strict = (mean_d, cpu)
         if run >= 0 and strict:

@@ -42,6 +42,9 @@ TABLE = [
      "logging PC (not real-time): reports of a serial radio reach it up to 0.2 s late or early"),
     ("--track-err", "track", "track error", "rad", 0.05,
      "direction of travel vs heading: side slip of a wheeled robot and heading noise, 3 deg"),
+    ("--turn-accel", "turn_accel", "turn acceleration", "rad/s^2", 20.0,
+     "tyre grip (friction coefficient <= 1): each wheel accelerates at most 9.8 m/s^2, so on a 1 m track the turn "
+     "rate changes by at most 2 * 9.8 / 1 = 20 rad/s^2"),
 ]
 # The same table as the C++ one (plaza1_bounds.h), option for option.
 
@@ -95,6 +98,13 @@ def audit(d, b):
     r.append(AuditLine("heading drift", "rad/s", b.gyro_bias, drift,
                        "(|odometry heading - truth| - start error) / (t - t0)"))
     r.append(AuditLine("turn rate", "rad/s", b.turn_max, turn, "true heading change per period"))
+    accel = 0.0  # change of the mean turn rate between neighbouring periods
+    for k in range(n - 1):
+        w0 = wrap(h[k + 1] - h[k]) / (t[k + 1] - t[k])
+        w1 = wrap(h[k + 2] - h[k + 1]) / (t[k + 2] - t[k + 1])
+        accel = max(accel, abs(w1 - w0) / ((t[k + 2] - t[k]) / 2))
+    r.append(AuditLine("turn acceleration", "rad/s^2", b.turn_accel, accel,
+                       "change of the true mean turn rate between neighbouring periods"))
     dist = chord = under = still = speed = 0.0
     for k in range(n):
         c, dk = math.hypot(x[k + 1] - x[k], y[k + 1] - y[k]), d["dist"][k]

@@ -97,3 +97,30 @@ def test_q_relaxed_ranges(tmp_path):
     assert r.returncode == 0, r.stdout[-2000:]
     assert "q-relaxed (q = 2) against the strict intersection" in r.stdout
     assert r.stdout.count("ground truth inside at 9658 / 9658") == 3
+
+
+@pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
+def test_heading_windows_bound_the_heading_from_an_unknown_start():
+    """CtcHeadingWindow (40 s windows): from an unknown start (any heading) the heading is learned
+    from the positions and stays bounded, where without the windows it stays a full turn and grows
+    with the gyro drift; the truth stays inside and the boxes are thinner."""
+    import argparse
+    import plaza1_bounds
+    d = plaza1.load(DATA)
+    ap = argparse.ArgumentParser()
+    plaza1_bounds.add_options(ap)
+    b = plaza1_bounds.bounds(ap.parse_args(["--unknown-start", "1"]), d)
+    n = len(d["t"])
+    widths = {}
+    for window in (0, plaza1.HEADING_WINDOW):
+        heading = []
+        _, stats, _, inside, mean, _, _ = plaza1.solve(d, True, b, window=window, heading=heading)
+        assert not stats.empty and inside == n
+        widths[window] = ([heading[0].gate(k).diam() for k in range(n)], mean)
+    (plain, mean0), (windowed, mean1) = widths[0], widths[plaza1.HEADING_WINDOW]
+    late = [k for k in range(n) if d["t"][k] >= d["t"][0] + 60]
+    middle = [k for k in late if d["t"][k] <= d["t"][0] + 1200]
+    assert min(plain[k] for k in late) > 6.28  # a full turn and more: nothing learned
+    assert max(windowed[k] for k in middle) < 3.0  # within +-1.5 rad from 60 s to 1200 s
+    assert max(windowed[k] for k in late) < 5.0  # less than a full turn to the end (docs/plaza1.md)
+    assert mean1 < mean0 - 1.0

@@ -5,6 +5,7 @@
 
 #include "sillage/cn/tube_node.h"
 #include "sillage/ctc/shrink.h"
+#include "sillage/dynamics/heading_common.h"
 #include "sillage/error.h"
 #include "sillage/interval/elementary.h"
 
@@ -12,47 +13,17 @@ namespace sillage {
 
 namespace {
 
-// Where a contraction found no trajectory: the tube (0: px, 1: py, 2: psi) and its atom.
-struct EmptyAt {
-  std::size_t tube = 0, atom = kNoAtom;
-};
-
-// The directions of the box (dx, dy), which does not hold 0: the narrower of
-// atan2 (cut on the negative x axis) and atan2 of the opposite box plus π
-// (cut on the positive x axis).
-Interval direction(const Interval& dx, const Interval& dy) {
-  const Interval a = atan2(dy, dx), b = atan2(-dy, -dx) + Interval::pi();
-  return a.diam() <= b.diam() ? a : b;
-}
-
-// s ∩ (r + 2πZ), hulled; s bounded and not too wide (else s unchanged).
-Interval periodic_meet(const Interval& s, const Interval& r) {
-  if (s.is_unbounded() || r.is_unbounded() || s.diam() > 1e6) return s;
-  const Interval period = Interval::two_pi();
-  const auto shifted = [&](double n) { return (r + period * Interval(n)) & s; };
-  double lo = std::floor((s.lb() - r.ub()) / (2 * M_PI)) - 1, hi = std::ceil((s.ub() - r.lb()) / (2 * M_PI)) + 1;
-  while (lo <= hi && shifted(lo).is_empty()) ++lo;
-  while (hi >= lo && shifted(hi).is_empty()) --hi;
-  if (lo > hi) return Interval::empty();
-  return shifted(lo) | shifted(hi);
-}
-
-bool narrow(Interval& x, const Interval& y) {
-  x &= y;
-  return !x.is_empty();
-}
-
 // One forward and backward sweep of the positions; false with `at` when empty.
 bool sweep_positions(TubeData& px, TubeData& py, const std::vector<Interval>& ix, const std::vector<Interval>& iy,
-                     EmptyAt& at) {
+                     detail::HeadingEmptyAt& at) {
   const std::size_t n = ix.size();
   for (std::size_t k = 0; k < n; ++k) {
-    if (!narrow(px.gates[k + 1], px.gates[k] + ix[k])) return at = {0, 2 * (k + 1)}, false;
-    if (!narrow(py.gates[k + 1], py.gates[k] + iy[k])) return at = {1, 2 * (k + 1)}, false;
+    if (!detail::narrow(px.gates[k + 1], px.gates[k] + ix[k])) return at = {0, 2 * (k + 1)}, false;
+    if (!detail::narrow(py.gates[k + 1], py.gates[k] + iy[k])) return at = {1, 2 * (k + 1)}, false;
   }
   for (std::size_t k = n; k-- > 0;) {
-    if (!narrow(px.gates[k], px.gates[k + 1] - ix[k])) return at = {0, 2 * k}, false;
-    if (!narrow(py.gates[k], py.gates[k + 1] - iy[k])) return at = {1, 2 * k}, false;
+    if (!detail::narrow(px.gates[k], px.gates[k + 1] - ix[k])) return at = {0, 2 * k}, false;
+    if (!detail::narrow(py.gates[k], py.gates[k + 1] - iy[k])) return at = {1, 2 * k}, false;
   }
   return true;
 }
@@ -68,7 +39,7 @@ CtcHeading::CtcHeading(double track) : track_(track) {
 namespace {
 
 bool contract_heading(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const Tube& w_t, double track,
-                      EmptyAt& at) {
+                      detail::HeadingEmptyAt& at) {
   const auto td = px_t.tdomain();
   for (const Tube* t : std::initializer_list<const Tube*>{&py_t, &psi_t, &d_t, &w_t}) {
     if (t->tdomain() != td) throw DimensionError("CtcHeading::contract: the tubes are not on one TDomain");
@@ -96,54 +67,38 @@ bool contract_heading(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, cons
       if (wk.is_unbounded()) continue;  // any turn rate: no bound on the spread
       const Interval spread = td->slice_width(k) * Interval(wk.mag());
       if (!((spread + Interval(2 * track)).ub() < pi.lb())) continue;  // the directions may span a half turn
-      const Interval r = direction(dx, dy) + Interval(-1, 1) * (spread + Interval(track));
+      const Interval r = detail::box_direction(dx, dy) + Interval(-1, 1) * (spread + Interval(track));
       const Interval before = psi.slices[k];
-      const Interval kept = periodic_meet(before, r);
-      if (!narrow(psi.slices[k], kept)) at = {2, 2 * k + 1}, ok = false;
-      else if (!narrow(psi.gates[k], kept)) at = {2, 2 * k}, ok = false;
-      else if (!narrow(psi.gates[k + 1], kept)) at = {2, 2 * k + 2}, ok = false;
+      const Interval kept = detail::periodic_meet(before, r);
+      if (!detail::narrow(psi.slices[k], kept)) at = {2, 2 * k + 1}, ok = false;
+      else if (!detail::narrow(psi.gates[k], kept)) at = {2, 2 * k}, ok = false;
+      else if (!detail::narrow(psi.gates[k + 1], kept)) at = {2, 2 * k + 2}, ok = false;
       again = again || shrank(before, psi.slices[k], 0.01);
     }
     if (!again) break;
   }
-  if (!ok) {
-    px_t.set(Interval::empty()), py_t.set(Interval::empty()), psi_t.set(Interval::empty());
-    return false;
-  }
-  px_t.touch(), py_t.touch(), psi_t.touch();
-  return true;
+  return detail::finish_heading(ok, px_t, py_t, psi_t);
 }
 
 // cn.add(ctc, {px, py, psi, d, w}): the five tubes, whole, on one TDomain.
-class HeadingNode : public TubeNode {
+class HeadingNode : public detail::HeadingNodeBase {
  public:
-  HeadingNode(const CtcHeading& ctc, const std::vector<BoundDomain>& args) : TubeNode("CtcHeading", args), ctc_(ctc) {
-    if (args.size() != 5) {
-      throw DimensionError(where() + ": expects p (2 components), psi, d and w, got " + std::to_string(args.size()) +
-                           " tubes");
-    }
-    t_ = whole_tubes(0, 5, "p, psi, d and w");
-  }
+  HeadingNode(const CtcHeading& ctc, const std::vector<BoundDomain>& args)
+      : HeadingNodeBase("CtcHeading", args, 5, "p (2 components), psi, d and w"), ctc_(ctc) {}
   bool run(NodeRun& r) const override {
-    thread_local TubeSnapshot before[3];  // scratch: per thread, never shared by two runs
-    for (std::size_t i = 0; i < 3; ++i) before[i].take(t_[i]->tube());
-    EmptyAt at;
-    const bool ok = contract_heading(t_[0]->tube(), t_[1]->tube(), t_[2]->tube(), t_[3]->tube(), t_[4]->tube(),
-                                     ctc_.track(), at);
-    for (std::size_t i = 0; i < 3; ++i) changes(r, i).diff(before[i], t_[i]->tube());
-    if (!ok && at.atom != kNoAtom) r.empty_at = offset(at.tube) + at.atom;
-    return ok;
+    return run_heading(r, [&](detail::HeadingEmptyAt& at) {
+      return contract_heading(tube_arg(0), tube_arg(1), tube_arg(2), tube_arg(3), tube_arg(4), ctc_.track(), at);
+    });
   }
 
  private:
   CtcHeading ctc_;
-  std::vector<std::shared_ptr<TubeDomain>> t_;
 };
 
 }  // namespace
 
 bool CtcHeading::contract(Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& w) const {
-  EmptyAt at;
+  detail::HeadingEmptyAt at;
   return contract_heading(px, py, psi, d, w, track_, at);
 }
 

@@ -1,0 +1,31 @@
+// CtcSecondDeriv (x'' ∈ [a]: each slice within the chord of its gates, bowed by
+// at most [a] δ²/8): contract(x, a) on the caller's own tubes, in place; a
+// NetworkCtc, so ContractorNetwork.add(CtcSecondDeriv(), [x, a]) binds it.
+#include <string>
+
+#include "bindings.h"
+#include "sillage/dynamics/ctc_second_deriv.h"
+
+namespace sillage::python {
+
+void init_ctc_second_deriv(py::module_& m) {
+  py::class_<CtcSecondDeriv, NetworkCtc, std::shared_ptr<CtcSecondDeriv>>(m, "CtcSecondDeriv", R"doc(
+x'' in [a](k) on every slice k: x(t) lies within the chord of its two gates, bowed by
+-[a](k) tau (delta - tau) / 2 <= |[a]| delta^2 / 8, so the slices of x are contracted to
+([x](t_k) | [x](t_{k+1})) - [a](k) [0, delta^2 / 8] (an acceleration bound, e.g. a turn
+acceleration for a heading, is much tighter inside short slices than a rate bound).
+ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
+      .def(py::init<>(), "The second-derivative contractor.")
+      .def("__repr__", [](const CtcSecondDeriv&) { return std::string("CtcSecondDeriv()"); })
+      .def(
+          "contract",
+          [](const CtcSecondDeriv& c, Tube& x, const Tube& a) {
+            py::gil_scoped_release release;
+            return c.contract(x, a);
+          },
+          py::arg("x"), py::arg("a"),
+          "Contracts the slices of the tube x in place with x'' in the slices of a; returns False if x is empty. "
+          "Tube vectors: ContractorNetwork.add(CtcSecondDeriv(), [x, a]).");
+}
+
+}  // namespace sillage::python

@@ -1,0 +1,198 @@
+#include "sillage/dynamics/ctc_heading_window.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include "sillage/dynamics/heading_common.h"
+#include "sillage/error.h"
+#include "sillage/interval/elementary.h"
+
+namespace sillage {
+
+namespace {
+
+// The cells of the heading tried against a window: at least kCell wide, at most kMaxCells.
+constexpr double kCell = 0.01;
+constexpr int kMaxCells = 128;
+
+// Per slice j, what every window reads: the distance [d](j) ∩ [0, ∞), the
+// increment [Δψ](j), and the spread of the direction of travel about ψ(t_j):
+// the turn inside the slice (from the turn rate and the turn acceleration)
+// plus the track error.
+struct WindowSlices {
+  std::vector<Interval> dist, spread;
+  const std::vector<Interval>& inc;
+  bool empty = false;  // d is empty somewhere
+  WindowSlices(const TDomain& td, const TubeData& d, const TubeData& dpsi, const TubeData& w, double accel,
+               const Interval& tr)
+      : dist(d.slices.size()), spread(d.slices.size()), inc(dpsi.slices) {
+    for (std::size_t j = 0; j < dist.size(); ++j) {
+      dist[j] = d.slices[j] & Interval::pos_reals();
+      empty = empty || dist[j].is_empty();
+      const Interval delta = td.slice_width(j);
+      Interval r = Interval::all_reals();
+      // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
+      if (!w.slices[j].is_unbounded()) {
+        r &= (inc[j] + Interval(-1, 1) * Interval(w.slices[j].mag()) * delta) / Interval(2.0);
+      }
+      // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
+      if (std::isfinite(accel)) r &= (Interval(0.0) | inc[j]) + Interval(-1, 1) * Interval(accel) * sqr(delta) / Interval(8.0);
+      spread[j] = r + tr;
+    }
+  }
+};
+
+// V = Σ_j [d](j) (cos, sin)(R_j ± track) over slices a..b−1, R_j relative to
+// gate c, and the hull `cone` of the R_j ± track.
+void window_sum(const WindowSlices& sl, std::size_t a, std::size_t b, std::size_t c, Interval& vx, Interval& vy,
+                Interval& cone) {
+  vx = Interval(0.0), vy = Interval(0.0), cone = Interval::empty();
+  const auto add = [&](std::size_t j, const Interval& rel) {
+    const Interval dir = rel + sl.spread[j];
+    vx += sl.dist[j] * cos(dir), vy += sl.dist[j] * sin(dir);
+    cone |= dir;
+  };
+  Interval rel(0.0);  // ψ(t_j) − ψ(t_c)
+  for (std::size_t j = c; j < b; ++j) {
+    add(j, rel);
+    rel += sl.inc[j];
+  }
+  rel = Interval(0.0);
+  for (std::size_t j = c; j-- > a;) {
+    rel -= sl.inc[j];
+    add(j, rel);
+  }
+}
+
+// The direction of a nonzero v in the box V whose parts each point into the
+// arc `cone` (relative to ψ(t_c)): when the arc is narrower than π, every
+// positive combination of them points into it too, whatever their lengths;
+// then also the directions of the box V if it excludes 0. All the reals when
+// neither says anything.
+Interval travel_direction(const Interval& vx, const Interval& vy, const Interval& cone) {
+  const bool box = !(vx.contains(0) && vy.contains(0));
+  if (cone.is_empty() || !(cone.diam() < Interval::pi().lb())) {
+    return box ? detail::box_direction(vx, vy) : Interval::all_reals();
+  }
+  return box ? detail::periodic_meet(cone, detail::box_direction(vx, vy)) : cone;
+}
+
+// `dirty` (null: every window): prefix counts of the time atoms that changed
+// since the last run (dirty[i] = how many below atom i); a window [a, b] is
+// contracted again only if one of its atoms 2a..2b changed.
+bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const Tube& dpsi_t, const Tube& w_t,
+                     const CtcHeadingWindow& ctc, detail::HeadingEmptyAt& at, const std::vector<std::size_t>* dirty = nullptr) {
+  const auto td = px_t.tdomain();
+  for (const Tube* t : std::initializer_list<const Tube*>{&py_t, &psi_t, &d_t, &dpsi_t, &w_t}) {
+    if (t->tdomain() != td) throw DimensionError("CtcHeadingWindow::contract: the tubes are not on one TDomain");
+  }
+  const std::size_t n = px_t.nb_slices();
+  // An empty input anywhere: no trajectory (checked before reading the slices).
+  if (d_t.is_empty() || dpsi_t.is_empty() || w_t.is_empty() || px_t.is_empty() || py_t.is_empty() || psi_t.is_empty()) {
+    return detail::finish_heading(false, px_t, py_t, psi_t);
+  }
+  TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
+  const WindowSlices sl(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(),
+                        Interval(-1, 1) * Interval(ctc.track()));
+  bool ok = !sl.empty;
+  std::size_t b = 0;
+  for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
+    // The window: the least b with t_b − t_a >= window (none: the last windows are shorter, skipped).
+    b = std::max(b, a + 1);
+    while (b <= n && td->t(b) - td->t(a) < ctc.window()) ++b;
+    if (b > n) break;
+    if (dirty && (*dirty)[2 * b + 1] == (*dirty)[2 * a]) continue;  // nothing changed in the window
+    const std::size_t c = (a + b) / 2;
+    Interval vx, vy, cone;
+    window_sum(sl, a, b, c, vx, vy, cone);
+    // Heading: the directions of the displacement against those of V.
+    const Interval dx = px.gates[b] - px.gates[a], dy = py.gates[b] - py.gates[a];
+    const Interval dir_v = travel_direction(vx, vy, cone);
+    if (!(dx.contains(0) && dy.contains(0)) && !dir_v.is_all_reals()) {
+      // A displacement that is not 0: its direction is that of V turned by ψ(t_c).
+      const Interval r = detail::box_direction(dx, dy) - dir_v;
+      if (!detail::narrow(psi.gates[c], detail::periodic_meet(psi.gates[c], r))) {
+        at = {2, 2 * c}, ok = false;
+        break;
+      }
+    }
+    // Both ways at once on cells of [ψ](t_c): the cells whose turn of V misses Δ are removed, and
+    // the displacement lies in the hull of the turns of V by the cells kept.
+    Interval& th = psi.gates[c];
+    if (th.is_unbounded()) continue;
+    Interval kept = Interval::empty(), hx = Interval::empty(), hy = Interval::empty();
+    const int cells = static_cast<int>(std::clamp(std::ceil(th.diam() / kCell), 1.0, static_cast<double>(kMaxCells)));
+    for (int i = 0; i < cells; ++i) {
+      // The cells cover [th] exactly: the ends are th's, neighbours share their bound.
+      const double lo = i == 0 ? th.lb() : th.lb() + th.diam() * i / cells;
+      const double hi = i + 1 == cells ? th.ub() : th.lb() + th.diam() * (i + 1) / cells;
+      const Interval cell(lo, hi), co = cos(cell), si = sin(cell);
+      const Interval rx = (co * vx - si * vy) & dx, ry = (si * vx + co * vy) & dy;
+      if (rx.is_empty() || ry.is_empty()) continue;
+      kept |= cell, hx |= rx, hy |= ry;
+    }
+    if (!detail::narrow(th, kept)) at = {2, 2 * c}, ok = false;
+    else if (!detail::narrow(px.gates[b], px.gates[a] + hx)) at = {0, 2 * b}, ok = false;
+    else if (!detail::narrow(py.gates[b], py.gates[a] + hy)) at = {1, 2 * b}, ok = false;
+    else if (!detail::narrow(px.gates[a], px.gates[b] - hx)) at = {0, 2 * a}, ok = false;
+    else if (!detail::narrow(py.gates[a], py.gates[b] - hy)) at = {1, 2 * a}, ok = false;
+  }
+  return detail::finish_heading(ok, px_t, py_t, psi_t);
+}
+
+// cn.add(ctc, {px, py, psi, d, dpsi, w}): the six tubes, whole, on one TDomain.
+class HeadingWindowNode : public detail::HeadingNodeBase {
+ public:
+  HeadingWindowNode(const CtcHeadingWindow& ctc, const std::vector<BoundDomain>& args)
+      : HeadingNodeBase("CtcHeadingWindow", args, 6, "p (2 components), psi, d, dpsi and w"), ctc_(ctc) {}
+  bool run(NodeRun& r) const override {
+    // The windows holding a changed atom (of any of the six tubes), as prefix counts.
+    bool constants = false;
+    const std::vector<std::size_t> atoms = dirty_time_atoms(r, constants);
+    std::vector<std::size_t> dirty(nb_time_atoms() + 1, 0);
+    for (const std::size_t i : atoms) ++dirty[i + 1];
+    for (std::size_t i = 0; i < nb_time_atoms(); ++i) dirty[i + 1] += dirty[i];
+    return run_heading(r, [&](detail::HeadingEmptyAt& at) {
+      return contract_window(tube_arg(0), tube_arg(1), tube_arg(2), tube_arg(3), tube_arg(4), tube_arg(5), ctc_, at,
+                             r.all || constants ? nullptr : &dirty);
+    });
+  }
+
+ private:
+  CtcHeadingWindow ctc_;
+};
+
+}  // namespace
+
+CtcHeadingWindow::CtcHeadingWindow(double window, double track, double turn_accel, std::size_t stride)
+    : window_(window), track_(track), turn_accel_(turn_accel), stride_(stride) {
+  if (!(window > 0) || !std::isfinite(window)) {
+    throw Error("CtcHeadingWindow: the window must be finite and > 0 s, got " + std::to_string(window));
+  }
+  if (!(track >= 0) || !std::isfinite(track)) {
+    throw Error("CtcHeadingWindow: the track error must be finite and >= 0, got " + std::to_string(track));
+  }
+  if (!(turn_accel > 0)) {
+    throw Error("CtcHeadingWindow: the turn acceleration must be > 0 (or inf), got " + std::to_string(turn_accel));
+  }
+  if (stride == 0) throw Error("CtcHeadingWindow: the stride must be >= 1 slice, got 0");
+}
+
+bool CtcHeadingWindow::contract(Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& dpsi, const Tube& w) const {
+  detail::HeadingEmptyAt at;
+  return contract_window(px, py, psi, d, dpsi, w, *this, at);
+}
+
+bool CtcHeadingWindow::contract(TubeVector& p, Tube& psi, const Tube& d, const Tube& dpsi, const Tube& w) const {
+  if (p.size() != 2) {
+    throw DimensionError("CtcHeadingWindow::contract: p must have 2 components, got " + std::to_string(p.size()));
+  }
+  return contract(p[0], p[1], psi, d, dpsi, w);
+}
+
+std::shared_ptr<const CnNode> CtcHeadingWindow::make_node(const std::vector<BoundDomain>& args) const {
+  return std::make_shared<HeadingWindowNode>(*this, args);
+}
+
+}  // namespace sillage

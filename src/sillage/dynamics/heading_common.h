@@ -1,0 +1,56 @@
+#pragma once
+// What CtcHeading and CtcHeadingWindow share: the direction of a
+// displacement box that excludes 0, the meet of an unwrapped angle with a
+// direction known modulo 2π, and the end of a contraction of p and ψ.
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sillage/cn/cn_node.h"
+#include "sillage/cn/tube_node.h"
+#include "sillage/interval/interval.h"
+#include "sillage/tube/tube.h"
+
+namespace sillage::detail {
+
+// The directions of the box (dx, dy), which does not hold 0: the narrower of
+// atan2 (cut on the negative x axis) and atan2 of the opposite box plus π
+// (cut on the positive x axis). Narrower than π.
+Interval box_direction(const Interval& dx, const Interval& dy);
+
+// s ∩ (r + 2πZ), hulled; s unchanged when s or r is unbounded or s is too
+// wide to enumerate its turns (> 1e6).
+Interval periodic_meet(const Interval& s, const Interval& r);
+
+// Where a contraction found no trajectory: the tube (0: px, 1: py, 2: psi) and its atom.
+struct HeadingEmptyAt {
+  std::size_t tube = 0, atom = kNoAtom;
+};
+
+// x ∩= y; false when empty.
+inline bool narrow(Interval& x, const Interval& y) {
+  x &= y;
+  return !x.is_empty();
+}
+
+// The end of a contraction of (px, py, psi): all three set empty when !ok,
+// else marked modified. Returns ok.
+bool finish_heading(bool ok, Tube& px, Tube& py, Tube& psi);
+
+// The network node of a heading contractor on whole tubes {px, py, psi, ...}
+// (`count` of them, on one TDomain): run_heading() runs a contraction of
+// the first three and reports to the network what shrank and where it
+// found emptiness.
+class HeadingNodeBase : public TubeNode {
+ protected:
+  HeadingNodeBase(const std::string& name, const std::vector<BoundDomain>& args, std::size_t count, const char* what);
+  Tube& tube_arg(std::size_t i) const { return t_[i]->tube(); }
+  bool run_heading(NodeRun& r, const std::function<bool(HeadingEmptyAt&)>& contract) const;
+
+ private:
+  std::vector<std::shared_ptr<TubeDomain>> t_;
+};
+
+}  // namespace sillage::detail
