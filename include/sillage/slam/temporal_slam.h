@@ -11,6 +11,7 @@
 // run to its fixed point first, then the accurate one (Alg. 13), as the
 // thesis does (7.3.2); each may be run alone.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "sillage/slam/slam_row.h"
@@ -25,6 +26,10 @@ struct TemporalSlamOptions {
   bool fast = true;       // run Alg. 14 to its fixed point
   bool accurate = true;   // then Alg. 13 to its fixed point
   std::size_t max_rounds = 20;  // cap on the rounds 1-5 per algorithm
+  // Called after every iteration of C_{p⇒z} with its row and the contracted
+  // p = h(x) (2-D): to check the truth at every gate, or to keep snapshots.
+  // Not timed (the row's seconds exclude it).
+  std::function<void(const SlamRow&, const TubeVector&)> on_iteration;
 };
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may

@@ -1,5 +1,6 @@
 #include "sillage/slam/temporal_slam.h"
 
+#include <chrono>
 #include <string>
 
 #include "sillage/dynamics/ctc_deriv.h"
@@ -90,15 +91,22 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         t00 = p.gate(0);
         reference = true;
       }
-      // 4. The inter-temporal implication.
-      const std::vector<SlamRow> its = cpz.contract(p, w, z);
-      for (SlamRow r : its) {
+      // 4. The inter-temporal implication, one iteration at a time.
+      std::size_t nb_its = 0;
+      for (std::size_t it = 0; it < cpz.max_iterations(); ++it) {
+        SlamRow r;
+        const auto start = std::chrono::steady_clock::now();
+        const bool shrunk = cpz.iterate(p, w, z, r);
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         r.iteration = rows.size() + 1;
         cumulated += r.seconds;
         r.cumulated_seconds = cumulated;
         r.contraction_tf = detail::contraction(tf0, p.gate(n));
         r.contraction_t0 = detail::contraction(t00, p.gate(0));
         rows.push_back(r);
+        ++nb_its;
+        if (options.on_iteration) options.on_iteration(rows.back(), p);
+        if (!shrunk || p.is_empty()) break;
       }
       // 5. Back to the states: x ∩= h⁻¹(p).
       for (std::size_t k = 0; k <= n; ++k) {
@@ -114,7 +122,7 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
         return rows;
       }
-      if (its.size() <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
+      if (nb_its <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
     }
   }
   return rows;
