@@ -21,6 +21,7 @@
 #include "example_check.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/expr/function.h"
+#include "sillage/figures/thickness_figure.h"
 #include "sillage/slam/bathymetry_figures.h"
 #include "sillage/slam/bathymetry_mission.h"
 #include "sillage/slam/bathymetry_tubes.h"
@@ -48,6 +49,9 @@ int main(int argc, char** argv) {
 
   BathymetryMissionOptions mo;
   mo.duration = duration;
+  mo.seabed.relief = example::option_number(argc, argv, "--relief", 1);
+  mo.depth = example::option_number(argc, argv, "--vehicle-depth", mo.depth);
+  mo.bounds.beam_angle = example::option_number(argc, argv, "--beam-angle", mo.bounds.beam_angle);
   const BathymetryMission m(seed, mo);
   const auto td = m.tdomain(dt);
   const std::size_t N = td->nb_slices();
@@ -113,6 +117,14 @@ int main(int argc, char** argv) {
   const IntervalVector pf = x.gate(N), p0 = x.gate(0);
   std::printf("  [p](t_f): dead reckoning %.1f x %.1f m -> SLAM %.1f x %.1f m\n", dr.gate(N)[0].diam(),
               dr.gate(N)[1].diam(), pf[0].diam(), pf[1].diam());
+  const auto mean_diagonal = [](const TubeVector& q) {
+    const std::vector<double> d = thickness_values(q.subvector(0, 1), ThicknessMeasure::Diagonal);
+    double s = 0;
+    for (double v : d) s += v;
+    return s / static_cast<double>(d.size());
+  };
+  std::printf("  mean diagonal of [p](t) over the mission: dead reckoning %.2f m -> SLAM %.2f m\n", mean_diagonal(dr),
+              mean_diagonal(x));
   if (scenario == 2)
     std::printf("  [p](t_0): propagated fix %.1f x %.1f m -> SLAM %.1f x %.1f m\n", dr.gate(0)[0].diam(),
                 dr.gate(0)[1].diam(), p0[0].diam(), p0[1].diam());

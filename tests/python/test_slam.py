@@ -235,3 +235,21 @@ def test_slam_figures():
     p = sillage.bathymetry_dead_reckoning(m, tdm, sillage.bathymetry_initial_box(m))
     fig = sillage.slam_map_figure(m, p, p, [p.gate(tdm.nb_slices())])
     assert "p-tf" in fig.svg()
+
+
+def test_ctc_omega_hull_is_contract_without_doing_it():
+    td, p, w, truth = drifting_loop()
+    boxes = [IntervalVector([Interval(1.1, 1.3), Interval(4.9, 5.3)]),
+             IntervalVector([Interval(1.0, 1.1), Interval(5.2, 5.4)])]
+    before = p.copy()
+    h = CtcOmega().hull(boxes, p, w)
+    assert p == before and not h.empty and len(h.atoms) > 0
+    assert h.nb_boxes == 2 and h.nb_consistent == 2 and h.nb_touched >= len(h.atoms)
+    q = p.copy()
+    assert h.apply_to(q)
+    r = p.copy()
+    assert CtcOmega().contract(boxes, r, w)
+    assert q == r and q.contains([truth])
+    a = h.atoms[0]
+    assert a.component == 0 and a.value.is_subset(p[0].gate(a.atom // 2) if a.atom % 2 == 0 else p[0].slice(a.atom // 2))
+    assert repr(h).startswith("OmegaHull(empty=False") and repr(a).startswith("OmegaHullAtom(component=0")

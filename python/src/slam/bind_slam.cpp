@@ -60,7 +60,39 @@ void init_slam(py::module_& m) {
           py::arg("boxes"), py::arg("p"), py::arg("w"),
           "Contracts the TubeVector p in place: p &= union over the t-boxes ([t1], [t2]) of CtcT1T2 on each. Boxes "
           "whose contraction is inconsistent are left out; if all are, p is emptied. Returns False if p is empty.")
+      .def(
+          "hull",
+          [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w) {
+            py::gil_scoped_release unlocked;
+            TubeVector work = p;
+            return c.hull(boxes, p, w, work);
+          },
+          py::arg("boxes"), py::arg("p"), py::arg("w"),
+          "What contract would do, without doing it: an OmegaHull (the narrowed gates and slices and their values). "
+          "p is left as it is; OmegaHull.apply_to(q) intersects it into a tube q.")
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
+
+  py::class_<OmegaHull::Atom>(m, "OmegaHullAtom", "One gate or slice narrowed by CtcOmega.hull.")
+      .def_readonly("component", &OmegaHull::Atom::component, "Component of the tube vector.")
+      .def_readonly("atom", &OmegaHull::Atom::atom, "2k: gate k, 2k + 1: slice k.")
+      .def_readonly("value", &OmegaHull::Atom::value, "Its new value (the hull over the consistent boxes).")
+      .def("__repr__", [](const OmegaHull::Atom& a) {
+        return "OmegaHullAtom(component=" + std::to_string(a.component) + ", " + (a.atom % 2 ? "slice " : "gate ") +
+               std::to_string(a.atom / 2) + ", " + a.value.str() + ")";
+      });
+  py::class_<OmegaHull>(m, "OmegaHull", "The sparse result of CtcOmega.hull: the atoms it narrows, or empty.")
+      .def_readonly("empty", &OmegaHull::empty, "No box is consistent: the tube would be emptied.")
+      .def_readonly("atoms", &OmegaHull::atoms, "The narrowed atoms, sorted by (component, atom).")
+      .def_readonly("nb_boxes", &OmegaHull::nb_boxes, "Boxes of the component.")
+      .def_readonly("nb_consistent", &OmegaHull::nb_consistent, "Boxes visited whose contraction is consistent.")
+      .def_readonly("nb_touched", &OmegaHull::nb_touched, "Atoms touched, summed over the boxes (the cost).")
+      .def(
+          "apply_to", [](const OmegaHull& h, TubeVector& q) { return h.apply_to(q); }, py::arg("q"),
+          "q &= the hull (emptied if empty). Returns False if q is empty after.")
+      .def("__repr__", [](const OmegaHull& h) {
+        return "OmegaHull(empty=" + std::string(h.empty ? "True" : "False") + ", " + std::to_string(h.atoms.size()) +
+               " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
+      });
 
   py::class_<SlamRow>(m, "SlamRow", "One iteration of C_{p=>z} or of the temporal SLAM (a row of thesis Table 7.2).")
       .def(py::init<>(), "An empty row.")
