@@ -2,7 +2,7 @@
 // temporal_slam: thesis Alg. 15 on the network (7.27):
 //   v = f(x, u),  x' = v,  p = h(x),  w = h(v) (7.26),  C_{p⇒z}(p, w, z),
 // applied as
-//   1. C_f:     v ∩= f(x, u)             (slice- and gate-wise, forward)
+//   1. C_f:     v ∩= f(x, u), x ∩= its backward HC4 pass (slice- and gate-wise; u read only)
 //   2. C_d/dt:  x, v                     (CtcDeriv)
 //   3. C_h:     p = h(x), w = h(v)        (h linear, as (7.25): then dh/dx·v = h(v))
 //   4. C_{p⇒z}(p, w, z, eps)             (to its fixed point)

@@ -108,3 +108,22 @@ TEST(TemporalSlam, AThrowingObserverStopsTheRun) {
   o.on_iteration = [](const SlamRow&, const TubeVector&) { throw Error("observer: stop"); };
   EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o), Error);
 }
+
+// C_f works both ways: v = f(x, u) = (u1, x1 - x2) with v2 = 0 known forces
+// x1 = x2 (the backward pass of HC4 contracts x, u is only read).
+TEST(TemporalSlam, EvolutionContractsTheStateBackward) {
+  const auto td = TDomain::create(0.0, 1.0, 0.1);
+  TubeVector x(td, 2), v(td, IntervalVector{Interval(-1, 1), Interval(0, 0)});
+  x.set_gate(0, IntervalVector{Interval(0, 1), Interval(0.5, 3)});
+  const TubeVector u(td, IntervalVector{Interval(0, 0)}), z(td, IntervalVector{Interval(0, 0)});
+  const Function f({"x1", "x2", "u1"}, "(u1, x1 - x2)"), h({"x1", "x2"}, "(x1, x2)");
+  TemporalSlamOptions o;
+  o.eps = 0.1;
+  o.accurate = false;
+  o.max_rounds = 1;
+  temporal_slam(x, v, u, z, f, h, o);
+  EXPECT_TRUE(x[1].gate(0).is_subset(Interval(0.5, 1)));
+  EXPECT_TRUE(x[0].gate(0).is_subset(Interval(0.5, 1)));
+  EXPECT_TRUE(x[0].gate(10).is_subset(Interval(0.5, 1)));  // x' = v = 0 carries it forward
+  EXPECT_TRUE(x[1].contains(Trajectory("0.75", td->t0_tf())));
+}
