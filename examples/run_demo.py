@@ -54,6 +54,8 @@ EXAMPLES = [
     ("bathymetry_mission", "py", "bathymetry_mission.py"),
     ("problem_file", "py", "problem_file.py"),
     ("temporal_slam_small", "py", "temporal_slam_small.py"),
+    ("bathymetry_slam", "cpp", "example_bathymetry_slam"),
+    ("bathymetry_slam", "py", "bathymetry_slam.py"),
 ]
 
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bathymetry_check.h"
 #include "example_args.h"
 #include "example_check.h"
 #include "sillage/figures/thickness_figure.h"
@@ -24,19 +25,6 @@ using namespace sillage;
 namespace {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-
-// Samples of v outside the tube x (gates at their time points, slices in between).
-std::size_t misses(const Tube& x, const std::vector<double>& times, const std::vector<double>& v) {
-  const auto& td = *x.tdomain();
-  std::size_t k = 0, n = 0;
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    while (k + 1 < td.nb_slices() && td.t(k + 1) <= times[i]) ++k;
-    if (td.t(k) == times[i] && !x.gate(k).contains(v[i])) ++n;
-    if (!x.slice(k).contains(v[i])) ++n;
-  }
-  if (!x.gate(td.nb_slices()).contains(v.back())) ++n;
-  return n;
-}
 
 // Standard deviation of the DEM nodes over the x-range [a, b].
 double relief_std(const BathymetryDem& d, double a, double b) {
@@ -93,9 +81,9 @@ int main(int argc, char** argv) {
               bathymetry_observation_rate_bound(m));
   std::printf("  CPU: generation %.2f s, tubes %.2f s\n", t_gen, t_tubes);
 
-  const std::size_t miss = misses(p[0], m.times(), m.x1()) + misses(p[1], m.times(), m.x2()) +
-                           misses(p[2], m.times(), m.truth().depth) +
-                           misses(z, m.times(), bathymetry_truth_observation(m).sample_values());
+  const std::size_t miss = example::truth_misses(p[0], m.times(), m.x1()) + example::truth_misses(p[1], m.times(), m.x2()) +
+                           example::truth_misses(p[2], m.times(), m.truth().depth) +
+                           example::truth_misses(z, m.times(), bathymetry_truth_observation(m).sample_values());
   const bool ok = example::enclosure_ok(p) && example::enclosure_ok(z) && miss == 0;
   std::printf("  truth inside p and z at every gate and slice: %s (%zu misses)\n", ok ? "yes" : "NO", miss);
 

@@ -151,3 +151,15 @@ def test_range_observation_plaza1():
         truth = np.hypot(gt["x_m"] - bc["x_m"][i], gt["y_m"] - bc["y_m"][i])
         for t, r in list(zip(gt["t_s"], truth))[::7]:
             assert z[i](float(t)).contains(float(r))
+
+
+def test_relief_scales_the_seabed_class():
+    o = sillage.SeabedOptions()
+    one = sillage.generate_seabed(5, o)
+    o.relief = 2.0
+    two = sillage.generate_seabed(5, o)
+    assert abs(two.bounds.curvature - 2 * one.bounds.curvature) < 1e-12
+    assert abs(two.bounds.slope - 2 * one.bounds.slope) < 1e-12
+    o.relief = -1.0
+    with pytest.raises(sillage.Error, match="relief"):
+        sillage.generate_seabed(5, o)

@@ -189,3 +189,67 @@ def test_tide_and_observation():
     with pytest.raises(sillage.Error, match="duration"):
         sillage.tide_tube(td, sillage.TideModel(duration=-1.0))
     assert repr(tide).startswith("TideModel(")
+
+
+def test_temporal_slam_on_iteration_sees_every_row():
+    """The observer gets each row and p (2-D): the truth inside at every iteration,
+    accurate never wider than the last fast p; an exception in it stops the run."""
+    x, v, u, z, f, h, truth = mission()
+    o = sillage.TemporalSlamOptions()
+    o.eps = 0.01
+    seen = []
+
+    def watch(row, p):
+        seen.append((row.iteration, row.fast, p))
+        assert p.contains(truth[:2])
+
+    o.on_iteration = watch
+    rows = sillage.temporal_slam(x, v, u, z, f, h, o)
+    assert [s[0] for s in seen] == [r.iteration for r in rows]
+    last_fast = [p for _, fast, p in seen if fast][-1]
+    assert all(p.is_subset(last_fast) for _, fast, p in seen if not fast)
+
+    def stop(row, p):
+        raise ValueError("stop here")
+
+    x, v, u, z, f, h, truth = mission()
+    o.on_iteration = stop
+    with pytest.raises(ValueError, match="stop here"):
+        sillage.temporal_slam(x, v, u, z, f, h, o)
+
+
+def test_slam_figures():
+    td = TDomain(0.0, 10.0, 1.0)
+    a = TubeVector(td, IntervalVector([Interval(0, 4), Interval(0, 3)]))
+    b = TubeVector(td, IntervalVector([Interval(1, 2), Interval(1, 2)]))
+    svg = sillage.slam_thickness_figure([sillage.ThicknessCurve(a, "dead reckoning", "#777777"),
+                                         sillage.ThicknessCurve(b, "slam", "#d62728")]).svg()
+    assert "dead reckoning" in svg and "#d62728" in svg
+    assert repr(sillage.ThicknessCurve(a, "x", "red")) == "ThicknessCurve(label='x', colour='red')"
+    with pytest.raises(sillage.Error):
+        sillage.slam_thickness_figure([])
+    opts = sillage.BathymetryMissionOptions()
+    opts.duration = 300.0
+    m = sillage.BathymetryMission(seed=3, options=opts)
+    tdm = m.tdomain(1.0)
+    p = sillage.bathymetry_dead_reckoning(m, tdm, sillage.bathymetry_initial_box(m))
+    fig = sillage.slam_map_figure(m, p, p, [p.gate(tdm.nb_slices())])
+    assert "p-tf" in fig.svg()
+
+
+def test_ctc_omega_hull_is_contract_without_doing_it():
+    td, p, w, truth = drifting_loop()
+    boxes = [IntervalVector([Interval(1.1, 1.3), Interval(4.9, 5.3)]),
+             IntervalVector([Interval(1.0, 1.1), Interval(5.2, 5.4)])]
+    before = p.copy()
+    h = CtcOmega().hull(boxes, p, w)
+    assert p == before and not h.empty and len(h.atoms) > 0
+    assert h.nb_boxes == 2 and h.nb_consistent == 2 and h.nb_touched >= len(h.atoms)
+    q = p.copy()
+    assert h.apply_to(q)
+    r = p.copy()
+    assert CtcOmega().contract(boxes, r, w)
+    assert q == r and q.contains([truth])
+    a = h.atoms[0]
+    assert a.component == 0 and a.value.is_subset(p[0].gate(a.atom // 2) if a.atom % 2 == 0 else p[0].slice(a.atom // 2))
+    assert repr(h).startswith("OmegaHull(empty=False") and repr(a).startswith("OmegaHullAtom(component=0")

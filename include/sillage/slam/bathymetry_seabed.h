@@ -26,6 +26,7 @@ struct SeabedOptions {
   double smooth_width = 170;  // width of the smooth western strip (m)
   int nb_rocks = 7;
   int nb_banks = 2;
+  double relief = 1;          // factor on every relief amplitude (slope, banks, rocks, waves, swell)
 };
 
 struct SeabedClass {

@@ -13,7 +13,11 @@
 // or slice) that some consistent box did not touch keeps its value (the hull
 // with the untouched value is the value). A box whose contraction is
 // inconsistent (no loop there) is left out of the union; when all of them
-// are, p is emptied.
+// are, p is emptied. The result does not depend on the order of the boxes,
+// so they are visited spread over Ω (a golden-ratio stride), and the visit
+// stops once no atom can shrink any more (every atom left is either untouched
+// by a consistent box or already back to its reference value): on a wide Ω
+// that holds after a few boxes instead of all of them.
 #include <cstddef>
 #include <vector>
 
@@ -34,7 +38,7 @@ struct OmegaHull {
   bool empty = false;
   std::vector<Atom> atoms;        // sorted by (component, atom)
   std::size_t nb_boxes = 0;       // boxes of Ω
-  std::size_t nb_consistent = 0;  // boxes whose contraction is consistent
+  std::size_t nb_consistent = 0;  // boxes whose contraction is consistent (of those visited)
   std::size_t nb_touched = 0;     // atoms touched, summed over the boxes (the cost)
 
   // p ∩= the hull (empty: p emptied). Returns false if p is empty after.

@@ -2,7 +2,7 @@
 // temporal_slam: thesis Alg. 15 on the network (7.27):
 //   v = f(x, u),  x' = v,  p = h(x),  w = h(v) (7.26),  C_{p⇒z}(p, w, z),
 // applied as
-//   1. C_f:     v ∩= f(x, u)             (slice- and gate-wise, forward)
+//   1. C_f:     v ∩= f(x, u), x ∩= its backward HC4 pass (slice- and gate-wise; u read only)
 //   2. C_d/dt:  x, v                     (CtcDeriv)
 //   3. C_h:     p = h(x), w = h(v)        (h linear, as (7.25): then dh/dx·v = h(v))
 //   4. C_{p⇒z}(p, w, z, eps)             (to its fixed point)
@@ -11,6 +11,7 @@
 // run to its fixed point first, then the accurate one (Alg. 13), as the
 // thesis does (7.3.2); each may be run alone.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "sillage/slam/slam_row.h"
@@ -25,6 +26,10 @@ struct TemporalSlamOptions {
   bool fast = true;       // run Alg. 14 to its fixed point
   bool accurate = true;   // then Alg. 13 to its fixed point
   std::size_t max_rounds = 20;  // cap on the rounds 1-5 per algorithm
+  // Called after every iteration of C_{p⇒z} with its row and the contracted
+  // p = h(x) (2-D): to check the truth at every gate, or to keep snapshots.
+  // Not timed (the row's seconds exclude it).
+  std::function<void(const SlamRow&, const TubeVector&)> on_iteration;
 };
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may

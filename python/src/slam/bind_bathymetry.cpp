@@ -36,7 +36,8 @@ void init_bathymetry_data(py::module_& m) {
       .def_readwrite("base_depth", &SeabedOptions::base_depth, "Depth at the origin (m, below the chart datum).")
       .def_readwrite("smooth_width", &SeabedOptions::smooth_width, "Width of the smooth western strip (m).")
       .def_readwrite("nb_rocks", &SeabedOptions::nb_rocks, "Number of rocks.")
-      .def_readwrite("nb_banks", &SeabedOptions::nb_banks, "Number of sandbanks.");
+      .def_readwrite("nb_banks", &SeabedOptions::nb_banks, "Number of sandbanks.")
+      .def_readwrite("relief", &SeabedOptions::relief, "Factor on every relief amplitude (slope, banks, rocks, waves).");
   py::class_<SeabedClass>(m, "SeabedClass",
                           "Stated bounds of a generated seabed: curvature (Hessian norm), slope, node roughness.")
       .def(py::init<double, double, double>(), py::arg("curvature"), py::arg("slope"), py::arg("roughness"),

@@ -2,6 +2,7 @@
 // CtcPImpliesZ (Alg. 13-14) with its rows (Table 7.2), temporal_slam
 // (Alg. 15), the bathymetric observation (7.29)-(7.30).
 // Contractions run with the GIL released.
+#include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include "bindings.h"
@@ -9,6 +10,7 @@
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/slam/ctc_t1t2.h"
 #include "sillage/slam/observation.h"
+#include "sillage/slam/slam_figures.h"
 #include "sillage/slam/temporal_slam.h"
 #include "sillage/expr/function.h"
 
@@ -58,7 +60,39 @@ void init_slam(py::module_& m) {
           py::arg("boxes"), py::arg("p"), py::arg("w"),
           "Contracts the TubeVector p in place: p &= union over the t-boxes ([t1], [t2]) of CtcT1T2 on each. Boxes "
           "whose contraction is inconsistent are left out; if all are, p is emptied. Returns False if p is empty.")
+      .def(
+          "hull",
+          [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w) {
+            py::gil_scoped_release unlocked;
+            TubeVector work = p;
+            return c.hull(boxes, p, w, work);
+          },
+          py::arg("boxes"), py::arg("p"), py::arg("w"),
+          "What contract would do, without doing it: an OmegaHull (the narrowed gates and slices and their values). "
+          "p is left as it is; OmegaHull.apply_to(q) intersects it into a tube q.")
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
+
+  py::class_<OmegaHull::Atom>(m, "OmegaHullAtom", "One gate or slice narrowed by CtcOmega.hull.")
+      .def_readonly("component", &OmegaHull::Atom::component, "Component of the tube vector.")
+      .def_readonly("atom", &OmegaHull::Atom::atom, "2k: gate k, 2k + 1: slice k.")
+      .def_readonly("value", &OmegaHull::Atom::value, "Its new value (the hull over the consistent boxes).")
+      .def("__repr__", [](const OmegaHull::Atom& a) {
+        return "OmegaHullAtom(component=" + std::to_string(a.component) + ", " + (a.atom % 2 ? "slice " : "gate ") +
+               std::to_string(a.atom / 2) + ", " + a.value.str() + ")";
+      });
+  py::class_<OmegaHull>(m, "OmegaHull", "The sparse result of CtcOmega.hull: the atoms it narrows, or empty.")
+      .def_readonly("empty", &OmegaHull::empty, "No box is consistent: the tube would be emptied.")
+      .def_readonly("atoms", &OmegaHull::atoms, "The narrowed atoms, sorted by (component, atom).")
+      .def_readonly("nb_boxes", &OmegaHull::nb_boxes, "Boxes of the component.")
+      .def_readonly("nb_consistent", &OmegaHull::nb_consistent, "Boxes visited whose contraction is consistent.")
+      .def_readonly("nb_touched", &OmegaHull::nb_touched, "Atoms touched, summed over the boxes (the cost).")
+      .def(
+          "apply_to", [](const OmegaHull& h, TubeVector& q) { return h.apply_to(q); }, py::arg("q"),
+          "q &= the hull (emptied if empty). Returns False if q is empty after.")
+      .def("__repr__", [](const OmegaHull& h) {
+        return "OmegaHull(empty=" + std::string(h.empty ? "True" : "False") + ", " + std::to_string(h.atoms.size()) +
+               " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
+      });
 
   py::class_<SlamRow>(m, "SlamRow", "One iteration of C_{p=>z} or of the temporal SLAM (a row of thesis Table 7.2).")
       .def(py::init<>(), "An empty row.")
@@ -113,6 +147,9 @@ void init_slam(py::module_& m) {
       .def_readwrite("fast", &TemporalSlamOptions::fast, "Run Alg. 14 to its fixed point.")
       .def_readwrite("accurate", &TemporalSlamOptions::accurate, "Then Alg. 13 to its fixed point.")
       .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, "Cap on the rounds per algorithm.")
+      .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration,
+                     "None, or a callable(row, p) called after every iteration of C_{p=>z} with its SlamRow and a "
+                     "copy of the contracted p (2-D TubeVector): to check the truth or keep snapshots.")
       .def("__repr__", [](const py::object& self) { return fields_repr(self); });
 
   m.def(
@@ -127,6 +164,22 @@ void init_slam(py::module_& m) {
       "The temporal SLAM of thesis Alg. 15: contracts the state tube x and its derivative v in place from\n"
       "v = f(x, u), x' = v, p = h(x) (h linear, 2 outputs), w = h(v) and p(t1) = p(t2) => z(t1) = z(t2);\n"
       "fast (Alg. 14) then accurate (Alg. 13), each to its fixed point. Returns the list of SlamRow.");
+
+  py::class_<ThicknessCurve>(m, "ThicknessCurve", "One curve of slam_thickness_figure: a tube, a legend, a colour.")
+      .def(py::init<TubeVector, std::string, std::string>(), py::arg("p"), py::arg("label"), py::arg("colour"),
+           "The curve of p (its components 0 and 1), labelled, in an SVG colour.")
+      .def_readwrite("p", &ThicknessCurve::p, "The tube (components 0 and 1 measured).")
+      .def_readwrite("label", &ThicknessCurve::label, "The legend.")
+      .def_readwrite("colour", &ThicknessCurve::colour, "The SVG colour.")
+      .def("__repr__", [](const ThicknessCurve& c) { return "ThicknessCurve(label='" + c.label + "', colour='" + c.colour + "')"; });
+  m.def("slam_thickness_figure", &slam_thickness_figure, py::arg("curves"),
+        py::arg("title") = "Thickness of [p](t): diagonal of [p1] x [p2]", py::arg("width_px") = 700,
+        py::arg("height_px") = 300,
+        "The thickness graph of thesis Fig. 7.17: the diagonal of [p1] x [p2] per slice of every curve, one axis.");
+  m.def("slam_map_figure", &slam_map_figure, py::arg("mission"), py::arg("dead_reckoning"), py::arg("slam"),
+        py::arg("tf_boxes"), py::arg("title") = "Temporal SLAM: dead reckoning, SLAM, truth, [p](t_f)",
+        py::arg("width_px") = 600,
+        "The mission map of thesis Fig. 7.16: dead-reckoning tube, SLAM tube, truth, successive boxes [p](t_f).");
 
   m.def("tide_tube", &tide_tube, py::arg("tdomain"), py::arg("tide"), "The tide as a Tube on tdomain.");
   m.def("bathymetric_observation", &bathymetric_observation, py::arg("z_alt"), py::arg("z_depth"), py::arg("tide"),

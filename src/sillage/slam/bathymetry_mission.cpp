@@ -89,6 +89,10 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
     if (!std::isfinite(seabed.lb()) || !std::isfinite(seabed.ub()))
       throw Error("BathymetryMission: the path leaves the DEM at t = " + std::to_string(t) + " s");
     truth_.altitude[i] = seabed.mid() + tide_truth_[i] + p[2];
+    if (!(truth_.altitude[i] > 0))
+      throw Error("BathymetryMission: the seabed (" + std::to_string(seabed.mid()) + " m deep) rises above the vehicle (" +
+                  std::to_string(-p[2]) + " m deep) at t = " + std::to_string(t) +
+                  " s; lower options.depth or options.seabed.relief");
     alt_filt_[i] = footprint_depth(seabed_.dem, p[0], p[1], s.yaw, truth_.altitude[i], o.bounds) + tide_truth_[i] + p[2];
     if (i == n) break;
     double acc[3] = {0, 0, 0}, wv[3];

@@ -32,25 +32,27 @@ double logistic(double x, double x0, double w) { return 1 / (1 + std::exp(-(x - 
 
 Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
   if (!(o.size > 10) || !(o.cell > 0) || !std::isfinite(o.size) || !std::isfinite(o.base_depth) ||
-      !(o.smooth_width >= 0) || o.smooth_width > o.size || o.nb_rocks < 0 || o.nb_banks < 0)
-    throw Error("generate_seabed: size > 10, cell > 0, 0 <= smooth_width <= size, counts >= 0 expected");
+      !(o.smooth_width >= 0) || o.smooth_width > o.size || o.nb_rocks < 0 || o.nb_banks < 0 || !(o.relief >= 0) ||
+      !std::isfinite(o.relief))
+    throw Error("generate_seabed: size > 10, cell > 0, 0 <= smooth_width <= size, counts >= 0, finite relief >= 0 expected");
+  const double R = o.relief;  // scales every relief amplitude (and so the class bounds)
   detail::BathymetryRng rng(seed);
   const double L = o.size;
   // Regional slope: deeper towards the south-east, ~3-5 m across the area.
-  const double sx = rng.uniform(0.004, 0.007), sy = -rng.uniform(0.002, 0.004);
+  const double sx = R * rng.uniform(0.004, 0.007), sy = -R * rng.uniform(0.002, 0.004);
   // Smooth strip in the west, rough part beyond a transition of width tw.
   const double x_edge = o.smooth_width, tw = 15;
   std::vector<Gaussian> banks, rocks;
   for (int k = 0; k < o.nb_banks; ++k) {  // sandbanks: shallower ridges, 150-250 m long
     const double th = rng.uniform(0, kPi);
-    banks.push_back({rng.uniform(x_edge + 60, L - 60), rng.uniform(60, L - 60), -rng.uniform(2.0, 3.5),
+    banks.push_back({rng.uniform(x_edge + 60, L - 60), rng.uniform(60, L - 60), -R * rng.uniform(2.0, 3.5),
                      rng.uniform(90, 130), rng.uniform(35, 50), std::cos(th), std::sin(th)});
   }
   // Rocks 0.8-1.5 m high, sigma 8-12 m, at least 8 sigma_max = 96 m apart.
   const double rock_smax = 12;
   for (int k = 0, tries = 0; k < o.nb_rocks && tries < 10000; ++tries) {
     const double s = rng.uniform(8, rock_smax), cx = rng.uniform(x_edge + 30, L - 20), cy = rng.uniform(20, L - 20);
-    const double amp = -rng.uniform(0.8, 1.5);
+    const double amp = -R * rng.uniform(0.8, 1.5);
     bool far = true;
     for (const auto& r : rocks) far = far && std::hypot(r.cx - cx, r.cy - cy) >= 8 * rock_smax;
     if (!far) continue;
@@ -58,10 +60,10 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
     ++k;
   }
   // Sand waves: crests across a random direction, wavelength 40-55 m, amplitude 0.2-0.3 m.
-  const double wl = rng.uniform(40, 55), wamp = rng.uniform(0.2, 0.3), wth = rng.uniform(0, kPi);
+  const double wl = rng.uniform(40, 55), wamp = R * rng.uniform(0.2, 0.3), wth = rng.uniform(0, kPi);
   const double kx = 2 * kPi / wl * std::cos(wth), ky = 2 * kPi / wl * std::sin(wth), wph = rng.uniform(0, 2 * kPi);
   // A gentle swell in the smooth part too (0.3 m over 200 m).
-  const double gamp = 0.3, gk = 2 * kPi / 200, gph = rng.uniform(0, 2 * kPi);
+  const double gamp = R * 0.3, gk = 2 * kPi / 200, gph = rng.uniform(0, 2 * kPi);
   const double roughness = 0.03;
 
   // The class, from the parameters. Gaussian: |H| <= A/s_min^2, |grad| <= A/s_min e^{-1/2}.

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_map>
+#include <numeric>
+#include <utility>
 
 #include "sillage/cn/tube_changes.h"
 #include "sillage/ctc/shrink.h"
@@ -11,11 +12,6 @@
 namespace sillage {
 
 namespace {
-
-struct Entry {
-  Interval hull = Interval::empty();
-  std::size_t count = 0;  // consistent boxes that touched the atom
-};
 
 Interval& atom_ref(Tube& x, std::size_t a) {
   return a % 2 == 0 ? x.data().gates[a / 2] : x.data().slices[a / 2];
@@ -69,44 +65,70 @@ OmegaHull CtcOmega::hull(const std::vector<IntervalVector>& boxes, const TubeVec
     wp.push_back(&work[i]);
     ww.push_back(&w[i]);
   }
-  std::unordered_map<std::size_t, Entry> entries;
+  // The candidates: atoms every consistent box so far touched, whose hull is
+  // still narrower than the reference (sorted by key). A later box can only
+  // remove candidates (by not touching one, or by widening its hull to the
+  // reference value), so once none is left after a consistent box the result
+  // is known and the remaining boxes are skipped.
+  std::vector<std::pair<std::size_t, Interval>> cand, next, met;
   std::vector<std::vector<std::size_t>> logged(n);
   OmegaHull out;
   out.nb_boxes = boxes.size();
-  for (const IntervalVector& box : boxes) {
+  // The hull does not depend on the order of the boxes: visit them spread
+  // over Ω (a golden-ratio stride) so that the hulls reach the reference, and
+  // the candidates run out, after few boxes.
+  const std::size_t m = boxes.size();
+  std::size_t stride = std::max<std::size_t>(1, static_cast<std::size_t>(0.618034 * static_cast<double>(m)));
+  while (std::gcd(stride, m) != 1) ++stride;
+  for (std::size_t j = 0, idx = 0; j < m; ++j, idx = (idx + stride) % m) {
+    const IntervalVector& box = boxes[idx];
+    if (out.nb_consistent > 0 && cand.empty()) break;
     for (auto& l : logged) l.clear();
     std::vector<TubeChanges> logs;
     for (auto& l : logged) logs.emplace_back(l, 0, 0.0);
     Interval t1 = box[0], t2 = box[1];
     if (t1.is_empty() || t2.is_empty()) continue;
     const bool ok = t1t2_.contract(t1, t2, wp, ww, logs);
-    if (ok) ++out.nb_consistent;
+    met.clear();
     for (std::size_t i = 0; i < n; ++i) {
       auto& l = logged[i];
       std::sort(l.begin(), l.end());
       l.erase(std::unique(l.begin(), l.end()), l.end());
       out.nb_touched += l.size();
       for (std::size_t a : l) {
-        if (ok) {
-          Entry& e = entries[i * atoms_per_tube + a];
-          e.hull |= atom_of(work[i], a);
-          ++e.count;
-        }
+        if (ok) met.emplace_back(i * atoms_per_tube + a, atom_of(work[i], a));
         atom_ref(work[i], a) = atom_of(p[i], a);  // back to the reference
       }
       work[i].touch();
     }
     // An inconsistent contraction empties the whole working tube (CtcEval,
     // Lemma 5.1): put all of it back.
-    if (!ok) work = p;
+    if (!ok) {
+      work = p;
+      continue;
+    }
+    const auto reference = [&](std::size_t key) -> const Interval& {
+      return atom_of(p[key / atoms_per_tube], key % atoms_per_tube);
+    };
+    next.clear();
+    if (out.nb_consistent++ == 0) {
+      for (const auto& m : met)
+        if (m.second != reference(m.first)) next.push_back(m);
+    } else {  // met and cand are both sorted by key: intersect them
+      auto c = cand.begin();
+      for (const auto& m : met) {
+        while (c != cand.end() && c->first < m.first) ++c;
+        if (c == cand.end()) break;
+        if (c->first != m.first) continue;
+        const Interval h = c->second | m.second;
+        if (h != reference(m.first)) next.emplace_back(m.first, h);
+      }
+    }
+    cand.swap(next);
   }
   out.empty = out.nb_consistent == 0;
   if (out.empty) return out;
-  for (const auto& [key, e] : entries) {
-    if (e.count != out.nb_consistent) continue;  // some box left it as it was
-    const std::size_t i = key / atoms_per_tube, a = key % atoms_per_tube;
-    if (e.hull != atom_of(p[i], a)) out.atoms.push_back({i, a, e.hull});
-  }
+  for (const auto& [key, h] : cand) out.atoms.push_back({key / atoms_per_tube, key % atoms_per_tube, h});
   std::sort(out.atoms.begin(), out.atoms.end(), [](const OmegaHull::Atom& x, const OmegaHull::Atom& y) {
     return x.component != y.component ? x.component < y.component : x.atom < y.atom;
   });

@@ -1,5 +1,6 @@
 #include "sillage/slam/temporal_slam.h"
 
+#include <chrono>
 #include <string>
 
 #include "sillage/dynamics/ctc_deriv.h"
@@ -41,6 +42,32 @@ void eval_into(TubeVector& y, const Function& g, const Args& args) {
   touch(y);
 }
 
+// C_f on every slice and gate: v ∩= f(x, u), then x ∩= the x-part of
+// HC4-revise of (x, u) against v (u is an input: read only). An empty result
+// empties x and v.
+void evolution(TubeVector& x, TubeVector& v, const TubeVector& u, const Function& f) {
+  const std::size_t n = x.nb_slices(), nx = x.size();
+  bool empty = false;
+  for (std::size_t k = 0; k <= n && !empty; ++k) {
+    for (bool gate : {true, false}) {
+      if (!gate && k == n) continue;
+      const auto at = [&](const TubeVector& y) { return gate ? y.gate(k) : y.slice(k); };
+      IntervalVector args = u.size() ? concat(at(x), at(u)) : at(x);
+      intersect_atom(v, k, gate, f.eval_vector(args));
+      if (!f.hc4_revise(args, at(v))) {
+        empty = true;
+        break;
+      }
+      intersect_atom(x, k, gate, args.subvector(0, nx - 1));
+    }
+  }
+  if (empty) {
+    for (std::size_t i = 0; i < nx; ++i) x[i].set(Interval::empty()), v[i].set(Interval::empty());
+  }
+  touch(x);
+  touch(v);
+}
+
 void check(const TubeVector& x, const TubeVector& v, const TubeVector& u, const Function& f, const Function& h,
            const TemporalSlamOptions& o) {
   const std::string where = "temporal_slam(x, v, u, z, f, h)";
@@ -78,8 +105,8 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
     if ((fast && !options.fast) || (!fast && !options.accurate)) continue;
     const CtcPImpliesZ cpz(options.eps, fast);
     for (std::size_t round = 0; round < options.max_rounds; ++round) {
-      // 1-2. Evolution: v = f(x, u), x' = v.
-      eval_into(v, f, [&](std::size_t k, bool g) { return u.size() ? concat(at(x, k, g), at(u, k, g)) : at(x, k, g); });
+      // 1-2. Evolution: v = f(x, u) both ways (x from v too), x' = v.
+      evolution(x, v, u, f);
       CtcDeriv().contract(x, v);
       // 3. Configurations p = h(x) and their derivative w = h(v).
       eval_into(p, h, [&](std::size_t k, bool g) { return at(x, k, g); });
@@ -90,15 +117,22 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         t00 = p.gate(0);
         reference = true;
       }
-      // 4. The inter-temporal implication.
-      const std::vector<SlamRow> its = cpz.contract(p, w, z);
-      for (SlamRow r : its) {
+      // 4. The inter-temporal implication, one iteration at a time.
+      std::size_t nb_its = 0;
+      for (std::size_t it = 0; it < cpz.max_iterations(); ++it) {
+        SlamRow r;
+        const auto start = std::chrono::steady_clock::now();
+        const bool shrunk = cpz.iterate(p, w, z, r);
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         r.iteration = rows.size() + 1;
         cumulated += r.seconds;
         r.cumulated_seconds = cumulated;
         r.contraction_tf = detail::contraction(tf0, p.gate(n));
         r.contraction_t0 = detail::contraction(t00, p.gate(0));
         rows.push_back(r);
+        ++nb_its;
+        if (options.on_iteration) options.on_iteration(rows.back(), p);
+        if (!shrunk || p.is_empty()) break;
       }
       // 5. Back to the states: x ∩= h⁻¹(p).
       for (std::size_t k = 0; k <= n; ++k) {
@@ -114,7 +148,7 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
         return rows;
       }
-      if (its.size() <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
+      if (nb_its <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
     }
   }
   return rows;

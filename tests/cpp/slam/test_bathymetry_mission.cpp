@@ -125,3 +125,26 @@ TEST(BathymetryMission, BadOptionsAreRefused) {
   o.duration = -1;
   EXPECT_THROW(BathymetryMission(1, o), Error);
 }
+
+// SeabedOptions.relief scales the relief and its class bounds; a seabed that
+// rises above the vehicle is a clear error, not a crash.
+TEST(BathymetryMission, ReliefScalesTheSeabedAndACollisionIsAnError) {
+  SeabedOptions o;
+  const Seabed one = generate_seabed(5, o);
+  o.relief = 2;
+  const Seabed two = generate_seabed(5, o);
+  EXPECT_NEAR(two.bounds.curvature, 2 * one.bounds.curvature, 1e-12);
+  EXPECT_NEAR(two.bounds.slope, 2 * one.bounds.slope, 1e-12);
+  EXPECT_GT(two.dem.max_depth() - two.dem.min_depth(), 1.5 * (one.dem.max_depth() - one.dem.min_depth()));
+  o.relief = -1;
+  EXPECT_THROW(generate_seabed(5, o), Error);
+  BathymetryMissionOptions mo;
+  mo.duration = 600;
+  mo.seabed.relief = 4;
+  try {
+    const BathymetryMission m(7, mo);
+    FAIL() << "a seabed above the vehicle must be an error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("rises above the vehicle"), std::string::npos) << e.what();
+  }
+}

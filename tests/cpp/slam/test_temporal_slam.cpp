@@ -73,3 +73,57 @@ TEST(TemporalSlam, BadInputSaysWhatAndWhere) {
   o.fast = o.accurate = false;
   EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o), Error);
 }
+
+// on_iteration sees every row, in order, with the p of that iteration: the
+// truth inside p at every gate and slice of every iteration, the accurate
+// iterations never wider than the last fast one, the rows' seconds untouched
+// by the observer.
+TEST(TemporalSlam, EveryIterationIsObservedAndKeepsTheTruth) {
+  Mission m;
+  TemporalSlamOptions o;
+  o.eps = 0.01;
+  std::vector<std::size_t> seen;
+  std::size_t lost = 0, wider = 0;
+  TubeVector last_fast(m.s.td, 2);
+  o.on_iteration = [&](const SlamRow& r, const TubeVector& p) {
+    seen.push_back(r.iteration);
+    ASSERT_EQ(p.size(), 2u);
+    if (!p.contains(std::vector<Trajectory>{m.truth[0], m.truth[1]})) ++lost;
+    if (r.fast) last_fast = p;
+    else if (!p.is_subset(last_fast)) ++wider;
+  };
+  const auto rows = temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o);
+  ASSERT_EQ(seen.size(), rows.size());
+  for (std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], i + 1);
+  EXPECT_EQ(lost, 0u);
+  EXPECT_EQ(wider, 0u);
+  EXPECT_TRUE(m.x.contains(m.truth));
+}
+
+// An observer that throws stops the run with its error (nothing swallowed).
+TEST(TemporalSlam, AThrowingObserverStopsTheRun) {
+  Mission m;
+  TemporalSlamOptions o;
+  o.eps = 0.01;
+  o.on_iteration = [](const SlamRow&, const TubeVector&) { throw Error("observer: stop"); };
+  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, m.h, o), Error);
+}
+
+// C_f works both ways: v = f(x, u) = (u1, x1 - x2) with v2 = 0 known forces
+// x1 = x2 (the backward pass of HC4 contracts x, u is only read).
+TEST(TemporalSlam, EvolutionContractsTheStateBackward) {
+  const auto td = TDomain::create(0.0, 1.0, 0.1);
+  TubeVector x(td, 2), v(td, IntervalVector{Interval(-1, 1), Interval(0, 0)});
+  x.set_gate(0, IntervalVector{Interval(0, 1), Interval(0.5, 3)});
+  const TubeVector u(td, IntervalVector{Interval(0, 0)}), z(td, IntervalVector{Interval(0, 0)});
+  const Function f({"x1", "x2", "u1"}, "(u1, x1 - x2)"), h({"x1", "x2"}, "(x1, x2)");
+  TemporalSlamOptions o;
+  o.eps = 0.1;
+  o.accurate = false;
+  o.max_rounds = 1;
+  temporal_slam(x, v, u, z, f, h, o);
+  EXPECT_TRUE(x[1].gate(0).is_subset(Interval(0.5, 1)));
+  EXPECT_TRUE(x[0].gate(0).is_subset(Interval(0.5, 1)));
+  EXPECT_TRUE(x[0].gate(10).is_subset(Interval(0.5, 1)));  // x' = v = 0 carries it forward
+  EXPECT_TRUE(x[1].contains(Trajectory("0.75", td->t0_tf())));
+}

@@ -1,0 +1,81 @@
+#include "sillage/slam/slam_figures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sillage/error.h"
+#include "sillage/figures/thickness_figure.h"
+#include "sillage/figures/tube_figure.h"
+#include "sillage/slam/bathymetry_tubes.h"
+
+namespace sillage {
+
+namespace {
+
+// The step curve of values over td, one step per pixel column of fig (upper envelope).
+std::vector<Vector> envelope(const Figure& fig, const TDomain& td, const std::vector<double>& values, double hi) {
+  std::vector<Vector> pts;
+  const std::size_t n = td.nb_slices();
+  for (std::size_t k = 0; k < n;) {
+    const std::size_t start = k;
+    const double x0 = fig.px(td.t(start));
+    double v = values[k];
+    for (++k; k < n && fig.px(td.t(k + 1)) - x0 <= 1.0; ++k) v = std::max(v, values[k]);
+    v = std::min(v, hi);
+    pts.push_back({td.t(start), v});
+    pts.push_back({td.t(k), v});
+  }
+  return pts;
+}
+
+}  // namespace
+
+Figure slam_thickness_figure(const std::vector<ThicknessCurve>& curves, const std::string& title, double width_px,
+                             double height_px) {
+  if (curves.empty()) throw Error("slam_thickness_figure: no curve");
+  const auto td = curves.front().p.tdomain();
+  std::vector<std::vector<double>> values;
+  double hi = 0;
+  for (const ThicknessCurve& c : curves) {
+    if (c.p.size() < 2 || c.p.tdomain() != td)
+      throw DimensionError("slam_thickness_figure: curve '" + c.label + "' must have 2+ components on the first's TDomain");
+    values.push_back(thickness_values(c.p.subvector(0, 1), ThicknessMeasure::Diagonal));
+    for (double v : values.back())
+      if (std::isfinite(v)) hi = std::max(hi, v);
+  }
+  if (hi == 0) hi = 1;
+  hi *= 1.08;
+  Figure fig(IntervalVector{td->t0_tf(), Interval(0, hi)}, width_px, height_px);
+  fig.set_title(title);
+  fig.set_labels("t (s)", "d(t) (m)");
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    fig.draw_polyline(envelope(fig, *td, values[i], hi), Style{"none", curves[i].colour, 1.5, 1.0, "thickness"});
+    const double y = hi * (0.95 - 0.07 * static_cast<double>(i));
+    const double t = td->t0_tf().lb() + 0.03 * td->t0_tf().diam();
+    fig.draw_text({t, y}, curves[i].label, 12, curves[i].colour);
+  }
+  return fig;
+}
+
+Figure slam_map_figure(const BathymetryMission& m, const TubeVector& dead_reckoning, const TubeVector& slam,
+                       const std::vector<IntervalVector>& tf_boxes, const std::string& title, double width_px) {
+  if (dead_reckoning.size() < 2 || slam.size() < 2)
+    throw DimensionError("slam_map_figure: the tubes need 2+ components (east, north)");
+  const TrajectoryVector truth = bathymetry_truth(m);
+  TubeStyle grey;
+  grey.slices = {"#d9d9d9", "#b0b0b0", 0.3, 1.0, "dead-reckoning"};
+  grey.truth = {"none", "#1f3f66", 1.0, 1.0, "truth"};
+  Figure fig = tube_vector_figure(dead_reckoning, 0, 1, title, grey, nullptr, nullptr, width_px);
+  fig.set_labels("east (m)", "north (m)");
+  TubeStyle blue;
+  blue.slices = {"#9ecae1", "#4a90c2", 0.3, 1.0, "slam"};
+  blue.truth = grey.truth;
+  if (!slam.is_empty()) draw_tube_vector_2d(fig, slam, 0, 1, blue, &truth[0], &truth[1]);
+  for (std::size_t i = 0; i < tf_boxes.size(); ++i) {
+    const double w = i == 0 ? 2.0 : 1.0;
+    fig.draw_box(tf_boxes[i].subvector(0, 1), Style{"none", i == 0 ? "#555555" : "#d62728", w, 1.0, "p-tf"});
+  }
+  return fig;
+}
+
+}  // namespace sillage
