@@ -4,7 +4,9 @@ A binding (python/src/**/*.cpp) whose C++ entity has a header comment takes its 
 DOC(...) from the generated docstrings.h (scripts/gen_docstrings.py); a literal there fails
 here. Python-only callables keep their literal. The files in EXEMPT were being changed on other
 branches when the bindings were converted; after merging, run
-`/usr/bin/python3 scripts/docstring_codemod.py FILE` on each, build, and empty EXEMPT.
+`/usr/bin/python3 scripts/docstring_codemod.py FILE` on each, build, and empty EXEMPT. To move
+their remaining literals into the headers that lack a comment, empty FROZEN_HEADERS in the
+codemod and run it with --to-headers first (then review the new header comments).
 """
 import sys
 import textwrap
