@@ -26,9 +26,13 @@ namespace sillage {
 // A flag shared by copies: cancel() on one copy is seen by all of them.
 class CancelToken {
  public:
+  // A token not cancelled.
   CancelToken() : flag_(std::make_shared<std::atomic<bool>>(false)) {}
+  // Ask the computations holding this token to stop (any thread).
   void cancel() const { flag_->store(true, std::memory_order_relaxed); }
+  // True once cancel() was called on this token or a copy of it (until reset()).
   bool cancelled() const { return flag_->load(std::memory_order_relaxed); }
+  // Clears the flag, so that the token can be used again.
   void reset() const { flag_->store(false, std::memory_order_relaxed); }
 
  private:
@@ -36,9 +40,12 @@ class CancelToken {
 };
 
 struct Budget {
-  std::size_t max_boxes = 10'000'000;  // 0: no limit
-  std::size_t max_bytes = 1u << 30;    // pavings only; 0: no limit
-  double max_seconds = 0;              // 0: no limit
+  // Boxes stored or refined (for a paving: its nodes); 10^7 by default, 0: no limit.
+  std::size_t max_boxes = 10'000'000;
+  // Memory of a paving's nodes (16 n + 8 bytes each in dimension n); 1 GiB by default, 0: no limit.
+  std::size_t max_bytes = 1u << 30;
+  // Wall-clock time in seconds; 0 (the default): no limit.
+  double max_seconds = 0;
   CancelToken cancel;
 };
 

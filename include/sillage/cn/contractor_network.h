@@ -60,6 +60,8 @@
 
 namespace sillage {
 
+// What contract() did. An empty network is an answer (no solution), explained by
+// emptiness and the empty_* fields.
 struct ContractStats {
   // Rounds of the queue (see above). The thesis counts sweeps over all the
   // contractors up to a sweep that changes nothing; rounds run only the woken
@@ -75,15 +77,16 @@ struct ContractStats {
   std::string emptiness;
   std::string empty_contractor;          // describe() of the contractor; "" if empty on input
   std::size_t empty_node = static_cast<std::size_t>(-1);  // its index in add() order; -1 if empty on input
-  std::size_t empty_domain_index = 0;    // the domain's index in the network
+  std::size_t empty_domain_index = 0;    // the emptied domain's index in the network
   std::string empty_domain_name;         // its name, "" if it has none
   std::string empty_atom;                // "slice", "gate", "component" or "" (the whole domain)
-  std::size_t empty_atom_index = 0;      // the slice, gate or component
+  std::size_t empty_atom_index = 0;      // index of the slice, gate or component that became empty
   Interval empty_time = Interval::empty();  // time of the slice or gate; CtcEval: also its [t]
 };
 
 class ContractorNetwork {
  public:
+  // An empty network.
   ContractorNetwork() = default;
   ContractorNetwork(const ContractorNetwork&) = delete;
   ContractorNetwork& operator=(const ContractorNetwork&) = delete;
@@ -91,6 +94,7 @@ class ContractorNetwork {
   // New shared domains owned together by the caller and the network,
   // optionally named (see set_name).
   std::shared_ptr<Interval> create_dom(const Interval& x, const std::string& name = "");
+  // A new box domain (a copy of x), optionally named.
   std::shared_ptr<IntervalVector> create_dom(const IntervalVector& x, const std::string& name = "");
   // Names the domain(s) of d for the reports (registering them if new): a
   // tube vector's components become name[0], name[1], ... Error if empty.
@@ -108,19 +112,27 @@ class ContractorNetwork {
   // Registers a domain (idempotent); returns its index in the network.
   std::size_t add_domain(const std::shared_ptr<Domain>& domain);
 
-  // Propagates to the fixed point; see the header comment.
+  // Propagates to the fixed point (see the top of this header); the domains are contracted in
+  // place. stats.empty means no solution, and stats.emptiness says which contractor emptied
+  // which domain. budget() limits it (BudgetExceeded, Cancelled; Python: Ctrl-C raises
+  // KeyboardInterrupt).
   ContractStats contract();
 
+  // Number of contractors added.
   std::size_t nb_ctc() const { return nodes_.size(); }
+  // Number of domains known to the network.
   std::size_t nb_dom() const { return domains_.size(); }
+  // The shrink ratio above which a contracted atom wakes its other contractors (default 0.01).
   double ratio() const { return ratio_; }
-  // 0 <= ratio < 1 (else Error).
+  // Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on
+  // it; 0 <= ratio < 1 (else Error).
   void set_ratio(double ratio);
   // Limits of contract(): max_boxes counts contractor calls (10^7 by
   // default), max_seconds the wall-clock time, cancel stops it from another
   // thread (Python: Ctrl-C). Exceeded: BudgetExceeded (cancelled: Cancelled),
   // the domains left contracted as far as they got (still enclosures).
   const Budget& budget() const { return budget_; }
+  // Sets budget(); contract() then raises BudgetExceeded past it (the domains stay enclosures).
   void set_budget(const Budget& budget);
 
  private:

@@ -38,7 +38,9 @@ class DomainRef {
   const std::vector<Part>& parts() const { return parts_; }
   // The first part: its domain and atom range (Python's DomainRef.first/count).
   const std::shared_ptr<Domain>& domain() const { return parts_.front().domain; }
+  // Index of the first component referred to.
   std::size_t first() const { return parts_.front().first; }
+  // Number of components referred to.
   std::size_t count() const { return parts_.front().count; }
 
   // Extension point: any Domain and a range of its atoms.

@@ -22,6 +22,7 @@ struct BoundDomain {
 class NetworkCtc {
  public:
   virtual ~NetworkCtc() = default;
+  // The class name, e.g. 'CtcEval'.
   virtual std::string name() const = 0;
   // The node acting on `args` (the parts of the DomainRefs of add(), in
   // order). Throws DimensionError / Error, naming the contractor, when the

@@ -17,6 +17,7 @@ class Ctc {
   virtual ~Ctc() = default;
   // Contracts x in place; x.size() must equal nb_vars() (else DimensionError).
   virtual void contract(IntervalVector& x) const = 0;
+  // The dimension n of the boxes it contracts.
   std::size_t nb_vars() const { return nb_vars_; }
   // A short human-readable name, used in error messages ("CtcFunction", ...).
   virtual std::string name() const { return "Ctc"; }

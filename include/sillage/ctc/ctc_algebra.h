@@ -28,6 +28,8 @@ class CtcCombination : public Ctc {
   std::vector<CtcPtr> list_;
 };
 
+// (C1 & ... & Cn)(x) = C1(x) & ... & Cn(x) (contractor programming, thesis 2.34); c1 & c2 builds
+// one.
 class CtcInter : public CtcCombination {
  public:
   explicit CtcInter(std::vector<CtcPtr> list) : CtcCombination(std::move(list), "CtcInter") {}
@@ -35,6 +37,7 @@ class CtcInter : public CtcCombination {
   std::string name() const override { return "CtcInter"; }
 };
 
+// (C1 | ... | Cn)(x) = hull(C1(x), ..., Cn(x)) (thesis 2.34); c1 | c2 builds one.
 class CtcUnion : public CtcCombination {
  public:
   explicit CtcUnion(std::vector<CtcPtr> list) : CtcCombination(std::move(list), "CtcUnion") {}
@@ -49,12 +52,14 @@ class CtcCompo : public CtcCombination {
   std::string name() const override { return "CtcCompo"; }
 };
 
+// C applied again while one component shrinks by more than ratio (the fixed point C-infinity).
 class CtcFixPoint : public Ctc {
  public:
   // 0 <= ratio < 1 (else Error); ratio = 0 iterates until nothing changes at all.
   explicit CtcFixPoint(CtcPtr ctc, double ratio = 0.01);
   void contract(IntervalVector& x) const override;
   std::string name() const override { return "CtcFixPoint"; }
+  // The shrink ratio that stops the iteration.
   double ratio() const { return ratio_; }
 
  private:

@@ -27,20 +27,30 @@ class CtcBinary : public Ctc {
 };
 
 // The usual ones under their own names.
+
+// The contractor of z = x + y on (z, x, y) (2.31): CtcAdd() on ([4,5], [0,3], [-2,2]) gives
+// ([4,5], [2,3], [1,2]).
 class CtcAdd : public CtcBinary {
  public:
+  // The contractor of z = x + y.
   CtcAdd() : CtcBinary(BinaryOp::add) {}
 };
+// The contractor of z = x - y on (z, x, y).
 class CtcSub : public CtcBinary {
  public:
+  // The contractor of z = x - y.
   CtcSub() : CtcBinary(BinaryOp::sub) {}
 };
+// The contractor of z = x * y on (z, x, y).
 class CtcMul : public CtcBinary {
  public:
+  // The contractor of z = x * y.
   CtcMul() : CtcBinary(BinaryOp::mul) {}
 };
+// The contractor of z = x / y on (z, x, y).
 class CtcDiv : public CtcBinary {
  public:
+  // The contractor of z = x / y.
   CtcDiv() : CtcBinary(BinaryOp::div) {}
 };
 

@@ -11,7 +11,7 @@ class CtcFunction : public Ctc {
  public:
   // y.size() must equal f.image_dim() (else DimensionError).
   CtcFunction(const Function& f, const IntervalVector& y);
-  // Scalar f only (else DimensionError).
+  // f(x) in the interval y, for a scalar f only (else DimensionError).
   CtcFunction(const Function& f, const Interval& y);
   // f(x) = 0.
   explicit CtcFunction(const Function& f);
@@ -19,7 +19,9 @@ class CtcFunction : public Ctc {
   void contract(IntervalVector& x) const override;
   std::string name() const override { return "CtcFunction"; }
   std::string describe() const override { return "CtcFunction(" + f_.expr_str() + ")"; }
+  // The function f.
   const Function& function() const { return f_; }
+  // The image box [y].
   const IntervalVector& image() const { return y_; }
 
  private:

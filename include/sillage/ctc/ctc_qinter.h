@@ -23,6 +23,7 @@ class CtcQInter : public CtcCombination {
   CtcQInter(std::vector<CtcPtr> list, int q);
   void contract(IntervalVector& x) const override;
   std::string name() const override { return "CtcQInter"; }
+  // The number of constraints allowed to be wrong.
   int q() const { return q_; }
 
  private:

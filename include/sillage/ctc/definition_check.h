@@ -13,6 +13,7 @@ namespace sillage {
 
 class DefinitionCheck {
  public:
+  // A check of where f is defined (proofs by interval evaluation of its partial operations).
   explicit DefinitionCheck(const Function& f);
   // True when every operation of f is proven defined on the whole box x
   // (an empty box is trivially fine). False means "not proven".

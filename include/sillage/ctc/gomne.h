@@ -38,6 +38,7 @@ struct GomneOptions {
   double ratio = 0.01;
 };
 
+// What gomne proved; see gomne.
 struct GomneResult {
   // The smallest q whose relaxed set was not proven empty; q_max + 1 when
   // every q <= q_max was (then box is empty and there is no leaf).
@@ -48,6 +49,7 @@ struct GomneResult {
   std::vector<std::size_t> outliers;
   // The non-empty boxes left by the paving of S_q (just {box} when eps = inf).
   std::vector<IntervalVector> leaves;
+  // True when no box is left (more than q_max constraints are wrong).
   bool is_empty() const { return box.is_empty(); }
 };
 

@@ -16,7 +16,9 @@ class Sep {
  public:
   explicit Sep(std::size_t nb_vars) : nb_vars_(nb_vars) {}
   virtual ~Sep() = default;
+  // Contracts x_in (inner) and x_out (outer) in place (Python: returns both).
   virtual void separate(IntervalVector& x_in, IntervalVector& x_out) const = 0;
+  // The dimension n of the boxes it separates.
   std::size_t nb_vars() const { return nb_vars_; }
   // A short human-readable name, used in error messages ("SepFunction", ...).
   virtual std::string name() const { return "Sep"; }

@@ -23,6 +23,7 @@ class SepCombination : public Sep {
   std::vector<SepPtr> list_;
 };
 
+// Separates X1 & ... & Xn: outer boxes intersected, inner boxes hulled; s1 & s2 builds one.
 class SepInter : public SepCombination {
  public:
   explicit SepInter(std::vector<SepPtr> list) : SepCombination(std::move(list), "SepInter") {}
@@ -30,6 +31,7 @@ class SepInter : public SepCombination {
   std::string name() const override { return "SepInter"; }
 };
 
+// Separates X1 | ... | Xn: outer boxes hulled, inner boxes intersected; s1 | s2 builds one.
 class SepUnion : public SepCombination {
  public:
   explicit SepUnion(std::vector<SepPtr> list) : SepCombination(std::move(list), "SepUnion") {}
@@ -37,6 +39,7 @@ class SepUnion : public SepCombination {
   std::string name() const override { return "SepUnion"; }
 };
 
+// Separates the complement of X: inner and outer swapped; ~s builds one.
 class SepNot : public Sep {
  public:
   explicit SepNot(SepPtr sep);

@@ -15,8 +15,9 @@ namespace sillage {
 
 class SepFunction : public Sep {
  public:
+  // X = {x : f(x) in the box y}.
   SepFunction(const Function& f, const IntervalVector& y);
-  SepFunction(const Function& f, const Interval& y);  // scalar f only
+  SepFunction(const Function& f, const Interval& y);  // X = {x : f(x) in y}, scalar f only
 
   void separate(IntervalVector& x_in, IntervalVector& x_out) const override;
   std::string name() const override { return "SepFunction"; }

@@ -50,13 +50,19 @@
 
 namespace sillage {
 
-// In a ContractorNetwork: cn.add(ctc, {x, v}) (dynamics/tube_nodes.h).
+// The differential contractor C_d/dt of x' = v (thesis 4.2, (4.4), Alg. 3-5): contract(x, v)
+// contracts the tube (or tube vector) x in place and returns false if it is now empty; v is not
+// changed. Optional restrictions: a slice range (first, last) or a time interval t. In a
+// ContractorNetwork: cn.add(ctc, {x, v}) (dynamics/tube_nodes.h).
 class CtcDeriv : public NetworkCtc {
  public:
+  // The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4,
+  // (4.17)) or FWD_BWD (Alg. 5, the default).
   explicit CtcDeriv(TimePropag propag = TimePropag::FWD_BWD) : propag_(propag) {}
   std::string name() const override { return "CtcDeriv"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
+  // The direction of the sweeps.
   TimePropag time_propag() const { return propag_; }
 
   // Contracts x in place with x' ∈ v (touch()es x if it changed). Returns
@@ -78,7 +84,9 @@ class CtcDeriv : public NetworkCtc {
   // Component-wise: x[i]' ∈ v[i]. DimensionError if the sizes differ; if a
   // component becomes empty, all are set empty and false is returned.
   bool contract(TubeVector& x, const TubeVector& v) const;
+  // Only slices first..last and gates first..last+1 of each component are read or changed.
   bool contract(TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) const;
+  // Only the slices meeting the time interval t.
   bool contract(TubeVector& x, const TubeVector& v, const Interval& t) const;
 
  private:

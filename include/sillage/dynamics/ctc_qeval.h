@@ -37,18 +37,22 @@ namespace sillage {
 // `ctc` (null: none). A range r to a beacon b is z = IntervalVector(n) with
 // ctc = CtcFunction(|z - b|, [r]); a position fix is a bounded z alone.
 struct TubeObservation {
+  // The time interval of the fix.
   Interval t;
+  // The box of the fix (contracted by ctc).
   IntervalVector z;
   CtcPtr ctc = nullptr;  // on z.size() variables
 };
 
 class CtcQEval : public NetworkCtc {
  public:
-  // q >= 0 (else Error).
+  // At most q fixes are wrong; q >= 0 (else Error).
   explicit CtcQEval(int q);
   // The network form: the observations are held (a non-empty list, else Error).
   CtcQEval(int q, std::vector<TubeObservation> obs);
+  // The number of fixes allowed to be wrong.
   int q() const { return q_; }
+  // The fixes held for the network form (empty if none).
   const std::vector<TubeObservation>& observations() const { return obs_; }
   std::string name() const override { return "CtcQEval"; }
   // cn.add(ctc, {x, v}): needs the observations of the constructor; each z

@@ -23,6 +23,7 @@ struct TubeGomneOptions {
   int max_passes = 10;                          // CtcQEval passes per q; >= 1
 };
 
+// What gomne_tube proved; see gomne_tube.
 struct TubeGomneResult {
   // The smallest q that did not empty the tube; q_max + 1 if all did.
   int q = 0;

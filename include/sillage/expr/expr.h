@@ -19,6 +19,7 @@
 
 namespace sillage {
 
+// The operation of an expression node.
 enum class Op : std::uint8_t {
   Const, Var,
   Add, Sub, Mul, Div, Neg,
@@ -42,7 +43,9 @@ class Expr {
 
   const ExprNode& node() const { return *node_; }
   const ExprNode* get() const { return node_.get(); }
+  // The operation of the root node.
   Op op() const;
+  // True when the expression has no variable.
   bool is_const() const;
   // Same node (hash-consing makes this structural equality).
   bool operator==(const Expr& y) const { return node_ == y.node_; }
@@ -56,7 +59,9 @@ class Expr {
 // A scalar variable, known by its name.
 class ExprVar : public Expr {
  public:
+  // The scalar variable called name.
   explicit ExprVar(const std::string& name);
+  // The variable's name.
   const std::string& name() const;
 };
 
@@ -93,28 +98,49 @@ Expr& operator-=(Expr& x, const Expr& y);
 Expr& operator*=(Expr& x, const Expr& y);
 Expr& operator/=(Expr& x, const Expr& y);
 
+// A rigorous enclosure of pi, as a constant expression.
 Expr expr_pi();
+// The expression x^2.
 Expr sqr(const Expr& x);
+// The expression sqrt(x).
 Expr sqrt(const Expr& x);
+// The expression x^n, n an integer.
 Expr pow(const Expr& x, int n);
 Expr pow(const Expr& x, double y);       // so that pow(x, 0.5) does not convert 0.5 to int
 Expr pow(const Expr& x, const Expr& y);  // real exponent (integer constants give pow(x, n))
+// The expression root(x, n), the n-th root.
 Expr root(const Expr& x, int n);
+// The expression exp(x).
 Expr exp(const Expr& x);
+// The expression log(x) (natural logarithm).
 Expr log(const Expr& x);
+// The expression sin(x).
 Expr sin(const Expr& x);
+// The expression cos(x).
 Expr cos(const Expr& x);
+// The expression tan(x).
 Expr tan(const Expr& x);
+// The expression asin(x).
 Expr asin(const Expr& x);
+// The expression acos(x).
 Expr acos(const Expr& x);
+// The expression atan(x).
 Expr atan(const Expr& x);
+// The expression atan2(y, x), y first.
 Expr atan2(const Expr& y, const Expr& x);
+// The expression sinh(x).
 Expr sinh(const Expr& x);
+// The expression cosh(x).
 Expr cosh(const Expr& x);
+// The expression tanh(x).
 Expr tanh(const Expr& x);
+// The expression abs(x).
 Expr abs(const Expr& x);
+// The expression min(x, y).
 Expr min(const Expr& x, const Expr& y);
+// The expression max(x, y).
 Expr max(const Expr& x, const Expr& y);
+// The expression sign(x).
 Expr sign(const Expr& x);
 
 // Infix text that parse_expr reads back into the same DAG; a shared

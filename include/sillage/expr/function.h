@@ -32,10 +32,12 @@ class Function {
   Function(const std::vector<std::string>& vars, const std::string& expr);
   // From the C++ builder: Function({x1, x2}, sqrt(sqr(x1 - 1) + sqr(x2 - 2))).
   Function(const std::vector<ExprVar>& vars, const Expr& expr);
+  // A vector function (e1, ..., em) of the builder variables vars.
   Function(const std::vector<ExprVar>& vars, const std::vector<Expr>& exprs);
 
   std::size_t nb_vars() const;     // input dimension n
   std::size_t image_dim() const;   // output dimension m (1 for a scalar function)
+  // The names of the n variables, in order.
   const std::vector<std::string>& var_names() const;
   const std::vector<Expr>& exprs() const;  // the m output expressions
   Function operator[](std::size_t i) const;  // the i-th component, a scalar function of the same variables

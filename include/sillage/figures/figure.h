@@ -23,30 +23,39 @@ class Figure {
   // height_px is 0 (clamped to [50, 4 * width_px]).
   explicit Figure(const IntervalVector& view, double width_px = 600, double height_px = 0);
 
+  // The title above the plot.
   void set_title(const std::string& title) { title_ = title; }
+  // Axis labels, units included (e.g. 't (s)', 'x (m)').
   void set_labels(const std::string& x_label, const std::string& y_label);
   // Dimensions of the drawn boxes shown on the x and y axes (default 0, 1).
   void set_projection(std::size_t i, std::size_t j);
 
+  // Draws one box.
   void draw_box(const IntervalVector& box, const Style& style = {});
   void draw_boxes(const std::vector<IntervalVector>& boxes, const Style& style = {});
   // Annulus {p : |p - center| in radius}; a disk when lb(radius) <= 0.
   void draw_ring(const Vector& center, const Interval& radius, const Style& style = {});
+  // A dot of radius_px pixels at p.
   void draw_point(const Vector& p, double radius_px = 3.0, const Style& style = {"black", "none", 0, 1, ""});
+  // A polyline through the points (a polygon if closed).
   void draw_polyline(const std::vector<Vector>& points, const Style& style = {}, bool closed = false);
   // Every leaf of the paving with paving_style (Outside leaves if requested).
   void draw_paving(const Paving& paving, bool show_outside = true);
   // Oriented loops (see contour.h), as polygons in the (x, y) plane of the figure.
   void draw_contour(const std::vector<ContourLoop>& loops, const Style& style = {"none", "black", 1.5, 1, ""});
+  // Text at the point p (world coordinates).
   void draw_text(const Vector& p, const std::string& text, double size_px = 12, const std::string& colour = "black");
 
+  // Number of SVG elements drawn so far.
   std::size_t nb_shapes() const { return shapes_.size(); }
+  // The SVG document as a string.
   std::string svg() const;
   // Writes svg() to a file; throws Error if it cannot.
   void save(const std::string& path) const;
 
   // World -> pixel coordinates of the SVG.
   double px(double x) const;
+  // World y -> pixel y of the SVG.
   double py(double y) const;
 
  private:

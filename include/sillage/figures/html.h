@@ -10,6 +10,7 @@ namespace sillage {
 
 class Html {
  public:
+  // An empty page with this title.
   explicit Html(std::string title) : title_(std::move(title)) {}
 
   // Adds a figure (its SVG is copied now) to be written as `file_name`: a
@@ -19,6 +20,7 @@ class Html {
   // Adds a paragraph of text between figures.
   void add_text(const std::string& text);
 
+  // Number of figures added.
   std::size_t nb_figures() const;
   // The index page alone.
   std::string index() const;

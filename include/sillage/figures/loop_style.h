@@ -10,8 +10,11 @@
 
 namespace sillage {
 
+// What a figure shows of a detection: proven (orange), unproven (black), partial (grey).
 enum class LoopStatus { Proven, Unproven, Partial };
 
+// The status of a detection: Proven (by the degree test T), Unproven (complete, not proven) or
+// Partial (not complete).
 LoopStatus loop_status(const Loop& loop);
 std::string to_string(LoopStatus status);  // "proven", "unproven", "partial"
 

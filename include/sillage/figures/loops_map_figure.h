@@ -29,7 +29,9 @@ struct MapLoop {
 // The detections of the TPlane (their map boxes are set by compute_proofs).
 std::vector<MapLoop> map_loops(const TPlane& tplane);
 
+// Drawing options of loops_map_figure.
 struct LoopsMapOptions {
+  // Draw the partial detections too.
   bool show_partial = true;
   bool boxes = true;        // draw the map boxes
   bool projections = true;  // draw the path over [t1] and [t2] (needs the path times)

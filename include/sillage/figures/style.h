@@ -9,6 +9,7 @@ namespace sillage {
 
 struct Style {
   std::string fill = "none";     // any SVG colour: "#8fd18f", "red", "none"
+  // SVG stroke colour.
   std::string stroke = "black";
   double stroke_width = 1.0;     // in pixels
   double opacity = 1.0;          // fill opacity, in [0, 1]

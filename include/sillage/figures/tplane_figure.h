@@ -30,10 +30,12 @@ struct DetectionShape {
 // One shape per detection, then one per proven piece of a split detection.
 std::vector<DetectionShape> detection_shapes(const TPlane& tplane);
 
+// Drawing options of tplane_figure.
 struct TPlaneFigureOptions {
   double min_leaf_px = 2.0;  // leaves smaller than this on both sides are covered by their component
   double marker_px = 3.0;    // radius of the marker of components smaller than 2 * marker_px
   double crossing_px = 2.0;  // radius of the true-crossing points
+  // Draw the diagonal t1 = t2.
   bool show_diagonal = true;
 };
 

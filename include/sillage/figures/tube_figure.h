@@ -20,9 +20,13 @@
 
 namespace sillage {
 
+// Styles of tube figures and the aggregation tolerance merge_px.
 struct TubeStyle {
+  // Style of the slice rectangles.
   Style slices{"#a9cdf2", "#2a6aa8", 0.4, 1.0, "slice"};
+  // Style of the gates.
   Style gates{"#1f3f66", "none", 0.0, 1.0, "gate"};
+  // Style of the true trajectory.
   Style truth{"none", "#d62728", 1.5, 1.0, "truth"};
   Style initial{"#f4a6a6", "#c62828", 1.0, 0.8, "initial"};  // gate 0 (2-D figures)
   Style final{"#a5d6a7", "#2e7d32", 1.0, 0.8, "final"};     // gate N (2-D figures)

@@ -8,6 +8,7 @@
 
 namespace sillage {
 
+// Exponential.
 Interval exp(const Interval& x);
 Interval log(const Interval& x);          // natural logarithm on (0, inf)
 Interval pow(const Interval& x, int n);   // x^n, n any integer (x^0 = [1,1])
@@ -17,15 +18,24 @@ Interval pow(const Interval& x, double y);           // pow(x, int(y)) if y is a
 // and to be odd or even (a Python int of any size).
 Interval pow_big_int(const Interval& x, const Interval& n, bool odd);
 Interval root(const Interval& x, int n);  // the real n-th root (odd n: all reals)
+// Sine.
 Interval sin(const Interval& x);
+// Cosine.
 Interval cos(const Interval& x);
+// Tangent (the real line when x meets a pole).
 Interval tan(const Interval& x);
+// Arcsine, on the part of x in [-1, 1].
 Interval asin(const Interval& x);
+// Arccosine, on the part of x in [-1, 1].
 Interval acos(const Interval& x);
+// Arctangent.
 Interval atan(const Interval& x);
 Interval atan2(const Interval& y, const Interval& x);  // y first; range [-pi, pi]
+// Hyperbolic sine.
 Interval sinh(const Interval& x);
+// Hyperbolic cosine.
 Interval cosh(const Interval& x);
+// Hyperbolic tangent.
 Interval tanh(const Interval& x);
 
 }  // namespace sillage

@@ -182,16 +182,22 @@ Interval operator/(const Interval& x, const Interval& y);
 // the whole line (z * 0 = 0 for every z).
 std::pair<Interval, Interval> div2(const Interval& c, const Interval& b);
 
+// x^2, tighter than x * x (the two factors are the same variable).
 Interval sqr(const Interval& x);
+// Square root, on the part of x above 0 (empty if x < 0).
 Interval sqrt(const Interval& x);
+// Absolute value {|v| : v in x}.
 Interval abs(const Interval& x);
+// {min(a, b) : a in x, b in y}.
 Interval min(const Interval& x, const Interval& y);
+// {max(a, b) : a in x, b in y}.
 Interval max(const Interval& x, const Interval& y);
 // Image of the sign function: a subset of {-1, 0, 1} hulled.
 Interval sign(const Interval& x);
 
 // Free-function spellings of the set operations (same as & and |).
 inline Interval intersection(const Interval& x, const Interval& y) { return x & y; }
+// The smallest interval containing x and y.
 inline Interval hull(const Interval& x, const Interval& y) { return x | y; }
 
 std::ostream& operator<<(std::ostream& os, const Interval& x);

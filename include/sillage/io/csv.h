@@ -10,6 +10,7 @@
 
 namespace sillage {
 
+// A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.
 class CsvTable {
  public:
   // Reads `path` (comma-separated; blank lines and lines starting with '#'
@@ -19,12 +20,15 @@ class CsvTable {
   // Parses text already in memory; `source` names it in error messages.
   static CsvTable parse(const std::string& text, const std::string& source);
 
+  // The header names, in order.
   const std::vector<std::string>& columns() const { return columns_; }
+  // Number of data rows.
   std::size_t nb_rows() const { return rows_.size(); }
   // Row i (OutOfRangeError if i >= nb_rows()).
   const std::vector<double>& row(std::size_t i) const;
   // "the table has 3 rows: 0 to 2", for messages about rows.
   std::string rows_text() const;
+  // True if a column is called name.
   bool has_column(const std::string& name) const;
   // Index of a column; Error naming the file and the columns it has.
   std::size_t column(const std::string& name) const;

@@ -31,6 +31,7 @@
 
 namespace sillage {
 
+// Tuning of split_region.
 struct SplitOptions {
   // Bisections of every box of a piece still to settle: 8 levels refine an
   // eps-paving down to eps/16 (each level halves the boxes' area).
@@ -57,13 +58,16 @@ struct SplitOptions {
 // One piece of a split region: a union of boxes, disjoint from the other
 // pieces, its boundary free of zeros when its degree is determined.
 struct SplitPiece {
+  // Its boxes.
   std::vector<IntervalVector> boxes;
   IntervalVector t_box = IntervalVector(2, Interval::empty());  // hull of the boxes
   std::optional<int> degree;         // nullopt: undetermined
   std::optional<std::size_t> count;  // exact number of zeros, when proven
+  // The degree is known and non-zero: a zero lies in the piece.
   bool proves_zero() const { return degree && *degree != 0; }
 };
 
+// The result of split_region.
 struct SplitResult {
   // The pieces, ordered by the lower corner of their hull; every zero of f*
   // in the region lies in one of them.

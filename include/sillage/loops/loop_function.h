@@ -33,6 +33,7 @@ class LoopFunction {
   // (DimensionError if not 2-D, Error if their time domains do not overlap).
   LoopFunction(const TubeVector& p, const TubeVector& w);
 
+  // True when built from positions p and velocities w (7.28), false from v alone (6.6).
   bool has_positions() const { return static_cast<bool>(p_[0]); }
   // Some tube has an empty slice: it holds no trajectory, hence no loop.
   bool is_empty() const;

@@ -31,7 +31,7 @@
 namespace sillage {
 
 struct PathCrossing {
-  double t1 = 0.0, t2 = 0.0;  // t1 < t2
+  double t1 = 0.0, t2 = 0.0;  // the two passage times, t1 < t2
   double x = 0.0, y = 0.0;    // crossing point
   // The crossing segments: [k, k+1] holds t1 for k = segment1, t2 for
   // k = segment2 (segment1 + 1 < segment2).

@@ -19,6 +19,7 @@
 
 namespace sillage {
 
+// Tuning of topological_degree.
 struct DegreeOptions {
   // A piece shorter than this is not bisected (> 0; in the units of the
   // plane, e.g. seconds for a t-plane).
@@ -31,6 +32,7 @@ struct DegreeOptions {
   Budget budget;
 };
 
+// The result of topological_degree.
 struct DegreeResult {
   // The degree, when every boundary piece excludes 0; nullopt otherwise
   // (the test is inconclusive: nothing is proven, nothing is disproven).
@@ -39,6 +41,7 @@ struct DegreeResult {
   std::size_t nb_pieces = 0;        // boundary pieces of the final cover
   std::size_t nb_unresolved = 0;    // pieces with 0 ∈ [f] at the floor, or left
                                     // unevaluated once max_evaluations is spent
+  // True when the degree is known and non-zero: f has a zero in the region.
   bool proves_zero() const { return degree && *degree != 0; }
 };
 

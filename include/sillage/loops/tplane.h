@@ -118,7 +118,9 @@ struct ProofOptions {
   // bisections of their boxes (3: down to eps/2.8, inside Ω_i only), at most
   // split_max_boxes boxes per piece being refined.
   bool split = true;
+  // Bisections of the boxes of a piece still to settle (3: down to eps/2.8, inside the detection).
   std::size_t split_max_levels = 3;
+  // Cap on the boxes of a piece being refined.
   std::size_t split_max_boxes = 1u << 15;
   // For the whole of compute_proofs: every evaluation of the degree test and
   // every box of the counts counts as a box (budget.h).
@@ -148,14 +150,18 @@ class TPlane {
   // enclosing the same trajectory are sound. Error before compute_detections.
   // Replaces the previous proofs (kept whole if it throws).
   void compute_proofs(const TubeVector& v, const ProofOptions& options = {});
+  // The same proofs from positions p and velocities w (7.28).
   void compute_proofs(const TubeVector& p, const TubeVector& w, const ProofOptions& options = {});
 
   double eps() const { return eps_; }          // of the last detections (0 before)
-  const Paving& paving() const { return paving_; }  // the t-plane paving
+  const Paving& paving() const { return paving_; }  // the t-plane paving (6.8)-(6.10)
   std::size_t nb_detections() const { return detections_.size(); }  // complete or not
+  // Number of detections strictly inside the square and above its diagonal.
   std::size_t nb_complete_detections() const;
   std::size_t nb_proofs() const;         // complete detections proven by T
-  std::size_t nb_newton_proofs() const;  // ... by N
+  std::size_t nb_newton_proofs() const;  // ... proven a unique loop by N
+  // The detections (Loop), ordered by the lower corner of their hull: chronologically by the first
+  // passage.
   const std::vector<Loop>& detections() const { return detections_; }
   // Every proven sub-loop: for each detection, its pieces of non-zero
   // degree if it has some, else the detection itself if T proves it.

@@ -12,13 +12,16 @@
 
 namespace sillage {
 
+// Tuning of newton_test.
 struct NewtonOptions {
   std::size_t max_iterations = 20;  // Newton contractions [t] ← [t] ∩ N([t])
 };
 
+// The result of newton_test.
 struct NewtonResult {
   bool proven = false;   // a unique zero of every f* enclosed exists in `box`
   IntervalVector box;    // the last contracted box (empty: no zero in the input box)
+  // Newton contractions done.
   std::size_t nb_iterations = 0;
 };
 
@@ -32,6 +35,7 @@ struct NewtonResult {
 NewtonResult newton_test(const IntervalVector& box, const PlaneFunction& f, const PlaneJacobian& jacobian,
                          const NewtonOptions& options = {});
 
+// Tuning of count_zeros.
 struct CountOptions {
   double min_width = 1e-9;          // ζ of Remark 6.1: boxes are not bisected below this width
   std::size_t max_boxes = 1u << 16; // cap on the refined boxes
@@ -40,6 +44,7 @@ struct CountOptions {
   Budget budget;
 };
 
+// The result of count_zeros.
 struct CountResult {
   std::optional<std::size_t> count;  // exact number of zeros in the region, when proven
   std::size_t nb_boxes = 0;          // boxes after the refinement

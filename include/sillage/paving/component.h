@@ -20,7 +20,9 @@ struct Component {
   IntervalVector hull;                // hull of the boxes
   double volume = 0.0;                // sum of the box volumes
 
+  // The number of leaves.
   std::size_t size() const { return boxes.size(); }
+  // The number of leaves with this tag.
   std::size_t count(PavingTag tag) const;
   // Oriented boundary loops (2-D components only), see contour().
   std::vector<ContourLoop> contour() const { return sillage::contour(boxes); }

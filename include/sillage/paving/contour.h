@@ -36,18 +36,22 @@ struct Point2 {
 
 // An oriented, axis-aligned edge from a to b; the enclosed region is on its left.
 struct ContourEdge {
+  // The start point a and the end point b (x, y).
   Point2 a, b;
   // The edge as a degenerate box [b] (one zero-width component).
   IntervalVector box() const;
+  // The Euclidean length of the edge.
   double length() const;
 };
 
 // A closed loop: edges[k].b == edges[k+1].a and edges.back().b == edges.front().a.
 // It starts at its lexicographically smallest vertex (smallest x, then y).
 struct ContourLoop {
+  // The oriented edges, in order around the loop.
   std::vector<ContourEdge> edges;
   bool is_hole = false;  // clockwise: the loop bounds a hole of the union
   std::vector<Point2> vertices() const;  // the start points of the edges
+  // The perimeter of the loop.
   double length() const;
   std::string str() const;
 };

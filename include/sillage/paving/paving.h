@@ -32,24 +32,34 @@ class Paving {
   Paving() = default;
   explicit Paving(std::size_t dim) : dim_(dim) {}
 
+  // The dimension of the boxes.
   std::size_t dim() const { return dim_; }
+  // True for the paving of an empty initial box (no node).
   bool is_empty() const { return nodes_.empty(); }
   // The initial box [x]0 (the root box); an empty box if the paving is empty.
   IntervalVector domain() const;
 
   // ---- leaves, by tag (pre-order) ----
+  // The leaves of a tag, in pre-order ('left before right', independent of threads).
   std::vector<IntervalVector> boxes(PavingTag tag) const;
+  // Boxes proven in X (the inner approximation).
   std::vector<IntervalVector> inner() const { return boxes(PavingTag::Inner); }
+  // Undetermined boxes.
   std::vector<IntervalVector> boundary() const { return boxes(PavingTag::Boundary); }
+  // Boxes proven outside X.
   std::vector<IntervalVector> outside() const { return boxes(PavingTag::Outside); }
   // The outer approximation X+ = inner ∪ boundary, leaves in pre-order.
   std::vector<IntervalVector> outer() const;
 
+  // The number of nodes of the tree (leaves and internal nodes).
   std::size_t nb_nodes() const { return nodes_.size(); }
+  // The number of leaves.
   std::size_t nb_leaves() const;
+  // The number of leaves with this tag.
   std::size_t count(PavingTag tag) const;
   // Sum of the leaf volumes of a tag (a floating-point measure, not a set).
   double volume(PavingTag tag) const;
+  // Volume of the outer approximation X+ = inner & boundary leaves.
   double outer_volume() const { return volume(PavingTag::Inner) + volume(PavingTag::Boundary); }
   // Hull of the outer approximation X+; an empty box if X+ is empty.
   IntervalVector hull() const;
@@ -62,9 +72,13 @@ class Paving {
   std::vector<Component> components() const;
 
   // ---- raw node access (pre-order indices) ----
+  // The box of node i (pre-order index; the left child of i is i + 1).
   IntervalVector node_box(std::size_t i) const;
+  // True when node i is a leaf.
   bool is_leaf(std::size_t i) const { return node(i).right == 0; }
+  // Index of the left child of the internal node i.
   std::size_t left(std::size_t i) const;
+  // Index of the right child of the internal node i.
   std::size_t right(std::size_t i) const;
   // Tag of a leaf; throws for an internal node.
   PavingTag tag(std::size_t i) const;

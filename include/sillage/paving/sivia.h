@@ -30,6 +30,7 @@ using SeparateFunction = std::function<void(IntervalVector& x_in, IntervalVector
 // lower and upper bound functions f- and f+ of an interval function (2.42).
 using KernelBounds = std::function<std::pair<IntervalVector, IntervalVector>(const IntervalVector&)>;
 
+// Options of sivia and kernel_sivia.
 struct SiviaOptions {
   bool parallel = true;  // grow subtrees as oneTBB tasks
   // Boxes (paving nodes), time and cancellation (budget.h): BudgetExceeded

@@ -13,6 +13,7 @@ namespace sillage {
 // f.image_dim() == y.size() (else DimensionError).
 Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
              const SiviaOptions& options = {});
+// SIVIA (Alg. 1) for a scalar f: paving of x0 for X = f^-1([y]).
 Paving sivia(const IntervalVector& x0, const Function& f, const Interval& y, double eps,
              const SiviaOptions& options = {});
 

@@ -27,18 +27,23 @@ class Trajectory {
   // form) if the sizes differ (DimensionError) or times are not strictly
   // increasing.
   explicit Trajectory(const std::map<double, double>& samples);
+  // Sampled: the values at the times (strictly increasing), linear in between.
   Trajectory(const std::vector<double>& times, const std::vector<double>& values);
   // Analytic over `domain` (bounded, non-empty). The expression / Function
   // must be scalar, of one variable (named t for the text form).
   Trajectory(const Function& f, const Interval& domain);
+  // Analytic: an expression of t over the domain.
   Trajectory(const std::string& expr_of_t, const Interval& domain);
   // Composite over `domain` (bounded, non-empty): x([t]) = eval([t]), which
   // must enclose the values over [t] (used by trajectory_arithmetic.h).
   using Eval = std::function<Interval(const Interval&)>;
   Trajectory(Eval eval, const Interval& domain);
 
+  // True for a sampled trajectory.
   bool is_sampled() const { return !f_ && !eval_; }
+  // True for an analytic one (an expression of t); neither: a composite (arithmetic result).
   bool is_analytic() const { return static_cast<bool>(f_); }
+  // The time domain, an Interval.
   Interval domain() const { return domain_; }
   const std::vector<double>& sample_times() const { return ts_; }   // sampled only
   const std::vector<double>& sample_values() const { return xs_; }  // sampled only

@@ -32,16 +32,25 @@ Trajectory operator-(double x, const Trajectory& y);
 Trajectory operator*(double x, const Trajectory& y);
 Trajectory operator/(double x, const Trajectory& y);
 
+// sqr of a trajectory (composite).
 Trajectory sqr(const Trajectory& x);
+// sqrt of a trajectory (composite).
 Trajectory sqrt(const Trajectory& x);
+// exp of a trajectory (composite).
 Trajectory exp(const Trajectory& x);
+// log of a trajectory (composite).
 Trajectory log(const Trajectory& x);
+// sin of a trajectory (composite).
 Trajectory sin(const Trajectory& x);
+// cos of a trajectory (composite).
 Trajectory cos(const Trajectory& x);
+// tan of a trajectory (composite).
 Trajectory tan(const Trajectory& x);
+// atan of a trajectory (composite).
 Trajectory atan(const Trajectory& x);
+// abs of a trajectory (composite).
 Trajectory abs(const Trajectory& x);
-Trajectory atan2(const Trajectory& y, const Trajectory& x);  // y first
+Trajectory atan2(const Trajectory& y, const Trajectory& x);  // atan2(y, x), y first (composite)
 
 // n scalar trajectories x_1, ..., x_n, a vector trajectory over the
 // intersection of their domains.
@@ -56,12 +65,15 @@ class TrajectoryVector {
   // Analytic: a Function of one variable t (component i = f[i]) or a vector
   // expression of t, "(e1, e2, ...)", over `domain`.
   TrajectoryVector(const Function& f, const Interval& domain);
+  // Analytic: a vector expression of t, e.g. '(cos(t), sin(t))', over the domain.
   TrajectoryVector(const std::string& expr_of_t, const Interval& domain);
 
+  // The dimension n.
   std::size_t size() const { return x_.size(); }
   const Trajectory& operator[](std::size_t i) const;  // Error if i >= size()
   Trajectory& operator[](std::size_t i);
   const std::vector<Trajectory>& components() const { return x_; }
+  // The intersection of the components' domains.
   Interval domain() const { return domain_; }
 
   IntervalVector operator()(double t) const;          // component-wise Trajectory::operator()(t)

@@ -66,6 +66,7 @@ Tube primitive(const Tube& x, const Interval& x0 = Interval(0.0));
 // The Tube must outlive the analysis (it is referenced, not copied).
 class TubeAnalysis {
  public:
+  // Analysis of the tube x (kept alive).
   explicit TubeAnalysis(const Tube& x) : x_(&x) {}
 
   const Tube& tube() const { return *x_; }

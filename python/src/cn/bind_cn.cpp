@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "interruptible.h"
 #include "sillage/cn/contractor_network.h"
 
@@ -35,46 +36,45 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
 
 void init_cn(py::module_& m) {
   py::class_<NetworkCtc, std::shared_ptr<NetworkCtc>>(
-      m, "NetworkCtc", "A contractor on whole tubes that a ContractorNetwork binds (CtcDeriv, CtcEval).")
-      .def("name", &NetworkCtc::name, "The class name, e.g. 'CtcEval'.")
+      m, "NetworkCtc", DOC(NetworkCtc))
+      .def("name", &NetworkCtc::name, DOC(NetworkCtc, name))
       .def("__repr__", [](const NetworkCtc& c) { return "<" + c.name() + ">"; });
 
-  py::class_<DomainRef>(m, "DomainRef", "A part of a box given to ContractorNetwork.add.")
+  py::class_<DomainRef>(m, "DomainRef", DOC(DomainRef))
       .def("__repr__",
            [](const DomainRef& r) {
              return "DomainRef(first=" + std::to_string(r.first()) + ", count=" + std::to_string(r.count()) + ")";
            })
       .def_static("component", py::overload_cast<std::shared_ptr<IntervalVector>, std::size_t>(&DomainRef::component),
-                  py::arg("x"), py::arg("i"), "Component i of the box x, live: the network contracts x[i] itself.")
+                  py::arg("x"), py::arg("i"), DOC(DomainRef, component, IntervalVector_size_t))
       .def_static("component", py::overload_cast<std::shared_ptr<TubeVector>, std::size_t>(&DomainRef::component),
-                  py::arg("x"), py::arg("i"), "Component i of a tube vector, live.")
+                  py::arg("x"), py::arg("i"), DOC(DomainRef, component, TubeVector_size_t))
       .def_static("subvector", &DomainRef::subvector, py::arg("x"), py::arg("i"), py::arg("j"),
-                  "Components i to j (inclusive) of the box x, live.")
-      .def("first", &DomainRef::first, "Index of the first component referred to.")
-      .def("count", &DomainRef::count, "Number of components referred to.");
+                  DOC(DomainRef, subvector))
+      .def("first", &DomainRef::first, DOC(DomainRef, first))
+      .def("count", &DomainRef::count, DOC(DomainRef, count));
 
   py::class_<ContractStats>(m, "ContractStats",
-                            "What contract() did. An empty network is an answer (no solution), explained by\n"
-                            "emptiness and the empty_* fields.")
-      .def_readonly("iterations", &ContractStats::iterations, "Rounds of the propagation queue.")
-      .def_readonly("contractor_calls", &ContractStats::contractor_calls, "Calls of Ctc.contract (node runs).")
-      .def_readonly("time", &ContractStats::time, "Wall-clock seconds.")
-      .def_readonly("empty", &ContractStats::empty, "A domain became (or was) empty: no solution.")
-      .def_readonly("empty_domain", &ContractStats::empty_domain, "Which one, e.g. 'domain 2 (Interval)'.")
+                            DOC(ContractStats))
+      .def_readonly("iterations", &ContractStats::iterations, DOC(ContractStats, iterations))
+      .def_readonly("contractor_calls", &ContractStats::contractor_calls, DOC(ContractStats, contractor_calls))
+      .def_readonly("time", &ContractStats::time, DOC(ContractStats, time))
+      .def_readonly("empty", &ContractStats::empty, DOC(ContractStats, empty))
+      .def_readonly("empty_domain", &ContractStats::empty_domain, DOC(ContractStats, empty_domain))
       .def_readonly("emptiness", &ContractStats::emptiness,
-                    "Why, e.g. \"CtcEval emptied tube 'x' at slice 412 [41.2, 41.3] for t in [...]\"; '' if not empty.")
+                    DOC(ContractStats, emptiness))
       .def_readonly("empty_contractor", &ContractStats::empty_contractor,
-                    "The contractor that emptied it (e.g. 'CtcDeriv'); '' if it was empty on input.")
+                    DOC(ContractStats, empty_contractor))
       .def_readonly("empty_node", &ContractStats::empty_node,
-                    "Index (in add() order) of the node that emptied it; 2**64 - 1 if it was empty on input.")
+                    DOC(ContractStats, empty_node))
       .def_readonly("empty_domain_index", &ContractStats::empty_domain_index,
-                    "The emptied domain's index in the network.")
-      .def_readonly("empty_domain_name", &ContractStats::empty_domain_name, "Its name (set_name), '' if none.")
+                    DOC(ContractStats, empty_domain_index))
+      .def_readonly("empty_domain_name", &ContractStats::empty_domain_name, DOC(ContractStats, empty_domain_name))
       .def_readonly("empty_atom", &ContractStats::empty_atom,
-                    "'slice', 'gate', 'component' or '' (the whole domain).")
+                    DOC(ContractStats, empty_atom))
       .def_readonly("empty_atom_index", &ContractStats::empty_atom_index,
-                    "Index of the slice, gate or component that became empty.")
-      .def_readonly("empty_time", &ContractStats::empty_time, "Time of the slice or gate (empty otherwise).")
+                    DOC(ContractStats, empty_atom_index))
+      .def_readonly("empty_time", &ContractStats::empty_time, DOC(ContractStats, empty_time))
       .def("__repr__", [](const ContractStats& s) {
         return "ContractStats(iterations=" + std::to_string(s.iterations) +
                ", contractor_calls=" + std::to_string(s.contractor_calls) + ", time=" + std::to_string(s.time) +
@@ -82,21 +82,18 @@ void init_cn(py::module_& m) {
       });
 
   py::class_<ContractorNetwork>(m, "ContractorNetwork",
-                                "Variables (domains) linked by contractors, propagated to a fixed point (thesis "
-                                "2.3.1). Domains are the caller's own objects (Interval, IntervalVector, Tube, "
-                                "TubeVector or a DomainRef part), contracted in place. A contractor on a tube argument "
-                                "is applied at every time; CtcDeriv and CtcEval act on whole tubes.")
+                                DOC(ContractorNetwork))
       .def("__repr__",
            [](const ContractorNetwork& cn) {
              return "ContractorNetwork(" + std::to_string(cn.nb_ctc()) + " contractors, " + std::to_string(cn.nb_dom()) +
                     " domains)";
            })
-      .def(py::init<>(), "An empty network.")
+      .def(py::init<>(), DOC(ContractorNetwork, ContractorNetwork, void))
       .def("create_dom", py::overload_cast<const Interval&, const std::string&>(&ContractorNetwork::create_dom),
-           py::arg("x"), py::arg("name") = "", "A new domain (a copy of x), optionally named.")
+           py::arg("x"), py::arg("name") = "", DOC(ContractorNetwork, create_dom, Interval_string))
       .def("create_dom",
            py::overload_cast<const IntervalVector&, const std::string&>(&ContractorNetwork::create_dom), py::arg("x"),
-           py::arg("name") = "", "A new box domain (a copy of x), optionally named.")
+           py::arg("name") = "", DOC(ContractorNetwork, create_dom, IntervalVector_string))
       .def(
           "set_name",
           [](ContractorNetwork& cn, const py::object& domain, const std::string& name) {
@@ -104,7 +101,7 @@ void init_cn(py::module_& m) {
           },
           py::arg("domain"), py::arg("name"),
           "Names a domain for the reports (stats.emptiness); a TubeVector's components become name[i].")
-      .def("domain_name", &ContractorNetwork::domain_name, py::arg("d"), "The name of domain number d ('' if none).")
+      .def("domain_name", &ContractorNetwork::domain_name, py::arg("d"), DOC(ContractorNetwork, domain_name))
       .def(
           "add",
           [](ContractorNetwork& cn, const py::object& ctc, const py::iterable& domains) {
@@ -138,19 +135,17 @@ void init_cn(py::module_& m) {
               return cn.contract();
             });
           },
-          "Propagates to the fixed point; the domains are contracted in place. Returns ContractStats;\n"
-          "stats.empty means no solution, and stats.emptiness says which contractor emptied which domain.\n"
-          "Ctrl-C raises KeyboardInterrupt; budget() limits it (BudgetExceeded, Cancelled).")
-      .def("nb_ctc", &ContractorNetwork::nb_ctc, "Number of contractors added.")
-      .def("nb_dom", &ContractorNetwork::nb_dom, "Number of domains known to the network.")
+          DOC(ContractorNetwork, contract))
+      .def("nb_ctc", &ContractorNetwork::nb_ctc, DOC(ContractorNetwork, nb_ctc))
+      .def("nb_dom", &ContractorNetwork::nb_dom, DOC(ContractorNetwork, nb_dom))
       .def("ratio", &ContractorNetwork::ratio,
-           "The shrink ratio above which a contracted atom wakes its other contractors (default 0.01).")
+           DOC(ContractorNetwork, ratio))
       .def("budget", &ContractorNetwork::budget,
-           "The limits of contract(): max_boxes counts contractor calls, max_seconds the time, cancel a CancelToken.")
+           DOC(ContractorNetwork, budget))
       .def("set_budget", &ContractorNetwork::set_budget, py::arg("budget"),
-           "Sets budget(); contract() then raises BudgetExceeded past it (the domains stay enclosures).")
+           DOC(ContractorNetwork, set_budget))
       .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"),
-           "Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on it.");
+           DOC(ContractorNetwork, set_ratio));
 }
 
 }  // namespace sillage::python

@@ -10,6 +10,7 @@
 
 #include "arg_checks.h"
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/ctc/ctc_algebra.h"
 #include "sillage/ctc/ctc_binary.h"
 #include "sillage/ctc/ctc_box.h"
@@ -104,7 +105,7 @@ std::shared_ptr<const Ctc> hold_ctc(const py::handle& h) { return hold<Ctc>(h, "
 
 void init_ctc(py::module_& m) {
   py::class_<Ctc, PyCtc, std::shared_ptr<Ctc>>(m, "Ctc",
-                                               "A contractor on boxes; subclass it and override contract(self, x).")
+                                               DOC(Ctc))
       .def(py::init<std::size_t>(), py::arg("nb_vars"),
            "A contractor on nb_vars variables (for a Python subclass, which overrides contract).")
       .def(
@@ -114,10 +115,10 @@ void init_ctc(py::module_& m) {
             c.contract(*x);
             return x;
           },
-          py::arg("x"), "Contracts x in place and returns it.")
-      .def("nb_vars", &Ctc::nb_vars, "The dimension n of the boxes it contracts.")
-      .def("name", &Ctc::name, "The class name, e.g. 'CtcFunction'.")
-      .def("describe", &Ctc::describe, "The name and what tells this contractor from others, e.g. 'CtcFunction(x - y)'.")
+          py::arg("x"), DOC(Ctc, contract))
+      .def("nb_vars", &Ctc::nb_vars, DOC(Ctc, nb_vars))
+      .def("name", &Ctc::name, DOC(Ctc, name))
+      .def("describe", &Ctc::describe, DOC(Ctc, describe))
       .def("__and__", [](const py::object& a, const py::object& b) {
         return std::make_shared<CtcInter>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
       })
@@ -126,74 +127,63 @@ void init_ctc(py::module_& m) {
       })
       .def("__repr__", [](const Ctc& c) { return "<" + c.name() + " on " + std::to_string(c.nb_vars()) + " variables>"; });
 
-  py::class_<CtcBox, Ctc, std::shared_ptr<CtcBox>>(m, "CtcBox", "x &= B: the contractor of the constraint x in [B].")
-      .def(py::init<const IntervalVector&>(), py::arg("box"), "The contractor of x in box.")
-      .def("box", &CtcBox::box, "The box B.");
+  py::class_<CtcBox, Ctc, std::shared_ptr<CtcBox>>(m, "CtcBox", DOC(CtcBox))
+      .def(py::init<const IntervalVector&>(), py::arg("box"), DOC(CtcBox, CtcBox))
+      .def("box", &CtcBox::box, DOC(CtcBox, box));
   py::class_<CtcBinary, Ctc, std::shared_ptr<CtcBinary>>(m, "CtcBinary",
-                                                         "Primitive contractor of z = x op y on the box (z, x, y), the "
-                                                         "result first, as the thesis' C+ (2.31): [z] &= [x] op [y], "
-                                                         "then [x], [y] contracted by the backward projection. For "
-                                                         "atan2 the box is (theta, y, x), for pow (z, x, p).")
+                                                         DOC(CtcBinary))
       .def(py::init<const std::string&>(), py::arg("op"),
-           "By name: 'add', 'sub', 'mul', 'div', 'min', 'max', 'atan2', 'pow' (else Error).");
+           DOC(CtcBinary, CtcBinary, string));
   py::class_<CtcAdd, CtcBinary, std::shared_ptr<CtcAdd>>(m, "CtcAdd",
-      "The contractor of z = x + y on (z, x, y) (2.31): CtcAdd() on ([4,5], [0,3], [-2,2]) gives "
-      "([4,5], [2,3], [1,2]).")
-      .def(py::init<>(), "The contractor of z = x + y.");
+      DOC(CtcAdd))
+      .def(py::init<>(), DOC(CtcAdd, CtcAdd));
   py::class_<CtcSub, CtcBinary, std::shared_ptr<CtcSub>>(m, "CtcSub",
-      "The contractor of z = x - y on (z, x, y).")
-      .def(py::init<>(), "The contractor of z = x - y.");
+      DOC(CtcSub))
+      .def(py::init<>(), DOC(CtcSub, CtcSub));
   py::class_<CtcMul, CtcBinary, std::shared_ptr<CtcMul>>(m, "CtcMul",
-      "The contractor of z = x * y on (z, x, y).")
-      .def(py::init<>(), "The contractor of z = x * y.");
+      DOC(CtcMul))
+      .def(py::init<>(), DOC(CtcMul, CtcMul));
   py::class_<CtcDiv, CtcBinary, std::shared_ptr<CtcDiv>>(m, "CtcDiv",
-      "The contractor of z = x / y on (z, x, y).")
-      .def(py::init<>(), "The contractor of z = x / y.");
+      DOC(CtcDiv))
+      .def(py::init<>(), DOC(CtcDiv, CtcDiv));
   py::class_<CtcUnary, Ctc, std::shared_ptr<CtcUnary>>(m, "CtcUnary",
-                                                       "Primitive contractor of y = f(x) on the box (y, x), the result "
-                                                       "first, as the thesis' C_exp (2.32): [y] &= f([x]), then [x] "
-                                                       "contracted by the backward projection.")
+                                                       DOC(CtcUnary))
       .def(py::init<const std::string&, int>(), py::arg("op"), py::arg("n") = 0,
-           "By name: 'neg', 'sqr', 'sqrt', 'exp', 'log', 'sin', ..., 'pow', 'root' (else Error); n is the integer of "
-           "pow (y = x^n) and root, ignored otherwise.");
+           DOC(CtcUnary, CtcUnary, string_int));
   py::class_<CtcFunction, Ctc, std::shared_ptr<CtcFunction>>(m, "CtcFunction",
-      "The contractor of f(x) in [y] by one HC4-revise pass (forward-backward propagation over the expression DAG, "
-      "thesis 2.3.1). Wrap it in CtcFixPoint to iterate.")
+      DOC(CtcFunction))
       .def(py::init<const Function&, const IntervalVector&>(), py::arg("f"), py::arg("y"),
-           "f(x) in the box y; y.size() must equal f.image_dim() (else DimensionError).")
+           DOC(CtcFunction, CtcFunction, Function_IntervalVector))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("y"),
-           "f(x) in the interval y, for a scalar f (else DimensionError).")
-      .def(py::init<const Function&>(), py::arg("f"), "f(x) = 0")
-      .def("function", &CtcFunction::function, "The function f.")
-      .def("image", &CtcFunction::image, "The image box [y].");
+           DOC(CtcFunction, CtcFunction, Function_Interval))
+      .def(py::init<const Function&>(), py::arg("f"), DOC(CtcFunction, CtcFunction, Function))
+      .def("function", &CtcFunction::function, DOC(CtcFunction, function))
+      .def("image", &CtcFunction::image, DOC(CtcFunction, image));
 
   py::class_<DefinitionCheck>(m, "DefinitionCheck", R"doc(
 Proves that a Function is defined at every point of a box (set-based evaluation
 silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def(py::init<const Function&>(), py::arg("f"),
-           "A check of where f is defined (proofs by interval evaluation of its partial operations).")
+           DOC(DefinitionCheck, DefinitionCheck))
       .def("__repr__",
            [](const DefinitionCheck& d) {
              return std::string("DefinitionCheck(total=") + (d.is_total() ? "True" : "False") + ")";
            })
       .def("defined_on", &DefinitionCheck::defined_on, py::arg("x"),
-           "True when every operation of f is proven defined on the whole box x (an empty box is trivially "
-           "fine); False means \"not proven\".")
+           DOC(DefinitionCheck, defined_on))
       .def("is_total", &DefinitionCheck::is_total,
-           "True when f uses no partial operation (then defined_on is always True).");
+           DOC(DefinitionCheck, is_total));
 
   const auto list_ctor = [](auto tag) {
     using T = typename decltype(tag)::type;
     return py::init([](const py::iterable& list) { return std::make_shared<T>(hold_list<Ctc>(list, "contractor")); });
   };
   py::class_<CtcInter, Ctc, std::shared_ptr<CtcInter>>(m, "CtcInter",
-                                                       "(C1 & ... & Cn)(x) = C1(x) & ... & Cn(x) (contractor "
-                                                       "programming, thesis 2.34); c1 & c2 builds one.")
+                                                       DOC(CtcInter))
       .def(list_ctor(std::type_identity<CtcInter>{}), py::arg("list"),
            "The intersection of a non-empty list of contractors on the same variables (else Error / DimensionError).");
   py::class_<CtcUnion, Ctc, std::shared_ptr<CtcUnion>>(m, "CtcUnion",
-                                                       "(C1 | ... | Cn)(x) = hull(C1(x), ..., Cn(x)) (thesis 2.34); c1 "
-                                                       "| c2 builds one.")
+                                                       DOC(CtcUnion))
       .def(list_ctor(std::type_identity<CtcUnion>{}), py::arg("list"),
            "The union of a non-empty list of contractors on the same variables (else Error / DimensionError).");
   py::class_<CtcCompo, Ctc, std::shared_ptr<CtcCompo>>(m, "CtcCompo",
@@ -201,15 +191,15 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def(list_ctor(std::type_identity<CtcCompo>{}), py::arg("list"),
            "Cn o ... o C1 for the list [C1, ..., Cn] on the same variables.");
   py::class_<CtcFixPoint, Ctc, std::shared_ptr<CtcFixPoint>>(m, "CtcFixPoint",
-      "C applied again while one component shrinks by more than ratio (the fixed point C-infinity).")
+      DOC(CtcFixPoint))
       .def(py::init([](const py::object& c, double ratio) { return std::make_shared<CtcFixPoint>(hold_ctc(c), ratio); }),
            py::arg("ctc"), py::arg("ratio") = 0.01,
            "Iterates ctc; 0 <= ratio < 1 (else Error), ratio = 0 iterates until nothing changes at all.")
-      .def("ratio", &CtcFixPoint::ratio, "The shrink ratio that stops the iteration.");
+      .def("ratio", &CtcFixPoint::ratio, DOC(CtcFixPoint, ratio));
 
   // ---- separators ----
   py::class_<Sep, PySep, std::shared_ptr<Sep>>(
-      m, "Sep", "A separator; subclass it and override separate(self, x_in, x_out) (in place).")
+      m, "Sep", DOC(Sep))
       .def(py::init<std::size_t>(), py::arg("nb_vars"),
            "A separator on nb_vars variables (for a Python subclass, which overrides separate).")
       .def(
@@ -219,9 +209,9 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
             s.separate(*x_in, *x_out);
             return py::make_tuple(x_in, x_out);
           },
-          py::arg("x_in"), py::arg("x_out"), "Contracts x_in (inner) and x_out (outer) in place; returns both.")
-      .def("nb_vars", &Sep::nb_vars, "The dimension n of the boxes it separates.")
-      .def("name", &Sep::name, "The class name, e.g. 'SepFunction'.")
+          py::arg("x_in"), py::arg("x_out"), DOC(Sep, separate))
+      .def("nb_vars", &Sep::nb_vars, DOC(Sep, nb_vars))
+      .def("name", &Sep::name, DOC(Sep, name))
       .def("__and__", [](const py::object& a, const py::object& b) {
         return std::make_shared<SepInter>(std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
       })
@@ -232,33 +222,27 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def("__repr__", [](const Sep& s) { return "<" + s.name() + " on " + std::to_string(s.nb_vars()) + " variables>"; });
 
   py::class_<SepCtcPair, Sep, std::shared_ptr<SepCtcPair>>(m, "SepCtcPair",
-                                                           "A separator from two contractors: C_in contracts with "
-                                                           "respect to the complement of X (what it removes is in X), "
-                                                           "C_out with respect to X (what it removes is out of X).")
+                                                           DOC(SepCtcPair))
       .def(py::init([](const py::object& in, const py::object& out) {
              return std::make_shared<SepCtcPair>(hold_ctc(in), hold_ctc(out));
            }),
            py::arg("ctc_in"), py::arg("ctc_out"), "The separator (ctc_in, ctc_out), both on the same variables.");
   py::class_<SepFunction, Sep, std::shared_ptr<SepFunction>>(m, "SepFunction",
-      "The separator of X = {x : f(x) is defined and f(x) in [y]}: outer CtcFunction(f, y); inner the hull of the HC4 "
-      "contractions onto the complement of [y], given up where DefinitionCheck cannot prove f defined.")
+      DOC(SepFunction))
       .def(py::init<const Function&, const IntervalVector&>(), py::arg("f"), py::arg("y"),
-           "X = {x : f(x) in the box y}.")
+           DOC(SepFunction, SepFunction, Function_IntervalVector))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("y"),
-           "X = {x : f(x) in the interval y}, f scalar.");
+           DOC(SepFunction, SepFunction, Function_Interval));
   py::class_<SepInter, Sep, std::shared_ptr<SepInter>>(m, "SepInter",
-                                                       "Separates X1 & ... & Xn: outer boxes intersected, inner boxes "
-                                                       "hulled; s1 & s2 builds one.")
+                                                       DOC(SepInter))
       .def(py::init([](const py::iterable& l) { return std::make_shared<SepInter>(hold_list<Sep>(l, "separator")); }),
            py::arg("list"), "The intersection of a non-empty list of separators.");
   py::class_<SepUnion, Sep, std::shared_ptr<SepUnion>>(m, "SepUnion",
-                                                       "Separates X1 | ... | Xn: outer boxes hulled, inner boxes "
-                                                       "intersected; s1 | s2 builds one.")
+                                                       DOC(SepUnion))
       .def(py::init([](const py::iterable& l) { return std::make_shared<SepUnion>(hold_list<Sep>(l, "separator")); }),
            py::arg("list"), "The union of a non-empty list of separators.");
   py::class_<SepNot, Sep, std::shared_ptr<SepNot>>(m, "SepNot",
-                                                   "Separates the complement of X: inner and outer swapped; ~s builds "
-                                                   "one.")
+                                                   DOC(SepNot))
       .def(py::init([](const py::object& s) { return std::make_shared<SepNot>(hold<Sep>(s, "separator")); }),
            py::arg("sep"), "The complement of the separator sep.");
 }

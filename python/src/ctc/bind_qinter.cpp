@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/ctc/ctc_qinter.h"
 #include "sillage/ctc/gomne.h"
 #include "sillage/dynamics/ctc_qeval.h"
@@ -46,17 +47,16 @@ leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
       .def(py::init([](const py::iterable& ctcs, int q) { return std::make_shared<CtcQInter>(hold_ctcs(ctcs), q); }),
            py::arg("ctcs"), py::arg("q"),
            "The q-relaxed intersection of the contractors ctcs (all on the same variables); 0 <= q (else Error).")
-      .def("q", &CtcQInter::q, "The number of constraints allowed to be wrong.");
+      .def("q", &CtcQInter::q, DOC(CtcQInter, q));
 
-  py::class_<GomneResult>(m, "GomneResult", "What gomne proved; see gomne.")
+  py::class_<GomneResult>(m, "GomneResult", DOC(GomneResult))
       .def_readonly("q", &GomneResult::q,
-                    "The smallest q not proven infeasible: at least q measurements are wrong (q_max + 1 if every q "
-                    "<= q_max was infeasible).")
-      .def_readonly("box", &GomneResult::box, "Hull of the leaves: encloses the q-relaxed feasible set.")
+                    DOC(GomneResult, q))
+      .def_readonly("box", &GomneResult::box, DOC(GomneResult, box))
       .def_readonly("outliers", &GomneResult::outliers,
-                    "Indices of the measurements violated on the whole q-relaxed set (proven wrong if at most q are).")
-      .def_readonly("leaves", &GomneResult::leaves, "The boxes of the paving of the q-relaxed set.")
-      .def("is_empty", &GomneResult::is_empty, "True when no box is left (more than q_max constraints are wrong).")
+                    DOC(GomneResult, outliers))
+      .def_readonly("leaves", &GomneResult::leaves, DOC(GomneResult, leaves))
+      .def("is_empty", &GomneResult::is_empty, DOC(GomneResult, is_empty))
       .def("__repr__", [](const GomneResult& r) {
         return "<GomneResult q=" + std::to_string(r.q) + " box=" + r.box.str() + " outliers=" +
                py::repr(py::cast(r.outliers)).cast<std::string>() + ">";
@@ -95,8 +95,8 @@ ctc = CtcFunction(|z - b|, r).)doc")
            }),
            py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(),
            "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint).")
-      .def_readwrite("t", &TubeObservation::t, "The time interval of the fix.")
-      .def_readwrite("z", &TubeObservation::z, "The box of the fix (contracted by ctc).")
+      .def_readwrite("t", &TubeObservation::t, DOC(TubeObservation, t))
+      .def_readwrite("z", &TubeObservation::z, DOC(TubeObservation, z))
       .def("__repr__", [](const TubeObservation& o) {
         return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + ">";
       });
@@ -109,12 +109,11 @@ intersection of the copies: a trajectory satisfying m - q fixes is kept. Returns
 the indices of the fixes no trajectory of the input x satisfies (wrong, if at
 most q are). The TDomain is never sampled. In a ContractorNetwork:
 CtcQEval(q, obs) holds the fixes and cn.add(ctc, [x, v]) contracts x.)doc")
-      .def(py::init<int>(), py::arg("q"), "At most q fixes are wrong; q >= 0 (else Error).")
+      .def(py::init<int>(), py::arg("q"), DOC(CtcQEval, CtcQEval, int))
       .def(py::init<int, std::vector<TubeObservation>>(), py::arg("q"), py::arg("obs"),
-           "The network form: at most q of the fixes obs (a non-empty list of TubeObservation) are wrong; "
-           "ContractorNetwork.add(ctc, [x, v]) then contracts x.")
-      .def("q", &CtcQEval::q, "The number of fixes allowed to be wrong.")
-      .def("observations", &CtcQEval::observations, "The fixes held for the network form (empty if none).")
+           DOC(CtcQEval, CtcQEval, int_vector_TubeObservation))
+      .def("q", &CtcQEval::q, DOC(CtcQEval, q))
+      .def("observations", &CtcQEval::observations, DOC(CtcQEval, observations))
       .def("__repr__",
            [](const CtcQEval& c) {
              return "CtcQEval(q=" + std::to_string(c.q()) +
@@ -122,14 +121,14 @@ CtcQEval(q, obs) holds the fixes and cn.add(ctc, [x, v]) contracts x.)doc")
                     ")";
            })
       .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
-           py::call_guard<py::gil_scoped_release>(), "Contracts x in place; obs is a list of TubeObservation.");
+           py::call_guard<py::gil_scoped_release>(), DOC(CtcQEval, contract));
 
-  py::class_<TubeGomneResult>(m, "TubeGomneResult", "What gomne_tube proved; see gomne_tube.")
+  py::class_<TubeGomneResult>(m, "TubeGomneResult", DOC(TubeGomneResult))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
-      .def_readonly("q", &TubeGomneResult::q, "At least q fixes are wrong (q_max + 1 if every q <= q_max emptied x).")
-      .def_readonly("x", &TubeGomneResult::x, "The tube contracted with CtcQEval(q).")
+      .def_readonly("q", &TubeGomneResult::q, DOC(TubeGomneResult, q))
+      .def_readonly("x", &TubeGomneResult::x, DOC(TubeGomneResult, x))
       .def_readonly("outliers", &TubeGomneResult::outliers,
-                    "The fixes no trajectory of x satisfies (proven wrong if at most q are).");
+                    DOC(TubeGomneResult, outliers));
   m.def(
       "gomne_tube",
       [](const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs, std::optional<int> q_max,

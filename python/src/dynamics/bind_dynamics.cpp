@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/time_propag.h"
@@ -15,7 +16,7 @@
 namespace sillage::python {
 
 void init_dynamics(py::module_& m) {
-  py::enum_<TimePropag>(m, "TimePropag", "Direction of a temporal propagation; FORWARD | BACKWARD == FWD_BWD.")
+  py::enum_<TimePropag>(m, "TimePropag", DOC(TimePropag))
       .value("FORWARD", TimePropag::FORWARD)
       .value("BACKWARD", TimePropag::BACKWARD)
       .value("FWD_BWD", TimePropag::FWD_BWD)
@@ -24,14 +25,10 @@ void init_dynamics(py::module_& m) {
   using C = CtcDeriv;
   py::class_<C, NetworkCtc, std::shared_ptr<C>>(
       m, "CtcDeriv",
-      "The differential contractor C_d/dt of x' = v (thesis 4.2, (4.4), Prop. 4.1, Alg. 3-5).\n"
-      "contract(x, v) contracts the Tube (or TubeVector) x in place and returns False if it is now\n"
-      "empty; v is not changed. Optional\n"
-      "restrictions: a slice range (first, last) or a time interval t.")
+      DOC(CtcDeriv))
       .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD,
-           "The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4, (4.17)) or "
-           "FWD_BWD (Alg. 5, the default).")
-      .def("time_propag", &C::time_propag, "The direction of the sweeps.")
+           DOC(CtcDeriv, CtcDeriv))
+      .def("time_propag", &C::time_propag, DOC(CtcDeriv, time_propag))
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v) {
@@ -39,8 +36,7 @@ void init_dynamics(py::module_& m) {
             return c.contract(x, v);
           },
           py::arg("x"), py::arg("v"),
-          "Contracts the tube x with x' in v (Alg. 3-5, (4.4)), in place; v is not changed (Lemma 4.1). Returns "
-          "False if x is now empty.")
+          DOC(CtcDeriv, contract, Tube_Tube))
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
@@ -48,14 +44,14 @@ void init_dynamics(py::module_& m) {
             return c.contract(x, v, first, last);
           },
           py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
-          "Only slices first..last and gates first..last+1 are read or changed.")
+          DOC(CtcDeriv, contract, Tube_Tube_size_t_size_t))
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v, const Interval& t) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v, t);
           },
-          py::arg("x"), py::arg("v"), py::arg("t"), "Only the slices meeting the time interval t.")
+          py::arg("x"), py::arg("v"), py::arg("t"), DOC(CtcDeriv, contract, Tube_Tube_Interval))
       .def(
           "contract",
           [](const C& c, TubeVector& x, const TubeVector& v) {
@@ -63,7 +59,7 @@ void init_dynamics(py::module_& m) {
             return c.contract(x, v);
           },
           py::arg("x"), py::arg("v"),
-          "Contracts the tube vector x with x' in v, component by component; returns False if x is now empty.")
+          DOC(CtcDeriv, contract, TubeVector_TubeVector))
       .def(
           "contract",
           [](const C& c, TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) {
@@ -71,14 +67,14 @@ void init_dynamics(py::module_& m) {
             return c.contract(x, v, first, last);
           },
           py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
-          "Only slices first..last and gates first..last+1 of each component are read or changed.")
+          DOC(CtcDeriv, contract, TubeVector_TubeVector_size_t_size_t))
       .def(
           "contract",
           [](const C& c, TubeVector& x, const TubeVector& v, const Interval& t) {
             py::gil_scoped_release unlocked;
             return c.contract(x, v, t);
           },
-          py::arg("x"), py::arg("v"), py::arg("t"), "Only the slices meeting the time interval t.")
+          py::arg("x"), py::arg("v"), py::arg("t"), DOC(CtcDeriv, contract, TubeVector_TubeVector_Interval))
       .def("__repr__", [](const C& c) {
         switch (c.time_propag()) {
           case TimePropag::FORWARD:

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
 #include "sillage/interval/interval_matrix.h"
@@ -76,7 +77,7 @@ IntervalVector box_arg(const py::handle& x) {
 // chains a new overload onto an existing function of the module (sibling), so
 // sillage.sqrt(Interval) keeps working and sillage.sqrt(Expr) builds a node.
 void init_builder(py::module_& m) {
-  py::enum_<Op>(m, "Op", "The operation of an expression node.")
+  py::enum_<Op>(m, "Op", DOC(Op))
       .value("Const", Op::Const)
       .value("Var", Op::Var)
       .value("Add", Op::Add)
@@ -115,10 +116,10 @@ numbers and Intervals on either side, and sillage.sqr, sqrt, pow, root, exp, log
 sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   e.def(py::init([](const py::int_& c) { return Expr(int_enclosure(c)); }), py::arg("c"),
         "The constant c: an int exactly, or the tightest interval around it.")  // exact or outward
-      .def(py::init<double>(), py::arg("c"), "The constant [c, c].")
-      .def(py::init<const Interval&>(), py::arg("c"), "The constant interval c.")
-      .def("op", &Expr::op, "The operation of the root node.")
-      .def("is_const", &Expr::is_const, "True when the expression has no variable.")
+      .def(py::init<double>(), py::arg("c"), DOC(Expr, Expr, double))
+      .def(py::init<const Interval&>(), py::arg("c"), DOC(Expr, Expr, Interval))
+      .def("op", &Expr::op, DOC(Expr, op))
+      .def("is_const", &Expr::is_const, DOC(Expr, is_const))
       .def("__str__", &Expr::str)
       .def("__repr__", [](const Expr& x) { return "Expr(" + x.str() + ")"; })
       // Node identity, which hash-consing makes structural equality (C++ operator==).
@@ -152,9 +153,9 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
       .def("__rpow__", [](const Expr& p, double x) { return pow(Expr(x), p); }, py::is_operator())
       .def("__rpow__", [](const Expr& p, const Interval& x) { return pow(Expr(x), p); }, py::is_operator());
 
-  py::class_<ExprVar, Expr>(m, "ExprVar", "A scalar variable of the builder, known by its name: ExprVar(\"x1\").")
-      .def(py::init<const std::string&>(), py::arg("name"), "The scalar variable called name.")
-      .def("name", &ExprVar::name, "The variable's name.")
+  py::class_<ExprVar, Expr>(m, "ExprVar", DOC(ExprVar))
+      .def(py::init<const std::string&>(), py::arg("name"), DOC(ExprVar, ExprVar))
+      .def("name", &ExprVar::name, DOC(ExprVar, name))
       .def("__repr__", [](const ExprVar& v) { return "ExprVar(" + py::repr(py::str(v.name())).cast<std::string>() + ")"; });
   m.attr("Variable") = m.attr("ExprVar");  // C++: using Variable = ExprVar
 
@@ -163,34 +164,34 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   py::implicitly_convertible<py::int_, Expr>();
   py::implicitly_convertible<Interval, Expr>();
 
-  m.def("expr_pi", &expr_pi, "A rigorous enclosure of pi, as a constant expression.");
+  m.def("expr_pi", &expr_pi, DOC(expr_pi));
   using E1 = Expr (*)(const Expr&);
   using E2 = Expr (*)(const Expr&, const Expr&);
-  m.def("sqr", static_cast<E1>(&sqr), py::arg("x"), "The expression x^2.");
-  m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"), "The expression sqrt(x).");
-  m.def("exp", static_cast<E1>(&exp), py::arg("x"), "The expression exp(x).");
-  m.def("log", static_cast<E1>(&log), py::arg("x"), "The expression log(x) (natural logarithm).");
+  m.def("sqr", static_cast<E1>(&sqr), py::arg("x"), DOC(sqr, Expr));
+  m.def("sqrt", static_cast<E1>(&sqrt), py::arg("x"), DOC(sqrt, Expr));
+  m.def("exp", static_cast<E1>(&exp), py::arg("x"), DOC(exp, Expr));
+  m.def("log", static_cast<E1>(&log), py::arg("x"), DOC(log, Expr));
   m.def("pow", static_cast<Expr (*)(const Expr&, int)>(&pow), py::arg("x"), py::arg("n"),
-        "The expression x^n, n an integer.");
+        DOC(pow, Expr_int));
   m.def("pow", static_cast<Expr (*)(const Expr&, double)>(&pow), py::arg("x"), py::arg("p"),
-        "The expression x^p, p a real constant.");
-  m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"), "The expression x^p, p an expression.");
+        DOC(pow, Expr_double));
+  m.def("pow", static_cast<E2>(&pow), py::arg("x"), py::arg("p"), DOC(pow, Expr_Expr));
   m.def("root", static_cast<Expr (*)(const Expr&, int)>(&root), py::arg("x"), py::arg("n"),
-        "The expression root(x, n), the n-th root.");
-  m.def("sin", static_cast<E1>(&sin), py::arg("x"), "The expression sin(x).");
-  m.def("cos", static_cast<E1>(&cos), py::arg("x"), "The expression cos(x).");
-  m.def("tan", static_cast<E1>(&tan), py::arg("x"), "The expression tan(x).");
-  m.def("asin", static_cast<E1>(&asin), py::arg("x"), "The expression asin(x).");
-  m.def("acos", static_cast<E1>(&acos), py::arg("x"), "The expression acos(x).");
-  m.def("atan", static_cast<E1>(&atan), py::arg("x"), "The expression atan(x).");
-  m.def("atan2", static_cast<E2>(&atan2), py::arg("y"), py::arg("x"), "The expression atan2(y, x), y first.");
-  m.def("sinh", static_cast<E1>(&sinh), py::arg("x"), "The expression sinh(x).");
-  m.def("cosh", static_cast<E1>(&cosh), py::arg("x"), "The expression cosh(x).");
-  m.def("tanh", static_cast<E1>(&tanh), py::arg("x"), "The expression tanh(x).");
-  m.def("abs", static_cast<E1>(&abs), py::arg("x"), "The expression abs(x).");
-  m.def("min", static_cast<E2>(&min), py::arg("x"), py::arg("y"), "The expression min(x, y).");
-  m.def("max", static_cast<E2>(&max), py::arg("x"), py::arg("y"), "The expression max(x, y).");
-  m.def("sign", static_cast<E1>(&sign), py::arg("x"), "The expression sign(x).");
+        DOC(root, Expr_int));
+  m.def("sin", static_cast<E1>(&sin), py::arg("x"), DOC(sin, Expr));
+  m.def("cos", static_cast<E1>(&cos), py::arg("x"), DOC(cos, Expr));
+  m.def("tan", static_cast<E1>(&tan), py::arg("x"), DOC(tan, Expr));
+  m.def("asin", static_cast<E1>(&asin), py::arg("x"), DOC(asin, Expr));
+  m.def("acos", static_cast<E1>(&acos), py::arg("x"), DOC(acos, Expr));
+  m.def("atan", static_cast<E1>(&atan), py::arg("x"), DOC(atan, Expr));
+  m.def("atan2", static_cast<E2>(&atan2), py::arg("y"), py::arg("x"), DOC(atan2, Expr_Expr));
+  m.def("sinh", static_cast<E1>(&sinh), py::arg("x"), DOC(sinh, Expr));
+  m.def("cosh", static_cast<E1>(&cosh), py::arg("x"), DOC(cosh, Expr));
+  m.def("tanh", static_cast<E1>(&tanh), py::arg("x"), DOC(tanh, Expr));
+  m.def("abs", static_cast<E1>(&abs), py::arg("x"), DOC(abs, Expr));
+  m.def("min", static_cast<E2>(&min), py::arg("x"), py::arg("y"), DOC(min, Expr_Expr));
+  m.def("max", static_cast<E2>(&max), py::arg("x"), py::arg("y"), DOC(max, Expr_Expr));
+  m.def("sign", static_cast<E1>(&sign), py::arg("x"), DOC(sign, Expr));
 }
 
 }  // namespace
@@ -205,17 +206,16 @@ Function([x1, x2], [e1, e2]) with x1 = ExprVar("x1"), ... Every evaluation
 encloses the exact real result (decimal constants such as 0.1 in a text are
 enclosed rigorously; a float in the builder is the degenerate interval).)doc")
       .def(py::init<const std::vector<std::string>&, const std::string&>(), py::arg("vars"), py::arg("expr"),
-           "f from the variable names and the expression text; ParseError on a bad text (the message points at the "
-           "column).")
+           DOC(Function, Function, vector_string_string))
       .def(py::init<const std::vector<ExprVar>&, const Expr&>(), py::arg("vars"), py::arg("expr"),
-           "A scalar function of the builder variables vars.")
+           DOC(Function, Function, vector_ExprVar_Expr))
       .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"),
-           "A vector function (e1, ..., em) of the builder variables vars.")
-      .def("nb_vars", &Function::nb_vars, "Input dimension n.")
-      .def("image_dim", &Function::image_dim, "Output dimension m (1 for a scalar function).")
-      .def("var_names", &Function::var_names, "The names of the n variables, in order.")
-      .def("exprs", &Function::exprs, "The m output expressions (Expr).")
-      .def("tape_size", &Function::tape_size, "Number of distinct nodes in the DAG.")
+           DOC(Function, Function, vector_ExprVar_vector_Expr))
+      .def("nb_vars", &Function::nb_vars, DOC(Function, nb_vars))
+      .def("image_dim", &Function::image_dim, DOC(Function, image_dim))
+      .def("var_names", &Function::var_names, DOC(Function, var_names))
+      .def("exprs", &Function::exprs, DOC(Function, exprs))
+      .def("tape_size", &Function::tape_size, DOC(Function, tape_size))
       .def(
           "eval",
           [](const Function& f, const py::object& x) -> py::object {
@@ -250,7 +250,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           py::arg("x"), py::arg("y"),
           "Contracts the box x in place so that f(x) in y (an Interval or a number for a scalar function, an "
           "IntervalVector otherwise). Returns False (x is then empty) when proven inconsistent.")
-      .def("diff", &Function::diff, "Symbolic gradient (m = 1) or row-major Jacobian (size m*n), as a Function.")
+      .def("diff", &Function::diff, DOC(Function, diff))
       .def(
           "eval_batch",
           [](const Function& f, const py::object& xs) {
@@ -271,8 +271,8 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           py::arg("xs"),
           "Evaluates many boxes at once: xs is a list of IntervalVector or an (N, n, 2) array of bounds; returns "
           "an (N, m, 2) array of bounds, (nan, nan) for an empty interval.")
-      .def("__getitem__", &Function::operator[], py::arg("i"), "The i-th component, a scalar Function.")
-      .def("expr_str", &Function::expr_str, "The expression as text (it parses back to the same function).")
+      .def("__getitem__", &Function::operator[], py::arg("i"), DOC(Function, op_index))
+      .def("expr_str", &Function::expr_str, DOC(Function, expr_str))
       .def("__str__", &Function::str)
       .def("__repr__", [](const Function& f) { return "Function(" + f.str() + ")"; });
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/figures/loops_map_figure.h"
 #include "sillage/figures/tplane_figure.h"
 
@@ -22,25 +23,23 @@ const T* ptr(const std::optional<T>& x) {
 }  // namespace
 
 void init_loop_figures(py::module_& m) {
-  py::enum_<LoopStatus>(m, "LoopStatus", "What a figure shows of a detection: proven (orange), unproven (black), "
-                                         "partial (grey).")
+  py::enum_<LoopStatus>(m, "LoopStatus", DOC(LoopStatus))
       .value("Proven", LoopStatus::Proven)
       .value("Unproven", LoopStatus::Unproven)
       .value("Partial", LoopStatus::Partial);
   m.def("loop_status", &loop_status, py::arg("loop"),
-        "The status of a detection: Proven (by the degree test T), Unproven (complete, not proven) or Partial (not "
-        "complete).");
-  m.def("loop_style", &loop_style, py::arg("status"), "Fill and stroke of a status in the figures.");
+        DOC(loop_status));
+  m.def("loop_style", &loop_style, py::arg("status"), DOC(loop_style));
 
-  py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions", "Drawing options of tplane_figure.")
+  py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions", DOC(TPlaneFigureOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_leaf_px 2, marker_px 3, crossing_px 2, show_diagonal True.")
       .def_readwrite("min_leaf_px", &TPlaneFigureOptions::min_leaf_px,
-                     "Leaves smaller than this (pixels, both sides) are covered by the outline of their component.")
+                     DOC(TPlaneFigureOptions, min_leaf_px))
       .def_readwrite("marker_px", &TPlaneFigureOptions::marker_px,
-                     "Radius of the disk marker of components smaller than 2 * marker_px.")
-      .def_readwrite("crossing_px", &TPlaneFigureOptions::crossing_px, "Radius of the true-crossing points.")
-      .def_readwrite("show_diagonal", &TPlaneFigureOptions::show_diagonal, "Draw the diagonal t1 = t2.");
+                     DOC(TPlaneFigureOptions, marker_px))
+      .def_readwrite("crossing_px", &TPlaneFigureOptions::crossing_px, DOC(TPlaneFigureOptions, crossing_px))
+      .def_readwrite("show_diagonal", &TPlaneFigureOptions::show_diagonal, DOC(TPlaneFigureOptions, show_diagonal));
   m.def(
       "tplane_figure",
       [](const TPlane& tp, const std::optional<std::vector<PathCrossing>>& crossings, const std::string& title,
@@ -49,18 +48,18 @@ void init_loop_figures(py::module_& m) {
       },
       py::arg("tplane"), py::arg("crossings") = py::none(), py::arg("title") = "", py::arg("view") = py::none(),
       py::arg("width_px") = 600.0, py::arg("options") = TPlaneFigureOptions{},
-      "The t-plane (Fig. 6.13): paving, detections by status, diagonal, true crossings; view zooms.");
+      DOC(tplane_figure));
 
-  py::class_<LoopsMapOptions>(m, "LoopsMapOptions", "Drawing options of loops_map_figure.")
+  py::class_<LoopsMapOptions>(m, "LoopsMapOptions", DOC(LoopsMapOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: show_partial, boxes and projections True, path_px 0.5, crossing_px 2.5.")
-      .def_readwrite("show_partial", &LoopsMapOptions::show_partial, "Draw the partial detections too.")
-      .def_readwrite("boxes", &LoopsMapOptions::boxes, "Draw the map boxes.")
+      .def_readwrite("show_partial", &LoopsMapOptions::show_partial, DOC(LoopsMapOptions, show_partial))
+      .def_readwrite("boxes", &LoopsMapOptions::boxes, DOC(LoopsMapOptions, boxes))
       .def_readwrite("projections", &LoopsMapOptions::projections,
-                     "Draw the path over [t1] and [t2] (needs the path times).")
+                     DOC(LoopsMapOptions, projections))
       .def_readwrite("path_px", &LoopsMapOptions::path_px,
-                     "The path polyline keeps a point when it moved this far (pixels) from the last kept one.")
-      .def_readwrite("crossing_px", &LoopsMapOptions::crossing_px, "Radius of the true crossing points.");
+                     DOC(LoopsMapOptions, path_px))
+      .def_readwrite("crossing_px", &LoopsMapOptions::crossing_px, DOC(LoopsMapOptions, crossing_px));
   m.def(
       "loops_map_figure",
       [](const TPlane& tp, const std::optional<std::vector<Vector>>& path,
@@ -73,8 +72,7 @@ void init_loop_figures(py::module_& m) {
       py::arg("tplane"), py::arg("path") = py::none(), py::arg("path_times") = py::none(),
       py::arg("positions") = py::none(), py::arg("crossings") = py::none(), py::arg("title") = "",
       py::arg("width_px") = 700.0, py::arg("options") = LoopsMapOptions{},
-      "The map (Fig. 6.12): position tube, path (points (x, y)), detections as map boxes and, with the path "
-      "times, as the path over [t1] and [t2].");
+      DOC(loops_map_figure, TPlane_vector_Vector_vector_double_TubeVector_vector_PathCrossing_string_double_LoopsMapOptions));
 }
 
 }  // namespace sillage::python

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/interval/backward.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
@@ -199,8 +200,7 @@ py::tuple bounds_state(const Interval& x) { return py::make_tuple(x.lb(), x.ub()
 void init_interval_class(py::module_& m) {
   using I = Interval;
   py::class_<I, std::shared_ptr<I>> c(m, "Interval",
-                                      "A closed interval [lb, ub] of reals, possibly empty or unbounded. "
-                                      "Operations round outward: the exact result is always enclosed.");
+                                      DOC(Interval));
   def_copy(c);
   // An int that is not a double is enclosed by its two neighbours
   // (Interval(2**53 + 1) = [2^53, 2^53 + 2]); in [lb, ub] lb rounds down, ub up.
@@ -305,7 +305,7 @@ void init_interval_class(py::module_& m) {
 void init_vector_class(py::module_& m) {
   using V = IntervalVector;
   py::class_<V, std::shared_ptr<V>> c(m, "IntervalVector",
-                                      "A box: a vector of intervals. Empty as soon as one component is.");
+                                      DOC(IntervalVector));
   def_copy(c);
   c.def(py::init([](const py::object& obj) { return vector_from(obj); }), py::arg("x"),
         "IntervalVector(n) (n copies of the real line), or from a list of intervals / numbers / "
@@ -313,9 +313,9 @@ void init_vector_class(py::module_& m) {
       .def(py::init([](std::size_t n, const py::object& x) { return V(n, to_interval(x, "IntervalVector(n, x)")); }),
            py::arg("n"), py::arg("x"), "n copies of the interval x.")
       .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"),
-                  "The degenerate box of the point p.")
-      .def_static("empty", &V::empty, py::arg("n"), "The empty box of dimension n.")
-      .def("size", &V::size, "The dimension n.")
+                  DOC(IntervalVector, from_point))
+      .def_static("empty", &V::empty, py::arg("n"), DOC(IntervalVector, empty))
+      .def("size", &V::size, DOC(IntervalVector, size))
       .def("__len__", &V::size)
       .def("__getitem__", [](const V& v, long long i) { return v[check_index(i, v.size())]; })
       .def("__getitem__",
@@ -332,36 +332,36 @@ void init_vector_class(py::module_& m) {
              v[k] = to_interval(x, "IntervalVector[" + std::to_string(k) + "]");
            })
       .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
-      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i to j inclusive.")
+      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), DOC(IntervalVector, subvector))
       .def("put", &V::put, py::arg("start"), py::arg("x"),
-           "Writes the box x into components start, start + 1, ... in place.")
-      .def("lb", &V::lb, "The lower bounds, as a list of floats.")
-      .def("ub", &V::ub, "The upper bounds, as a list of floats.")
-      .def("mid", &V::mid, "The midpoint, as a list of floats.")
-      .def("diam", &V::diam, "The widths of the components, as a list of floats.")
-      .def("rad", &V::rad, "Half the widths, as a list of floats.")
-      .def("mag", &V::mag, "The magnitudes of the components, as a list of floats.")
-      .def("mig", &V::mig, "The mignitudes of the components, as a list of floats.")
-      .def("volume", &V::volume, "The product of the widths.")
-      .def("max_diam", &V::max_diam, "The largest width of a component.")
-      .def("min_diam", &V::min_diam, "The smallest width of a component.")
+           DOC(IntervalVector, put))
+      .def("lb", &V::lb, DOC(IntervalVector, lb))
+      .def("ub", &V::ub, DOC(IntervalVector, ub))
+      .def("mid", &V::mid, DOC(IntervalVector, mid))
+      .def("diam", &V::diam, DOC(IntervalVector, diam))
+      .def("rad", &V::rad, DOC(IntervalVector, rad))
+      .def("mag", &V::mag, DOC(IntervalVector, mag))
+      .def("mig", &V::mig, DOC(IntervalVector, mig))
+      .def("volume", &V::volume, DOC(IntervalVector, volume))
+      .def("max_diam", &V::max_diam, DOC(IntervalVector, max_diam))
+      .def("min_diam", &V::min_diam, DOC(IntervalVector, min_diam))
       .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true,
-           "Index of the widest component (largest=True) or of the narrowest one.")
-      .def("is_empty", &V::is_empty, "True when a component is empty.")
-      .def("is_unbounded", &V::is_unbounded, "True when a component is unbounded.")
-      .def("is_degenerate", &V::is_degenerate, "True when every component is degenerate (a point).")
-      .def("contains", &V::contains, py::arg("p"), "True when the point p is in the box.")
-      .def("is_subset", &V::is_subset, py::arg("y"), "True when self is a subset of y.")
+           DOC(IntervalVector, extr_diam_index))
+      .def("is_empty", &V::is_empty, DOC(IntervalVector, is_empty))
+      .def("is_unbounded", &V::is_unbounded, DOC(IntervalVector, is_unbounded))
+      .def("is_degenerate", &V::is_degenerate, DOC(IntervalVector, is_degenerate))
+      .def("contains", &V::contains, py::arg("p"), DOC(IntervalVector, contains))
+      .def("is_subset", &V::is_subset, py::arg("y"), DOC(IntervalVector, is_subset))
       .def("is_strict_subset", &V::is_strict_subset, py::arg("y"),
-           "True when self is a subset of y and differs from it.")
-      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"), "True when self is in the interior of y.")
-      .def("intersects", &V::intersects, py::arg("y"), "True when self and y have a common point.")
+           DOC(IntervalVector, is_strict_subset))
+      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"), DOC(IntervalVector, is_interior_subset))
+      .def("intersects", &V::intersects, py::arg("y"), DOC(IntervalVector, intersects))
       .def("bisect", py::overload_cast<double>(&V::bisect, py::const_), py::arg("ratio") = 0.5,
-           "Splits the largest component at lb + ratio * diam.")
+           DOC(IntervalVector, bisect, double))
       .def("bisect", py::overload_cast<std::size_t, double>(&V::bisect, py::const_), py::arg("i"),
-           py::arg("ratio") = 0.5, "Splits component i at lb + ratio * diam; returns the two halves.")
-      .def("inflate", &V::inflate, py::arg("r"), "Each component inflated by r (a new box).")
-      .def("set_empty", &V::set_empty, "Makes this box empty, in place.")
+           py::arg("ratio") = 0.5, DOC(IntervalVector, bisect, size_t_double))
+      .def("inflate", &V::inflate, py::arg("r"), DOC(IntervalVector, inflate))
+      .def("set_empty", &V::set_empty, DOC(IntervalVector, set_empty))
       .def("to_numpy", &vector_to_numpy, "An (n, 2) array of bounds (an empty component gives inf, -inf).")
       .def("__array__", [](const V& v, const py::object& dtype, const py::object&) {
              return as_array(vector_to_numpy(v), dtype);
@@ -395,7 +395,7 @@ void init_vector_class(py::module_& m) {
 
 void init_matrix_class(py::module_& m) {
   using M = IntervalMatrix;
-  py::class_<M, std::shared_ptr<M>> c(m, "IntervalMatrix", "A matrix of intervals (a box of real matrices).");
+  py::class_<M, std::shared_ptr<M>> c(m, "IntervalMatrix", DOC(IntervalMatrix));
   def_copy(c);
   c.def(py::init([](std::size_t r, std::size_t k, const py::object& x) {
           return M(r, k, x.is_none() ? Interval() : to_interval(x, "IntervalMatrix(rows, cols, x)"));
@@ -405,12 +405,12 @@ void init_matrix_class(py::module_& m) {
       .def(py::init([](const py::object& obj) { return matrix_from(obj); }), py::arg("x"),
            "From a list of rows (each a list of intervals / numbers / pairs, or an IntervalVector), "
            "an (n, m, 2) array of bounds or an (n, m) array of points.")
-      .def_static("identity", &M::identity, py::arg("n"), "The n x n identity matrix.")
-      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"), "The empty matrix of the given shape.")
+      .def_static("identity", &M::identity, py::arg("n"), DOC(IntervalMatrix, identity))
+      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"), DOC(IntervalMatrix, empty))
       .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"),
-                  "The degenerate interval matrix of the real matrix p.")
-      .def("rows", &M::rows, "Number of rows.")
-      .def("cols", &M::cols, "Number of columns.")
+                  DOC(IntervalMatrix, from_point))
+      .def("rows", &M::rows, DOC(IntervalMatrix, rows))
+      .def("cols", &M::cols, DOC(IntervalMatrix, cols))
       .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); }, "(rows, cols).")
       .def("__len__", &M::rows)
       .def("__getitem__", [](const M& a, std::pair<long long, long long> ij) {
@@ -424,27 +424,27 @@ void init_matrix_class(py::module_& m) {
       .def("__setitem__", [](M& a, long long i, const py::object& r) {
              a.set_row(check_index(i, a.rows()), vector_from(r));
            })
-      .def("row", &M::row, py::arg("i"), "Row i, a copy as an IntervalVector.")
-      .def("col", &M::col, py::arg("j"), "Column j, a copy as an IntervalVector.")
-      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"), "Replaces row i by the box r.")
-      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"), "Replaces column j by the box c.")
-      .def("transpose", &M::transpose, "The transpose (a new matrix).")
+      .def("row", &M::row, py::arg("i"), DOC(IntervalMatrix, row))
+      .def("col", &M::col, py::arg("j"), DOC(IntervalMatrix, col))
+      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"), DOC(IntervalMatrix, set_row))
+      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"), DOC(IntervalMatrix, set_col))
+      .def("transpose", &M::transpose, DOC(IntervalMatrix, transpose))
       .def_property_readonly("T", &M::transpose, "The transpose (a new matrix).")
-      .def("lb", &M::lb, "The lower bounds, as a list of rows.")
-      .def("ub", &M::ub, "The upper bounds, as a list of rows.")
-      .def("mid", &M::mid, "The midpoints, as a list of rows.")
-      .def("diam", &M::diam, "The widths of the entries, as a list of rows.")
-      .def("max_diam", &M::max_diam, "The largest width of an entry.")
-      .def("is_empty", &M::is_empty, "True when an entry is empty.")
-      .def("is_unbounded", &M::is_unbounded, "True when an entry is unbounded.")
-      .def("is_degenerate", &M::is_degenerate, "True when every entry is a point.")
-      .def("contains", &M::contains, py::arg("p"), "True when the real matrix p is in the interval matrix.")
-      .def("is_subset", &M::is_subset, py::arg("y"), "True when every entry is a subset of the entry of y.")
+      .def("lb", &M::lb, DOC(IntervalMatrix, lb))
+      .def("ub", &M::ub, DOC(IntervalMatrix, ub))
+      .def("mid", &M::mid, DOC(IntervalMatrix, mid))
+      .def("diam", &M::diam, DOC(IntervalMatrix, diam))
+      .def("max_diam", &M::max_diam, DOC(IntervalMatrix, max_diam))
+      .def("is_empty", &M::is_empty, DOC(IntervalMatrix, is_empty))
+      .def("is_unbounded", &M::is_unbounded, DOC(IntervalMatrix, is_unbounded))
+      .def("is_degenerate", &M::is_degenerate, DOC(IntervalMatrix, is_degenerate))
+      .def("contains", &M::contains, py::arg("p"), DOC(IntervalMatrix, contains))
+      .def("is_subset", &M::is_subset, py::arg("y"), DOC(IntervalMatrix, is_subset))
       .def("is_interior_subset", &M::is_interior_subset, py::arg("y"),
-           "True when every entry is in the interior of the entry of y.")
-      .def("intersects", &M::intersects, py::arg("y"), "True when every entry meets the entry of y.")
-      .def("inflate", &M::inflate, py::arg("r"), "Each entry inflated by r (a new matrix).")
-      .def("set_empty", &M::set_empty, "Makes this matrix empty, in place.")
+           DOC(IntervalMatrix, is_interior_subset))
+      .def("intersects", &M::intersects, py::arg("y"), DOC(IntervalMatrix, intersects))
+      .def("inflate", &M::inflate, py::arg("r"), DOC(IntervalMatrix, inflate))
+      .def("set_empty", &M::set_empty, DOC(IntervalMatrix, set_empty))
       .def("to_numpy", &matrix_to_numpy, "An (n, m, 2) array of bounds.")
       .def("__array__", [](const M& a, const py::object& dtype, const py::object&) {
              return as_array(matrix_to_numpy(a), dtype);
@@ -484,40 +484,40 @@ void init_functions(py::module_& m) {
   using I = Interval;
   using F1 = I (*)(const I&);
   using F2 = I (*)(const I&, const I&);
-  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "x^2, tighter than x * x (the two factors are the same variable).");
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "Square root, on the part of x above 0 (empty if x < 0).");
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "Exponential.");
-  m.def("log", static_cast<F1>(&log), py::arg("x"), "Natural logarithm (on the part of x above 0).");
-  m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"), "x^n for an integer n.");
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), DOC(sqr, Interval));
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), DOC(sqrt, Interval));
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), DOC(exp, Interval));
+  m.def("log", static_cast<F1>(&log), py::arg("x"), DOC(log, Interval));
+  m.def("pow", static_cast<I (*)(const I&, int)>(&pow), py::arg("x"), py::arg("n"), DOC(pow, Interval_int));
   m.def("pow", static_cast<I (*)(const I&, double)>(&pow), py::arg("x"), py::arg("p"),
-        "x^p for a real p = exp(p log(x)), on the part of x above 0 (integral p: the integer power).");
+        DOC(pow, Interval_double));
   m.def("pow", static_cast<F2>(&pow), py::arg("x"), py::arg("p"),
-        "x^p = exp(p log(x)) for an interval p, on the part of x above 0.");
+        DOC(pow, Interval_Interval));
   m.def("root", static_cast<I (*)(const I&, int)>(&root), py::arg("x"), py::arg("n"),
-        "The n-th root (odd n: also of negative numbers).");
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "Sine.");
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "Cosine.");
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "Tangent (the real line when x meets a pole).");
-  m.def("asin", static_cast<F1>(&asin), py::arg("x"), "Arcsine, on the part of x in [-1, 1].");
-  m.def("acos", static_cast<F1>(&acos), py::arg("x"), "Arccosine, on the part of x in [-1, 1].");
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "Arctangent.");
-  m.def("atan2", static_cast<F2>(&atan2), py::arg("y"), py::arg("x"), "atan2(y, x), y first; range [-pi, pi].");
-  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), "Hyperbolic sine.");
-  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), "Hyperbolic cosine.");
-  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), "Hyperbolic tangent.");
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "Absolute value {|v| : v in x}.");
-  m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"), "Componentwise absolute value of a box.");
-  m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"), "{min(a, b) : a in x, b in y}.");
-  m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"), "{max(a, b) : a in x, b in y}.");
+        DOC(root, Interval_int));
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), DOC(sin, Interval));
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), DOC(cos, Interval));
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), DOC(tan, Interval));
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"), DOC(asin, Interval));
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"), DOC(acos, Interval));
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), DOC(atan, Interval));
+  m.def("atan2", static_cast<F2>(&atan2), py::arg("y"), py::arg("x"), DOC(atan2, Interval_Interval));
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), DOC(sinh, Interval));
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), DOC(cosh, Interval));
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), DOC(tanh, Interval));
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), DOC(abs, Interval));
+  m.def("abs", [](const IntervalVector& x) { return abs(x); }, py::arg("x"), DOC(abs, IntervalVector));
+  m.def("min", static_cast<F2>(&min), py::arg("x"), py::arg("y"), DOC(min, Interval_Interval));
+  m.def("max", static_cast<F2>(&max), py::arg("x"), py::arg("y"), DOC(max, Interval_Interval));
   m.def("sign", static_cast<F1>(&sign), py::arg("x"),
-        "The hull of the signs of the elements of x, within [-1, 1] (sign(0) = 0).");
-  m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), "The smallest interval containing x and y.");
+        DOC(sign, Interval));
+  m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), DOC(hull, Interval_Interval));
   m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
-        py::arg("y"), "The smallest box containing x and y.");
-  m.def("dot", &dot, py::arg("x"), py::arg("y"), "Dot product of two boxes (a rigorous interval sum of products).");
-  m.def("norm", &norm, py::arg("x"), "Euclidean norm of a box.");
+        py::arg("y"), DOC(hull, IntervalVector_IntervalVector));
+  m.def("dot", &dot, py::arg("x"), py::arg("y"), DOC(dot));
+  m.def("norm", &norm, py::arg("x"), DOC(norm));
   m.def("div2", &div2, py::arg("c"), py::arg("b"),
-        "Relational division {z : z * b' in c for some b' in b} as two intervals, lower piece first.");
+        DOC(div2));
 
   // Backward projections: Python intervals are values, so each returns the
   // contracted arguments as a tuple (a 1-tuple for one argument); an argument
@@ -561,19 +561,19 @@ void init_functions(py::module_& m) {
   m.def("bwd_pow", [](const I& y, I x, int n) {
     bwd_pow(y, x, n);
     return py::make_tuple(x);
-  }, py::arg("y"), py::arg("x"), py::arg("n"), "Contracts x for y = x^n (integer n); returns (x,).");
+  }, py::arg("y"), py::arg("x"), py::arg("n"), DOC(bwd_pow, Interval_Interval_int) ": contracts x; returns the tuple (x,).");
   m.def("bwd_pow", [](const I& y, I x, I p) {
     bwd_pow(y, x, p);
     return py::make_tuple(x, p);
-  }, py::arg("y"), py::arg("x"), py::arg("p"), "Contracts x and p for y = x^p (real p); returns (x, p).");
+  }, py::arg("y"), py::arg("x"), py::arg("p"), DOC(bwd_pow, Interval_Interval_Interval) ": contracts x and p; returns the tuple (x, p).");
   m.def("bwd_root", [](const I& y, I x, int n) {
     bwd_root(y, x, n);
     return py::make_tuple(x);
-  }, py::arg("y"), py::arg("x"), py::arg("n"), "Contracts x for y = root(x, n); returns (x,).");
+  }, py::arg("y"), py::arg("x"), py::arg("n"), DOC(bwd_root) ": contracts x; returns the tuple (x,).");
   m.def("bwd_atan2", [](const I& theta, I y, I x) {
     bwd_atan2(theta, y, x);
     return py::make_tuple(y, x);
-  }, py::arg("theta"), py::arg("y"), py::arg("x"), "Contracts y and x for theta = atan2(y, x); returns (y, x).");
+  }, py::arg("theta"), py::arg("y"), py::arg("x"), DOC(bwd_atan2) ": contracts y and x; returns the tuple (y, x).");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/error.h"
 #include "sillage/io/csv.h"
 
@@ -12,7 +13,7 @@ namespace sillage::python {
 
 void init_io(py::module_& m) {
   py::class_<CsvTable>(m, "CsvTable",
-                       "A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.")
+                       DOC(CsvTable))
       .def("__repr__",
            [](const CsvTable& t) {
              std::string s = "CsvTable(" + std::to_string(t.nb_rows()) + " rows, columns=[";
@@ -20,12 +21,11 @@ void init_io(py::module_& m) {
              return s + "])";
            })
       .def_static("read", &CsvTable::read, py::arg("path"),
-                  "Reads the file at path (comma-separated; blank lines and lines starting with '#' are skipped; a "
-                  "UTF-8 byte order mark is skipped). ParseError on a bad cell, Error if the file cannot be read.")
+                  DOC(CsvTable, read))
       .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>",
-                  "Parses text already in memory; source names it in error messages.")
-      .def("columns", &CsvTable::columns, "The header names, in order.")
-      .def("nb_rows", &CsvTable::nb_rows, "Number of data rows.")
+                  DOC(CsvTable, parse))
+      .def("columns", &CsvTable::columns, DOC(CsvTable, columns))
+      .def("nb_rows", &CsvTable::nb_rows, DOC(CsvTable, nb_rows))
       .def(
           "row",
           [](const CsvTable& t, py::ssize_t i) {  // signed: row(-1) is an OutOfRangeError, not a cast error
@@ -35,16 +35,16 @@ void init_io(py::module_& m) {
             return t.row(static_cast<std::size_t>(i));
           },
           py::arg("i"), "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()).")
-      .def("has_column", &CsvTable::has_column, py::arg("name"), "True if a column is called name.")
+      .def("has_column", &CsvTable::has_column, py::arg("name"), DOC(CsvTable, has_column))
       .def("column", &CsvTable::column, py::arg("name"),
-           "Index of the column called name; Error naming the file and the columns it has.")
+           DOC(CsvTable, column))
       .def(
           "values",
           [](const CsvTable& t, const std::string& name) {
             const std::vector<double> v = t.values(name);
             return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
           },
-          py::arg("name"), "The column as a numpy array.");
+          py::arg("name"), DOC(CsvTable, values));
 }
 
 }  // namespace sillage::python

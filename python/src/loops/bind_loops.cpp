@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "interruptible.h"
 #include "sillage/loops/component_split.h"
 #include "sillage/loops/loop_function.h"
@@ -73,55 +74,48 @@ std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? 
 }  // namespace
 
 void init_loops(py::module_& m) {
-  py::class_<Loop>(m, "Loop", "A loop detection Omega_i of the t-plane and what is known of it.")
-      .def("boxes", &Loop::boxes, "Leaves of the outer approximation in this component.")
+  py::class_<Loop>(m, "Loop", DOC(Loop))
+      .def("boxes", &Loop::boxes, DOC(Loop, boxes))
       .def("boxes_array", [](const Loop& l) { return boxes_array(l.boxes()); },
            "The boxes as a numpy array (k, 2, 2) of [lb, ub] rows.")
-      .def("nb_inner", &Loop::nb_inner, "Number of those leaves proven inside the loop set (Inner).")
-      .def("t_box", &Loop::t_box, "[t1] x [t2], hull of the boxes.")
-      .def("map_box", &Loop::map_box, "Hull of the positions over [t1] and [t2] (after compute_proofs).")
-      .def("complete", &Loop::complete, "Strictly inside the t-plane and above its diagonal.")
-      .def("degree", &Loop::degree, "Topological degree of f over the component, or None.")
-      .def("proven", &Loop::proven, "A loop is proven by the degree test T.")
-      .def("proven_newton", &Loop::proven_newton, "A unique loop is proven by the Newton test N.")
-      .def("count", &Loop::count, "Exact number of loops (Alg. 10, or the sum over the pieces), or None.")
+      .def("nb_inner", &Loop::nb_inner, DOC(Loop, nb_inner))
+      .def("t_box", &Loop::t_box, DOC(Loop, t_box))
+      .def("map_box", &Loop::map_box, DOC(Loop, map_box))
+      .def("complete", &Loop::complete, DOC(Loop, complete))
+      .def("degree", &Loop::degree, DOC(Loop, degree))
+      .def("proven", &Loop::proven, DOC(Loop, proven))
+      .def("proven_newton", &Loop::proven_newton, DOC(Loop, proven_newton))
+      .def("count", &Loop::count, DOC(Loop, count))
       .def("pieces", &Loop::pieces,
-           "The pieces (Loop) of the component when it was split (degree 0, undetermined or uncounted): disjoint "
-           "sub-loops with zero-free boundaries, each with its boxes, t_box, map_box, degree and count.")
-      .def("nb_proven_pieces", &Loop::nb_proven_pieces, "Pieces of non-zero degree (each proves a loop).")
-      .def("proven_split", &Loop::proven_split, "A loop is proven by T on the component or on one of its pieces.")
+           DOC(Loop, pieces))
+      .def("nb_proven_pieces", &Loop::nb_proven_pieces, DOC(Loop, nb_proven_pieces))
+      .def("proven_split", &Loop::proven_split, DOC(Loop, proven_split))
       .def("__repr__", &loop_repr);
 
-  py::class_<ProofOptions>(m, "ProofOptions", "Tuning of TPlane.compute_proofs (lengths as fractions of eps).")
+  py::class_<ProofOptions>(m, "ProofOptions", DOC(ProofOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "The default tuning (see the fields); newton and count on.")
       .def_readwrite("degree_edge_fraction", &ProofOptions::degree_edge_fraction,
-                     "Boundary edges of a detection are bisected for the degree down to this fraction of eps.")
+                     DOC(ProofOptions, degree_edge_fraction))
       .def_readwrite("degree_max_evaluations", &ProofOptions::degree_max_evaluations,
-                     "Cap on the evaluations of [f] for one degree.")
+                     DOC(ProofOptions, degree_max_evaluations))
       .def_readwrite("count_width_fraction", &ProofOptions::count_width_fraction,
-                     "zeta of Remark 6.1 as a fraction of eps: boxes are bisected for the Jacobian down to this width.")
-      .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes, "Cap on the refined boxes of one count.")
-      .def_readwrite("newton", &ProofOptions::newton, "Run the interval Newton test N (default True).")
+                     DOC(ProofOptions, count_width_fraction))
+      .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes, DOC(ProofOptions, count_max_boxes))
+      .def_readwrite("newton", &ProofOptions::newton, DOC(ProofOptions, newton))
       .def_readwrite("newton_inflation", &ProofOptions::newton_inflation,
-                     "When N fails on the hull, it is retried on the hull widened by this fraction of its radius (then "
-                     "2, 4, 8 times it) while the box stays inside the square, above the diagonal, away from other "
-                     "components; 0: the hull only.")
-      .def_readwrite("count", &ProofOptions::count, "Run the count of loops, Alg. 10 (default True).")
+                     DOC(ProofOptions, newton_inflation))
+      .def_readwrite("count", &ProofOptions::count, DOC(ProofOptions, count))
       .def_readwrite("split", &ProofOptions::split,
-                     "Split the complete detections of degree 0, undetermined or uncounted into pieces (default True).")
+                     DOC(ProofOptions, split))
       .def_readwrite("split_max_levels", &ProofOptions::split_max_levels,
-                     "Bisections of the boxes of a piece still to settle (3: down to eps/2.8, inside the detection).")
-      .def_readwrite("split_max_boxes", &ProofOptions::split_max_boxes, "Cap on the boxes of a piece being refined.")
-      .def_readwrite("budget", &ProofOptions::budget, "For the whole call (sillage.Budget).");
+                     DOC(ProofOptions, split_max_levels))
+      .def_readwrite("split_max_boxes", &ProofOptions::split_max_boxes, DOC(ProofOptions, split_max_boxes))
+      .def_readwrite("budget", &ProofOptions::budget, DOC(ProofOptions, budget));
 
   const py::call_guard<py::gil_scoped_release> nogil;
   py::class_<TPlane>(m, "TPlane",
-                     "Loops of a planar trajectory in the t-plane [t0, tf]^2 (thesis ch. 6).\n"
-                     "compute_detections: Alg. 6, a paving of {(t1, t2) | t1 < t2, 0 in [f](t1, t2)} with\n"
-                     "[f] = integral of [v] over [t1] -> [t2] (6.6) (or (7.28) from positions), Outside by\n"
-                     "(6.8)-(6.9), Inner by (6.10); its connected components are the detections.\n"
-                     "compute_proofs: degree test, Newton test, count (Alg. 7-10).")
+                     DOC(TPlane))
       .def("__repr__",
            [](const TPlane& tp) {
              std::ostringstream s;  // eps as printf's %g
@@ -130,16 +124,16 @@ void init_loops(py::module_& m) {
              return s.str();
            })
       .def(py::init<const Interval&>(), py::arg("tdomain"),
-           "The t-plane tdomain^2; tdomain bounded with lb < ub (Error otherwise).")
-      .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), "The t-plane [t0, tf]^2 of a TDomain.")
-      .def("domain", &TPlane::domain, "The square [t0, tf]^2.")
+           DOC(TPlane, TPlane, Interval))
+      .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), DOC(TPlane, TPlane, TDomain))
+      .def("domain", &TPlane::domain, DOC(TPlane, domain))
       .def(
           "compute_detections",
           [](TPlane& tp, double eps, const TubeVector& v, const Budget& b) {
             run_interruptible(b.cancel, [&](const CancelToken& t) { tp.compute_detections(eps, v, with_token(b, t)); });
           },
           py::arg("eps"), py::arg("v"), py::arg("budget") = Budget{},
-          "Alg. 6 from a 2-D velocity tube v; the paving's nodes count against budget.")
+          DOC(TPlane, compute_detections, double_TubeVector_Budget))
       .def(
           "compute_detections",
           [](TPlane& tp, double eps, const TubeVector& p, const TubeVector& w, const Budget& b) {
@@ -147,16 +141,14 @@ void init_loops(py::module_& m) {
                               [&](const CancelToken& t) { tp.compute_detections(eps, p, w, with_token(b, t)); });
           },
           py::arg("eps"), py::arg("p"), py::arg("w"), py::arg("budget") = Budget{},
-          "Alg. 6 with (7.28), from positions p and velocities w.")
+          DOC(TPlane, compute_detections, double_TubeVector_TubeVector_Budget))
       .def(
           "compute_proofs",
           [](TPlane& tp, const TubeVector& v, const ProofOptions& o) {
             run_interruptible(o.budget.cancel, [&](const CancelToken& t) { tp.compute_proofs(v, with_token(o, t)); });
           },
           py::arg("v"), py::arg("options") = ProofOptions{},
-          "Degree test T (Theorem 6.1), Newton test N (6.18) and loop count (Alg. 10) on each complete detection, "
-          "and the map box of every detection, from the 2-D velocity tube v. Error before compute_detections; "
-          "replaces the previous proofs.")
+          DOC(TPlane, compute_proofs, TubeVector_ProofOptions))
       .def(
           "compute_proofs",
           [](TPlane& tp, const TubeVector& p, const TubeVector& w, const ProofOptions& o) {
@@ -164,66 +156,65 @@ void init_loops(py::module_& m) {
                               [&](const CancelToken& t) { tp.compute_proofs(p, w, with_token(o, t)); });
           },
           py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{},
-          "The same proofs from positions p and velocities w (7.28).")
-      .def("eps", &TPlane::eps, "The eps of the last detections (0 before).")
+          DOC(TPlane, compute_proofs, TubeVector_TubeVector_ProofOptions))
+      .def("eps", &TPlane::eps, DOC(TPlane, eps))
       .def("paving", &TPlane::paving, py::return_value_policy::reference_internal,
-           "The t-plane paving (6.8)-(6.10): Outside, Inner and Boundary t-boxes.")
-      .def("nb_detections", &TPlane::nb_detections, "Number of detections (connected components), complete or not.")
+           DOC(TPlane, paving))
+      .def("nb_detections", &TPlane::nb_detections, DOC(TPlane, nb_detections))
       .def("nb_complete_detections", &TPlane::nb_complete_detections,
-           "Number of detections strictly inside the square and above its diagonal.")
-      .def("nb_proofs", &TPlane::nb_proofs, "Complete detections proven a loop by the degree test T.")
+           DOC(TPlane, nb_complete_detections))
+      .def("nb_proofs", &TPlane::nb_proofs, DOC(TPlane, nb_proofs))
       .def("nb_newton_proofs", &TPlane::nb_newton_proofs,
-           "Complete detections proven a unique loop by the Newton test N.")
+           DOC(TPlane, nb_newton_proofs))
       .def("detections", &TPlane::detections,
-           "The detections (Loop), ordered by the lower corner of their hull: chronologically by the first passage.")
-      .def("proofs", &TPlane::proofs, "The detections proven by T.");
+           DOC(TPlane, detections))
+      .def("proofs", &TPlane::proofs, DOC(TPlane, proofs));
 
   // The tubes must outlive the LoopFunction and stay unmodified (queries
   // throw otherwise): keep_alive holds them as long as the Python object.
   py::class_<LoopFunction>(m, "LoopFunction",
-                           "f(t1, t2) = p(t2) - p(t1) of a planar trajectory: enclosures of f, J_f and positions.")
+                           DOC(LoopFunction))
       .def("__repr__",
            [](const LoopFunction& f) {
              return "LoopFunction(t=" + f.time_domain().str() + (f.has_positions() ? ", from (p, w))" : ", from v)");
            })
       .def(py::init<const TubeVector&>(), py::arg("v"), py::keep_alive<1, 2>(),
-           "From a 2-D velocity tube: [f] = integral of [v] over [t1] -> [t2] (6.6).")
+           DOC(LoopFunction, LoopFunction, TubeVector))
       .def(py::init<const TubeVector&, const TubeVector&>(), py::arg("p"), py::arg("w"), py::keep_alive<1, 2>(),
-           py::keep_alive<1, 3>(), "From 2-D positions p and velocities w: [f] of (7.28).")
+           py::keep_alive<1, 3>(), DOC(LoopFunction, LoopFunction, TubeVector_TubeVector))
       .def("has_positions", &LoopFunction::has_positions,
-           "True when built from positions p and velocities w (7.28), False from v alone (6.6).")
-      .def("is_empty", &LoopFunction::is_empty, "Some tube has an empty slice: no trajectory, no loop.")
+           DOC(LoopFunction, has_positions))
+      .def("is_empty", &LoopFunction::is_empty, DOC(LoopFunction, is_empty))
       .def("time_domain", &LoopFunction::time_domain,
-           "[t0, tf] where every tube is defined: the t-plane is its square.")
-      .def("__call__", &LoopFunction::operator(), py::arg("t"), "[f]([t1], [t2]).")
+           DOC(LoopFunction, time_domain))
+      .def("__call__", &LoopFunction::operator(), py::arg("t"), DOC(LoopFunction, op_call))
       .def("velocity_form", &LoopFunction::velocity_form, py::arg("t"),
-           "The velocity form: the integral of [v] from [t1] to [t2] alone (equal to f without positions).")
-      .def("jacobian", &LoopFunction::jacobian, py::arg("t"), "[J_f]([t]) = (-[v]([t1]) | [v]([t2])) (6.18).")
+           DOC(LoopFunction, velocity_form))
+      .def("jacobian", &LoopFunction::jacobian, py::arg("t"), DOC(LoopFunction, jacobian))
       .def("velocity", &LoopFunction::velocity, py::arg("t"),
-           "[v]([t]), the velocity hull over the times [t] (within time_domain(), Error otherwise).")
+           DOC(LoopFunction, velocity))
       .def("position", &LoopFunction::position, py::arg("t"),
-           "[p]([t]); from v alone, relative to the start of v's time domain.")
+           DOC(LoopFunction, position))
       .def("integral_bounds", &LoopFunction::integral_bounds, py::arg("t1"), py::arg("t2"),
-           "(ranges of the integral of v^-, of v^+) over t1 in [t1], t2 in [t2] (6.11).");
+           DOC(LoopFunction, integral_bounds));
 
-  py::class_<DegreeOptions>(m, "DegreeOptions", "Tuning of topological_degree.")
+  py::class_<DegreeOptions>(m, "DegreeOptions", DOC(DegreeOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_edge_length 1e-9, max_evaluations 2^20.")
       .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length,
-                     "Boundary pieces are bisected until they exclude 0 or are shorter than this.")
+                     DOC(DegreeOptions, min_edge_length))
       .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations,
-                     "Cap on the evaluations of [f] for one degree (an inconclusive result, not an error).")
-      .def_readwrite("budget", &DegreeOptions::budget, "Cancellation and time (sillage.Budget); exceeding it raises.");
-  py::class_<DegreeResult>(m, "DegreeResult", "The result of topological_degree.")
+                     DOC(DegreeOptions, max_evaluations))
+      .def_readwrite("budget", &DegreeOptions::budget, DOC(DegreeOptions, budget));
+  py::class_<DegreeResult>(m, "DegreeResult", DOC(DegreeResult))
       .def_readonly("degree", &DegreeResult::degree,
-                    "The degree when every boundary piece excludes 0; None otherwise (inconclusive: nothing proven or "
-                    "disproven).")
-      .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations, "Calls of [f].")
-      .def_readonly("nb_pieces", &DegreeResult::nb_pieces, "Boundary pieces of the final cover.")
+                    DOC(DegreeResult, degree))
+      .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations, DOC(DegreeResult, nb_evaluations))
+      .def_readonly("nb_pieces", &DegreeResult::nb_pieces, DOC(DegreeResult, nb_pieces))
       .def_readonly("nb_unresolved", &DegreeResult::nb_unresolved,
-                    "Pieces with 0 in [f] at the floor, or left unevaluated once max_evaluations was spent.")
+                    DOC(DegreeResult, nb_unresolved))
       .def("proves_zero", &DegreeResult::proves_zero,
-           "True when the degree is known and non-zero: f has a zero in the region.")
+           DOC(DegreeResult, proves_zero))
       .def("__repr__", [](const DegreeResult& r) {
         return "<DegreeResult degree " + optional_str(r.degree) + ", " + std::to_string(r.nb_evaluations) +
                " evaluations, " + std::to_string(r.nb_unresolved) + " unresolved>";
@@ -247,8 +238,7 @@ void init_loops(py::module_& m) {
         });
       },
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
-      "Degree of the LoopFunction f over the region bounded by oriented contour loops (contour orientation: holes "
-      "clockwise).");
+      DOC(topological_degree));
   m.def(
       "topological_degree",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
@@ -264,14 +254,14 @@ void init_loops(py::module_& m) {
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
       "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
-  py::class_<NewtonOptions>(m, "NewtonOptions", "Tuning of newton_test.")
+  py::class_<NewtonOptions>(m, "NewtonOptions", DOC(NewtonOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_iterations 20.")
-      .def_readwrite("max_iterations", &NewtonOptions::max_iterations, "Newton contractions [t] &= N([t]) at most.");
-  py::class_<NewtonResult>(m, "NewtonResult", "The result of newton_test.")
-      .def_readonly("proven", &NewtonResult::proven, "True when a unique zero of every f enclosed exists in box.")
-      .def_readonly("box", &NewtonResult::box, "The contracted box.")
-      .def_readonly("nb_iterations", &NewtonResult::nb_iterations, "Newton contractions done.")
+      .def_readwrite("max_iterations", &NewtonOptions::max_iterations, DOC(NewtonOptions, max_iterations));
+  py::class_<NewtonResult>(m, "NewtonResult", DOC(NewtonResult))
+      .def_readonly("proven", &NewtonResult::proven, DOC(NewtonResult, proven))
+      .def_readonly("box", &NewtonResult::box, DOC(NewtonResult, box))
+      .def_readonly("nb_iterations", &NewtonResult::nb_iterations, DOC(NewtonResult, nb_iterations))
       .def("__repr__", [](const NewtonResult& r) {
         return std::string("<NewtonResult ") + (r.proven ? "proven" : "not proven") + ", box " + r.box.str() + ">";
       });
@@ -281,7 +271,7 @@ void init_loops(py::module_& m) {
         return newton_test(box, f.function(), f.jacobian_function(), o);
       },
       py::arg("box"), py::arg("f"), py::arg("options") = NewtonOptions{}, nogil,
-      "Interval Newton test with the Jacobian (6.18) of a LoopFunction.");
+      DOC(newton_test));
   m.def(
       "newton_test",
       [](const IntervalVector& box, const py::function& f, const py::function& j, const NewtonOptions& o) {
@@ -290,18 +280,18 @@ void init_loops(py::module_& m) {
       py::arg("box"), py::arg("f"), py::arg("jacobian"), py::arg("options") = NewtonOptions{},
       "Interval Newton test: proven when N([t]) lies in the interior of [t].");
 
-  py::class_<CountOptions>(m, "CountOptions", "Tuning of count_zeros.")
+  py::class_<CountOptions>(m, "CountOptions", DOC(CountOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_width 1e-9, max_boxes 2^16.")
       .def_readwrite("min_width", &CountOptions::min_width,
-                     "zeta of Remark 6.1: boxes are not bisected below this width.")
+                     DOC(CountOptions, min_width))
       .def_readwrite("max_boxes", &CountOptions::max_boxes,
-                     "Cap on the refined boxes (an inconclusive result, not an error).")
+                     DOC(CountOptions, max_boxes))
       .def_readwrite("budget", &CountOptions::budget,
-                     "Cancellation and time (sillage.Budget); each box counts; exceeding it raises.");
-  py::class_<CountResult>(m, "CountResult", "The result of count_zeros.")
-      .def_readonly("count", &CountResult::count, "Exact number of zeros in the region when proven, else None.")
-      .def_readonly("nb_boxes", &CountResult::nb_boxes, "Boxes after the refinement.")
+                     DOC(CountOptions, budget));
+  py::class_<CountResult>(m, "CountResult", DOC(CountResult))
+      .def_readonly("count", &CountResult::count, DOC(CountResult, count))
+      .def_readonly("nb_boxes", &CountResult::nb_boxes, DOC(CountResult, nb_boxes))
       .def("__repr__", [](const CountResult& r) {
         return "<CountResult count " + (r.count ? std::to_string(*r.count) : std::string("None")) + ", " +
                std::to_string(r.nb_boxes) + " boxes>";
@@ -314,7 +304,7 @@ void init_loops(py::module_& m) {
         });
       },
       py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
-      "Alg. 10 with the Jacobian (6.18) of a LoopFunction.");
+      DOC(count_zeros));
   m.def(
       "count_zeros",
       [](const std::vector<IntervalVector>& boxes, int degree, const py::function& f, const py::function& j,
@@ -322,36 +312,35 @@ void init_loops(py::module_& m) {
       py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
       "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
 
-  py::class_<SplitOptions>(m, "SplitOptions", "Tuning of split_region.")
+  py::class_<SplitOptions>(m, "SplitOptions", DOC(SplitOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_levels 8, max_boxes 2^15, count on.")
       .def_readwrite("max_levels", &SplitOptions::max_levels,
-                     "Bisections of every box of a piece still to settle (8: boxes 16 times narrower).")
-      .def_readwrite("max_boxes", &SplitOptions::max_boxes, "Cap on the boxes of one piece being refined.")
-      .def_readwrite("degree", &SplitOptions::degree, "DegreeOptions for the degree of each piece.")
-      .def_readwrite("count", &SplitOptions::count, "Count the zeros of each piece (Alg. 10).")
-      .def_readwrite("count_options", &SplitOptions::count_options, "CountOptions for the counts.")
+                     DOC(SplitOptions, max_levels))
+      .def_readwrite("max_boxes", &SplitOptions::max_boxes, DOC(SplitOptions, max_boxes))
+      .def_readwrite("degree", &SplitOptions::degree, DOC(SplitOptions, degree))
+      .def_readwrite("count", &SplitOptions::count, DOC(SplitOptions, count))
+      .def_readwrite("count_options", &SplitOptions::count_options, DOC(SplitOptions, count_options))
       .def_readwrite("deep_margin", &SplitOptions::deep_margin,
-                     "A half whose [f] holds 0 farther than this fraction of its width from both bounds is not "
-                     "bisected again (cost only; 0: bisect every box).")
-      .def_readwrite("budget", &SplitOptions::budget, "For the whole split (sillage.Budget); exceeding it raises.");
-  py::class_<SplitPiece>(m, "SplitPiece", "A piece of a split region: disjoint from the others, zero-free boundary.")
-      .def_readonly("boxes", &SplitPiece::boxes, "Its boxes.")
-      .def_readonly("t_box", &SplitPiece::t_box, "Hull of its boxes.")
-      .def_readonly("degree", &SplitPiece::degree, "Degree of f over the piece, or None (undetermined).")
-      .def_readonly("count", &SplitPiece::count, "Exact number of zeros in the piece, or None.")
-      .def("proves_zero", &SplitPiece::proves_zero, "The degree is known and non-zero: a zero lies in the piece.")
+                     DOC(SplitOptions, deep_margin))
+      .def_readwrite("budget", &SplitOptions::budget, DOC(SplitOptions, budget));
+  py::class_<SplitPiece>(m, "SplitPiece", DOC(SplitPiece))
+      .def_readonly("boxes", &SplitPiece::boxes, DOC(SplitPiece, boxes))
+      .def_readonly("t_box", &SplitPiece::t_box, DOC(SplitPiece, t_box))
+      .def_readonly("degree", &SplitPiece::degree, DOC(SplitPiece, degree))
+      .def_readonly("count", &SplitPiece::count, DOC(SplitPiece, count))
+      .def("proves_zero", &SplitPiece::proves_zero, DOC(SplitPiece, proves_zero))
       .def("__repr__", [](const SplitPiece& p) {
         return "<SplitPiece t_box " + p.t_box.str() + ", degree " + optional_str(p.degree) + ", count " +
                optional_size_str(p.count) + ", " + std::to_string(p.boxes.size()) + " boxes>";
       });
-  py::class_<SplitResult>(m, "SplitResult", "The result of split_region.")
-      .def_readonly("pieces", &SplitResult::pieces, "The pieces (SplitPiece), ordered by the lower corner of their hull.")
-      .def_readonly("nb_evaluations", &SplitResult::nb_evaluations, "Evaluations of [f] for the refinement.")
-      .def_readonly("nb_levels", &SplitResult::nb_levels, "Deepest refinement level reached.")
-      .def("degree", &SplitResult::degree, "Sum of the degrees of the pieces when all are known, else None.")
-      .def("count", &SplitResult::count, "Number of zeros in the region when every piece is counted, else None.")
-      .def("nb_proven", &SplitResult::nb_proven, "Pieces of non-zero degree.")
+  py::class_<SplitResult>(m, "SplitResult", DOC(SplitResult))
+      .def_readonly("pieces", &SplitResult::pieces, DOC(SplitResult, pieces))
+      .def_readonly("nb_evaluations", &SplitResult::nb_evaluations, DOC(SplitResult, nb_evaluations))
+      .def_readonly("nb_levels", &SplitResult::nb_levels, DOC(SplitResult, nb_levels))
+      .def("degree", &SplitResult::degree, DOC(SplitResult, degree))
+      .def("count", &SplitResult::count, DOC(SplitResult, count))
+      .def("nb_proven", &SplitResult::nb_proven, DOC(SplitResult, nb_proven))
       .def("__repr__", [](const SplitResult& r) {
         return "<SplitResult " + std::to_string(r.pieces.size()) + " pieces, degree " + optional_str(r.degree()) +
                ", count " + optional_size_str(r.count()) + ">";
@@ -366,7 +355,7 @@ void init_loops(py::module_& m) {
         });
       },
       py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
-      "Splits a union of t-boxes into pieces with zero-free boundaries for a LoopFunction (Inner boxes kept whole).");
+      DOC(split_region));
   m.def(
       "split_region",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j, const SplitOptions& o) {
@@ -378,17 +367,17 @@ void init_loops(py::module_& m) {
       "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
-      .def_readonly("t1", &PathCrossing::t1, "The first passage time (t1 < t2).")
+      .def_readonly("t1", &PathCrossing::t1, DOC(PathCrossing, t1))
       .def_readonly("t2", &PathCrossing::t2, "The second passage time.")
-      .def_readonly("x", &PathCrossing::x, "x of the crossing point.")
+      .def_readonly("x", &PathCrossing::x, DOC(PathCrossing, x))
       .def_readonly("y", &PathCrossing::y, "y of the crossing point.")
-      .def_readonly("segment1", &PathCrossing::segment1, "The segment [k, k+1] of the samples holding t1.")
+      .def_readonly("segment1", &PathCrossing::segment1, DOC(PathCrossing, segment1))
       .def_readonly("segment2", &PathCrossing::segment2, "The segment [k, k+1] holding t2 (segment1 + 1 < segment2).")
       .def("__repr__", [](const PathCrossing& c) {
         return "<PathCrossing t1=" + std::to_string(c.t1) + " t2=" + std::to_string(c.t2) + ">";
       });
   m.def("self_crossings", &self_crossings, py::arg("t"), py::arg("x"), py::arg("y"), nogil,
-        "True crossings (t1 < t2) of the polyline through (t, x, y).");
+        DOC(self_crossings));
 }
 
 }  // namespace sillage::python

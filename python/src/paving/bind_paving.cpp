@@ -11,6 +11,7 @@
 
 #include "arg_checks.h"
 #include "bindings.h"
+#include "docstrings.h"
 #include "interruptible.h"
 #include "sillage/paving/sivia_function.h"
 
@@ -73,87 +74,87 @@ py::array_t<double> boxes_array(const Paving& p, PavingTag tag) {
 }  // namespace
 
 void init_paving(py::module_& m) {
-  py::enum_<PavingTag>(m, "PavingTag", "What is known about a leaf of a paving (thesis Fig. 2.11).")
-      .value("Inner", PavingTag::Inner, "proven inside X (green)")
-      .value("Boundary", PavingTag::Boundary, "undetermined at the precision eps (yellow)")
-      .value("Outside", PavingTag::Outside, "proven outside X (blue)");
+  py::enum_<PavingTag>(m, "PavingTag", DOC(PavingTag))
+      .value("Inner", PavingTag::Inner, DOC(PavingTag, Inner))
+      .value("Boundary", PavingTag::Boundary, DOC(PavingTag, Boundary))
+      .value("Outside", PavingTag::Outside, DOC(PavingTag, Outside));
 
-  py::class_<ContourEdge>(m, "ContourEdge", "An oriented edge from a to b; the region lies on its left.")
+  py::class_<ContourEdge>(m, "ContourEdge", DOC(ContourEdge))
       .def_property_readonly("a", [](const ContourEdge& e) { return point(e.a); }, "The start point (x, y).")
-      .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); }, "The end point (x, y).")
-      .def("box", &ContourEdge::box, "The edge as a degenerate box [b].")
-      .def("length", &ContourEdge::length, "The Euclidean length of the edge.")
+      .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); }, DOC(ContourEdge, b))
+      .def("box", &ContourEdge::box, DOC(ContourEdge, box))
+      .def("length", &ContourEdge::length, DOC(ContourEdge, length))
       .def("__repr__", [](const ContourEdge& e) {
         return "<ContourEdge " + py::repr(point(e.a)).cast<std::string>() + " -> " +
                py::repr(point(e.b)).cast<std::string>() + ">";
       });
 
   py::class_<ContourLoop>(m, "ContourLoop",
-                          "A closed loop of the boundary: counter-clockwise (outer) or clockwise (hole).")
-      .def_readonly("edges", &ContourLoop::edges, "The oriented edges, in order around the loop.")
-      .def_readonly("is_hole", &ContourLoop::is_hole, "True for a clockwise loop around a hole.")
+                          DOC(ContourLoop))
+      .def_readonly("edges", &ContourLoop::edges, DOC(ContourLoop, edges))
+      .def_readonly("is_hole", &ContourLoop::is_hole, DOC(ContourLoop, is_hole))
       .def("vertices",
            [](const ContourLoop& l) {
              py::list r;
              for (const auto& v : l.vertices()) r.append(point(v));
              return r;
-           }, "The vertices in order, a list of points (x, y).")
-      .def("length", &ContourLoop::length, "The perimeter of the loop.")
+           }, DOC(ContourLoop, vertices))
+      .def("length", &ContourLoop::length, DOC(ContourLoop, length))
       .def("__len__", [](const ContourLoop& l) { return l.edges.size(); })
       .def("__repr__", [](const ContourLoop& l) { return "<ContourLoop " + l.str() + ">"; });
 
-  py::class_<Component>(m, "Component", "A connected component of the outer approximation (corners connect).")
-      .def_readonly("boxes", &Component::boxes, "The leaves of the component.")
-      .def_readonly("tags", &Component::tags, "The tag of each leaf (PavingTag).")
-      .def_readonly("hull", &Component::hull, "The hull of the leaves.")
-      .def_readonly("volume", &Component::volume, "The sum of the leaf volumes.")
-      .def("size", &Component::size, "The number of leaves.")
+  py::class_<Component>(m, "Component", DOC(Component))
+      .def_readonly("boxes", &Component::boxes, DOC(Component, boxes))
+      .def_readonly("tags", &Component::tags, DOC(Component, tags))
+      .def_readonly("hull", &Component::hull, DOC(Component, hull))
+      .def_readonly("volume", &Component::volume, DOC(Component, volume))
+      .def("size", &Component::size, DOC(Component, size))
       .def("__len__", &Component::size)
-      .def("count", &Component::count, py::arg("tag"), "The number of leaves with this tag.")
-      .def("contour", &Component::contour, "Oriented boundary loops (2-D components).")
+      .def("count", &Component::count, py::arg("tag"), DOC(Component, count))
+      .def("contour", &Component::contour, DOC(Component, contour))
       .def("__repr__", [](const Component& c) {
         return "<Component of " + std::to_string(c.size()) + " boxes, hull " + c.hull.str() + ">";
       });
 
-  m.def("contour", &contour, py::arg("boxes"), "Oriented boundary loops of a 2-D union of boxes.");
+  m.def("contour", &contour, py::arg("boxes"), DOC(contour));
   m.def("connected_components", &connected_components, py::arg("boxes"),
-        py::arg("tags") = std::vector<PavingTag>{}, "Connected components of a list of boxes.");
+        py::arg("tags") = std::vector<PavingTag>{}, DOC(connected_components));
 
-  py::class_<Paving>(m, "Paving", "Result of a set inversion: a binary tree of boxes whose leaves are tagged.")
-      .def("dim", &Paving::dim, "The dimension of the boxes.")
-      .def("is_empty", &Paving::is_empty, "True for the paving of an empty initial box (no node).")
-      .def("domain", &Paving::domain, "The initial box.")
+  py::class_<Paving>(m, "Paving", DOC(Paving))
+      .def("dim", &Paving::dim, DOC(Paving, dim))
+      .def("is_empty", &Paving::is_empty, DOC(Paving, is_empty))
+      .def("domain", &Paving::domain, DOC(Paving, domain))
       .def("boxes", &Paving::boxes, py::arg("tag"),
-           "The leaves of a tag, in pre-order ('left before right', independent of threads).")
-      .def("inner", &Paving::inner, "Boxes proven in X (the inner approximation).")
-      .def("boundary", &Paving::boundary, "Undetermined boxes.")
-      .def("outer", &Paving::outer, "The outer approximation: inner and boundary boxes.")
-      .def("outside", &Paving::outside, "Boxes proven outside X.")
+           DOC(Paving, boxes))
+      .def("inner", &Paving::inner, DOC(Paving, inner))
+      .def("boundary", &Paving::boundary, DOC(Paving, boundary))
+      .def("outer", &Paving::outer, DOC(Paving, outer))
+      .def("outside", &Paving::outside, DOC(Paving, outside))
       .def("boxes_array", &boxes_array, py::arg("tag"), "Leaves of a tag as a numpy array (k, dim, 2).")
-      .def("nb_nodes", &Paving::nb_nodes, "The number of nodes of the tree (leaves and internal nodes).")
-      .def("nb_leaves", &Paving::nb_leaves, "The number of leaves.")
-      .def("count", &Paving::count, py::arg("tag"), "The number of leaves with this tag.")
+      .def("nb_nodes", &Paving::nb_nodes, DOC(Paving, nb_nodes))
+      .def("nb_leaves", &Paving::nb_leaves, DOC(Paving, nb_leaves))
+      .def("count", &Paving::count, py::arg("tag"), DOC(Paving, count))
       .def("volume", &Paving::volume, py::arg("tag"),
-           "Sum of the leaf volumes of a tag (a floating-point measure, not a set).")
-      .def("outer_volume", &Paving::outer_volume, "Volume of the outer approximation X+ = inner & boundary leaves.")
-      .def("hull", &Paving::hull, "Hull of the outer approximation.")
-      .def("tag_at", &Paving::tag_at, py::arg("point"), "Tag at a point, None outside the initial box.")
+           DOC(Paving, volume))
+      .def("outer_volume", &Paving::outer_volume, DOC(Paving, outer_volume))
+      .def("hull", &Paving::hull, DOC(Paving, hull))
+      .def("tag_at", &Paving::tag_at, py::arg("point"), DOC(Paving, tag_at))
       .def("components", &Paving::components,
-           "Connected components of the outer approximation X+, in a deterministic order.")
+           DOC(Paving, components))
       .def("node_box", &Paving::node_box, py::arg("i"),
-           "The box of node i (pre-order index; the left child of i is i + 1).")
-      .def("is_leaf", &Paving::is_leaf, py::arg("i"), "True when node i is a leaf.")
-      .def("left", &Paving::left, py::arg("i"), "Index of the left child of the internal node i.")
-      .def("right", &Paving::right, py::arg("i"), "Index of the right child of the internal node i.")
-      .def("tag", &Paving::tag, py::arg("i"), "Tag of the leaf i; Error for an internal node.")
-      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"), "Pre-order indices of the leaves with the given tag.")
+           DOC(Paving, node_box))
+      .def("is_leaf", &Paving::is_leaf, py::arg("i"), DOC(Paving, is_leaf))
+      .def("left", &Paving::left, py::arg("i"), DOC(Paving, left))
+      .def("right", &Paving::right, py::arg("i"), DOC(Paving, right))
+      .def("tag", &Paving::tag, py::arg("i"), DOC(Paving, tag))
+      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"), DOC(Paving, leaf_indices))
       .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"),
-           "Indices of the leaves whose closed box intersects box (tree descent).")
+           DOC(Paving, leaves_intersecting))
       .def("__eq__", &Paving::operator==)
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
 
-  py::class_<SiviaOptions>(m, "SiviaOptions", "Options of sivia and kernel_sivia.")
+  py::class_<SiviaOptions>(m, "SiviaOptions", DOC(SiviaOptions))
       .def(py::init([](bool parallel, const Budget* budget) {
              SiviaOptions o;
              o.parallel = parallel;
@@ -163,9 +164,9 @@ void init_paving(py::module_& m) {
            py::arg("parallel") = true, py::arg("budget") = nullptr,
            "Options: parallel (oneTBB tasks, default True) and a Budget (default: 10^7 boxes, 1 GiB).")
       .def_readwrite("parallel", &SiviaOptions::parallel,
-                     "Grow subtrees as oneTBB tasks (default True). The paving does not depend on it.")
+                     DOC(SiviaOptions, parallel))
       .def_readwrite("budget", &SiviaOptions::budget,
-                     "Limits on the paving's nodes and the time (sillage.Budget; BudgetExceeded when exceeded).")
+                     DOC(SiviaOptions, budget))
       .def("__repr__", [](const SiviaOptions& o) {
         return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") +
                ", budget=" + py::repr(py::cast(o.budget)).cast<std::string>() + ")";
@@ -188,7 +189,7 @@ void init_paving(py::module_& m) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
-      "SIVIA (Alg. 1) for a scalar f: paving of x0 for X = f^-1([y]).");
+      DOC(sivia, IntervalVector_Function_Interval_double_SiviaOptions));
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
@@ -196,7 +197,7 @@ void init_paving(py::module_& m) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, ctc, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
-      "SIVIA coupled with a contractor (thesis Fig. 2.13): undetermined boxes are contracted before bisection.");
+      DOC(sivia, IntervalVector_Function_IntervalVector_Ctc_double_SiviaOptions));
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps,
@@ -204,7 +205,7 @@ void init_paving(py::module_& m) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, IntervalVector{y}, ctc, eps, io); });
       },
       py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
-      "SIVIA coupled with a contractor (Fig. 2.13) for a scalar f and an interval y.");
+      DOC(sivia));
   m.def(
       "sivia",
       [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
@@ -225,13 +226,13 @@ void init_paving(py::module_& m) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, sep, eps, io); });
       },
       py::arg("x0"), py::arg("sep"), py::arg("eps"), opts(),
-      "SIVIA with a separator (thesis 2.4.3): removed parts tagged Inner/Outside.");
+      DOC(sivia, IntervalVector_Sep_double_SiviaOptions));
   m.def(
       "sivia",
       [](const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& o) {
         return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts(), "SIVIA with a contractor: an outer approximation.");
+      py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts(), DOC(sivia, IntervalVector_Ctc_double_SiviaOptions));
 
   m.def(
       "kernel_sivia",
@@ -239,7 +240,7 @@ void init_paving(py::module_& m) {
         return interruptible(o, [&](const SiviaOptions& io) { return kernel_sivia(x0, f_lo, f_hi, eps, io); });
       },
       py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"), opts(),
-      "Kernel SIVIA (thesis Alg. 2) of [f](x) = [f_lo(x), f_hi(x)].");
+      DOC(kernel_sivia, IntervalVector_Function_Function_double_SiviaOptions));
   m.def(
       "kernel_sivia",
       [](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions& o) {

@@ -10,6 +10,7 @@
 
 #include "arg_checks.h"
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
 #include "sillage/tube/trajectory.h"
@@ -20,25 +21,24 @@ namespace sillage::python {
 void init_trajectory(py::module_& m) {
   py::class_<Trajectory, std::shared_ptr<Trajectory>> tc(
       m, "Trajectory",
-      "A sampled (piecewise-linear), analytic (expression of t) or composite (arithmetic result) trajectory;\n"
-      "evaluations are enclosures.");
-  tc.def(py::init<const std::map<double, double>&>(), py::arg("samples"), "From a dict {t: x}.")
+      DOC(Trajectory));
+  tc.def(py::init<const std::map<double, double>&>(), py::arg("samples"), DOC(Trajectory, Trajectory, map_double_double))
       .def(py::init<const std::vector<double>&, const std::vector<double>&>(), py::arg("times"), py::arg("values"),
-           "Sampled: the values at the times (strictly increasing), linear in between.")
+           DOC(Trajectory, Trajectory, vector_double_vector_double))
       .def(py::init<const std::string&, const Interval&>(), py::arg("expr"), py::arg("domain"),
-           "Analytic: an expression of t over the domain.")
+           DOC(Trajectory, Trajectory, string_Interval))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
-           "Analytic: a Function of one variable t over the domain.")
-      .def("is_sampled", &Trajectory::is_sampled, "True for a sampled trajectory.")
+           DOC(Trajectory, Trajectory, Function_Interval))
+      .def("is_sampled", &Trajectory::is_sampled, DOC(Trajectory, is_sampled))
       .def("is_analytic", &Trajectory::is_analytic,
-           "True for an analytic one (an expression of t); neither: a composite (arithmetic result).")
-      .def("domain", &Trajectory::domain, "The time domain, an Interval.")
-      .def("sample_times", &Trajectory::sample_times, "The sample times (sampled trajectories; [] otherwise).")
-      .def("sample_values", &Trajectory::sample_values, "The sample values (sampled trajectories; [] otherwise).")
+           DOC(Trajectory, is_analytic))
+      .def("domain", &Trajectory::domain, DOC(Trajectory, domain))
+      .def("sample_times", &Trajectory::sample_times, DOC(Trajectory, sample_times))
+      .def("sample_values", &Trajectory::sample_values, DOC(Trajectory, sample_values))
       .def("set", &Trajectory::set, py::arg("t"), py::arg("x"),
-           "Adds the sample (t, x), replacing an existing one at t (sampled trajectories only).")
+           DOC(Trajectory, set))
       .def("__call__", py::overload_cast<double>(&Trajectory::operator(), py::const_), py::arg("t"),
-           "x(t) as an enclosing Interval (t a float), or x([t]) = {x(t) : t in [t]} (t an Interval).")
+           DOC(Trajectory, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&Trajectory::operator(), py::const_), py::arg("t"))
       .def("__repr__",
            [](const Trajectory& x) {
@@ -73,23 +73,23 @@ void init_trajectory(py::module_& m) {
       .def("__abs__", [](const Trajectory& a) { return abs(a); });
   tc.attr("__array_ufunc__") = py::none();
   using F1 = Trajectory (*)(const Trajectory&);
-  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "sqr of a trajectory (composite).");
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "sqrt of a trajectory (composite).");
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "exp of a trajectory (composite).");
-  m.def("log", static_cast<F1>(&log), py::arg("x"), "log of a trajectory (composite).");
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "sin of a trajectory (composite).");
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "cos of a trajectory (composite).");
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "tan of a trajectory (composite).");
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "atan of a trajectory (composite).");
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "abs of a trajectory (composite).");
+  m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), DOC(sqr, Trajectory));
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), DOC(sqrt, Trajectory));
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), DOC(exp, Trajectory));
+  m.def("log", static_cast<F1>(&log), py::arg("x"), DOC(log, Trajectory));
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), DOC(sin, Trajectory));
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), DOC(cos, Trajectory));
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), DOC(tan, Trajectory));
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), DOC(atan, Trajectory));
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), DOC(abs, Trajectory));
   m.def("atan2", static_cast<Trajectory (*)(const Trajectory&, const Trajectory&)>(&atan2), py::arg("y"),
-        py::arg("x"), "atan2(y, x) of two trajectories (composite).");
+        py::arg("x"), DOC(atan2, Trajectory_Trajectory));
 
   using TV = TrajectoryVector;
   py::class_<TV, std::shared_ptr<TV>> v(m, "TrajectoryVector",
-                                        "n scalar trajectories, a vector trajectory over their common domain.");
+                                        DOC(TrajectoryVector));
   def_copy(v);
-  v.def(py::init<std::vector<Trajectory>>(), py::arg("trajectories"), "From Trajectories (copied).")
+  v.def(py::init<std::vector<Trajectory>>(), py::arg("trajectories"), DOC(TrajectoryVector, TrajectoryVector, vector_Trajectory))
       .def(py::init([](const std::vector<double>& times, const py::handle& values) {
              const Bounds a = bounds_of(values, "TrajectoryVector(times, values)", "values");
              if (a.ndim() != 2) {
@@ -106,16 +106,16 @@ void init_trajectory(py::module_& m) {
            py::arg("times"), py::arg("values"),
            "Sampled: values of shape (k, n), row j = the point at times[j] (k times, strictly increasing).")
       .def(py::init<const std::string&, const Interval&>(), py::arg("expr"), py::arg("domain"),
-           "Analytic: a vector expression of t, e.g. '(cos(t), sin(t))', over the domain.")
+           DOC(TrajectoryVector, TrajectoryVector, string_Interval))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
-           "Analytic: a Function of one variable t (component i = f[i]).")
-      .def("size", &TV::size, "The dimension n.")
+           DOC(TrajectoryVector, TrajectoryVector, Function_Interval))
+      .def("size", &TV::size, DOC(TrajectoryVector, size))
       .def("__len__", &TV::size)
-      .def("domain", &TV::domain, "The intersection of the components' domains.")
+      .def("domain", &TV::domain, DOC(TrajectoryVector, domain))
       .def("__getitem__", [](const TV& x, long long i) { return x[py_index(i, x.size(), "TrajectoryVector")]; }, py::arg("i"),
-           "Component i (a copy; negative i from the end).")
+           DOC(TrajectoryVector, op_index))
       .def("__call__", py::overload_cast<double>(&TV::operator(), py::const_), py::arg("t"),
-           "The box of the components' enclosures at t (a float) or over [t] (an Interval).")
+           DOC(TrajectoryVector, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&TV::operator(), py::const_), py::arg("t"))
       .def("__neg__", [](const TV& a) { return -a; })
       .def("__add__", [](const TV& a, const TV& b) { return a + b; }, py::is_operator(),

@@ -10,9 +10,10 @@
 
 #include "arg_checks.h"
 #include "bindings.h"
-#include "sillage/tube/tube_integral.h"
+#include "docstrings.h"
 #include "sillage/error.h"
 #include "sillage/interval/interval_vector.h"
+#include "sillage/tube/tube_integral.h"
 #include "sillage/tube/tube_taylor.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -38,12 +39,11 @@ void add_method(py::object& cls, const char* name, py::cpp_function f) { py::set
 
 void init_tube_analysis(py::module_& m) {
   py::class_<TubeAnalysis>(m, "TubeAnalysis",
-                           "Holds the synthesis tree of a tube (thesis 3.3.1) for repeated O(log N) queries;\n"
-                           "rebuilt automatically when the tube changes. Keeps the tube alive.")
-      .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>(), "Analysis of the tube x (kept alive).")
+                           DOC(TubeAnalysis))
+      .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>(), DOC(TubeAnalysis, TubeAnalysis))
       .def(
           "eval", [](const TubeAnalysis& a, const Interval& t) { return a.eval(t); }, py::arg("t"),
-          "[x]([t]), as Tube.__call__.")
+          DOC(TubeAnalysis, eval))
       .def(
           "integral",
           [](const TubeAnalysis& a, const py::object& t1, const py::object& t2) {
@@ -70,11 +70,10 @@ void init_tube_analysis(py::module_& m) {
         "both gates of w (a list of N Intervals).");
   m.def("primitive_from_increments", &primitive_from_increments, py::arg("x"), py::arg("increments"),
         py::arg("x0"), py::arg("gates") = std::vector<Interval>(),
-        "The primitive of x with p(t0) ∈ x0 and p(t_{k+1}) - p(t_k) ∈ increments[k] (forward and backward\n"
-        "passes on the gates, slices from both gates and the slopes [x](k)); gates: known enclosures.");
+        DOC(primitive_from_increments));
   m.def("primitive_taylor", &primitive_taylor, py::arg("w"), py::arg("dw"), py::arg("x0") = Interval(0.0),
         py::arg("noise") = Interval(0.0),
-        "primitive_from_increments(w + noise, taylor_increments(w, dw, noise), x0): second order in δ.");
+        DOC(primitive_taylor));
 
   if (!py::hasattr(m, "Tube")) return;  // the tube layer is not bound (yet)
   py::object cls = m.attr("Tube");
