@@ -52,12 +52,14 @@ namespace sillage {
 
 class CtcEval : public NetworkCtc {
  public:
+  // The evaluation contractor, time sampling enabled.
   CtcEval() = default;
   std::string name() const override { return "CtcEval"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // Allow (default) or not the sampling of the TDomain at a degenerate t.
   void enable_time_sampling(bool on) { sampling_ = on; }
+  // Whether a degenerate t may sample the TDomain.
   bool time_sampling() const { return sampling_; }
   // In a ContractorNetwork: add the bounds of [t] (as given to add()) as
   // time points of y's TDomain at the next contract(), so that the values at
@@ -65,6 +67,7 @@ class CtcEval : public NetworkCtc {
   // (5.6) allows (ContractorNetwork, "Gates"). Off by default: every tube of
   // that TDomain gains up to two slices per observation.
   void enable_gates_at_time_bounds(bool on) { gates_at_bounds_ = on; }
+  // Whether a network adds the bounds of t as time points.
   bool gates_at_time_bounds() const { return gates_at_bounds_; }
   Gates gates_for(const std::vector<DomainRef>& args) const override;
 

@@ -36,6 +36,7 @@ class CtcHeading : public NetworkCtc {
  public:
   // track >= 0 (rad), else Error.
   explicit CtcHeading(double track = 0.0);
+  // The bound on the angle between the direction of travel and the heading.
   double track() const { return track_; }
   std::string name() const override { return "CtcHeading"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;

@@ -51,9 +51,13 @@ class CtcHeadingWindow : public NetworkCtc {
   // rate alone bounds the turn inside a slice), stride >= 1 (slices); all
   // finite except turn_accel; Error otherwise.
   explicit CtcHeadingWindow(double window, double track = 0.0, double turn_accel = INFINITY, std::size_t stride = 1);
+  // The length of the windows, in seconds.
   double window() const { return window_; }
+  // The bound on the angle between the direction of travel and the heading.
   double track() const { return track_; }
+  // The bound on |psi''| (rad/s^2; inf: none).
   double turn_accel() const { return turn_accel_; }
+  // A window starts every `stride` slices.
   std::size_t stride() const { return stride_; }
   std::string name() const override { return "CtcHeadingWindow"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;

@@ -23,12 +23,14 @@ namespace sillage {
 
 class CtcIncrement : public NetworkCtc {
  public:
+  // The increment contractor.
   CtcIncrement() = default;
   std::string name() const override { return "CtcIncrement"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // DimensionError if x and i are not on one TDomain.
   bool contract(Tube& x, const Tube& i) const;
+  // The same for a tube vector x, component by component.
   bool contract(TubeVector& x, const TubeVector& i) const;
 };
 

@@ -48,21 +48,30 @@ class CtcIvp : public NetworkCtc {
   // cn.add(ctc, {x}) or cn.add(ctc, {x, u}): tubes or tube vectors.
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
+  // Number of states n.
   std::size_t nb_states() const;
+  // Number of inputs m.
   std::size_t nb_inputs() const;
+  // The Taylor order p.
   int order() const { return order_; }
+  // The directions of integration.
   TimePropag time_propag() const { return propag_; }
+  // The Function f.
   const Function& function() const;
   // The bound of the last Taylor terms that sets the step (default 1e-16).
   double tolerance() const { return tol_; }
+  // Sets the step tolerance (positive).
   void set_tolerance(double tol);
 
   // Contracts x in place (touch()es what changed); false if x is now empty
   // (then every slice and gate is empty). DimensionError on wrong sizes or
   // TDomains.
   bool contract(Tube& x) const;
+  // Contracts the tube vector x in place; returns false if x is now empty.
   bool contract(TubeVector& x) const;
+  // With the input tube u (any u(t) in it); returns false if x is now empty.
   bool contract(Tube& x, const Tube& u) const;
+  // With the input tube vector u; returns false if x is now empty.
   bool contract(TubeVector& x, const TubeVector& u) const;
   // The same (u null without inputs), remembering the run in `memory`: the
   // next call re-integrates only from the first gate or slice of x or u

@@ -23,6 +23,7 @@ namespace sillage {
 
 class CtcSecondDeriv : public NetworkCtc {
  public:
+  // The second-derivative contractor.
   CtcSecondDeriv() = default;
   std::string name() const override { return "CtcSecondDeriv"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;

@@ -8,6 +8,8 @@
 
 namespace sillage {
 
+// What `sillage check` prints: the variables, constraints, sizes and memory estimate of the
+// network.
 std::string check_summary(const Problem& p);
 
 }  // namespace sillage

@@ -34,15 +34,22 @@ struct ScheduleStep {
   ContractStats stats;
 };
 
+// A solved problem: the domains, whether they are empty (no solution) and why, the schedule.
 struct SolveResult {
   BuiltProblem built;  // the last step's domains
   std::vector<ScheduleStep> schedule;
+  // True if the problem has no solution (an empty domain).
   bool empty = false;
   std::string why_empty;  // ContractStats::emptiness + the constraint and its place in the file
+  // Time spent building the networks (all steps).
   double build_seconds() const;
+  // Time spent contracting (all steps).
   double contract_seconds() const;
 };
 
+// Builds the network of the problem and contracts it to the fixed point (GIL released); delta: a
+// slice width (default: the file's), auto_delta: refine δ from coarse until the result changes by
+// less than tolerance or the budget is spent.
 SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
 
 // The mean thickness (volume / duration) summed over the tube components with

@@ -31,19 +31,30 @@ class BathymetryDem {
   // e.g. integers or halves, so that cell indices are exact).
   BathymetryDem(double x0, double y0, double h, std::size_t nx, std::size_t ny, std::vector<double> depths);
 
+  // Number of node columns.
   std::size_t nx() const { return nx_; }
+  // Number of node rows.
   std::size_t ny() const { return ny_; }
+  // Grid step (m).
   double cell_size() const { return h_; }
+  // x of node column 0.
   double x0() const { return x0_; }
+  // y of node row 0.
   double y0() const { return y0_; }
   IntervalVector domain() const;  // [x0, x0 + (nx-1) h] x [y0, y0 + (ny-1) h]
   double node(std::size_t i, std::size_t j) const;  // OutOfRangeError outside
+  // The node depths, row by row (node (i, j) at j·nx + i); an (ny, nx) array in Python.
   const std::vector<double>& depths() const { return z_; }
+  // Smallest node depth.
   double min_depth() const;
+  // Largest node depth.
   double max_depth() const;
 
+  // The bilinear depth at (x, y), an enclosing Interval.
   Interval operator()(double x, double y) const;
+  // The exact range of the bilinear seabed over a box (x, y), outward-rounded.
   Interval eval(const IntervalVector& box) const;
+  // The hull of the nodes of every cell the box touches (looser, cheaper).
   Interval eval_cells(const IntervalVector& box) const;
 
  private:

@@ -20,11 +20,14 @@ namespace sillage {
 // The colour of a depth within [lo, hi]: light (shallow) to dark blue (deep).
 std::string depth_colour(double depth, double lo, double hi);
 
+// The DEM coloured by depth with the path (x, y) (Fig. 7.20), an SVG Figure.
 Figure bathymetry_dem_figure(const BathymetryDem& dem, const std::vector<double>& x, const std::vector<double>& y,
                              const std::string& title = "Seabed DEM and path", double block = 5,
                              double width_px = 600);
+// The mission map: tube [p1] x [p2] and the truth (Fig. 7.16), an SVG Figure.
 Figure bathymetry_map_figure(const BathymetryMission& m, const TubeVector& p,
                              const std::string& title = "Mission map: dead reckoning and truth", double width_px = 600);
+// The observation tube with the true observation (Fig. 7.14), an SVG Figure.
 Figure bathymetry_observation_figure(const BathymetryMission& m, const Tube& z,
                                      const std::string& title = "Observation tube [z](t) and truth",
                                      double width_px = 700);

@@ -30,6 +30,7 @@
 
 namespace sillage {
 
+// Options of BathymetryMission.
 struct BathymetryMissionOptions {
   double duration = 5760;    // s (1 h 36)
   double step = 0.1;         // s, sensor period
@@ -37,8 +38,11 @@ struct BathymetryMissionOptions {
   double turn_radius = 28;   // m
   double rail_spacing = 40;  // m (< 2 turn_radius: keyhole turns)
   double depth = 14.5;       // m, depth below the surface at the start
+  // The SeabedOptions.
   SeabedOptions seabed;
+  // The TideModel.
   TideModel tide;
+  // The BathymetrySensorBounds.
   BathymetrySensorBounds bounds;
 };
 
@@ -52,20 +56,31 @@ struct BathymetrySignals {
 
 class BathymetryMission {
  public:
+  // Generates the mission (about 0.4 s).
   explicit BathymetryMission(std::uint64_t seed, const BathymetryMissionOptions& options = {});
 
+  // The seed.
   std::uint64_t seed() const { return seed_; }
+  // The BathymetryMissionOptions.
   const BathymetryMissionOptions& options() const { return options_; }
+  // The Seabed.
   const Seabed& seabed() const { return seabed_; }
+  // The BathymetryDem of the seabed.
   const BathymetryDem& dem() const { return seabed_.dem; }
+  // The BathymetrySensorBounds.
   const BathymetrySensorBounds& bounds() const { return options_.bounds; }
+  // The TideModel.
   const TideModel& tide() const { return options_.tide; }
 
+  // Number of samples.
   std::size_t nb_samples() const { return times_.size(); }
+  // Sample times (s).
   const std::vector<double>& times() const { return times_; }
   const std::vector<double>& x1() const { return x1_; }  // truth, east
   const std::vector<double>& x2() const { return x2_; }  // truth, north
+  // The true BathymetrySignals.
   const BathymetrySignals& truth() const { return truth_; }
+  // The measured BathymetrySignals.
   const BathymetrySignals& measured() const { return meas_; }
   const std::vector<double>& tide_truth() const { return tide_truth_; }       // sea height above datum
   const std::vector<double>& filtered_altitude() const { return alt_filt_; }  // DVL altitude before noise

@@ -24,6 +24,7 @@
 
 namespace sillage {
 
+// Stated bounds of range measurements: short and long errors, time stamps, speed.
 struct RangeBounds {
   double short_err = 1.5;  // m: measured - true >= -short_err
   double long_err = 10.0;  // m: measured - true <= long_err

@@ -19,24 +19,31 @@
 
 namespace sillage {
 
+// Options of generate_seabed (area, grid, depth, smooth strip, counts).
 struct SeabedOptions {
   double size = 500;          // side of the square area (m), from (0, 0)
   double cell = 1;            // grid step (m)
   double base_depth = 21;     // depth at the origin (m, below chart datum)
   double smooth_width = 170;  // width of the smooth western strip (m)
+  // Number of rocks.
   int nb_rocks = 7;
+  // Number of sandbanks.
   int nb_banks = 2;
   double relief = 1;          // factor on every relief amplitude (slope, banks, rocks, waves, swell)
 };
 
+// Stated bounds of a generated seabed: curvature (Hessian norm), slope, node roughness.
 struct SeabedClass {
   double curvature;  // bound on the Hessian norm of the smooth seabed (1/m)
   double slope;      // bound on its gradient norm
   double roughness;  // bound on the node roughness (m), quantization included
 };
 
+// A generated seabed: its DEM, its stated class and its smooth strip.
 struct Seabed {
+  // The BathymetryDem.
   BathymetryDem dem;
+  // The SeabedClass.
   SeabedClass bounds;
   IntervalVector smooth_region;  // the low-information strip
 };

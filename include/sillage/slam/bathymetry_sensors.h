@@ -31,6 +31,7 @@
 
 namespace sillage {
 
+// The stated sensor bounds (datasheet class, with margins) and dynamics class.
 struct BathymetrySensorBounds {
   double dvl_scale = 0.002;       // relative, of the measured speed
   double dvl_offset = 0.001;      // m/s

@@ -30,11 +30,15 @@ namespace sillage {
 // What C_Ω would do to a tube: the atoms (gates and slices) it narrows and
 // their new values; `empty` when no box is consistent.
 struct OmegaHull {
+  // One gate or slice narrowed by CtcOmega.hull.
   struct Atom {
+    // Component of the tube vector.
     std::size_t component;
     std::size_t atom;  // 2k: gate k, 2k + 1: slice k
+    // Its new value (the hull over the consistent boxes).
     Interval value;
   };
+  // No box is consistent: the tube would be emptied.
   bool empty = false;
   std::vector<Atom> atoms;        // sorted by (component, atom)
   std::size_t nb_boxes = 0;       // boxes of Ω
@@ -49,6 +53,7 @@ struct OmegaHull {
 
 class CtcOmega {
  public:
+  // The contractor, with the CtcT1T2 used on each box.
   explicit CtcOmega(const CtcT1T2& t1t2 = CtcT1T2()) : t1t2_(t1t2) {}
 
   // p ∩= (7.22) over the t-boxes (2-D each: DimensionError otherwise; an

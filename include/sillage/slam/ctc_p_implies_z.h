@@ -33,6 +33,11 @@
 
 namespace sillage {
 
+// The inter-temporal implication contractor C_{p=>z} (thesis (7.9), Alg. 13, fast=true: Alg. 14):
+// p(t1) = p(t2) => z(t1) = z(t2), p' = w. contract(p, w, z) contracts the 2-D TubeVector p to a
+// fixed
+// point and returns one SlamRow per iteration; ContractorNetwork.add(CtcPImpliesZ(eps), [p, w, z])
+// binds it.
 class CtcPImpliesZ : public NetworkCtc {
  public:
   // eps > 0: the width of the t-boxes (seconds; below the time step δ it
@@ -43,7 +48,9 @@ class CtcPImpliesZ : public NetworkCtc {
   // cn.add(CtcPImpliesZ(eps), {p, w, z}): p contracted, w and z read.
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
+  // The width of the t-boxes.
   double eps() const { return eps_; }
+  // Alg. 14 (the hull of each component) or Alg. 13.
   bool fast() const { return fast_; }
   void set_ratio(double ratio);  // in [0, 1), default 1e-3
   double ratio() const { return ratio_; }
@@ -53,6 +60,7 @@ class CtcPImpliesZ : public NetworkCtc {
   // Contracts p to a fixed point; returns one row per iteration (the last
   // one contracted nothing more, or p became empty: then p is empty).
   std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const TubeVector& z) const;
+  // The same with a scalar observation Tube z.
   std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const Tube& z) const;
   // One iteration; `row` receives its figures (iteration, times and
   // contractions relative to the input of this call left to the caller).

@@ -27,12 +27,16 @@
 
 namespace sillage {
 
+// The inter-temporal contractor C_{t1,t2} (thesis Alg. 11, (7.23)-(7.24)): p(t1) = p(t2),
+// p' = w. contract(t1, t2, p, w) contracts the Intervals t1, t2 and the tube p in place.
 class CtcT1T2 {
  public:
   // ratio in [0, 1) (Error otherwise); max_passes >= 1 bounds the loop.
   explicit CtcT1T2(double ratio = 1e-3, std::size_t max_passes = 100);
 
+  // The fixed-point ratio.
   double ratio() const { return ratio_; }
+  // The cap on the passes.
   std::size_t max_passes() const { return max_passes_; }
 
   // DimensionError if p and w differ in size or TDomain; Error if [t1] or

@@ -17,8 +17,11 @@ namespace sillage {
 // One curve of the thickness graph: the tube (its components 0 and 1), a
 // legend and an SVG colour.
 struct ThicknessCurve {
+  // The tube (components 0 and 1 measured).
   TubeVector p;
+  // The legend.
   std::string label;
+  // The SVG colour.
   std::string colour;
 };
 

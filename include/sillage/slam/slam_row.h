@@ -12,10 +12,12 @@ struct SlamRow {
   std::size_t nb_detections = 0;  // complete detections Ω_i of 𝕋_p
   std::size_t nb_proofs = 0;      // of which proven to hold a loop (degree test)
   double seconds = 0.0;           // of this iteration (wall clock)
+  // Time since the first iteration.
   double cumulated_seconds = 0.0;
   // 1 - width([p](t)) / width of the input [p](t) (summed over components;
   // 0: nothing gained, 1: down to a point), at t_f and at t_0.
   double contraction_tf = 0.0;
+  // The same at t_0.
   double contraction_t0 = 0.0;
   std::size_t nb_atoms_touched = 0;  // gates and slices C_Ω worked on (its cost)
 };

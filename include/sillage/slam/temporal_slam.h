@@ -21,6 +21,7 @@ namespace sillage {
 
 class Function;
 
+// Options of temporal_slam.
 struct TemporalSlamOptions {
   double eps = 0.1;       // width of the t-boxes (about the time step)
   bool fast = true;       // run Alg. 14 to its fixed point

@@ -77,6 +77,7 @@ class TDomain {
   std::span<const double> times() const { return times_; }
   double t0() const { return times_.front(); }
   double tf() const { return times_.back(); }
+  // [t_0, t_N] as an Interval.
   Interval t0_tf() const { return {times_.front(), times_.back()}; }
 
   // Index k of the slice [t_k, t_{k+1}] that contains t, in O(log N).
@@ -86,6 +87,7 @@ class TDomain {
   std::size_t slice_index(double t) const;
   // The index k with t_k == t exactly, or -1 if t is not a time point.
   std::ptrdiff_t time_index(double t) const;
+  // True if t is one of the time points t_k.
   bool is_time_point(double t) const { return time_index(t) >= 0; }
 
   Interval slice_domain(std::size_t k) const;  // [t_k, t_{k+1}]

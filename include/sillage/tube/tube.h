@@ -53,7 +53,9 @@ class Tube {
   Tube& operator=(Tube&& x) noexcept = default;
   ~Tube() = default;
 
+  // The TDomain (shared, not a copy).
   const std::shared_ptr<TDomain>& tdomain() const { return td_; }
+  // N, the number of slices.
   std::size_t nb_slices() const { return data_->slices.size(); }
   const Interval& slice(std::size_t k) const;  // [x](k), Error if k >= N
   const Interval& gate(std::size_t k) const;   // [x](t_k), Error if k > N
@@ -87,6 +89,7 @@ class Tube {
   // a rigorous upper bound of the area. Infinite if a slice is unbounded.
   double volume() const;
   double thickness(std::size_t k) const;  // diameter of slice k (0 if empty)
+  // The largest slice diameter.
   double max_thickness() const;
 
   // True if some slice or gate is empty (no trajectory belongs to the tube).

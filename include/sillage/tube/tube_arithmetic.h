@@ -33,29 +33,52 @@ Tube operator&(const Tube& x, const Tube& y);
 Tube operator|(const Tube& x, const Tube& y);
 
 Tube sqr(const Tube& x);
+// sqrt of a tube, slice- and gate-wise (rigorous).
 Tube sqrt(const Tube& x);
+// abs of a tube, slice- and gate-wise (rigorous).
 Tube abs(const Tube& x);
+// sign of a tube, slice- and gate-wise (rigorous).
 Tube sign(const Tube& x);
+// exp of a tube, slice- and gate-wise (rigorous).
 Tube exp(const Tube& x);
+// log of a tube, slice- and gate-wise (rigorous).
 Tube log(const Tube& x);
+// pow of a tube, slice- and gate-wise (rigorous).
 Tube pow(const Tube& x, int n);
+// pow of a tube, slice- and gate-wise (rigorous).
 Tube pow(const Tube& x, double p);
+// pow of a tube, slice- and gate-wise (rigorous).
 Tube pow(const Tube& x, const Interval& p);
+// pow of a tube, slice- and gate-wise (rigorous).
 Tube pow(const Tube& x, const Tube& p);
+// root of a tube, slice- and gate-wise (rigorous).
 Tube root(const Tube& x, int n);
+// sin of a tube, slice- and gate-wise (rigorous).
 Tube sin(const Tube& x);
+// cos of a tube, slice- and gate-wise (rigorous).
 Tube cos(const Tube& x);
+// tan of a tube, slice- and gate-wise (rigorous).
 Tube tan(const Tube& x);
+// asin of a tube, slice- and gate-wise (rigorous).
 Tube asin(const Tube& x);
+// acos of a tube, slice- and gate-wise (rigorous).
 Tube acos(const Tube& x);
+// atan of a tube, slice- and gate-wise (rigorous).
 Tube atan(const Tube& x);
+// sinh of a tube, slice- and gate-wise (rigorous).
 Tube sinh(const Tube& x);
+// cosh of a tube, slice- and gate-wise (rigorous).
 Tube cosh(const Tube& x);
+// tanh of a tube, slice- and gate-wise (rigorous).
 Tube tanh(const Tube& x);
 Tube atan2(const Tube& y, const Tube& x);  // y first, like atan2(Interval, Interval)
+// atan2 of a tube, slice- and gate-wise (rigorous).
 Tube atan2(const Tube& y, const Interval& x);
+// atan2 of a tube, slice- and gate-wise (rigorous).
 Tube atan2(const Interval& y, const Tube& x);
+// min of a tube, slice- and gate-wise (rigorous).
 Tube min(const Tube& x, const Tube& y);
+// max of a tube, slice- and gate-wise (rigorous).
 Tube max(const Tube& x, const Tube& y);
 
 }  // namespace sillage

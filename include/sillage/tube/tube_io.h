@@ -32,7 +32,9 @@ void save(const TubeVector& x, const std::string& path);
 
 Tube load_tube(std::istream& is, std::shared_ptr<TDomain> td = nullptr);
 TubeVector load_tube_vector(std::istream& is, std::shared_ptr<TDomain> td = nullptr);
+// Reads a Tube written by save_tube, on tdomain if given (same time points).
 Tube load_tube(const std::string& path, std::shared_ptr<TDomain> td = nullptr);
+// Reads a TubeVector written by save_tube, on tdomain if given.
 TubeVector load_tube_vector(const std::string& path, std::shared_ptr<TDomain> td = nullptr);
 
 }  // namespace sillage

@@ -31,8 +31,11 @@ class TubeVector {
   // From tubes (at least one, all on the same TDomain; DimensionError otherwise).
   explicit TubeVector(std::vector<Tube> components);
 
+  // The dimension n.
   std::size_t size() const { return x_.size(); }
+  // The TDomain (shared).
   const std::shared_ptr<TDomain>& tdomain() const { return x_.front().tdomain(); }
+  // N, the number of slices.
   std::size_t nb_slices() const { return x_.front().nb_slices(); }
 
   // Component i, a live reference (Error if i >= size()).
@@ -44,16 +47,20 @@ class TubeVector {
   // Components i..j (inclusive, like IntervalVector::subvector), copied.
   TubeVector subvector(std::size_t i, std::size_t j) const;
 
+  // The box of slice k.
   IntervalVector slice(std::size_t k) const;
+  // The box of gate k.
   IntervalVector gate(std::size_t k) const;
   IntervalVector operator()(double t) const;          // component-wise Tube::operator()(t)
   IntervalVector operator()(const Interval& t) const;  // component-wise [x]([t])
+  // The box hull of every slice and gate.
   IntervalVector codomain() const;
 
   // Sum over slices of width(t slice) * volume of the slice box, rounded up.
   double volume() const;
   double max_thickness() const;  // max over components
   bool is_empty() const;         // some component is empty
+  // Component-wise Tube.is_subset.
   bool is_subset(const TubeVector& y) const;
   // One trajectory per component (DimensionError if the counts differ).
   bool contains(const std::vector<Trajectory>& x) const;
@@ -64,6 +71,7 @@ class TubeVector {
 
   void set(const IntervalVector& y);                  // every slice and gate
   void set(const IntervalVector& y, std::size_t k);   // slice k (see Tube::set)
+  // Gate k := the box y.
   void set_gate(std::size_t k, const IntervalVector& y);
 
  private:

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"
 
@@ -22,9 +23,8 @@ heading psi, and the heading (slices and gates) from the positions, when the
 displacement box excludes 0 and the heading spans less than a half turn over
 the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d, w]).)doc")
       .def(py::init<double>(), py::arg("track") = 0.0,
-           "The contractor with the bound track >= 0 (rad) on the angle between the direction of travel and the "
-           "heading (else Error).")
-      .def("track", &CtcHeading::track, "The bound on the angle between the direction of travel and the heading.")
+           DOC(CtcHeading, CtcHeading))
+      .def("track", &CtcHeading::track, DOC(CtcHeading, track))
       .def("__repr__", [](const CtcHeading& c) { return "CtcHeading(track=" + std::string(py::repr(py::float_(c.track()))) + ")"; })
       .def(
           "contract",
@@ -33,8 +33,7 @@ the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d,
             return c.contract(p, psi, d, w);
           },
           py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("w"),
-          "Contracts the positions p (2 components) and the heading psi in place; d (distance per slice) and w "
-          "(bounds of psi') are read. Returns False when no trajectory is left (p and psi are then set empty).");
+          DOC(CtcHeading, contract, TubeVector_Tube_Tube_Tube));
 
   py::class_<CtcHeadingWindow, NetworkCtc, std::shared_ptr<CtcHeadingWindow>>(m, "CtcHeadingWindow", R"doc(
 p(t_b) - p(t_a) = integral over [t_a, t_b] of s (cos, sin)(psi + e), over windows of
@@ -49,13 +48,11 @@ rounded. ContractorNetwork.add(CtcHeadingWindow(window, track, turn_accel, strid
 [p, psi, d, dpsi, w]).)doc")
       .def(py::init<double, double, double, std::size_t>(), py::arg("window"), py::arg("track") = 0.0,
            py::arg("turn_accel") = INFINITY, py::arg("stride") = 1,
-           "The contractor over windows of `window` > 0 seconds, one every `stride` >= 1 slices, with the bound "
-           "track >= 0 (rad) on the angle between the direction of travel and the heading and turn_accel > 0 "
-           "(rad/s^2; inf: none) on the turn acceleration (else Error).")
-      .def("window", &CtcHeadingWindow::window, "The length of the windows, in seconds.")
-      .def("track", &CtcHeadingWindow::track, "The bound on the angle between the direction of travel and the heading.")
-      .def("turn_accel", &CtcHeadingWindow::turn_accel, "The bound on |psi''| (rad/s^2; inf: none).")
-      .def("stride", &CtcHeadingWindow::stride, "A window starts every `stride` slices.")
+           DOC(CtcHeadingWindow, CtcHeadingWindow))
+      .def("window", &CtcHeadingWindow::window, DOC(CtcHeadingWindow, window))
+      .def("track", &CtcHeadingWindow::track, DOC(CtcHeadingWindow, track))
+      .def("turn_accel", &CtcHeadingWindow::turn_accel, DOC(CtcHeadingWindow, turn_accel))
+      .def("stride", &CtcHeadingWindow::stride, DOC(CtcHeadingWindow, stride))
       .def("__repr__",
            [](const CtcHeadingWindow& c) {
              const auto num = [](double x) { return std::string(py::repr(py::float_(x))); };
@@ -69,9 +66,7 @@ rounded. ContractorNetwork.add(CtcHeadingWindow(window, track, turn_accel, strid
             return c.contract(p, psi, d, dpsi, w);
           },
           py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("dpsi"), py::arg("w"),
-          "Contracts the positions p (2 components) and the heading psi in place; d (distance per slice), dpsi "
-          "(heading increment per slice) and w (bounds of psi') are read. Returns False when no trajectory is "
-          "left (p and psi are then set empty).");
+          DOC(CtcHeadingWindow, contract, TubeVector_Tube_Tube_Tube_Tube));
 }
 
 }  // namespace sillage::python

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/dynamics/ctc_second_deriv.h"
 
 namespace sillage::python {
@@ -15,7 +16,7 @@ x'' in [a](k) on every slice k: x(t) lies within the chord of its two gates, bow
 ([x](t_k) | [x](t_{k+1})) - [a](k) [0, delta^2 / 8] (an acceleration bound, e.g. a turn
 acceleration for a heading, is much tighter inside short slices than a rate bound).
 ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
-      .def(py::init<>(), "The second-derivative contractor.")
+      .def(py::init<>(), DOC(CtcSecondDeriv, CtcSecondDeriv))
       .def("__repr__", [](const CtcSecondDeriv&) { return std::string("CtcSecondDeriv()"); })
       .def(
           "contract",
@@ -24,8 +25,7 @@ ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
             return c.contract(x, a);
           },
           py::arg("x"), py::arg("a"),
-          "Contracts the slices of the tube x in place with x'' in the slices of a; returns False if x is empty. "
-          "Tube vectors: ContractorNetwork.add(CtcSecondDeriv(), [x, a]).");
+          DOC(CtcSecondDeriv, contract));
 }
 
 }  // namespace sillage::python

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
@@ -56,9 +57,9 @@ std::shared_ptr<SolveResult> solve_with(const Problem& p, std::optional<double> 
 }  // namespace
 
 void init_problem(py::module_& m) {
-  py::class_<Problem>(m, "Problem", "An estimation problem read from a TOML file (docs/cli.md), validated.")
+  py::class_<Problem>(m, "Problem", DOC(Problem))
       .def_readonly("file", &Problem::file, "The path of the file.")
-      .def_readonly("hash", &Problem::hash, "FNV-1a 64-bit hash of its text, in hex.")
+      .def_readonly("hash", &Problem::hash, DOC(Problem, hash))
       .def_property_readonly("variables", [](const Problem& p) {
         std::vector<std::string> v;
         for (const VarSpec& s : p.vars) v.push_back(s.name);
@@ -72,17 +73,17 @@ void init_problem(py::module_& m) {
       });
 
   py::class_<SolveResult, std::shared_ptr<SolveResult>>(
-      m, "SolveResult", "A solved problem: the domains, whether they are empty (no solution) and why, the schedule.")
-      .def_readonly("empty", &SolveResult::empty, "True if the problem has no solution (an empty domain).")
+      m, "SolveResult", DOC(SolveResult))
+      .def_readonly("empty", &SolveResult::empty, DOC(SolveResult, empty))
       .def_readonly("why_empty", &SolveResult::why_empty,
-                    "Which constraint emptied what, and where in the file ('' when solved).")
+                    DOC(SolveResult, why_empty))
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
                              "One dict per δ tried: delta, slices, mean_thickness, build_seconds, "
                              "contract_seconds, stats.")
-      .def("build_seconds", &SolveResult::build_seconds, "Time spent building the networks (all steps).")
-      .def("contract_seconds", &SolveResult::contract_seconds, "Time spent contracting (all steps).")
+      .def("build_seconds", &SolveResult::build_seconds, DOC(SolveResult, build_seconds))
+      .def("contract_seconds", &SolveResult::contract_seconds, DOC(SolveResult, contract_seconds))
       .def("__repr__", [](const SolveResult& r) {
         const ScheduleStep& s = r.schedule.back();
         return std::string("SolveResult(") + (r.empty ? "no solution" : "solved") + ", delta=" + number_text(s.delta) +
@@ -92,12 +93,10 @@ void init_problem(py::module_& m) {
   m.def("load_problem", &load_problem, py::arg("path"),
         "Reads and validates a problem file; sillage.ParseError 'file:line:column: found ..., expected ...' otherwise.");
   m.def("check_summary", &check_summary, py::arg("problem"),
-        "What `sillage check` prints: the variables, constraints, sizes and memory estimate of the network.");
+        DOC(check_summary));
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
-        "Builds the network of the problem and contracts it to the fixed point (GIL released); delta: a slice "
-        "width (default: the file's), auto_delta: refine δ from coarse until the result changes by less than "
-        "tolerance or the budget is spent.");
+        DOC(solve_problem));
   m.def(
       "solve",
       [](const std::string& path, std::optional<double> delta, bool auto_delta, double tolerance,
@@ -112,10 +111,9 @@ void init_problem(py::module_& m) {
         return find_loops(p, r.built);
       },
       py::arg("problem"), py::arg("result"),
-      "The loops asked by the problem's [output] loops over the solved domains (GIL released): a TPlane with "
-      "its detections and proofs (thesis ch. 6).");
+      DOC(find_loops));
   m.def("constraint_order", &constraint_order, py::arg("problem"),
-        "The order the problem's constraints enter the network ([network] order): indices into the file's constraints.");
+        DOC(constraint_order));
 }
 
 }  // namespace sillage::python

@@ -14,6 +14,7 @@
 
 #include "arg_checks.h"
 #include "bindings.h"
+#include "docstrings.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
 #include "sillage/tube/tdomain.h"
@@ -192,28 +193,26 @@ std::string box_text(const IntervalVector& v) {
 
 void init_tdomain(py::module_& m) {
   py::class_<TDomain, TD>(m, "TDomain",
-                          "Time points t_0 < ... < t_N shared by the tubes of a problem; sample(t) splits "
-                          "the slice containing t in every tube attached to it.")
+                          DOC(TDomain))
       .def(py::init<double, double, double>(), py::arg("t0"), py::arg("tf"), py::arg("dt"),
-           "Uniform: t_k = t0 + k*dt, the last slice possibly shorter, t_N = tf.")
-      .def(py::init<std::vector<double>>(), py::arg("times"), "From the time points (strictly increasing).")
-      .def("nb_slices", &TDomain::nb_slices, "N, the number of slices.")
-      .def("t", &TDomain::t, py::arg("k"), "The time point t_k, k <= N (sillage.Error otherwise).")
-      .def("t0_tf", &TDomain::t0_tf, "[t_0, t_N] as an Interval.")
+           DOC(TDomain, TDomain, double_double_double))
+      .def(py::init<std::vector<double>>(), py::arg("times"), DOC(TDomain, TDomain, vector_double))
+      .def("nb_slices", &TDomain::nb_slices, DOC(TDomain, nb_slices))
+      .def("t", &TDomain::t, py::arg("k"), DOC(TDomain, t))
+      .def("t0_tf", &TDomain::t0_tf, DOC(TDomain, t0_tf))
       .def("times", [](const TDomain& td) { return std::vector<double>(td.times().begin(), td.times().end()); },
            "The N+1 time points as a list of floats.")
       .def("slice_index", &TDomain::slice_index, py::arg("t"),
-           "Index of the slice containing t (at an inner time point: the slice it starts).")
-      .def("slice_domain", &TDomain::slice_domain, py::arg("k"), "The time interval [t_k, t_{k+1}] of slice k.")
-      .def("slice_width", &TDomain::slice_width, py::arg("k"), "Rigorous enclosure of t_{k+1} - t_k.")
-      .def("is_time_point", &TDomain::is_time_point, py::arg("t"), "True if t is one of the time points t_k.")
-      .def("time_index", &TDomain::time_index, py::arg("t"), "The index k with t_k == t, or -1 if t is not a time point.")
+           DOC(TDomain, slice_index))
+      .def("slice_domain", &TDomain::slice_domain, py::arg("k"), DOC(TDomain, slice_domain))
+      .def("slice_width", &TDomain::slice_width, py::arg("k"), DOC(TDomain, slice_width))
+      .def("is_time_point", &TDomain::is_time_point, py::arg("t"), DOC(TDomain, is_time_point))
+      .def("time_index", &TDomain::time_index, py::arg("t"), DOC(TDomain, time_index))
       .def("sample", py::overload_cast<double>(&TDomain::sample), py::arg("t"),
-           "Adds the time point t and splits the slice containing it in every attached tube; returns its index.")
+           DOC(TDomain, sample, double))
       .def("sample", py::overload_cast<const Interval&>(&TDomain::sample), py::arg("t"),
-           "Adds both bounds of the Interval t (those strictly inside the domain) as time points, e.g. the time "
-           "interval of an observation before CtcEval.")
-      .def("nb_attached", &TDomain::nb_attached, "Number of tube components attached to this domain and alive.")
+           DOC(TDomain, sample, Interval))
+      .def("nb_attached", &TDomain::nb_attached, DOC(TDomain, nb_attached))
       .def("__repr__",
            [](const TDomain& td) {
              return "TDomain(t=" + td.t0_tf().str() + ", " + std::to_string(td.nb_slices()) + " slices)";
@@ -227,8 +226,7 @@ void init_tdomain(py::module_& m) {
 void init_tube_class(py::module_& m) {
   using T = Tube;
   py::class_<T, std::shared_ptr<T>> c(m, "Tube",
-                                      "A sliced enclosure of scalar trajectories: N slice codomains and N+1 gates "
-                                      "on a TDomain. Copies (copy()) are attached to the same TDomain.");
+                                      DOC(Tube));
   def_copy(c);
   c.def(py::init([](TD td, const py::array& slices, const py::object& gates) {
           const std::size_t n = td->nb_slices();
@@ -247,17 +245,17 @@ void init_tube_class(py::module_& m) {
         "the empty interval (what slices_array() gives).\n"
         "DimensionError for a wrong shape; sillage.Error for NaN, lb > ub, or a gate disjoint from a slice.")
       .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
-           "From an expression of t, e.g. Tube(td, 'sin(t) + [-0.1,0.1]').")
+           DOC(Tube, Tube, TDomain_string))
       .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"),
-           "From a scalar Function of one variable: slice k = [f]([t_k, t_k+1]), gate k = [f](t_k).")
+           DOC(Tube, Tube, TDomain_Function))
       .def(py::init<TD, const Interval&>(), py::arg("tdomain"), py::arg("x") = Interval(),
-           "Every slice and gate = x (the whole line by default).")
+           DOC(Tube, Tube, TDomain_Interval))
       .def(py::init<TD, const std::vector<Interval>&>(), py::arg("tdomain"), py::arg("slices"),
-           "From a list of N slice intervals; gates as for arrays.")
+           DOC(Tube, Tube, TDomain_vector_Interval))
       .def(py::init<TD, const std::vector<Interval>&, const std::vector<Interval>&>(), py::arg("tdomain"),
-           py::arg("slices"), py::arg("gates"), "From lists of N slices and N+1 gates.")
-      .def("tdomain", &T::tdomain, "The TDomain (shared, not a copy).")
-      .def("nb_slices", &T::nb_slices, "N, the number of slices.")
+           py::arg("slices"), py::arg("gates"), DOC(Tube, Tube, TDomain_vector_Interval_vector_Interval))
+      .def("tdomain", &T::tdomain, DOC(Tube, tdomain))
+      .def("nb_slices", &T::nb_slices, DOC(Tube, nb_slices))
       // Signed indices: -1 is an OutOfRangeError, not an argument mismatch.
       .def("slice", [](const T& x, py::ssize_t k) { return x.slice(index_arg(k, "Tube.slice", "slice")); },
            py::arg("k"), "[x](k), the codomain of slice k (0 <= k < N).")
@@ -281,16 +279,16 @@ void init_tube_class(py::module_& m) {
           "set_gate",
           [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
           py::arg("k"), py::arg("y"), "Gate k := y (not checked against the slices).")
-      .def("codomain", &T::codomain, "Hull of all slices and gates.")
-      .def("volume", &T::volume, "Sum of (slice width) x (slice diameter), rounded up (inf if a slice is unbounded).")
-      .def("thickness", &T::thickness, py::arg("k"), "Diameter of slice k (0 if empty).")
-      .def("max_thickness", &T::max_thickness, "The largest slice diameter.")
-      .def("is_empty", &T::is_empty, "True if some slice or gate is empty.")
-      .def("is_subset", &T::is_subset, py::arg("y"), "Slice- and gate-wise inclusion (same TDomain).")
+      .def("codomain", &T::codomain, DOC(Tube, codomain))
+      .def("volume", &T::volume, DOC(Tube, volume))
+      .def("thickness", &T::thickness, py::arg("k"), DOC(Tube, thickness))
+      .def("max_thickness", &T::max_thickness, DOC(Tube, max_thickness))
+      .def("is_empty", &T::is_empty, DOC(Tube, is_empty))
+      .def("is_subset", &T::is_subset, py::arg("y"), DOC(Tube, is_subset))
       .def("contains", &T::contains, py::arg("trajectory"),
-           "True if the trajectory's enclosures lie inside every slice and gate (rigorous).")
+           DOC(Tube, contains))
       .def("__call__", py::overload_cast<double>(&T::operator(), py::const_), py::arg("t"),
-           "[x](t): the gate if t is a time point, else the slice containing t; [x]([t]) for an Interval t.")
+           DOC(Tube, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&T::operator(), py::const_), py::arg("t"))
       .def("lb", [](const T& x) { return slice_values(x, 0); },
            "numpy array (N,) of the slice lower bounds (inf for an empty slice); gates: gates_array()[:, 0].")
@@ -303,7 +301,7 @@ void init_tube_class(py::module_& m) {
       .def("inflate", py::overload_cast<const T&, const T&>(&inflated), py::arg("r"),
            "A new tube: self + [-1, 1]·r slice- and gate-wise, r a tube of radii >= 0 on the same TDomain.")
       .def("inverse", [](const T& x, const Interval& y) { return x.inverse(y); }, py::arg("y"),
-           "Hull of the times where the tube meets y.")
+           DOC(Tube, inverse, Interval))
       .def("inverse_components",
            [](const T& x, const Interval& y) {
              std::vector<Interval> cs;
@@ -366,63 +364,63 @@ void init_tube_functions(py::module_& m) {
   using F1 = T (*)(const T&);
   // Overloads chain onto the Interval ones defined by init_interval.
   m.def("sqr", static_cast<F1>(&sqr), py::arg("x"), "sqr of a tube, slice- and gate-wise (rigorous).");
-  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), "sqrt of a tube, slice- and gate-wise (rigorous).");
-  m.def("exp", static_cast<F1>(&exp), py::arg("x"), "exp of a tube, slice- and gate-wise (rigorous).");
-  m.def("log", static_cast<F1>(&log), py::arg("x"), "log of a tube, slice- and gate-wise (rigorous).");
-  m.def("sin", static_cast<F1>(&sin), py::arg("x"), "sin of a tube, slice- and gate-wise (rigorous).");
-  m.def("cos", static_cast<F1>(&cos), py::arg("x"), "cos of a tube, slice- and gate-wise (rigorous).");
-  m.def("tan", static_cast<F1>(&tan), py::arg("x"), "tan of a tube, slice- and gate-wise (rigorous).");
-  m.def("asin", static_cast<F1>(&asin), py::arg("x"), "asin of a tube, slice- and gate-wise (rigorous).");
-  m.def("acos", static_cast<F1>(&acos), py::arg("x"), "acos of a tube, slice- and gate-wise (rigorous).");
-  m.def("atan", static_cast<F1>(&atan), py::arg("x"), "atan of a tube, slice- and gate-wise (rigorous).");
-  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), "sinh of a tube, slice- and gate-wise (rigorous).");
-  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), "cosh of a tube, slice- and gate-wise (rigorous).");
-  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), "tanh of a tube, slice- and gate-wise (rigorous).");
-  m.def("abs", static_cast<F1>(&abs), py::arg("x"), "abs of a tube, slice- and gate-wise (rigorous).");
-  m.def("sign", static_cast<F1>(&sign), py::arg("x"), "sign of a tube, slice- and gate-wise (rigorous).");
+  m.def("sqrt", static_cast<F1>(&sqrt), py::arg("x"), DOC(sqrt, Tube));
+  m.def("exp", static_cast<F1>(&exp), py::arg("x"), DOC(exp, Tube));
+  m.def("log", static_cast<F1>(&log), py::arg("x"), DOC(log, Tube));
+  m.def("sin", static_cast<F1>(&sin), py::arg("x"), DOC(sin, Tube));
+  m.def("cos", static_cast<F1>(&cos), py::arg("x"), DOC(cos, Tube));
+  m.def("tan", static_cast<F1>(&tan), py::arg("x"), DOC(tan, Tube));
+  m.def("asin", static_cast<F1>(&asin), py::arg("x"), DOC(asin, Tube));
+  m.def("acos", static_cast<F1>(&acos), py::arg("x"), DOC(acos, Tube));
+  m.def("atan", static_cast<F1>(&atan), py::arg("x"), DOC(atan, Tube));
+  m.def("sinh", static_cast<F1>(&sinh), py::arg("x"), DOC(sinh, Tube));
+  m.def("cosh", static_cast<F1>(&cosh), py::arg("x"), DOC(cosh, Tube));
+  m.def("tanh", static_cast<F1>(&tanh), py::arg("x"), DOC(tanh, Tube));
+  m.def("abs", static_cast<F1>(&abs), py::arg("x"), DOC(abs, Tube));
+  m.def("sign", static_cast<F1>(&sign), py::arg("x"), DOC(sign, Tube));
   m.def("pow", static_cast<T (*)(const T&, int)>(&pow), py::arg("x"), py::arg("n"),
-        "pow of a tube, slice- and gate-wise (rigorous).");
+        DOC(pow, Tube_int));
   m.def("pow", static_cast<T (*)(const T&, double)>(&pow), py::arg("x"), py::arg("p"),
-        "pow of a tube, slice- and gate-wise (rigorous).");
+        DOC(pow, Tube_double));
   m.def("pow", static_cast<T (*)(const T&, const Interval&)>(&pow), py::arg("x"), py::arg("p"),
-        "pow of a tube, slice- and gate-wise (rigorous).");
+        DOC(pow, Tube_Interval));
   m.def("pow", static_cast<T (*)(const T&, const T&)>(&pow), py::arg("x"), py::arg("p"),
-        "pow of a tube, slice- and gate-wise (rigorous).");
+        DOC(pow, Tube_Tube));
   m.def("root", static_cast<T (*)(const T&, int)>(&root), py::arg("x"), py::arg("n"),
-        "root of a tube, slice- and gate-wise (rigorous).");
+        DOC(root, Tube_int));
   m.def("atan2", static_cast<T (*)(const T&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
-        "atan2 of a tube, slice- and gate-wise (rigorous).");
+        DOC(atan2, Tube_Tube));
   m.def("atan2", static_cast<T (*)(const T&, const Interval&)>(&atan2), py::arg("y"), py::arg("x"),
-        "atan2 of a tube, slice- and gate-wise (rigorous).");
+        DOC(atan2, Tube_Interval));
   m.def("atan2", static_cast<T (*)(const Interval&, const T&)>(&atan2), py::arg("y"), py::arg("x"),
-        "atan2 of a tube, slice- and gate-wise (rigorous).");
+        DOC(atan2, Interval_Tube));
   m.def("min", static_cast<T (*)(const T&, const T&)>(&min), py::arg("x"), py::arg("y"),
-        "min of a tube, slice- and gate-wise (rigorous).");
+        DOC(min, Tube_Tube));
   m.def("max", static_cast<T (*)(const T&, const T&)>(&max), py::arg("x"), py::arg("y"),
-        "max of a tube, slice- and gate-wise (rigorous).");
+        DOC(max, Tube_Tube));
   m.def("hull", [](const T& x, const T& y) { return x | y; }, py::arg("x"), py::arg("y"),
-        "Slice- and gate-wise hull of two tubes (x | y).");
+        DOC(hull));
 
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double>(&tube_from_data), py::arg("tdomain"),
-        py::arg("data"), py::arg("error") = 0.0, "Interpolation of the data +- error.");
+        py::arg("data"), py::arg("error") = 0.0, DOC(tube_from_data, TDomain_Trajectory_double));
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double, const Interval&>(&tube_from_data),
         py::arg("tdomain"), py::arg("data"), py::arg("error"), py::arg("dx"),
-        "Samples +- error and derivative bounds dx (thesis 3.3.2).");
+        DOC(tube_from_data, TDomain_Trajectory_double_Interval));
   m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"),
-        "The tube of the trajectories x with lb(t) <= x(t) <= ub(t) (two Trajectories).");
+        DOC(tube_from_bounds));
   m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"),
         "Writes a Tube or a TubeVector (with its time points) to a file.");
   m.def("save_tube", py::overload_cast<const TubeVector&, const std::string&>(&save), py::arg("x"),
         py::arg("path"), "Writes a TubeVector (with its time points) to a file; read it with load_tube_vector.");
   m.def("load_tube", py::overload_cast<const std::string&, TD>(&load_tube), py::arg("path"),
-        py::arg("tdomain") = TD(), "Reads a Tube written by save_tube, on tdomain if given (same time points).");
+        py::arg("tdomain") = TD(), DOC(load_tube, string_TDomain));
   m.def("load_tube_vector", py::overload_cast<const std::string&, TD>(&load_tube_vector), py::arg("path"),
-        py::arg("tdomain") = TD(), "Reads a TubeVector written by save_tube, on tdomain if given.");
+        py::arg("tdomain") = TD(), DOC(load_tube_vector, string_TDomain));
 }
 
 void init_tube_vector(py::module_& m) {
   using V = TubeVector;
-  py::class_<V, std::shared_ptr<V>> c(m, "TubeVector", "n tubes on one TDomain; v[i] is a live reference.");
+  py::class_<V, std::shared_ptr<V>> c(m, "TubeVector", DOC(TubeVector));
   def_copy(c);
   const auto from_arrays = [](TD td, const py::handle& slices, const py::object& gates) {
     const std::size_t n = td->nb_slices();
@@ -446,28 +444,28 @@ void init_tube_vector(py::module_& m) {
         }),
         py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(), kArraysDoc)
       .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
-           "From a vector expression of t, e.g. '(cos(t), sin(t))'.")
-      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"), "From a Function of one variable t.")
+           DOC(TubeVector, TubeVector, TDomain_string))
+      .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"), DOC(TubeVector, TubeVector, TDomain_Function))
       .def(py::init<TD, std::size_t, const Interval&>(), py::arg("tdomain"), py::arg("n"), py::arg("x") = Interval(),
-           "n components, every slice and gate = x.")
+           DOC(TubeVector, TubeVector, TDomain_size_t_Interval))
       .def(py::init<TD, const IntervalVector&>(), py::arg("tdomain"), py::arg("x"),
-           "Constant in time: component i = x[i].")
+           DOC(TubeVector, TubeVector, TDomain_IntervalVector))
       // Registered after the box form: a list of ndarrays is taken here (no conversion needed), a list
       // of [lb, ub] pairs by IntervalVector.
       .def(py::init([from_arrays](TD td, const std::vector<py::array>& slices, const py::object& gates) {
              return from_arrays(td, py::cast(slices), gates);
            }),
            py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(), kArraysDoc)
-      .def(py::init<std::vector<Tube>>(), py::arg("tubes"), "From Tubes on one TDomain (copied).")
-      .def("size", &V::size, "The dimension n.")
+      .def(py::init<std::vector<Tube>>(), py::arg("tubes"), DOC(TubeVector, TubeVector, vector_Tube))
+      .def("size", &V::size, DOC(TubeVector, size))
       .def("__len__", &V::size)
-      .def("tdomain", &V::tdomain, "The TDomain (shared).")
-      .def("nb_slices", &V::nb_slices, "N, the number of slices.")
+      .def("tdomain", &V::tdomain, DOC(TubeVector, tdomain))
+      .def("nb_slices", &V::nb_slices, DOC(TubeVector, nb_slices))
       // The component itself (a heap object of its own, shared): a live
       // reference that stays valid whatever happens to the vector, and that
       // ContractorNetwork identifies with the component of DomainRef.component.
       .def("__getitem__", [](V& v, long long i) { return v.shared_component(py_index(i, v.size(), "TubeVector")); },
-           py::arg("i"), "Component i (negative i from the end), a live reference.")
+           py::arg("i"), DOC(TubeVector, op_index))
       .def("__setitem__",
            [](V& v, long long i, const Tube& x) {
              Tube& xi = v[py_index(i, v.size(), "TubeVector")];
@@ -475,20 +473,20 @@ void init_tube_vector(py::module_& m) {
              xi = x;
            },
            py::arg("i"), py::arg("x"), "Component i := a copy of the tube x (same TDomain).")
-      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), "Components i..j (inclusive), copied.")
-      .def("slice", &V::slice, py::arg("k"), "The box of slice k.")
-      .def("gate", &V::gate, py::arg("k"), "The box of gate k.")
+      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), DOC(TubeVector, subvector))
+      .def("slice", &V::slice, py::arg("k"), DOC(TubeVector, slice))
+      .def("gate", &V::gate, py::arg("k"), DOC(TubeVector, gate))
       .def("__call__", py::overload_cast<double>(&V::operator(), py::const_), py::arg("t"),
-           "Component-wise Tube.__call__: a box [x](t) (t a float) or [x]([t]) (t an Interval).")
+           DOC(TubeVector, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&V::operator(), py::const_), py::arg("t"))
-      .def("codomain", &V::codomain, "The box hull of every slice and gate.")
-      .def("volume", &V::volume, "Sum over slices of (slice width) x (volume of the slice box), rounded up.")
-      .def("max_thickness", &V::max_thickness, "The largest slice diameter over the components.")
-      .def("is_empty", &V::is_empty, "True if some component is empty.")
-      .def("is_subset", &V::is_subset, py::arg("y"), "Component-wise Tube.is_subset.")
-      .def("contains", &V::contains, py::arg("trajectories"), "One Trajectory per component, each inside.")
+      .def("codomain", &V::codomain, DOC(TubeVector, codomain))
+      .def("volume", &V::volume, DOC(TubeVector, volume))
+      .def("max_thickness", &V::max_thickness, DOC(TubeVector, max_thickness))
+      .def("is_empty", &V::is_empty, DOC(TubeVector, is_empty))
+      .def("is_subset", &V::is_subset, py::arg("y"), DOC(TubeVector, is_subset))
+      .def("contains", &V::contains, py::arg("trajectories"), DOC(TubeVector, contains))
       .def("contains", [](const V& x, const TrajectoryVector& y) { return x.contains(y.components()); },
-           py::arg("trajectory"), "The components of the TrajectoryVector, each inside (rigorous).")
+           py::arg("trajectory"), DOC(TubeVector, contains))
       .def("slices_array", [](const V& v) { return components_array(v, false); },
            "(dim, N, 2) numpy array of slice bounds ([inf, -inf] for empty); TubeVector(td, a) takes it back.")
       .def("gates_array", [](const V& v) { return components_array(v, true); },
@@ -536,7 +534,7 @@ void init_tube_vector(py::module_& m) {
           py::arg("y"), py::arg("k") = py::none(), py::kw_only(), py::arg("t") = py::none(),
           "Tube.set component-wise with a box y: set(y), set(y, k) (slice index), set(y, t=t) (the gate at\n"
           "time t, sampling the TDomain at t if needed).")
-      .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"), "Gate k := the box y.")
+      .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"), DOC(TubeVector, set_gate))
       .def(py::self == py::self)
       .def(py::self != py::self)
       .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),
