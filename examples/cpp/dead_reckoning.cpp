@@ -19,7 +19,12 @@
 //             0.01 (|A(0)| + |B(0)|) + 0.001 ∫ (|A| + |B|), with A, B the
 //             adjoint integrals; the second-order remainder is bounded with
 //             |e3|, |e4| <= 0.01 + 0.001 t. Computed at checkpoints, then
-//             propagated by (3) in between and intersected with (3).
+//             propagated by (3) in between and intersected with (3);
+//  5. ivp:    CtcIvp (validated Taylor integration with Lohner's wrapping,
+//             docs/ivp.md) on x' = f(x, u): the known part of the inputs
+//             written in f with the time as a state (tau' = 1), the noise
+//             n = u - u* as an input tube of width 2/1000 (a differential
+//             inclusion: any n(t) in it).
 // The nominal and extreme trajectories (RK4, fine step) are checked inside.
 #include <algorithm>
 #include <array>
@@ -35,6 +40,7 @@
 #include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 #include "sillage/interval/elementary.h"
@@ -171,6 +177,23 @@ TubeVector solve_linear(const Problem& p, const TaylorSolution& ty, std::size_t 
   return x;
 }
 
+// ---- 5. validated integration (CtcIvp) ----
+// State (x1, x2, x3, x4, tau), inputs (n1, n2) = the noise of (3.16): the
+// nominal inputs are smooth functions of tau, so the Taylor series see them;
+// only the noise, not differentiable, is an input tube. Forward only (x0 is
+// the only bounded gate before the run).
+TubeVector solve_ivp(const Problem& p) {
+  const CtcIvp ctc(Function({"x1", "x2", "x3", "x4", "tau", "n1", "n2"},
+                            "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)"),
+                   2, 10, TimePropag::FORWARD);
+  TubeVector x(p.td, 5);
+  const IntervalVector b = initial_box();
+  x.set_gate(0, IntervalVector{b[0], b[1], b[2], b[3], Interval(0.0)});
+  const TubeVector noise(p.td, 2, kNoise);
+  if (!ctc.contract(x, noise)) std::printf("  ivp: EMPTY (no trajectory fits x0 and the inputs)\n");
+  return x.subvector(0, 3);
+}
+
 // ---- checks: RK4 trajectories (fine step δ/4) sampled at the gates and inside slices ----
 struct Check {
   std::size_t misses = 0, borderline = 0;  // excess > 1e-9, excess in (0, 1e-9]
@@ -272,10 +295,13 @@ int main(int argc, char** argv) {
       return ty.x;
     });
     run("linear", [&] { return solve_linear(p, ty, 64); });
+    // CtcIvp never steps across a gate: 64000 slices cost ~19 s CPU for the
+    // same box as 12800 (the demo stays under 30 s); δ = 0.001 shows the others.
+    if (dt >= 0.005) run("ivp", [&] { return solve_ivp(p); });
     const double t_total = cpu_seconds() - t_start;
 
     const std::vector<Path> paths = reference_paths(dt);
-    std::printf("delta = %g (%zu slices), all four resolutions %.3f s CPU\n", dt, N, t_total);
+    std::printf("delta = %g (%zu slices), all %zu resolutions %.3f s CPU\n", dt, N, results.size(), t_total);
     for (std::size_t m = 0; m < results.size(); ++m) {
       const TubeVector& x = results[m].second;
       Check c;
@@ -288,17 +314,25 @@ int main(int argc, char** argv) {
     }
     const Path& nom = paths.front();
     std::printf("  nominal RK4 p(tf) = (%.4f, %.4f)\n", nom.x.back()[0], nom.x.back()[1]);
+    // The hull of the sampled final positions: an inner bound of the true set.
+    Interval h1 = Interval::empty(), h2 = Interval::empty();
+    for (const Path& path : paths) h1 |= Interval(path.x.back()[0]), h2 |= Interval(path.x.back()[1]);
+    std::printf("  hull of the 17 RK4 p(tf): %s; CtcDeriv (cn) %s, CtcIvp %s\n", box_str(h1, h2).c_str(),
+                box_str(results[1].second[0].gate(N), results[1].second[1].gate(N)).c_str(),
+                results.size() > 4 ? box_str(results[4].second[0].gate(N), results[4].second[1].gate(N)).c_str()
+                                   : "not run");
     if (dt == 0.005) {
       summary = "delta=0.005: p(64) in " + box_str(results[0].second[0].gate(N), results[0].second[1].gate(N)) +
                 " (plain), " + box_str(results[1].second[0].gate(N), results[1].second[1].gate(N)) + " (cn), " +
                 box_str(results[2].second[0].gate(N), results[2].second[1].gate(N)) + " (taylor), " +
-                box_str(results[3].second[0].gate(N), results[3].second[1].gate(N)) + " (linear)";
+                box_str(results[3].second[0].gate(N), results[3].second[1].gate(N)) + " (linear), " +
+                box_str(results[4].second[0].gate(N), results[4].second[1].gate(N)) + " (ivp)";
       std::vector<double> ts, x1, x2;
       for (std::size_t j = 0; j < nom.t.size(); j += 4) ts.push_back(nom.t[j]), x1.push_back(nom.x[j][0]),
                                                         x2.push_back(nom.x[j][1]);
       const Trajectory tr1(ts, x1), tr2(ts, x2);
-      const char* names[] = {"plain", "cn", "taylor", "linear"};
-      for (std::size_t m : {std::size_t(0), std::size_t(3)}) {
+      const char* names[] = {"plain", "cn", "taylor", "linear", "ivp"};
+      for (std::size_t m : {std::size_t(0), std::size_t(3), std::size_t(4)}) {
         const std::string f = std::string("dead_reckoning_") + names[m] + ".svg";
         tube_vector_figure(results[m].second, 0, 1,
                            std::string("[x1] x [x2], ") + names[m] + ", delta = 0.005", {}, &tr1, &tr2)
@@ -311,6 +345,16 @@ int main(int argc, char** argv) {
             .save((out / g).string());
         figures.emplace_back(g, std::string("Thickness d(t) of [x1](.) x [x2](.), ") + names[m]);
       }
+      // CtcDeriv (cn, blue) and CtcIvp (orange, drawn over it) in one figure.
+      Figure cmp = tube_vector_figure(results[1].second, 0, 1, "[x1] x [x2]: CtcDeriv (blue) vs CtcIvp (orange)",
+                                      {}, &tr1, &tr2);
+      TubeStyle orange;
+      orange.slices = Style{"#f6c28b", "#c25e00", 0.4, 1.0, "slice"};
+      draw_tube_vector_2d(cmp, results[4].second, 0, 1, orange, &tr1, &tr2);
+      cmp.save((out / "dead_reckoning_deriv_vs_ivp.svg").string());
+      figures.emplace_back("dead_reckoning_deriv_vs_ivp.svg",
+                           "Dead reckoning, delta = 0.005: CtcDeriv network (3.18) in blue, CtcIvp in orange, "
+                           "nominal path in red");
     }
   }
   example::print_result("dead_reckoning", summary, all_inside, figures);

@@ -3,6 +3,9 @@ x1' = 10 cos x3, x2' = 10 sin x3, x3' = u, u in -cos((t+33)/5) + [-0.02, 0.02],
 x(0) in (4.26), t in [0, 14]. A ContractorNetwork with CtcDeriv (x' = v) and
 the pointwise contractors v1 = 10 cos x3, v2 = 10 sin x3; run from x0, then
 with the final box x(14) in [53.9, 55.9] x [6.9, 8.9] x [-2.36, -2.32].
+Each run again by CtcIvp (validated Taylor integration, docs/ivp.md): the known
+part of u written in f with the time as a state (tau' = 1), the error of u as an
+input tube [-0.02, 0.02]; a matplotlib figure compares the two tubes.
 The true path (u*, centre of x0) is checked inside the tubes."""
 import math
 import time
@@ -37,6 +40,42 @@ def solve(td, final_box):
     return x, stats
 
 
+IVP_F = Function(["x1", "x2", "x3", "tau", "n"], "(10*cos(x3), 10*sin(x3), -cos((tau+33)/5) + n, 1)")
+
+
+def solve_ivp(td, final_box):
+    """CtcIvp on (x1, x2, x3, tau), input n = u - u*: forward from x0, and backward from
+    x(14) too when the final box is given. Returns (x1, x2, x3) and the success flag."""
+    ctc = sillage.CtcIvp(IVP_F, 1, 10, sillage.TimePropag.FWD_BWD if final_box else sillage.TimePropag.FORWARD)
+    b = initial_box()
+    x = TubeVector(td, 4)
+    x.set_gate(0, IntervalVector([b[0], b[1], b[2], Interval(0.0)]))
+    if final_box:
+        x.set_gate(td.nb_slices(), IntervalVector([FINAL[0], FINAL[1], FINAL[2], Interval(TF)]))
+    ok = ctc.contract(x, TubeVector(td, 1, bound(Interval(-0.02, 0.02))))
+    if not ok:
+        print("  CtcIvp: EMPTY (no trajectory from x0 with the inputs reaches the final box)")
+    return x.subvector(0, 2), ok
+
+
+def compare_figure(deriv, ivp, path, label, filename):
+    """[x1] x [x2] of the CtcDeriv network (blue) and of CtcIvp (orange, over it), matplotlib."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from sillage.plot_tube import plot_tube_vector_2d
+
+    fig, ax = plt.subplots(figsize=(6, 6))
+    plot_tube_vector_2d(ax, deriv, 0, 1, color="#a9cdf2", edgecolor="#2a6aa8")
+    plot_tube_vector_2d(ax, ivp, 0, 1, color="#f6c28b", edgecolor="#c25e00", autoscale=False)
+    ax.plot(path[:, 0], path[:, 1], color="#d62728", linewidth=1.0)
+    ax.set_xlabel("x1")
+    ax.set_ylabel("x2")
+    ax.set_title(f"Causal chain {label}: CtcDeriv (blue) vs CtcIvp (orange)")
+    fig.savefig(filename, dpi=100)
+    plt.close(fig)
+
+
 def truth(n):
     """RK4 of the true car (u*, centre of x0), sampled at the n+1 time points."""
     def f(t, x):
@@ -55,20 +94,33 @@ def main():
         x, stats = solve(td, final_box)
         elapsed = time.perf_counter() - t0
         xf = x.gate(n)
-        inside = all(x[i].gates_array()[k, 0] - 1e-9 <= path[k, i] <= x[i].gates_array()[k, 1] + 1e-9
-                     for i in range(3) for k in range(n + 1))
+        t0 = time.perf_counter()
+        xi, ivp_ok = solve_ivp(td, final_box)
+        elapsed_ivp = time.perf_counter() - t0
+
+        def inside(tube):
+            g = [tube[i].gates_array() for i in range(3)]
+            return all(g[i][k, 0] - 1e-9 <= path[k, i] <= g[i][k, 1] + 1e-9 for i in range(3) for k in range(n + 1))
+
         label = "with the final box" if final_box else "from x0 only"
-        ok = check_stats(stats, label) and enclosure_ok(x) and inside and ok
+        ok = (check_stats(stats, label) and enclosure_ok(x) and inside(x) and ivp_ok and enclosure_ok(xi)
+              and inside(xi) and ok)
         print(f"{label}: {stats.iterations} iterations, {stats.contractor_calls} calls, {elapsed:.3f} s; "
-              f"x(14) in {xf}; truth inside: {inside}")
+              f"x(14) in {xf}; truth inside: {inside(x)}")
+        print(f"  CtcIvp ({elapsed_ivp:.3f} s): x(14) in {xi.gate(n)}; truth inside: {inside(xi)}")
         if not final_box:
-            summary = f"x(14) in [{xf[0].lb():.4f}, {xf[0].ub():.4f}] x [{xf[1].lb():.4f}, {xf[1].ub():.4f}]"
+            xif = xi.gate(n)
+            summary = (f"x(14) in [{xf[0].lb():.4f}, {xf[0].ub():.4f}] x [{xf[1].lb():.4f}, {xf[1].ub():.4f}]; "
+                       f"CtcIvp [{xif[0].lb():.4f}, {xif[0].ub():.4f}] x [{xif[1].lb():.4f}, {xif[1].ub():.4f}]")
             print(f"  validated-integration box {CAPD[0]} x {CAPD[1]}; ours inside: "
                   f"{xf[0].is_subset(CAPD[0]) and xf[1].is_subset(CAPD[1])}")
         tag = "final" if final_box else "x0"
         fig = sillage.tube_vector_figure(x, 0, 1, f"Causal chain, {label} (Python)")
         fig.save(str(out / f"causal_chain_{tag}_py.svg"))
         figures.append((f"causal_chain_{tag}_py.svg", f"Causal chain (4.25) {label}, Python"))
+        compare_figure(x, xi, path, label, out / f"causal_chain_{tag}_deriv_vs_ivp_py.png")
+        figures.append((f"causal_chain_{tag}_deriv_vs_ivp_py.png",
+                        f"Causal chain (4.25) {label}: CtcDeriv network in blue, CtcIvp in orange"))
     print_result("causal_chain", summary, ok, figures)
 
 

@@ -7,7 +7,10 @@ in the C++ example:
   taylor: slice integrals by first-order Taylor forms from the gates
           (sillage.primitive_taylor / taylor_increments);
   linear: linearisation around the nominal path with a bounded second-order
-          remainder, at 64 checkpoints, intersected with taylor.
+          remainder, at 64 checkpoints, intersected with taylor;
+  ivp:    CtcIvp (validated Taylor integration, docs/ivp.md) on x' = f(x, u):
+          the nominal inputs written in f with the time as a state (tau' = 1),
+          the noise as an input tube (any n(t) within 1/1000).
 The nominal and extreme trajectories (RK4, step delta/4) are checked inside."""
 import time
 
@@ -110,6 +113,22 @@ def solve_linear(td, taylor, checkpoints=64):
     return x
 
 
+IVP_F = Function(["x1", "x2", "x3", "x4", "tau", "n1", "n2"],
+                 "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)")
+
+
+def solve_ivp(td):
+    """Validated integration by CtcIvp, forward from x0 (the only bounded gate):
+    state (x1, x2, x3, x4, tau), inputs (n1, n2) = the noise of (3.16) as tubes."""
+    ctc = sillage.CtcIvp(IVP_F, 2, 10, sillage.TimePropag.FORWARD)
+    b = initial_box()
+    x = TubeVector(td, 5)
+    x.set_gate(0, IntervalVector([b[0], b[1], b[2], b[3], Interval(0.0)]))
+    if not ctc.contract(x, TubeVector(td, 2, bound(NOISE))):
+        print("  ivp: EMPTY (no trajectory fits x0 and the inputs)")
+    return x.subvector(0, 3)
+
+
 def rk4_paths(dt):
     """Nominal path first, then the corners of x0 (x3, x4) x constant input errors
     +-0.001 (x1, x2 at corners too); states sampled every h = dt/4: shape (steps+1, paths, 4)."""
@@ -150,6 +169,25 @@ def check(x, paths):
     return misses, borderline, worst
 
 
+def compare_figure(deriv, ivp, paths, out):
+    """[x1] x [x2] of the CtcDeriv network (blue) and of CtcIvp (orange, over it), matplotlib."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from sillage.plot_tube import plot_tube_vector_2d
+
+    fig, ax = plt.subplots(figsize=(6, 6))
+    plot_tube_vector_2d(ax, deriv, 0, 1, color="#a9cdf2", edgecolor="#2a6aa8")
+    plot_tube_vector_2d(ax, ivp, 0, 1, color="#f6c28b", edgecolor="#c25e00", autoscale=False)
+    ax.plot(paths[:, 0, 0], paths[:, 0, 1], color="#d62728", linewidth=1.0)
+    ax.set_xlabel("x1")
+    ax.set_ylabel("x2")
+    ax.set_title("Dead reckoning, delta = 0.005: CtcDeriv (blue) vs CtcIvp (orange)")
+    fig.savefig(out / "dead_reckoning_deriv_vs_ivp_py.png", dpi=100)
+    plt.close(fig)
+    return ("dead_reckoning_deriv_vs_ivp_py.png", "CtcDeriv network (3.18) in blue, CtcIvp in orange, nominal in red")
+
+
 def box_str(a, b):
     return f"[{a.lb():.2f}, {a.ub():.2f}] x [{b.lb():.2f}, {b.ub():.2f}]"
 
@@ -171,7 +209,7 @@ def main():
             return taylor[0]
 
         for name, solve in (("plain", solve_plain), ("cn", solve_cn), ("taylor", run_taylor),
-                            ("linear", lambda td: solve_linear(td, taylor))):
+                            ("linear", lambda td: solve_linear(td, taylor)), ("ivp", solve_ivp)):
             t0 = time.perf_counter()
             x = solve(td)
             elapsed = time.perf_counter() - t0
@@ -181,10 +219,16 @@ def main():
             print(f"  {name:6s} p(tf) in {box_str(x[0].gate(n), x[1].gate(n))}  ({elapsed:.3f} s); "
                   f"{paths.shape[1]} RK4 paths: {misses} misses, {border} borderline, max excess {worst:.1e}")
         print(f"  nominal RK4 p(tf) = ({paths[-1, 0, 0]:.4f}, {paths[-1, 0, 1]:.4f})")
+        end = paths[-1, :, :2]  # the sampled final positions: their hull is an inner bound of the true set
+        print(f"  hull of the {paths.shape[1]} RK4 p(tf): [{end[:, 0].min():.2f}, {end[:, 0].max():.2f}] x "
+              f"[{end[:, 1].min():.2f}, {end[:, 1].max():.2f}]; CtcDeriv (cn) "
+              f"{box_str(results['cn'][0].gate(n), results['cn'][1].gate(n))}, CtcIvp "
+              f"{box_str(results['ivp'][0].gate(n), results['ivp'][1].gate(n))}")
         if dt == 0.005:
             summary = "delta=0.005: p(64) in " + ", ".join(
                 f"{box_str(results[k][0].gate(n), results[k][1].gate(n))} ({k})"
-                for k in ("plain", "cn", "taylor", "linear"))
+                for k in ("plain", "cn", "taylor", "linear", "ivp"))
+            figures.append(compare_figure(results["cn"], results["ivp"], paths, out))
             try:
                 fig = sillage.tube_vector_figure(results["plain"], 0, 1, "[x1] x [x2], delta = 0.005")
                 fig.save(str(out / "dead_reckoning_py.svg"))

@@ -50,3 +50,18 @@ def test_taylor_and_linear_contain_the_paths_and_tighten():
     assert linear[0].gate(n).is_superset(Interval(33.9, 42.9))
     assert linear[1].gate(n).is_superset(Interval(50.0, 56.1))
 
+
+
+def test_ivp_contains_the_paths_and_beats_the_network():
+    """CtcIvp (validated integration) on the coarse slicing: bounded, every RK4 path inside
+    (RK4's own error aside, 1e-9), and the final box far inside the CtcDeriv network's."""
+    td = TDomain(0.0, 64.0, 0.05)
+    ivp, cn = dr.solve_ivp(td), dr.solve_cn(td)
+    assert len(ivp) == 4 and not ivp.is_empty()
+    misses, _, _ = dr.check(ivp, dr.rk4_paths(0.05))
+    assert misses == 0
+    n = td.nb_slices()
+    for i in (0, 1):
+        g = ivp[i].gate(n)
+        assert g.is_subset(cn[i].gate(n)) and g.diam() < 0.25 * cn[i].gate(n).diam()
+        assert g.diam() < 13  # [32.66, 44.00] x [47.81, 58.32] measured

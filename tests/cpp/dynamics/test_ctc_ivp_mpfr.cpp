@@ -8,29 +8,15 @@
 #include <array>
 #include <cmath>
 
+#include "mpfr_big.h"
 #include "sillage/dynamics/ctc_ivp.h"
 
 using namespace sillage;
 
 namespace {
 
-constexpr mpfr_prec_t kBits = 256;
-
-// A MPFR number with RAII.
-struct Big {
-  mpfr_t v;
-  Big() { mpfr_init2(v, kBits); mpfr_set_zero(v, 1); }
-  explicit Big(double d) { mpfr_init2(v, kBits); mpfr_set_d(v, d, MPFR_RNDN); }
-  Big(const Big& o) { mpfr_init2(v, kBits); mpfr_set(v, o.v, MPFR_RNDN); }
-  Big& operator=(const Big& o) { mpfr_set(v, o.v, MPFR_RNDN); return *this; }
-  ~Big() { mpfr_clear(v); }
-};
-
-// The exact value is in x (its bounds compared with the 256-bit value).
-::testing::AssertionResult encloses(const Interval& x, const Big& exact) {
-  if (mpfr_cmp_d(exact.v, x.lb()) >= 0 && mpfr_cmp_d(exact.v, x.ub()) <= 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << x << " misses " << mpfr_get_d(exact.v, MPFR_RNDN);
-}
+using mpfr_ref::Big;
+using mpfr_ref::encloses;
 
 // x(t) = 2 atan(e^{-t} tan(x0/2)), t and x0 doubles taken exactly.
 Big sin_flow(double x0, double t) {
