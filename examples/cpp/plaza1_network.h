@@ -85,8 +85,11 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   ContractorNetwork cn;
   cn.add(std::make_shared<CtcIncrement>(), {psi, dpsi_t});
   cn.add(std::make_shared<CtcDeriv>(), {psi, omega});
-  // |ψ''| <= α: inside a period the heading stays within α δ² / 8 of the chord of its gates.
-  cn.add(std::make_shared<CtcSecondDeriv>(), {psi, std::make_shared<Tube>(td, Interval(-b.turn_accel, b.turn_accel))});
+  // |ψ''| <= α: inside a period the heading stays within α δ² / 8 of the chord of its gates
+  // (an unbounded α states nothing: no contractor then).
+  if (std::isfinite(b.turn_accel)) {
+    cn.add(std::make_shared<CtcSecondDeriv>(), {psi, std::make_shared<Tube>(td, Interval(-b.turn_accel, b.turn_accel))});
+  }
   // The odometry increments, both ways: the heading gives the positions, the positions the heading.
   cn.add(std::make_shared<CtcHeading>(b.track), {s.p, psi, dist_t, omega});
   // The same over windows of heading_window seconds, one every quarter of a window: the heading

@@ -34,7 +34,11 @@ TEST(ProblemPlaza1, IsTheCppNetworkOnTheRealData) {
   ASSERT_FALSE(r.empty) << r.why_empty;
 
   const example::Plaza1Data d = example::load_plaza1(kDir);
-  const plaza1::Solution cpp = plaza1::solve(d, plaza1::with_start({}, d), true);
+  // The file's network is the example's without the turn-acceleration and window contractors
+  // (CtcSecondDeriv, CtcHeadingWindow), which the problem format has no kind for yet.
+  plaza1::Bounds no_accel;
+  no_accel.turn_accel = INFINITY;
+  const plaza1::Solution cpp = plaza1::solve(d, plaza1::with_start(no_accel, d), true, -1, 0.0);
   ASSERT_FALSE(cpp.stats.empty);
   const TubeVector& fp = *r.built.var("p").tubes;
   ASSERT_EQ(fp.nb_slices(), cpp.p->nb_slices());
