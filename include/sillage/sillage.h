@@ -60,6 +60,7 @@
 #include "sillage/cn/domain.h"
 #include "sillage/cn/domain_ref.h"
 #include "sillage/cn/network_ctc.h"
+#include "sillage/cn/scheduling.h"
 #include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"

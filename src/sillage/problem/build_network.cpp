@@ -178,9 +178,27 @@ std::size_t nb_slices_for(const Problem& p, double delta) {
   return static_cast<std::size_t>(std::ceil((p.time.tf - p.time.t0) / delta));
 }
 
+namespace {
+
+BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td);
+
+}  // namespace
+
 BuiltProblem build_network(const Problem& p, double delta) {
+  return build_on(p, p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points));
+}
+
+BuiltProblem build_network(const Problem& p, const std::vector<double>& points) {
+  if (points.size() < 2 || points.front() != p.time.t0 || points.back() != p.time.tf)
+    throw Error("build_network: time points from t0 to tf expected");
+  return build_on(p, TDomain::create(points));
+}
+
+namespace {
+
+BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   BuiltProblem b;
-  b.td = p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points);
+  b.td = std::move(td);
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
       if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
@@ -369,5 +387,7 @@ BuiltProblem build_network(const Problem& p, double delta) {
   }
   return b;
 }
+
+}  // namespace
 
 }  // namespace sillage
