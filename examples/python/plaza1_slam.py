@@ -68,8 +68,12 @@ def main():
     # 2. The observation: the four ranges; the beacon positions are not used.
     ids = sorted(d["beacons"])
     rb = RangeBounds(b.range_short, b.range_long, b.time_err, b.speed_max)
-    z = range_observation_tubes(dead.tdomain(), list(d["rt"]), [int(i) for i in d["rid"]], list(d["r"]), ids, rb)
-    print(f"  observation: {z.size()} range tubes ({rb!r})")
+    try:
+        z = range_observation_tubes(dead.tdomain(), list(d["rt"]), [int(i) for i in d["rid"]], list(d["r"]), ids, rb)
+        print(f"  observation: {z.size()} range tubes ({rb!r})")
+    except sillage.Error as e:  # the ranges contradict each other under these bounds: an answer, not a success
+        print(f"  observation inconsistent: {e}")
+        z, ok = None, False
 
     # 3. C_{p=>z}, fast then accurate, one iteration at a time: Table 7.2.
     p = sillage.TubeVector(dead)
