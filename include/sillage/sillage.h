@@ -103,6 +103,7 @@
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/slam/ctc_t1t2.h"
 #include "sillage/slam/observation.h"
+#include "sillage/slam/scalar_loops.h"
 #include "sillage/slam/slam_figures.h"
 #include "sillage/slam/slam_row.h"
 #include "sillage/slam/temporal_slam.h"
