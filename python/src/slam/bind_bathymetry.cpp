@@ -165,6 +165,7 @@ void init_bathymetry_mission(py::module_& m) {
       .def_readwrite("rail_spacing", &BathymetryMissionOptions::rail_spacing,
                      DOC(BathymetryMissionOptions, rail_spacing))
       .def_readwrite("depth", &BathymetryMissionOptions::depth, DOC(BathymetryMissionOptions, depth))
+      .def_readwrite("transects", &BathymetryMissionOptions::transects, DOC(BathymetryMissionOptions, transects))
       .def_readwrite("seabed", &BathymetryMissionOptions::seabed, DOC(BathymetryMissionOptions, seabed))
       .def_readwrite("tide", &BathymetryMissionOptions::tide, DOC(BathymetryMissionOptions, tide))
       .def_readwrite("bounds", &BathymetryMissionOptions::bounds, DOC(BathymetryMissionOptions, bounds));
