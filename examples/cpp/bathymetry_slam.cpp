@@ -10,7 +10,10 @@
 // fix (+-1 m) in the middle of the mission; the SLAM propagates it backward
 // and forward, and the table reports the contraction of [p](t_0) too.
 // --duration shortens the mission (the demo); the full 5760 s is the default
-// of the bench (bench/bench_slam_bathymetry.cpp).
+// of the bench (bench/bench_slam_bathymetry.cpp). --seabed 2 --transects 1
+// --beam-angle 0 --beam-spread 3 is the coastal mission (coastal seabed,
+// east-west transects, a 6 deg narrow-beam altimeter); --study 1 prints, per
+// proven detection, what limits the contraction (bathymetry_study.h) and stops.
 #include <cmath>
 #include <cstdio>
 #include <string>

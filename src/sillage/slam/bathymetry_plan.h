@@ -4,9 +4,10 @@
 // smoothstep (so the yaw is C^2 with a bounded second derivative), and a depth
 // programme of smootherstep changes. Layout on a square area of side L:
 // start near the south-west corner, diagonal to the north-east, west along
-// the northern edge (or: two east-west transects across the rails), diagonal to the south-east (the overall crossing), then
-// north-south rails towards the west, joined by keyhole turns (a turn away by
-// beta then back by pi + beta, beta chosen for the rail spacing).
+// the northern edge (or: two east-west transects across the rails), diagonal
+// to the south-east (the overall crossing), then north-south rails towards
+// the west, joined by keyhole turns (a turn away by beta then back by
+// pi + beta, beta chosen for the rail spacing).
 #include <vector>
 
 namespace sillage::detail {

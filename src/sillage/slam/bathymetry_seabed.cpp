@@ -31,8 +31,8 @@ struct Wave {  // amp sin(k (cos th x + sin th y) + phase)
 };
 
 // Three sand-wave trains (wavelengths 10-16, 18-26, 28-40 m, random directions
-// and phases) whose amplitudes sum to `height`: no single period, so a depth
-// seen on one pass is matched at few places of another.
+// and phases) whose amplitudes sum to `height`: relief at the scale of a
+// drift window with no single period.
 std::vector<Wave> dune_trains(detail::BathymetryRng rng, double height) {
   if (!(height > 0)) return {};
   const double lmin[3] = {10, 18, 28}, lmax[3] = {16, 26, 40}, share[3] = {0.3, 0.33, 0.37};
