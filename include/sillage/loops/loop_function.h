@@ -66,12 +66,22 @@ class LoopFunction {
   // which the zero tests accept (they read an empty image as a bug).
   PlaneFunction function() const;
   PlaneJacobian jacobian_function() const;
+  // function(), remembering the primitive ranges of every [t1] and [t2] it
+  // has met: the boxes of a paving share their sides, so the zero tests of
+  // one region ask the trees a fraction of the times. The same values as
+  // function(). Its copies share that memory: call it from one thread at a
+  // time (one per region, as TPlane::compute_proofs does).
+  PlaneFunction memoized_function() const;
 
  private:
   using Trees = std::array<std::shared_ptr<const SynthesisTree>, 2>;
   static Trees trees_of(const TubeVector& x, const char* what, const char* where);
   IntervalVector clamp(const IntervalVector& t, const char* where) const;
   void check_inside(const Interval& t, const char* where) const;
+  // (7.28): the velocity form f intersected with [p]([t2]) - [p]([t1]).
+  IntervalVector with_positions(IntervalVector f, const IntervalVector& t) const;
+  // What function() answers on [t], given the velocity form there.
+  IntervalVector for_zero_tests(const IntervalVector& t, const IntervalVector& velocity_form) const;
 
   Trees v_;  // velocity components
   Trees p_;  // position components (null without positions)

@@ -144,6 +144,10 @@ class SynthesisTree {
   PrimitiveRange upper_range(const Interval& t) const;
   void ranges(const Interval& t, PrimitiveRange& lower, PrimitiveRange& upper) const;
 
+  // Error if the tree's tube is gone or was modified since the tree was
+  // built, as every query checks: for callers that keep query results.
+  void check_current(const char* where) const { view(where); }
+
   // Bytes held by the tree (with its copies of the arrays, if any; not a tube's storage).
   std::size_t memory_bytes() const;
 

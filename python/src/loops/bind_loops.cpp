@@ -220,12 +220,13 @@ void init_loops(py::module_& m) {
                " evaluations, " + std::to_string(r.nb_unresolved) + " unresolved>";
       });
   // The LoopFunction overloads come first: a LoopFunction is callable, so the
-  // py::function ones would accept it too, and call it through Python.
+  // py::function ones would accept it too, and call it through Python. They
+  // use its memoized form: one per call, which runs on one thread.
   m.def(
       "topological_degree",
       [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const DegreeOptions& o) {
         return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return topological_degree(boxes, f.function(), with_token(o, t));
+          return topological_degree(boxes, f.memoized_function(), with_token(o, t));
         });
       },
       py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
@@ -234,7 +235,7 @@ void init_loops(py::module_& m) {
       "topological_degree",
       [](const std::vector<ContourLoop>& loops, const LoopFunction& f, const DegreeOptions& o) {
         return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return topological_degree(loops, f.function(), with_token(o, t));
+          return topological_degree(loops, f.memoized_function(), with_token(o, t));
         });
       },
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
@@ -300,7 +301,7 @@ void init_loops(py::module_& m) {
       "count_zeros",
       [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
         return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return count_zeros(boxes, degree, f.function(), f.jacobian_function(), with_token(o, t));
+          return count_zeros(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
         });
       },
       py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
@@ -351,7 +352,7 @@ void init_loops(py::module_& m) {
         return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
           SplitOptions with = with_token(o, t);
           with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
-          return split_region(boxes, f.function(), f.jacobian_function(), with);
+          return split_region(boxes, f.memoized_function(), f.jacobian_function(), with);
         });
       },
       py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},

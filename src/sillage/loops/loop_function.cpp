@@ -87,13 +87,25 @@ IntervalVector LoopFunction::velocity_form(const IntervalVector& box) const {
 }
 
 IntervalVector LoopFunction::operator()(const IntervalVector& box) const {
-  IntervalVector f = velocity_form(box);
+  return with_positions(velocity_form(box), box);
+}
+
+IntervalVector LoopFunction::with_positions(IntervalVector f, const IntervalVector& box) const {
   if (has_positions() && !f.is_empty()) {
     const IntervalVector t = clamp(box, "LoopFunction");
     for (std::size_t i = 0; i < 2; ++i) f[i] &= p_[i]->eval(t[1]) - p_[i]->eval(t[0]);  // (7.28)
     if (f.is_empty()) f.set_empty();  // every component empty
   }
   return f;
+}
+
+IntervalVector LoopFunction::for_zero_tests(const IntervalVector& t, const IntervalVector& velocity_form) const {
+  IntervalVector r = with_positions(velocity_form, t);
+  // The zero tests take an empty image of a non-empty box for a broken
+  // inclusion function; here it only means that p and w admit no common
+  // trajectory there. ∫[w] alone still encloses every f* of w.
+  if (r.is_empty() && !t.is_empty() && has_positions()) r = velocity_form;
+  return r;
 }
 
 IntervalMatrix LoopFunction::jacobian(const IntervalVector& box) const {
@@ -105,14 +117,7 @@ IntervalMatrix LoopFunction::jacobian(const IntervalVector& box) const {
 }
 
 PlaneFunction LoopFunction::function() const {
-  return [f = *this](const IntervalVector& t) {
-    IntervalVector r = f(t);
-    // The zero tests take an empty image of a non-empty box for a broken
-    // inclusion function; here it only means that p and w admit no common
-    // trajectory there. ∫[w] alone still encloses every f* of w.
-    if (r.is_empty() && !t.is_empty() && f.has_positions()) r = f.velocity_form(t);
-    return r;
-  };
+  return [f = *this](const IntervalVector& t) { return f.for_zero_tests(t, f.velocity_form(t)); };
 }
 
 PlaneJacobian LoopFunction::jacobian_function() const {

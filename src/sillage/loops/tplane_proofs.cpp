@@ -110,7 +110,6 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     if (l.complete_ && options.newton) proofs[i].newton_boxes = newton_boxes(l, options.newton_inflation);
   }
 
-  const PlaneFunction fn = f.function();
   const PlaneJacobian jac = f.jacobian_function();
   DegreeOptions degree_options;
   degree_options.min_edge_length = options.degree_edge_fraction * eps_;
@@ -132,6 +131,7 @@ void TPlane::prove(const LoopFunction& f, const ProofOptions& options) {
     const Loop& l = detections_[i];
     Proof& p = proofs[i];
     if (!l.complete_) return;
+    const PlaneFunction fn = f.memoized_function();  // one per task: it is not shared between threads
     p.degree = detail::topological_degree(l.boxes_, fn, degree_options, meter).degree;
     for (const IntervalVector& b : p.newton_boxes) {
       if ((p.newton = newton_test(b, fn, jac).proven)) break;

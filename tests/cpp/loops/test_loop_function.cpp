@@ -98,6 +98,44 @@ TEST(LoopFunction, OutlivedTubesAreAnError) {
   EXPECT_THROW(f.velocity(Interval(0, 1)), Error);
 }
 
+// memoized_function answers what function() answers, on every box of a
+// paving-like grid queried twice (the second time from its kept ranges), in
+// both forms, outside the domain and on an empty tube; a tube modified since
+// is an error even for ranges already kept.
+TEST(LoopFunction, MemoizedFunctionAnswersTheSame) {
+  const TubeVector w = small_velocity();
+  const TubeVector p(TDomain::create(0, 4, 0.5), "(t + [-0.25,0.25], t + [-0.25,0.25])");
+  const TubeVector far(TDomain::create(0, 4, 0.5), "(-t + [-0.25,0.25], t)");
+  for (const LoopFunction& f : {LoopFunction(w), LoopFunction(p, w), LoopFunction(far, w)}) {
+    const PlaneFunction plain = f.function(), memo = f.memoized_function();
+    for (int pass = 0; pass < 2; ++pass) {
+      for (double a = -0.5; a < 4.5; a += 0.25) {
+        for (double b = a; b < 4.5; b += 0.75) {
+          const IntervalVector box{Interval(a, a + 0.25), Interval(b, b + 0.75)};
+          if ((box & IntervalVector{Interval(0, 4), Interval(0, 4)}).is_empty()) {
+            EXPECT_THROW(memo(box), Error);
+            continue;
+          }
+          EXPECT_EQ(memo(box), plain(box)) << box;
+          const IntervalVector point{Interval(a), Interval(b)};
+          if (a >= 0 && b <= 4) EXPECT_EQ(memo(point), plain(point)) << point;
+        }
+      }
+    }
+  }
+  auto td = TDomain::create(0, 4, 1);
+  const TubeVector holed({Tube(td, std::vector<Interval>{{-1, 1}, Interval::empty(), {-1, 1}, {-1, 1}}),
+                          Tube(td, Interval(-1, 1))});
+  const IntervalVector box{Interval(0, 1), Interval(2, 3)};
+  EXPECT_EQ(LoopFunction(holed).memoized_function()(box), LoopFunction(holed).function()(box));
+
+  TubeVector v = small_velocity();
+  const PlaneFunction memo = LoopFunction(v).memoized_function();
+  memo(box);
+  v[0].set(Interval(0, 1));
+  EXPECT_THROW(memo(box), Error);  // the same box, its ranges kept: still refused
+}
+
 // A tube with an empty slice holds no trajectory: no detection at all.
 TEST(LoopFunction, EmptyTubeHasNoLoop) {
   auto td = TDomain::create(0, 4, 1);
