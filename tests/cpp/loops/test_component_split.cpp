@@ -160,7 +160,7 @@ TEST(SplitRegion, RandomMapsAgreeWithBruteForceWindingNumbers) {
     o.max_levels = 6;
     const SplitResult r = split_region(cells, f, PlaneJacobian{}, o);
     const DegreeResult whole = topological_degree(cells, f);
-    if (whole.degree && r.degree()) EXPECT_EQ(*whole.degree, *r.degree());
+    if (whole.degree && r.degree()) { EXPECT_EQ(*whole.degree, *r.degree()); }
     for (const SplitPiece& p : r.pieces) {
       for (const IntervalVector& b : p.boxes) EXPECT_TRUE(holds(cells, b[0].mid(), b[1].mid()));
       if (!p.degree) continue;

@@ -410,15 +410,15 @@ TEST(TPlane, SurveyClaimsHoldForTheTrueTrajectory) {
         }
       }
       in_pieces += inside_piece;
-      if (p.proven()) EXPECT_GE(inside_piece, 1u) << p.t_box();
-      if (p.count()) EXPECT_EQ(*p.count(), inside_piece) << p.t_box();
+      if (p.proven()) { EXPECT_GE(inside_piece, 1u) << p.t_box(); }
+      if (p.count()) { EXPECT_EQ(*p.count(), inside_piece) << p.t_box(); }
       EXPECT_TRUE(p.t_box().is_subset(l.t_box()));
       EXPECT_TRUE(p.pieces().empty());
       determined = determined && p.degree();
       degree += p.degree().value_or(0);
     }
-    if (!l.pieces().empty()) EXPECT_EQ(in_pieces, inside[i]);  // every loop lies in a piece
-    if (!l.pieces().empty() && determined && l.degree()) EXPECT_EQ(degree, *l.degree());
+    if (!l.pieces().empty()) { EXPECT_EQ(in_pieces, inside[i]); }  // every loop lies in a piece
+    if (!l.pieces().empty() && determined && l.degree()) { EXPECT_EQ(degree, *l.degree()); }
   }
   for (const Loop& p : tp.proofs()) EXPECT_TRUE(p.proven());
   EXPECT_GE(tp.proofs().size(), tp.nb_proofs());
