@@ -198,6 +198,9 @@ bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const
   const IvpStepper stepper(*ode_, order_);
   const bool zonotope = u != nullptr && nb_inputs() > 0;
   const auto gate_index = [&](std::size_t j) { return sign > 0 ? j : N - j; };
+  for (std::size_t k = 0; k <= N; ++k) {
+    if (x.gate(k).is_empty()) return false;
+  }
   std::size_t start = 0;
   while (start <= N && x.gate(gate_index(start)).is_unbounded()) ++start;
   if (start > N) return true;
@@ -218,7 +221,7 @@ bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const
     for (std::size_t j = p.j0; j <= limit; ++j) {
       const std::size_t k = gate_index(j);
       if (!meet(set, x.gate(k))) break;  // no solution of this piece passes here
-      if (j > p.j0 && p.budget >= 2 && set.box.max_diam() > kSplitGrowth * width0) {
+      if (j > p.j0 && p.budget >= 2 && width0 > 0.0 && set.box.max_diam() > kSplitGrowth * width0) {
         split(p, stack);
         cut = true;
         break;

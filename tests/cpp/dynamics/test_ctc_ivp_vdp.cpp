@@ -146,6 +146,14 @@ TEST(CtcIvpVdp, OnePieceIsTheSingleSetAndZeroIsRefused) {
   ASSERT_TRUE(ctc.contract(b));
   EXPECT_TRUE(a == b);
   EXPECT_EQ(ctc.max_pieces(), 1u);
+  // From a point there is nothing to cut: the pieces' sweep is the one set's.
+  TubeVector c(td, 2), d(td, 2);
+  c.set_gate(0, IntervalVector{Interval(2.0), Interval(0.0)});
+  d.set_gate(0, IntervalVector{Interval(2.0), Interval(0.0)});
+  ASSERT_TRUE(ctc.contract(c));
+  ctc.set_max_pieces(8);
+  ASSERT_TRUE(ctc.contract(d));
+  EXPECT_TRUE(c == d);
   EXPECT_THROW(ctc.set_max_pieces(0), Error);
 }
 
