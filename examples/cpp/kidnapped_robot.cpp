@@ -23,6 +23,14 @@
 // ±0.001) translated so that they pass at each corner of the measurement box
 // at t = 37; with no prior on the position, a translation keeps a path
 // feasible. Every path is sampled at the gates and 3 times inside each slice.
+//
+// The same problem by CtcIvp (validated Taylor integration, docs/ivp.md) at
+// δ = 0.05: heading and speed (x3, x4, τ) alone, forward from x(0), give
+// their box at t = 37 (the reachable set of two integrators of independent
+// inputs is that box); then the whole state, its heading and speed tubes
+// set to those, from gate 37 := the measurement × that box, forward to 64 and
+// backward to 0. The same 65 paths are checked inside; one figure shows both
+// tubes.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,12 +39,14 @@
 #include <string>
 #include <vector>
 
+#include "dead_reckoning_ivp.h"
 #include "example_args.h"
 #include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
@@ -90,6 +100,32 @@ Run solve(const std::shared_ptr<TDomain>& td, bool use_eval = false, bool headin
     (*r.x)[1].set_gate(r.k37, kM2);
   }
   r.stats = cn.contract();
+  r.cpu = cpu_seconds() - start;
+  return r;
+}
+
+// CtcIvp on (x1, x2, x3, x4, tau) with the noise of (3.16) as the input
+// (dead_reckoning_ivp.h): see the header comment. td has 37 as a time point.
+Run solve_ivp(const std::shared_ptr<TDomain>& td) {
+  const double start = cpu_seconds();
+  Run r;
+  r.k37 = static_cast<std::size_t>(td->time_index(kTm));
+  const TubeVector noise(td, 2, dead_reckoning::ivp_noise());
+  const IntervalVector b0 = initial_box(true);
+  const CtcIvp heading(Function({"x3", "x4", "tau", "n1", "n2"}, "(-9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)"),
+                       2, 10, TimePropag::FORWARD);
+  TubeVector h(td, 3);
+  h.set_gate(0, IntervalVector{b0[2], b0[3], Interval(0.0)});
+  bool ok = heading.contract(h, noise);
+  const IntervalVector h37 = h.gate(r.k37);
+  const CtcIvp whole(dead_reckoning::ivp_contractor().function(), 2, 10, TimePropag::FWD_BWD);
+  TubeVector x(td, 5);
+  for (std::size_t i : {2, 3, 4}) x[i] = h[i - 2];  // heading and speed as known forward from x(0)
+  x.set_gate(r.k37, IntervalVector{kM1, kM2, h37[0], h37[1], Interval(kTm)});
+  ok = ok && whole.contract(x, noise);
+  r.stats.empty = !ok;
+  if (!ok) r.stats.emptiness = "CtcIvp: no trajectory of the inputs meets the measurement";
+  r.x = std::make_shared<TubeVector>(x.subvector(0, 3));
   r.cpu = cpu_seconds() - start;
   return r;
 }
@@ -182,6 +218,7 @@ int main(int argc, char** argv) {
   bool ok = true;
   std::string summary;
   std::vector<std::pair<std::string, std::string>> figures;
+  Run ri;  // CtcIvp at δ = 0.05
   for (const double dt : {0.05, 0.01, 0.005}) {
     const auto td = TDomain::create(0.0, kTf, dt);
     td->sample(kTm);
@@ -208,6 +245,20 @@ int main(int argc, char** argv) {
                 "(max excess %.1e), 64 extreme paths inside: %s (max excess %.1e)\n",
                 p0[0].lb(), p0[0].ub(), p0[1].lb(), p0[1].ub(), pf[0].lb(), pf[0].ub(), pf[1].lb(), pf[1].ub(),
                 worst_nominal <= 1e-9 ? "yes" : "NO", worst_nominal, worst <= 1e-9 ? "yes" : "NO", worst);
+    if (dt == 0.05) {
+      ri = solve_ivp(td);
+      double worst_ivp = 0;
+      for (const auto& path : paths) worst_ivp = std::max(worst_ivp, path_excess(*ri.x, path, h));
+      const bool ivp_inside = example::check_stats(ri.stats, "CtcIvp") && example::enclosure_ok(*ri.x) &&
+                              worst_ivp <= 1e-9;
+      ok = ok && ivp_inside;
+      const IntervalVector q0 = ri.x->gate(0).subvector(0, 1), qf = ri.x->gate(N).subvector(0, 1);
+      std::printf("  CtcIvp (%.3f s CPU): d(0) = %.3f, d(37) = %.3f, d(64) = %.3f; p(0) in [%.2f, %.2f] x [%.2f, %.2f], "
+                  "p(64) in [%.2f, %.2f] x [%.2f, %.2f]; 65 paths inside: %s (max excess %.1e)\n",
+                  ri.cpu, diagonal(q0), diagonal(ri.x->gate(ri.k37).subvector(0, 1)), diagonal(qf), q0[0].lb(),
+                  q0[0].ub(), q0[1].lb(), q0[1].ub(), qf[0].lb(), qf[0].ub(), qf[1].lb(), qf[1].ub(),
+                  ivp_inside ? "yes" : "NO", worst_ivp);
+    }
     if (dt == 0.005) {
       char buf[200];
       std::snprintf(buf, sizeof buf, "delta=0.005: d(0) = %.2f, d(37) = %.2f, d(64) = %.2f; %.0f ms", diagonal(p0),
@@ -229,6 +280,20 @@ int main(int argc, char** argv) {
       fig.save((out / "kidnapped_robot.svg").string());
       figures.emplace_back("kidnapped_robot.svg", "Kidnapped robot (4.30): [x1](.) x [x2](.), measurement box in "
                                                   "red, truth in red (Fig. 4.11)");
+      Figure cmp = tube_vector_figure(*r.x, 0, 1,
+                                      "Kidnapped robot: CtcDeriv network, delta = 0.005 (blue) vs CtcIvp, 0.05 (orange)",
+                                      {}, &t1, &t2);
+      TubeStyle orange;
+      orange.slices = Style{"#f6c28b", "#c25e00", 0.4, 1.0, "slice"};
+      draw_tube_vector_2d(cmp, *ri.x, 0, 1, orange, &t1, &t2);
+      cmp.draw_box(IntervalVector{kM1, kM2}, Style{"#e53935", "#b71c1c", 1.0, 0.7, "measurement"});
+      cmp.save((out / "kidnapped_robot_deriv_vs_ivp.svg").string());
+      figures.emplace_back("kidnapped_robot_deriv_vs_ivp.svg",
+                           "Kidnapped robot: the CtcDeriv network in blue, CtcIvp in orange, the measurement box");
+      const IntervalVector qf = ri.x->gate(ri.x->nb_slices()).subvector(0, 1);
+      std::snprintf(buf, sizeof buf, "; CtcIvp d(0) = %.2f, d(64) = %.2f", diagonal(ri.x->gate(0).subvector(0, 1)),
+                    diagonal(qf));
+      summary += buf;
       thickness_figure(r.x->subvector(0, 1), ThicknessMeasure::Diagonal,
                        "Kidnapped robot: thickness d(t) of [x1] x [x2] (Fig. 4.12)")
           .save((out / "kidnapped_robot_thickness.svg").string());

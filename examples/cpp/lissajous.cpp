@@ -15,6 +15,11 @@
 // network is a causal chain: ẍ1 -> ẋ1 -> (ẍ2) -> ẋ2 -> x2. Its pessimism on
 // x2 is the slice-wise wrapping of constraint 2: [ẍ2](k) is as wide as
 // 0.4 (|ẍ1| w(ẋ1(k)) + |ẋ1| w(ẍ1(k))) ≈ 80 δ, integrated twice; so δ matters.
+//
+// The same problem by CtcIvp (validated Taylor integration, docs/ivp.md):
+// constraints 1-2 are the state equations of (x1, x2, ẋ1, ẋ2, τ) with the
+// noise n ∈ [-0.001, 0.001] of ẍ1 as an input tube and τ' = 1 for the known
+// part -10 cos τ; forward from the gate at 0. Both tubes in one figure.
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -26,6 +31,7 @@
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/figures/tube_figure.h"
 
 using namespace sillage;
@@ -59,6 +65,26 @@ Run solve(double dt) {
   cn.add(std::make_shared<CtcDeriv>(), {r.dx, r.ddx});
   cn.add(std::make_shared<CtcDeriv>(), {r.x, r.dx});
   r.stats = cn.contract();
+  r.cpu = cpu_seconds() - start;
+  return r;
+}
+
+// CtcIvp on (x1, x2, v1, v2, tau), the noise of constraint 1 as the input:
+// returns (x1, x2, v1, v2).
+Run solve_ivp(double dt) {
+  const double start = cpu_seconds();
+  const auto td = TDomain::create(0.0, kTf, dt);
+  const CtcIvp ctc(Function({"x1", "x2", "v1", "v2", "tau", "n"},
+                            "(v1, v2, -10*cos(tau) + n, -0.4*v1*(-10*cos(tau) + n), 1)"),
+                   1, 10, TimePropag::FORWARD);
+  TubeVector x(td, 5);
+  x.set_gate(0, IntervalVector{Interval(98, 102) / Interval(10), Interval(-2, 2) / Interval(10), Interval(0),
+                               Interval(10), Interval(0)});
+  Run r;
+  r.stats.empty = !ctc.contract(x, TubeVector(td, 1, Interval(-1, 1) / Interval(1000)));
+  if (r.stats.empty) r.stats.emptiness = "CtcIvp: no trajectory from x(0)";
+  r.x = std::make_shared<TubeVector>(x.subvector(0, 1));
+  r.dx = std::make_shared<TubeVector>(x.subvector(2, 3));
   r.cpu = cpu_seconds() - start;
   return r;
 }
@@ -104,8 +130,29 @@ int main(int argc, char** argv) {
           .save((out / "lissajous.svg").string());
     }
   }
+  // CtcIvp beside the network, on the same slices (the main delta).
+  const Run ri = solve_ivp(main_dt), rd = solve(main_dt);
+  const std::size_t N = ri.x->nb_slices();
+  const bool ivp_inside = example::check_stats(ri.stats, "CtcIvp") && example::enclosure_ok(*ri.x) &&
+                          example::enclosure_ok(*ri.dx) && ri.x->contains(x_true) && ri.dx->contains(dx_true);
+  ok = ok && ivp_inside;
+  const double wi1 = (*ri.x)[0].max_thickness(), wi2 = (*ri.x)[1].max_thickness();
+  std::printf("CtcIvp, delta = %g: x(2pi) in %s, max thickness x1 %.4f, x2 %.4f; %.3f s CPU; truth inside x, x': %s\n",
+              main_dt, box_str(ri.x->gate(N)).c_str(), wi1, wi2, ri.cpu, ivp_inside ? "yes" : "NO");
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "; CtcIvp: max thickness x1 %.3f, x2 %.3f, x(2pi) in %s", wi1, wi2,
+                box_str(ri.x->gate(N)).c_str());
+  summary += buf;
+  Figure cmp = tube_vector_figure(*rd.x, 0, 1, "Lissajous, delta = 0.001: CtcDeriv network (blue) vs CtcIvp (orange)",
+                                  {}, &x_true[0], &x_true[1]);
+  TubeStyle orange;
+  orange.slices = Style{"#f6c28b", "#c25e00", 0.4, 1.0, "slice"};
+  draw_tube_vector_2d(cmp, *ri.x, 0, 1, orange, &x_true[0], &x_true[1]);
+  cmp.save((out / "lissajous_deriv_vs_ivp.svg").string());
   example::print_result("lissajous", summary, ok,
                         {{"lissajous.svg", "Lissajous robot, CN (4.29): envelope [x1](.) x [x2](.) on [0, 2pi] and "
-                                           "the unknown truth (red), Fig. 4.10"}});
+                                           "the unknown truth (red), Fig. 4.10"},
+                         {"lissajous_deriv_vs_ivp.svg",
+                          "Lissajous robot: the CtcDeriv network in blue, CtcIvp in orange, the truth in red"}});
   return ok ? 0 : 1;
 }

@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 TF, DT = 14.0, 0.01
@@ -58,24 +58,6 @@ def solve_ivp(td, final_box):
     return x.subvector(0, 2), ok
 
 
-def compare_figure(deriv, ivp, path, label, filename):
-    """[x1] x [x2] of the CtcDeriv network (blue) and of CtcIvp (orange, over it), matplotlib."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from sillage.plot_tube import plot_tube_vector_2d
-
-    fig, ax = plt.subplots(figsize=(6, 6))
-    plot_tube_vector_2d(ax, deriv, 0, 1, color="#a9cdf2", edgecolor="#2a6aa8")
-    plot_tube_vector_2d(ax, ivp, 0, 1, color="#f6c28b", edgecolor="#c25e00", autoscale=False)
-    ax.plot(path[:, 0], path[:, 1], color="#d62728", linewidth=1.0)
-    ax.set_xlabel("x1")
-    ax.set_ylabel("x2")
-    ax.set_title(f"Causal chain {label}: CtcDeriv (blue) vs CtcIvp (orange)")
-    fig.savefig(filename, dpi=100)
-    plt.close(fig)
-
-
 def truth(n):
     """RK4 of the true car (u*, centre of x0), sampled at the n+1 time points."""
     def f(t, x):
@@ -118,7 +100,8 @@ def main():
         fig = sillage.tube_vector_figure(x, 0, 1, f"Causal chain, {label} (Python)")
         fig.save(str(out / f"causal_chain_{tag}_py.svg"))
         figures.append((f"causal_chain_{tag}_py.svg", f"Causal chain (4.25) {label}, Python"))
-        compare_figure(x, xi, path, label, out / f"causal_chain_{tag}_deriv_vs_ivp_py.png")
+        deriv_vs_ivp_figure(x, xi, out / f"causal_chain_{tag}_deriv_vs_ivp_py.png",
+                            f"Causal chain {label}: CtcDeriv (blue) vs CtcIvp (orange)", path)
         figures.append((f"causal_chain_{tag}_deriv_vs_ivp_py.png",
                         f"Causal chain (4.25) {label}: CtcDeriv network in blue, CtcIvp in orange"))
     print_result("causal_chain", summary, ok, figures)

@@ -17,7 +17,7 @@ import time
 import numpy as np
 
 import sillage  # noqa: F401
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 TF = 64.0
@@ -171,20 +171,8 @@ def check(x, paths):
 
 def compare_figure(deriv, ivp, paths, out):
     """[x1] x [x2] of the CtcDeriv network (blue) and of CtcIvp (orange, over it), matplotlib."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from sillage.plot_tube import plot_tube_vector_2d
-
-    fig, ax = plt.subplots(figsize=(6, 6))
-    plot_tube_vector_2d(ax, deriv, 0, 1, color="#a9cdf2", edgecolor="#2a6aa8")
-    plot_tube_vector_2d(ax, ivp, 0, 1, color="#f6c28b", edgecolor="#c25e00", autoscale=False)
-    ax.plot(paths[:, 0, 0], paths[:, 0, 1], color="#d62728", linewidth=1.0)
-    ax.set_xlabel("x1")
-    ax.set_ylabel("x2")
-    ax.set_title("Dead reckoning, delta = 0.005: CtcDeriv (blue) vs CtcIvp (orange)")
-    fig.savefig(out / "dead_reckoning_deriv_vs_ivp_py.png", dpi=100)
-    plt.close(fig)
+    deriv_vs_ivp_figure(deriv, ivp, out / "dead_reckoning_deriv_vs_ivp_py.png",
+                        "Dead reckoning, delta = 0.005: CtcDeriv (blue) vs CtcIvp (orange)", paths[:, 0, :])
     return ("dead_reckoning_deriv_vs_ivp_py.png", "CtcDeriv network (3.18) in blue, CtcIvp in orange, nominal in red")
 
 

@@ -132,3 +132,23 @@ def rk4(f, x0, h, n):
         x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
         out[j + 1] = x
     return out
+
+
+def deriv_vs_ivp_figure(deriv, ivp, filename, title, path=None):
+    """[x1] x [x2] of the CtcDeriv network's tube (blue) and of CtcIvp's (orange, over it), with
+    path (an array of rows (x1, x2, ...)) in red; matplotlib, saved to filename."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from sillage.plot_tube import plot_tube_vector_2d
+
+    fig, ax = plt.subplots(figsize=(6, 6))
+    plot_tube_vector_2d(ax, deriv, 0, 1, color="#a9cdf2", edgecolor="#2a6aa8")
+    plot_tube_vector_2d(ax, ivp, 0, 1, color="#f6c28b", edgecolor="#c25e00", autoscale=False)
+    if path is not None:
+        ax.plot(path[:, 0], path[:, 1], color="#d62728", linewidth=1.0)
+    ax.set_xlabel("x1")
+    ax.set_ylabel("x2")
+    ax.set_title(title)
+    fig.savefig(filename, dpi=100)
+    plt.close(fig)

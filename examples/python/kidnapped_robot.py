@@ -9,14 +9,20 @@ x4 cos x3, v2 = x4 sin x3 (pointwise), v3, v4 = the input tubes; the
 measurement is the gate at t = 37 (sampled before the tubes are built); the
 same network with CtcEval(t = 37) is run as a cross-check. The nominal RK4 path
 and 64 extreme feasible paths are checked inside (gates and 3 samples per
-slice). Same computations and printed figures as examples/cpp/kidnapped_robot.cpp."""
+slice). Same computations and printed figures as examples/cpp/kidnapped_robot.cpp.
+Then again by CtcIvp (validated Taylor integration, docs/ivp.md) at delta = 0.05:
+heading and speed (x3, x4, tau) alone, forward from x(0), give their box at
+t = 37; then the whole state, its heading and speed tubes set to those, from
+gate 37 = the measurement x that box, forward to 64 and backward to 0. The same
+paths are checked inside; a matplotlib figure compares the two tubes."""
 import math
 import time
 
 import numpy as np
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, rk4
+from dead_reckoning import IVP_F, NOISE
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF, TM = 64.0, 37.0
@@ -58,6 +64,28 @@ def solve(td, use_eval=False, heading_speed_known=True):
         x[1].set_gate(k37, M2)
     stats = cn.contract()
     return x, stats, k37
+
+
+HEADING_F = Function(["x3", "x4", "tau", "n1", "n2"], "(-9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)")
+
+
+def solve_ivp(td):
+    """CtcIvp (see the module doc): returns (x1..x4, success flag, k37)."""
+    k37 = td.slice_index(TM)
+    noise = TubeVector(td, 2, bound(NOISE))
+    b0 = initial_box()
+    h = TubeVector(td, 3)
+    h.set_gate(0, IntervalVector([b0[2], b0[3], Interval(0.0)]))
+    ok = sillage.CtcIvp(HEADING_F, 2, 10, sillage.TimePropag.FORWARD).contract(h, noise)
+    h37 = h.gate(k37)
+    x = TubeVector(td, 5)
+    for i in (2, 3, 4):
+        x[i] = h[i - 2]  # heading and speed as known forward from x(0)
+    x.set_gate(k37, IntervalVector([M1, M2, h37[0], h37[1], Interval(TM)]))
+    ok = ok and sillage.CtcIvp(IVP_F, 2, 10, sillage.TimePropag.FWD_BWD).contract(x, noise)
+    if not ok:
+        print("  CtcIvp: EMPTY (no trajectory of the inputs meets the measurement)")
+    return x.subvector(0, 3), ok, k37
 
 
 def reference_paths(dt):
@@ -138,6 +166,18 @@ def main(deltas=(0.05, 0.01, 0.005), out=None):
               f"p(64) in [{pf[0].lb():.2f}, {pf[0].ub():.2f}] x [{pf[1].lb():.2f}, {pf[1].ub():.2f}]; "
               f"truth inside: {'yes' if worst_nominal <= 1e-9 else 'NO'} (max excess {worst_nominal:.1e}), "
               f"64 extreme paths inside: {'yes' if worst <= 1e-9 else 'NO'} (max excess {worst:.1e})")
+        if dt == 0.05:
+            t0 = time.process_time()
+            xi, ivp_ok, _ = solve_ivp(td)
+            cpu_ivp = time.process_time() - t0
+            worst_ivp = max_excess(xi, paths)
+            ok = ok and ivp_ok and enclosure_ok(xi) and worst_ivp <= 1e-9
+            q0, qf = xi.gate(0).subvector(0, 1), xi.gate(n).subvector(0, 1)
+            results["ivp"] = (diagonal(q0), diagonal(xi.gate(k37).subvector(0, 1)), diagonal(qf))
+            print(f"  CtcIvp ({cpu_ivp:.3f} s CPU): d(0) = {diagonal(q0):.3f}, d(64) = {diagonal(qf):.3f}; "
+                  f"p(0) in [{q0[0].lb():.2f}, {q0[0].ub():.2f}] x [{q0[1].lb():.2f}, {q0[1].ub():.2f}], "
+                  f"p(64) in [{qf[0].lb():.2f}, {qf[0].ub():.2f}] x [{qf[1].lb():.2f}, {qf[1].ub():.2f}]; "
+                  f"65 paths inside: {'yes' if worst_ivp <= 1e-9 else 'NO'} (max excess {worst_ivp:.1e})")
         if dt == 0.005:
             summary = (f"delta=0.005: d(0) = {diagonal(p0):.2f}, d(37) = {diagonal(p37):.2f}, "
                        f"d(64) = {diagonal(pf):.2f}; {1000 * cpu:.0f} ms")
@@ -159,6 +199,13 @@ def main(deltas=(0.05, 0.01, 0.005), out=None):
             fig.save(str(out / "kidnapped_robot_py.svg"))
             figures.append(("kidnapped_robot_py.svg", "Kidnapped robot (4.30): [x1](.) x [x2](.), measurement box "
                                                       "in red, truth in red (Fig. 4.11), Python"))
+            if 0.05 in deltas:
+                deriv_vs_ivp_figure(x, xi, out / "kidnapped_robot_deriv_vs_ivp_py.png",
+                                    "Kidnapped robot: CtcDeriv (blue) vs CtcIvp (orange)",
+                                    paths[0::4, 0, :])
+                figures.append(("kidnapped_robot_deriv_vs_ivp_py.png",
+                                "Kidnapped robot: the CtcDeriv network in blue, CtcIvp in orange, truth in red"))
+                summary += f"; CtcIvp d(0) = {results['ivp'][0]:.2f}, d(64) = {results['ivp'][2]:.2f}"
             th = sillage.thickness_figure(x.subvector(0, 1), sillage.ThicknessMeasure.Diagonal,
                                           "Kidnapped robot: thickness d(t) of [x1] x [x2] (Python)")
             th.save(str(out / "kidnapped_robot_thickness_py.svg"))

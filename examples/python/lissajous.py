@@ -5,12 +5,17 @@ x'(0) = (0, 10), x(0) in [9.8, 10.2] x [-0.2, 0.2], on t in [0, 2 pi].
 Tubes x, x', x'' (TubeVector), CtcDeriv for x' and x'', the pointwise
 CtcFunction of constraint 2; x1'' is built from constraint 1. The analytic truth
 and its derivatives are checked inside, rigorously. Same computations and
-printed figures as examples/cpp/lissajous.cpp."""
+printed figures as examples/cpp/lissajous.cpp.
+Then again by CtcIvp (validated Taylor integration, docs/ivp.md): constraints 1-2
+as the state equations of (x1, x2, x1', x2', tau), the noise of x1'' as an input
+tube and tau' = 1 for the known part; a matplotlib figure compares the two tubes."""
 import math
 import time
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result
+import numpy as np
+
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF = 2 * math.pi  # the double just below 2 pi: one period
@@ -33,6 +38,23 @@ def solve(dt):
     return x, dx, ddx, stats
 
 
+IVP_F = Function(["x1", "x2", "v1", "v2", "tau", "n"], "(v1, v2, -10*cos(tau) + n, -0.4*v1*(-10*cos(tau) + n), 1)")
+
+
+def solve_ivp(dt):
+    """CtcIvp on (x1, x2, v1, v2, tau), the noise of constraint 1 as the input, forward from
+    the gate at 0. Returns (x, x') and the success flag."""
+    td = TDomain(0.0, TF, dt)
+    x = TubeVector(td, 5)
+    x.set_gate(0, IntervalVector([bound(Interval(98, 102) / Interval(10)), bound(Interval(-2, 2) / Interval(10)),
+                                  Interval(0), Interval(10), Interval(0)]))
+    ok = sillage.CtcIvp(IVP_F, 1, 10, sillage.TimePropag.FORWARD).contract(
+        x, TubeVector(td, 1, bound(Interval(-1, 1) / Interval(1000))))
+    if not ok:
+        print("  CtcIvp: EMPTY (no trajectory from x(0))")
+    return x.subvector(0, 1), x.subvector(2, 3), ok
+
+
 def truths():
     dom = Interval(0, TF)
     return ([Trajectory("10*cos(t)", dom), Trajectory("5*sin(2*t)", dom)],
@@ -47,7 +69,7 @@ def box_str(b):
 def main(deltas=(0.01, 0.001, 0.0001), out=None):
     out = out or out_dir(__doc__)
     x_true, dx_true, ddx_true = truths()
-    ok, summary, results = True, "", {}
+    ok, summary, results, results_tubes = True, "", {}, {}
     for dt in deltas:
         t0 = time.process_time()
         x, dx, ddx, stats = solve(dt)
@@ -58,6 +80,7 @@ def main(deltas=(0.01, 0.001, 0.0001), out=None):
         ok = ok and inside
         w1, w2 = x[0].max_thickness(), x[1].max_thickness()
         results[dt] = (x.gate(n), w1, w2)
+        results_tubes[dt] = x
         print(f"delta = {dt:<6g} ({n:6d} slices): x(2pi) in {box_str(x.gate(n))}, max thickness x1 {w1:.4f}, "
               f"x2 {w2:.4f}; {stats.iterations} iterations, {stats.contractor_calls} calls, {cpu:.4f} s CPU; "
               f"truth inside x, x', x'': {'yes' if inside else 'NO'}")
@@ -67,9 +90,28 @@ def main(deltas=(0.01, 0.001, 0.0001), out=None):
             fig = sillage.tube_vector_figure(x, 0, 1, "Lissajous envelope [x1] x [x2], delta = 0.001 (Python)",
                                              sillage.TubeStyle(), x_true[0], x_true[1])
             fig.save(str(out / "lissajous_py.svg"))
-    print_result("lissajous", summary, ok,
-                 [("lissajous_py.svg", "Lissajous robot, CN (4.29): envelope [x1](.) x [x2](.) on [0, 2pi] and the "
-                                       "unknown truth (red), Fig. 4.10, Python")])
+    # CtcIvp beside the network, on the same slices (the main delta).
+    t0 = time.process_time()
+    xi, dxi, ivp_ok = solve_ivp(MAIN_DT)
+    cpu = time.process_time() - t0
+    n = xi.nb_slices()
+    inside = ivp_ok and enclosure_ok(xi, dxi) and xi.contains(x_true) and dxi.contains(dx_true)
+    ok = ok and inside
+    wi1, wi2 = xi[0].max_thickness(), xi[1].max_thickness()
+    results["ivp"] = (xi.gate(n), wi1, wi2)
+    print(f"CtcIvp, delta = {MAIN_DT:g}: x(2pi) in {box_str(xi.gate(n))}, max thickness x1 {wi1:.4f}, x2 {wi2:.4f}; "
+          f"{cpu:.3f} s CPU; truth inside x, x': {'yes' if inside else 'NO'}")
+    summary += f"; CtcIvp: max thickness x1 {wi1:.3f}, x2 {wi2:.3f}, x(2pi) in {box_str(xi.gate(n))}"
+    figures = [("lissajous_py.svg", "Lissajous robot, CN (4.29): envelope [x1](.) x [x2](.) on [0, 2pi] and the "
+                                    "unknown truth (red), Fig. 4.10, Python")]
+    if MAIN_DT in deltas:
+        ts = np.linspace(0.0, TF, 400)
+        deriv_vs_ivp_figure(results_tubes[MAIN_DT], xi, out / "lissajous_deriv_vs_ivp_py.png",
+                            "Lissajous, delta = 0.001: CtcDeriv (blue) vs CtcIvp (orange)",
+                            np.column_stack([10 * np.cos(ts), 5 * np.sin(2 * ts)]))
+        figures.append(("lissajous_deriv_vs_ivp_py.png",
+                        "Lissajous robot: the CtcDeriv network in blue, CtcIvp in orange, the truth in red"))
+    print_result("lissajous", summary, ok, figures)
     return ok, results
 
 

@@ -12,7 +12,8 @@ import time
 import numpy as np
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result, rk4
+from dead_reckoning import IVP_F, NOISE
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir_and_step, print_result, rk4
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Figure, Function, Interval,
                      IntervalVector, Style, TDomain, ThicknessMeasure, Tube, TubeStyle, TubeVector)
 
@@ -155,6 +156,19 @@ def map_figure(p, view, title, path):
     return fig
 
 
+def solve_ivp(x):
+    """CtcIvp after the network (the robot's f is that of dead reckoning): from the fixed
+    point every gate is bounded; forward and backward on (x, tau), the noise of (3.16) as
+    the input. Returns the contracted (x1..x4) and the success flag."""
+    td = x.tdomain()
+    xi = TubeVector(td, 5)
+    for i in range(4):
+        xi[i] = x[i]
+    xi[4] = Tube(td, "t")
+    ok = sillage.CtcIvp(IVP_F, 2, 10, sillage.TimePropag.FWD_BWD).contract(xi, TubeVector(td, 2, bound(NOISE)))
+    return xi.subvector(0, 3), ok
+
+
 def main():
     out, args = out_dir_and_step(__doc__, 0.05)
 
@@ -196,6 +210,20 @@ def main():
     print(f"  position thickness d(t): mean {mean:.3f}, max {worst:.3f}")
     print(f"  truth inside the tubes: {'yes' if e <= 1e-7 else 'NO'} (largest excess {e:.2g})")
 
+    c0 = time.process_time()
+    xi, ivp_ok = solve_ivp(p["x"])
+    cpu_ivp = time.process_time() - c0
+    ei = excess(xi, path, h)
+    xi0, xif = xi.gate(0), xi.gate(n)
+    mean_i, worst_i = mean_thickness(xi)
+    print(f"  then CtcIvp ({cpu_ivp:.3f} s CPU): x(0) in [{xi0[0].lb():.3f}, {xi0[0].ub():.3f}] x "
+          f"[{xi0[1].lb():.3f}, {xi0[1].ub():.3f}], x(64) in [{xif[0].lb():.3f}, {xif[0].ub():.3f}] x "
+          f"[{xif[1].lb():.3f}, {xif[1].ub():.3f}]; d(t) mean {mean_i:.3f}, max {worst_i:.3f}; truth inside: "
+          f"{'yes' if ivp_ok and ei <= 1e-7 else 'NO'} (largest excess {ei:.2g})")
+    ok = ok and ivp_ok and enclosure_ok(xi) and ei <= 1e-7
+    deriv_vs_ivp_figure(p["x"], xi, out / "lowcost_beacons_deriv_vs_ivp_py.png",
+                        "Low-cost beacons: network (blue), then CtcIvp (orange)", path[::10])
+
     cod = p["x"].codomain()
     view = IntervalVector([Interval(max(cod[0].lb(), -40.0) - 5, min(cod[0].ub(), 160.0) + 5),
                            Interval(max(cod[1].lb(), -60.0) - 5, min(cod[1].ub(), 90.0) + 5)])
@@ -213,7 +241,9 @@ def main():
                f"[{x0[1].lb():.2f}, {x0[1].ub():.2f}]")
     print_result("lowcost_beacons", summary, ok,
                  [("lowcost_beacons_map_py.svg", "Low-cost beacons (5.3.1): position tube, truth, [t_i], Python"),
-                  ("lowcost_beacons_thickness_py.svg", "Thickness of the position tube (Fig. 5.8), Python")])
+                  ("lowcost_beacons_thickness_py.svg", "Thickness of the position tube (Fig. 5.8), Python"),
+                  ("lowcost_beacons_deriv_vs_ivp_py.png",
+                   "The network's position tube (blue), then contracted by CtcIvp (orange), Python")])
     return 0 if ok else 1
 
 

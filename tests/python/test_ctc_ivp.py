@@ -188,3 +188,28 @@ def test_van_der_pol_encloses_a_high_precision_reference():
             g = x.gate(k)[i]
             assert Decimal(g.lb()) <= ref[8 * k - 1][i] <= Decimal(g.ub()), (k, i, g)
     assert x.gate(td.nb_slices()).max_diam() < 1e-10
+
+
+def test_pieces_carry_a_wide_box_of_van_der_pol_to_the_end():
+    """From the 0.2 box around (2, 0) one set blows up near t = 2.5; with set_max_pieces(64)
+    the tube stays bounded to t = 5 and holds the decimal references of the corners and
+    the centre at every eighth gate."""
+    from decimal import Decimal
+    f = Function(["x1", "x2"], "(x2, (1 - x1^2)*x2 - x1)")
+    td = TDomain(0.0, 5.0, 0.125)
+    x = TubeVector(td, 2)
+    x.set_gate(0, IntervalVector([Interval(1.9, 2.1), Interval(-0.1, 0.1)]))
+    ctc = CtcIvp(f)
+    assert ctc.max_pieces() == 1
+    ctc.set_max_pieces(64)
+    assert ctc.max_pieces() == 64 and ctc.contract(x)
+    n = td.nb_slices()
+    assert x.gate(n).max_diam() < 1.0
+    for a, b in ((1.9, -0.1), (1.9, 0.1), (2.1, -0.1), (2.1, 0.1), (2.0, 0.0)):
+        ref = vdp_reference(a, b, 0.125 / 8, 8 * n)
+        for k in range(8, n + 1, 8):
+            for i in range(2):
+                g = x.gate(k)[i]
+                assert Decimal(g.lb()) <= ref[8 * k - 1][i] <= Decimal(g.ub()), (a, b, k, i, g)
+    with pytest.raises(sillage.Error):
+        ctc.set_max_pieces(0)

@@ -62,6 +62,13 @@ class CtcIvp : public NetworkCtc {
   double tolerance() const { return tol_; }
   // Sets the step tolerance (positive).
   void set_tolerance(double tol);
+  // The largest number of pieces a wide set is cut into (default 1: none).
+  std::size_t max_pieces() const { return max_pieces_; }
+  // Subdivision of wide sets (docs/ivp.md): up to m pieces carried side by
+  // side (gates and slices get their hull); a piece is bisected at a gate
+  // when its box has grown twice as wide since it was made, and a piece
+  // that fails is retried as the two halves of its box. Error if m is 0.
+  void set_max_pieces(std::size_t m);
 
   // Contracts x in place (touch()es what changed); false if x is now empty
   // (then every slice and gate is empty). DimensionError on wrong sizes or
@@ -82,11 +89,13 @@ class CtcIvp : public NetworkCtc {
   void check(const TubeVector& x, const TubeVector* u) const;
   bool contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const;
   bool sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const;
+  bool sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const;
 
   std::shared_ptr<const detail::TaylorOde> ode_;
   int order_;
   TimePropag propag_;
   double tol_ = 1e-16;
+  std::size_t max_pieces_ = 1;
 };
 
 }  // namespace sillage

@@ -29,6 +29,8 @@ void init_ivp(py::module_& m) {
       .def("function", &C::function, DOC(CtcIvp, function))
       .def("tolerance", &C::tolerance, DOC(CtcIvp, tolerance))
       .def("set_tolerance", &C::set_tolerance, py::arg("tol"), DOC(CtcIvp, set_tolerance))
+      .def("max_pieces", &C::max_pieces, DOC(CtcIvp, max_pieces))
+      .def("set_max_pieces", &C::set_max_pieces, py::arg("m"), DOC(CtcIvp, set_max_pieces))
       .def(
           "contract",
           [](const C& c, Tube& x) {

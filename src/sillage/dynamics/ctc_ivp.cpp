@@ -1,8 +1,11 @@
 // CtcIvp: sweeps of validated integration over a tube (ctc_ivp.h).
 #include "sillage/dynamics/ctc_ivp.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "sillage/dynamics/ivp_memory.h"
 #include "sillage/dynamics/ivp_step.h"
@@ -69,6 +72,51 @@ void set_empty(TubeVector& x) {
   for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
 }
 
+// Intersects gates and slices of x with enclosures, remembering which
+// components changed; finish() touches them.
+class TubeWriter {
+ public:
+  explicit TubeWriter(TubeVector& x) : x_(x), changed_(x.size(), false) {}
+  void write(bool gate, std::size_t k, const IntervalVector& v) {
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+      Interval& cur = gate ? x_[i].data().gates[k] : x_[i].data().slices[k];
+      const Interval nv = cur & v[i];
+      if (nv != cur) {
+        cur = nv;
+        changed_[i] = true;
+      }
+    }
+  }
+  void finish() {
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+      if (changed_[i]) x_[i].touch();
+    }
+  }
+
+ private:
+  TubeVector& x_;
+  std::vector<bool> changed_;
+};
+
+// A piece of a wide set (CtcIvp::set_max_pieces): the box it starts from,
+// at sweep index j0, and the number of pieces it may still be cut into.
+struct Piece {
+  IntervalVector origin;
+  std::size_t j0 = 0;
+  std::size_t budget = 1;
+};
+
+// A piece whose box has grown this many times since its start is cut.
+constexpr double kSplitGrowth = 2.0;
+
+// Pushes the two halves of p's origin (its widest component; they cover
+// it), each with half the budget.
+void split(const Piece& p, std::vector<Piece>& stack) {
+  const auto [l, r] = p.origin.bisect();
+  stack.push_back(Piece{r, p.j0, p.budget - p.budget / 2});
+  stack.push_back(Piece{l, p.j0, p.budget / 2});
+}
+
 }  // namespace
 
 CtcIvp::CtcIvp(const Function& f, std::size_t nb_inputs, int order, TimePropag propag)
@@ -90,22 +138,9 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpM
   const std::size_t n = x.size(), N = x.nb_slices();
   const TDomain& td = *x.tdomain();
   const IvpStepper stepper(*ode_, order_);
-  std::vector<bool> changed(n, false);
-  auto write = [&](bool gate, std::size_t k, const IntervalVector& v) {
-    for (std::size_t i = 0; i < n; ++i) {
-      Interval& cur = gate ? x[i].data().gates[k] : x[i].data().slices[k];
-      const Interval nv = cur & v[i];
-      if (nv != cur) {
-        cur = nv;
-        changed[i] = true;
-      }
-    }
-  };
-  auto finish = [&] {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (changed[i]) x[i].touch();
-    }
-  };
+  TubeWriter writer(x);
+  auto write = [&](bool gate, std::size_t k, const IntervalVector& v) { writer.write(gate, k, v); };
+  auto finish = [&] { writer.finish(); };
   detail::LohnerSet set;
   bool active = false;
   // With a memory: resume at the first step whose tubes changed.
@@ -149,6 +184,90 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpM
     }
   }
   finish();
+  return true;
+}
+
+void CtcIvp::set_max_pieces(std::size_t m) {
+  if (m < 1) throw Error("CtcIvp::set_max_pieces: expected at least 1 piece, got 0");
+  max_pieces_ = m;
+}
+
+bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const {
+  const std::size_t n = x.size(), N = x.nb_slices();
+  const TDomain& td = *x.tdomain();
+  const IvpStepper stepper(*ode_, order_);
+  const bool zonotope = u != nullptr && nb_inputs() > 0;
+  const auto gate_index = [&](std::size_t j) { return sign > 0 ? j : N - j; };
+  for (std::size_t k = 0; k <= N; ++k) {
+    if (x.gate(k).is_empty()) return false;
+  }
+  std::size_t start = 0;
+  while (start <= N && x.gate(gate_index(start)).is_unbounded()) ++start;
+  if (start > N) return true;
+  // Each piece runs alone from its origin; its boxes join the hulls only
+  // when it ends (a piece cut in two is replaced by its halves, from its
+  // origin). Past `limit` (a piece that could not be validated nor cut)
+  // nothing is known.
+  std::vector<IntervalVector> gates(N + 1, IntervalVector::empty(n)), slices(N, IntervalVector::empty(n));
+  std::size_t limit = N;  // last gate index (sweep order) where the hulls hold
+  std::vector<Piece> stack{Piece{x.gate(gate_index(start)), start, max_pieces_}};
+  while (!stack.empty()) {
+    const Piece p = stack.back();
+    stack.pop_back();
+    LohnerSet set = LohnerSet::from_box(p.origin, zonotope);
+    const double width0 = p.origin.max_diam();
+    std::vector<IntervalVector> pg, ps;  // this piece's gate and slice boxes from j0
+    bool cut = false;
+    for (std::size_t j = p.j0; j <= limit; ++j) {
+      const std::size_t k = gate_index(j);
+      if (!meet(set, x.gate(k))) break;  // no solution of this piece passes here
+      if (j > p.j0 && p.budget >= 2 && width0 > 0.0 && set.box.max_diam() > kSplitGrowth * width0) {
+        split(p, stack);
+        cut = true;
+        break;
+      }
+      pg.push_back(set.box);
+      if (j == N || j == limit) break;
+      const std::size_t s = sign > 0 ? k : k - 1;
+      const IntervalVector us = u ? u->slice(s) : IntervalVector(0);
+      const double to = sign > 0 ? td.t(k + 1) : td.t(k - 1);
+      IntervalVector r = IntervalVector::empty(n);
+      const Crossing c = cross_slice(stepper, set, td.t(k), to, us, x.slice(s), sign, tol_, r);
+      if (c == Crossing::Empty) break;
+      if (c == Crossing::Lost) {
+        if (p.budget >= 2 && width0 > 0.0) {
+          split(p, stack);
+          cut = true;
+        } else {
+          limit = std::min(limit, j);  // the gate j holds, the slice after it is unknown
+        }
+        break;
+      }
+      ps.push_back(r);
+    }
+    if (cut) continue;
+    for (std::size_t i = 0; i < pg.size(); ++i) {
+      IntervalVector& h = gates[p.j0 + i];
+      h = h.is_empty() ? pg[i] : hull(h, pg[i]);
+    }
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      IntervalVector& h = slices[p.j0 + i];
+      h = h.is_empty() ? ps[i] : hull(h, ps[i]);
+    }
+  }
+  // Gates start..limit and the slices between them: every solution lies in
+  // the hull of the pieces (empty: none passes, the tube is empty).
+  TubeWriter writer(x);
+  for (std::size_t j = start; j <= limit; ++j) {
+    const std::size_t k = gate_index(j);
+    writer.write(true, k, gates[j]);
+    if (x.gate(k).is_empty()) return writer.finish(), false;
+    if (j == limit) break;
+    const std::size_t s = sign > 0 ? k : k - 1;
+    writer.write(false, s, slices[j]);
+    if (x.slice(s).is_empty()) return writer.finish(), false;
+  }
+  writer.finish();
   return true;
 }
 
@@ -196,8 +315,12 @@ bool CtcIvp::contract(Tube& x, const Tube& u) const {
 
 bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const {
   bool ok = true;
-  if (has(propag_, TimePropag::FORWARD)) ok = sweep(x, u, 1.0, memory);
-  if (ok && has(propag_, TimePropag::BACKWARD)) ok = sweep(x, u, -1.0, memory);
+  // With pieces the memory (one set per gate) does not apply: a full run.
+  const auto run = [&](double sign) {
+    return max_pieces_ > 1 ? sweep_pieces(x, u, sign) : sweep(x, u, sign, memory);
+  };
+  if (has(propag_, TimePropag::FORWARD)) ok = run(1.0);
+  if (ok && has(propag_, TimePropag::BACKWARD)) ok = run(-1.0);
   if (!ok) set_empty(x);
   if (memory) {
     if (ok) {

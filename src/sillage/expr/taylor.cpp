@@ -50,6 +50,56 @@ void check_rules(const detail::Tape& tape) {
   }
 }
 
+// The partner of sin is cos (sinh: cosh) and back: the pair recurrence
+// computes both series at once.
+bool is_pair_op(Op op) { return op == Op::Sin || op == Op::Cos || op == Op::Sinh || op == Op::Cosh; }
+Op pair_partner(Op op) {
+  switch (op) {
+    case Op::Sin: return Op::Cos;
+    case Op::Cos: return Op::Sin;
+    case Op::Sinh: return Op::Cosh;
+    default: return Op::Sinh;
+  }
+}
+
+}  // namespace
+
+// twin[s]: the earlier node whose companion series is node s's own (cos x
+// after sin x, both in f and its Jacobian), kNoTwin if none.
+std::vector<std::uint32_t> pair_twins(const detail::Tape& tape) {
+  const std::vector<Instr>& code = tape.code();
+  std::vector<std::uint32_t> twin(code.size(), kNoTwin);
+  for (std::size_t s = 0; s < code.size(); ++s) {
+    if (!is_pair_op(code[s].op)) continue;
+    for (std::size_t r = 0; r < s; ++r) {
+      if (code[r].op == pair_partner(code[s].op) && code[r].a == code[s].a && twin[r] == kNoTwin) {
+        twin[s] = static_cast<std::uint32_t>(r);
+        break;
+      }
+    }
+  }
+  return twin;
+}
+
+std::vector<std::uint8_t> scaled_operands(const detail::Tape& tape, const std::vector<std::uint32_t>& twin) {
+  const std::vector<Instr>& code = tape.code();
+  std::vector<std::uint8_t> scaled(code.size(), 0);
+  for (std::size_t s = 0; s < code.size(); ++s) {
+    const Op op = code[s].op;
+    if ((op == Op::Exp || op == Op::Tan || op == Op::Tanh || is_pair_op(op)) && twin[s] == kNoTwin) scaled[code[s].a] = 1;
+  }
+  return scaled;
+}
+
+namespace {
+
+// Σ_{j=1}^{k} da_j b_{k-j} / k with da_j = j a_j: order k of w when w' = a'·b.
+Interval dconv_scaled(const Interval* da, const Interval* b, std::size_t k) {
+  Interval s(0.0);
+  for (std::size_t j = 1; j <= k; ++j) s += da[j] * b[k - j];
+  return s / Interval(static_cast<double>(k));
+}
+
 // Σ_{j=lo}^{hi} a_j b_{k-j}
 Interval conv(const Interval* a, const Interval* b, std::size_t k, std::size_t lo, std::size_t hi) {
   Interval s(0.0);
@@ -121,18 +171,23 @@ TaylorOde::TaylorOde(const Function& f) : f_(f), n_(f.image_dim()) {
   }
   var_tape_ = detail::Tape(outs, f.var_names());
   check_rules(var_tape_);
+  twins_ = pair_twins(tape_);
+  var_twins_ = pair_twins(var_tape_);
+  scaled_ = scaled_operands(tape_, twins_);
+  var_scaled_ = scaled_operands(var_tape_, var_twins_);
 }
 
 bool TaylorOde::coefficients(std::vector<Interval>& x, const Interval* u, int order, double sign) const {
-  return run(tape_, x, nullptr, u, order, sign);
+  return run(tape_, twins_, scaled_, x, nullptr, u, order, sign);
 }
 
 bool TaylorOde::coefficients(std::vector<Interval>& x, std::vector<Interval>& v, const Interval* u, int order,
                              double sign) const {
-  return run(var_tape_, x, &v, u, order, sign);
+  return run(var_tape_, var_twins_, var_scaled_, x, &v, u, order, sign);
 }
 
-bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vector<Interval>* v, const Interval* u,
+bool TaylorOde::run(const detail::Tape& tape, const std::vector<std::uint32_t>& twin,
+                    const std::vector<std::uint8_t>& scaled, std::vector<Interval>& x, std::vector<Interval>* v, const Interval* u,
                     int order, double sign) const {
   const std::size_t n = n_;
   const std::size_t top = static_cast<std::size_t>(order);
@@ -148,7 +203,12 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
   std::size_t total = code.size() * K;
   for (std::size_t s = 0; s < code.size(); ++s) {
     aux[s] = total;
-    total += aux_series(code[s]) * K;
+    if (twin[s] == kNoTwin) total += aux_series(code[s]) * K;
+  }
+  std::vector<std::size_t> scaled_at(code.size());  // da_j = j·a_j of the operands of w' = a'·b rules
+  for (std::size_t s = 0; s < code.size(); ++s) {
+    scaled_at[s] = total;
+    if (scaled[s]) total += K;
   }
   thread_local std::vector<Interval> store;
   store.assign(total, Interval(0.0));
@@ -161,6 +221,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
       const Interval* a = c + in.a * K;
       const Interval* b = c + in.b * K;
       Interval* q = c + aux[s];
+      const Interval* da = c + scaled_at[in.a];  // meaningful when scaled[in.a]
       const Interval kk(static_cast<double>(k));
       switch (in.op) {
         case Op::Var:
@@ -191,7 +252,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           }
           break;
         case Op::Exp:
-          w[k] = k == 0 ? exp(a[0]) : dconv(a, w, k);
+          w[k] = k == 0 ? exp(a[0]) : dconv_scaled(da, w, k);
           break;
         case Op::Log:
           if (k == 0) {
@@ -205,6 +266,10 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           break;
         case Op::Sin: case Op::Cos: case Op::Sinh: case Op::Cosh: {
           // w and its companion q: sin/cos (q' = -w a' for sin... ), sinh/cosh
+          if (twin[s] != kNoTwin) {  // the companion of an earlier node on the same operand
+            w[k] = c[aux[twin[s]] + k];
+            break;
+          }
           const bool trig = in.op == Op::Sin || in.op == Op::Cos;
           if (k == 0) {
             if (in.op == Op::Sin) { w[0] = sin(a[0]); q[0] = cos(a[0]); }
@@ -212,7 +277,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
             if (in.op == Op::Sinh) { w[0] = sinh(a[0]); q[0] = cosh(a[0]); }
             if (in.op == Op::Cosh) { w[0] = cosh(a[0]); q[0] = sinh(a[0]); }
           } else {
-            const Interval dw = dconv(a, q, k), dq = dconv(a, w, k);
+            const Interval dw = dconv_scaled(da, q, k), dq = dconv_scaled(da, w, k);
             // sin' = cos a', cos' = -sin a'; sinh' = cosh a', cosh' = sinh a'
             if (in.op == Op::Sin) { w[k] = dw; q[k] = -dq; }
             if (in.op == Op::Cos) { w[k] = -dw; q[k] = dq; }
@@ -225,7 +290,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
             w[0] = tan(a[0]);
             if (w[0].is_empty() || w[0].is_unbounded()) return false;
           } else {
-            w[k] = dconv(a, q, k);
+            w[k] = dconv_scaled(da, q, k);
           }
           q[k] = sqr_series(w, k) + (k == 0 ? Interval(1.0) : Interval(0.0));
           break;
@@ -249,7 +314,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           if (k == 0) {
             w[0] = tanh(a[0]);
           } else {
-            w[k] = dconv(a, q, k);
+            w[k] = dconv_scaled(da, q, k);
           }
           q[k] = (k == 0 ? Interval(1.0) : Interval(0.0)) - sqr_series(w, k);
           break;
@@ -324,6 +389,7 @@ bool TaylorOde::run(const detail::Tape& tape, std::vector<Interval>& x, std::vec
           break;
         }
       }
+      if (scaled[s] && k > 0) c[scaled_at[s] + k] = kk * w[k];
     }
     const Interval next(static_cast<double>(k + 1));
     const std::vector<std::uint32_t>& out = tape.outputs();

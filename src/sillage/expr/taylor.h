@@ -16,6 +16,7 @@
 // containing 0, abs of an interval containing 0, ...) make the call return
 // false: there is nothing to enclose rigorously.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sillage/expr/function.h"
@@ -23,6 +24,17 @@
 #include "sillage/interval/interval.h"
 
 namespace sillage::detail {
+
+// No earlier node shares the series (pair_twins).
+inline constexpr std::uint32_t kNoTwin = 0xffffffffu;
+// For each node of the tape, the earlier sin/cos (sinh/cosh) node of the
+// same operand whose companion series it is, or kNoTwin: sin x and cos x
+// (f and its Jacobian) then cost one pair recurrence, not two.
+std::vector<std::uint32_t> pair_twins(const detail::Tape& tape);
+// scaled[s]: node s is the operand a of a rule w' = a'·b (exp, sin, cos,
+// sinh, cosh, tan, tanh; twins excluded), whose series j·a_j is then kept
+// once instead of being recomputed at every order.
+std::vector<std::uint8_t> scaled_operands(const detail::Tape& tape, const std::vector<std::uint32_t>& twin);
 
 class TaylorOde {
  public:
@@ -46,13 +58,16 @@ class TaylorOde {
                     double sign) const;
 
  private:
-  bool run(const detail::Tape& tape, std::vector<Interval>& x, std::vector<Interval>* v, const Interval* u,
+  bool run(const detail::Tape& tape, const std::vector<std::uint32_t>& twin,
+           const std::vector<std::uint8_t>& scaled, std::vector<Interval>& x, std::vector<Interval>* v, const Interval* u,
            int order, double sign) const;
 
   Function f_;
   std::size_t n_ = 0, m_ = 0;
   detail::Tape tape_;      // the n outputs of f
   detail::Tape var_tape_;  // f, then J_x row-major (n*n outputs)
+  std::vector<std::uint32_t> twins_, var_twins_;  // pair_twins of each tape
+  std::vector<std::uint8_t> scaled_, var_scaled_;  // scaled_operands of each tape
 };
 
 }  // namespace sillage::detail

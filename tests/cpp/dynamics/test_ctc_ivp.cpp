@@ -187,8 +187,11 @@ TEST(CtcIvp, ArgumentErrors) {
   EXPECT_THROW(CtcIvp(Function({"x", "u"}, "u"), 1).contract(y), DimensionError);
 }
 
-TEST(CtcIvp, Laws) {
-  // x1' = x2, x2' = -x1 around a x1 = a sin(t + p), x2 = a cos(t + p).
+namespace {
+
+// The contractor laws on x1' = x2, x2' = -x1 around x1 = a sin(t + p),
+// x2 = a cos(t + p), tubes of random slicing and width.
+::testing::AssertionResult rotation_laws_hold(const CtcIvp& ctc) {
   const auto gen = [](std::mt19937_64& rng) {
     std::uniform_real_distribution<double> ua(0.3, 2.0), up(-3.0, 3.0);
     const double a = ua(rng), p = up(rng);
@@ -200,12 +203,21 @@ TEST(CtcIvp, Laws) {
     k.truth = {std::vector<kit::Trajectory1>{s, c}};
     return k;
   };
-  const CtcIvp ctc(Function({"x1", "x2"}, "(x2, -x1)"), 0, 12);
   const auto contract = [&ctc](kit::Domains& d) { ctc.contract(std::get<TubeVector>(d[0])); };
   kit::Options o;
   o.cases = 15;
   o.idempotence = kit::Idempotence::ContractionOnly;
-  EXPECT_TRUE(kit::check_laws(contract, gen, o));
+  return kit::check_laws(contract, gen, o);
+}
+
+}  // namespace
+
+TEST(CtcIvp, Laws) { EXPECT_TRUE(rotation_laws_hold(CtcIvp(Function({"x1", "x2"}, "(x2, -x1)"), 0, 12))); }
+
+TEST(CtcIvp, LawsWithPieces) {
+  CtcIvp ctc(Function({"x1", "x2"}, "(x2, -x1)"), 0, 12);
+  ctc.set_max_pieces(8);
+  EXPECT_TRUE(rotation_laws_hold(ctc));
 }
 
 TEST(CtcIvp, BoundedInputCoversTheExtremeInputs) {
