@@ -55,10 +55,9 @@ double smoothstep_integral(double s) { return s * s * s - s * s * s * s / 2; }
 namespace {
 
 // The overall crossing (two diagonals joined along the northern edge, or two
-// east-west transects), then the rails towards the west.
-Walker crossing_then_rails(double L, double u, double R, double beta, double duration, bool transects) {
-  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L;
-  Walker w{m, transects ? 0.3 * L : m, transects ? 0 : kPi / 4, 0, u, R, {}, {}, {}};
+// east-west transects), then the rails towards the west; w at the start.
+Walker crossing_then_rails(Walker w, double L, double beta, double duration, bool transects) {
+  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L, R = w.R;
   w.straight_to_x(L - m - 2 * R);
   if (transects) {  // north along the east side, the second transect west, north, then the diagonal
     w.turn(kPi / 2);
@@ -91,10 +90,9 @@ Walker crossing_then_rails(double L, double u, double R, double beta, double dur
 // south-west, joined by turns of pi - 2 alpha that bulge westward, until the
 // west side; then the rails towards the east, back over the tie lines, each
 // crossing one of them at the small angle alpha (and back west over the same
-// rails if the east side comes before the duration).
-Walker tie_lines_then_rails(double L, double u, double R, double beta, double duration, double alpha) {
-  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L, shift = (y_hi - y_lo) * std::tan(alpha);
-  Walker w{L - m - R, y_lo, kPi / 2 + alpha, 0, u, R, {}, {}, {}};
+// rails if the east side comes before the duration); w at the start.
+Walker tie_lines_then_rails(Walker w, double L, double beta, double duration, double alpha) {
+  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L, R = w.R, shift = (y_hi - y_lo) * std::tan(alpha);
   bool north = true;
   while (w.x - 2 * shift - 2 * R > m + R) {
     w.straight_to_y(north ? y_hi : y_lo);
@@ -125,11 +123,13 @@ BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, dou
   }
   const double beta = keyhole_beta(u, R, spacing);
   const double m = 0.08 * L;
+  // The start: the south-east of the rail area (tie lines), the west (transects), the south-west corner.
   x0_ = tie_angle > 0 ? L - m - R : m;
   y0_ = tie_angle > 0 ? 0.2 * L : transects ? 0.3 * L : m;
   yaw0_ = tie_angle > 0 ? kPi / 2 + tie_angle : transects ? 0 : kPi / 4;
-  const Walker w = tie_angle > 0 ? tie_lines_then_rails(L, u, R, beta, duration, tie_angle)
-                                 : crossing_then_rails(L, u, R, beta, duration, transects);
+  const Walker start{x0_, y0_, yaw0_, 0, u, R, {}, {}, {}};
+  const Walker w = tie_angle > 0 ? tie_lines_then_rails(start, L, beta, duration, tie_angle)
+                                 : crossing_then_rails(start, L, beta, duration, transects);
   for (std::size_t k = 0; k < w.ts.size(); ++k) turns_.push_back({w.ts[k], w.holds[k], w.rates[k]});
   // Small planned depth changes (+1.5 m, -2 m, +1 m), 90 s each.
   depth_changes_ = {{0.26 * duration, 90, 1.5}, {0.55 * duration, 90, -2.0}, {0.8 * duration, 90, 1.0}};
