@@ -14,6 +14,8 @@
 // --beam-angle 0 --beam-spread 3 is the coastal mission (coastal seabed,
 // east-west transects, a 6 deg narrow-beam altimeter); --study 1 prints, per
 // proven detection, what limits the contraction (bathymetry_study.h) and stops.
+// --tie-lines A (degrees) flies tie lines at A to the rails first, then the
+// rails back over them (docs/slam.md: measured, no better than the default).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
   if (seabed == 2) mo.seabed = coastal_seabed_options();
   mo.seabed.dune_height = example::option_number(argc, argv, "--dune-height", mo.seabed.dune_height);
   mo.transects = example::option_number(argc, argv, "--transects", 0) != 0;
+  mo.tie_line_angle = example::option_number(argc, argv, "--tie-lines", 0);
   mo.seabed.relief = example::option_number(argc, argv, "--relief", 1);
   mo.depth = example::option_number(argc, argv, "--vehicle-depth", mo.depth);
   mo.bounds.beam_angle = example::option_number(argc, argv, "--beam-angle", mo.bounds.beam_angle);

@@ -32,7 +32,7 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
       {"loops_utias", {"--data", "--robot"}},
       {"outliers_ranges", {"--eps=X"}},
       {"bathymetry_mission", {"--seed=X", "--dt=X"}},
-      {"bathymetry_slam", {"--seed=X", "--dt=X", "--eps=X", "--duration=X", "--scenario=X", "--relief=X", "--beam-angle=X", "--vehicle-depth=X", "--study=X", "--seabed=X", "--beam-spread=X", "--transects=X", "--dune-height=X"}},
+      {"bathymetry_slam", {"--seed=X", "--dt=X", "--eps=X", "--duration=X", "--scenario=X", "--relief=X", "--beam-angle=X", "--vehicle-depth=X", "--study=X", "--seabed=X", "--beam-spread=X", "--transects=X", "--dune-height=X", "--tie-lines=X"}},
   };
   return table;
 }

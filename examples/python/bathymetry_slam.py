@@ -49,6 +49,9 @@ def main():
     parser.add_argument("--scenario", type=int, choices=(1, 2), default=1, help="1: start known; 2: mid fix")
     parser.add_argument("--coastal", action="store_true",
                         help="coastal seabed, narrow-beam altimeter, east-west transects (docs/slam.md)")
+    parser.add_argument("--tie-lines", type=float, default=0.0,
+                        help="tie lines at this angle (deg) to the rails first, instead of the overall crossing "
+                             "or the transects (docs/slam.md); 0: none")
     args = parser.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -59,6 +62,7 @@ def main():
         opts.seabed = sillage.coastal_seabed_options()
         opts.transects = True
         opts.bounds.beam_angle, opts.bounds.beam_spread = 0.0, bound(3.0)
+    opts.tie_line_angle = args.tie_lines
     m = sillage.BathymetryMission(seed=SEED, options=opts)
     td = m.tdomain(DT)
     N = td.nb_slices()

@@ -1,6 +1,8 @@
 """The synthetic bathymetric mission from Python: same names as C++, determinism
 from the seed, the DEM as an inclusion function, the truth inside the dead
 reckoning and the observation tubes, bad input refused."""
+import math
+
 import numpy as np
 import pytest
 
@@ -181,3 +183,18 @@ def test_coastal_seabed_and_transects():
     m = sillage.BathymetryMission(seed=7, options=mo)
     # The first leg is the eastward transect at 0.3 of the side.
     assert abs(m.x2[3000] - 150) < 3 and m.x1[3000] > m.x1[0] + 250
+
+
+def test_tie_line_layout():
+    """Tie lines at 17 deg to the rails first, from the south-east; bad angles refused."""
+    mo = sillage.BathymetryMissionOptions()
+    mo.duration, mo.tie_line_angle = 600.0, 17.0
+    m = sillage.BathymetryMission(seed=7, options=mo)
+    assert m.options.tie_line_angle == 17.0
+    assert m.x1[0] > 400 and abs(m.x2[0] - 100) < 1
+    dx, dy = m.x1[2500] - m.x1[300], m.x2[2500] - m.x2[300]
+    assert abs(math.degrees(math.atan2(-dx, dy)) - 17) < 1.5  # north-west, 17 deg from north
+    for bad in (-1.0, 50.0):
+        mo.tie_line_angle = bad
+        with pytest.raises(sillage.Error, match="tie_line_angle"):
+            sillage.BathymetryMission(seed=7, options=mo)

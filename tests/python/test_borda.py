@@ -88,6 +88,42 @@ def test_any_balance_any_bias():
     assert all(p[0].gate(k) == q[0].gate(k) for k in range(td.nb_slices() + 1))  # bit for bit
 
 
+def test_in_a_network_as_contract():
+    td, p, w, z = borda()
+    _, q, wq, zq = borda()
+    CtcPImpliesZ(EPS).contract(p, w, z)
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcPImpliesZ(EPS), [q, wq, zq])  # a scalar p: 1 + 1 + 1 tubes
+    assert not cn.contract().empty
+    assert holds_truth(td, q) and q[0].gate(0).diam() < 0.8
+    assert all(q[0].gate(k) == p[0].gate(k) for k in range(td.nb_slices() + 1))
+
+
+def test_in_a_network_bad_dimensions():
+    td, p, w, z = borda()
+    cn = sillage.ContractorNetwork()
+    with pytest.raises(sillage.DimensionError):
+        cn.add(CtcPImpliesZ(EPS), [p, TubeVector([w[0], w[0]]), z])
+
+
+def test_iterate_one_step_at_a_time():
+    """CtcPImpliesZ.iterate: one iteration, its row filled in place; to the fixed point as contract."""
+    td, p, w, z = borda()
+    _, q, wq, zq = borda()
+    ctc = CtcPImpliesZ(EPS)
+    rows = ctc.contract(p, w, z)
+    row = sillage.SlamRow()
+    assert ctc.iterate(q, wq, zq, row)  # the first iteration contracts
+    assert row.nb_proofs == rows[0].nb_proofs and row.nb_detections == rows[0].nb_detections
+    assert row.nb_atoms_touched > 0 and not row.fast
+    assert holds_truth(td, q)
+    steps = 1
+    while ctc.iterate(q, wq, zq, sillage.SlamRow()):
+        steps += 1
+    assert steps == len(rows) - 1  # contract stops at the first iteration that shrinks nothing
+    assert all(q[0].gate(k) == p[0].gate(k) for k in range(td.nb_slices() + 1))
+
+
 def test_a_pointer_that_never_comes_back_empties_p():
     td, p, w, z = borda()
     for k in range(2 * 64, td.nb_slices()):

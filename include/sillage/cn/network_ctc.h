@@ -28,6 +28,14 @@ class NetworkCtc {
   // order). Throws DimensionError / Error, naming the contractor, when the
   // arguments are not what it acts on.
   virtual std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const = 0;
+  // The same knowing the arguments of add() as given (refs[i] gave the next
+  // refs[i].parts().size() entries of args): for a contractor whose argument
+  // dimensions vary. make_node(args) by default.
+  virtual std::shared_ptr<const CnNode> make_node_for(const std::vector<DomainRef>& refs,
+                                                      const std::vector<BoundDomain>& args) const {
+    (void)refs;
+    return make_node(args);
+  }
 
   // Times this contractor wants as time points of a TDomain before the
   // network contracts (CtcEval: the bounds of [t]); the network samples

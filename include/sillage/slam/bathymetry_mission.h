@@ -42,6 +42,11 @@ struct BathymetryMissionOptions {
   // rails (at 30 % and 70 % of the side) instead of a diagonal and the
   // northern edge: every rail crosses them at right angles.
   bool transects = false;
+  // > 0: the tie-line layout instead: a zigzag of tie lines at this angle
+  // (degrees, at most 45) to the north-south rails across the rail area
+  // first, then the rails eastward back over them, each crossing a tie line
+  // at this small angle (transects is then ignored). 0: no tie lines.
+  double tie_line_angle = 0;
   // The SeabedOptions.
   SeabedOptions seabed;
   // The TideModel.

@@ -45,8 +45,13 @@ class CtcPImpliesZ : public NetworkCtc {
   explicit CtcPImpliesZ(double eps, bool fast = false);
 
   std::string name() const override { return fast_ ? "CtcPImpliesZ(fast)" : "CtcPImpliesZ"; }
-  // cn.add(CtcPImpliesZ(eps), {p, w, z}): p contracted, w and z read.
+  // cn.add(CtcPImpliesZ(eps), {p, w, z}): p contracted, w and z read; p and
+  // w 2-D or 1-D (3 or 4 tubes in all: 1-D, 5 or more: 2-D).
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
+  // The same with p, w and z given as three arguments of their own
+  // dimensions (what ContractorNetwork::add calls).
+  std::shared_ptr<const CnNode> make_node_for(const std::vector<DomainRef>& refs,
+                                              const std::vector<BoundDomain>& args) const override;
 
   // The width of the t-boxes.
   double eps() const { return eps_; }
@@ -62,9 +67,10 @@ class CtcPImpliesZ : public NetworkCtc {
   std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const TubeVector& z) const;
   // The same with a scalar observation Tube z.
   std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const Tube& z) const;
-  // One iteration; `row` receives its figures (iteration, times and
-  // contractions relative to the input of this call left to the caller).
-  // Returns true if p shrank by more than ratio somewhere.
+  // One iteration of C_{p⇒z} on p (2-D or 1-D); `row` (a SlamRow, filled in
+  // place) receives its detections, proofs and atoms touched (iteration,
+  // times and contractions are left to the caller). Returns true if p shrank
+  // by more than ratio somewhere.
   bool iterate(TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row) const;
 
  private:

@@ -21,6 +21,9 @@ namespace sillage {
 
 class Function;
 
+// What TemporalSlamOptions::on_iteration calls: (row, p).
+using SlamIterationCallback = std::function<void(const SlamRow&, const TubeVector&)>;
+
 // Options of temporal_slam.
 struct TemporalSlamOptions {
   double eps = 0.1;       // width of the t-boxes (about the time step)
@@ -28,9 +31,10 @@ struct TemporalSlamOptions {
   bool accurate = true;   // then Alg. 13 to its fixed point
   std::size_t max_rounds = 20;  // cap on the rounds 1-5 per algorithm
   // Called after every iteration of C_{p⇒z} with its row and the contracted
-  // p = h(x) (2-D): to check the truth at every gate, or to keep snapshots.
-  // Not timed (the row's seconds exclude it).
-  std::function<void(const SlamRow&, const TubeVector&)> on_iteration;
+  // p = h(x) (2-D or 1-D, as h): to check the truth at every gate, or to keep
+  // snapshots. Not timed (the row's seconds exclude it). In Python any
+  // callable(row, p), or None.
+  SlamIterationCallback on_iteration;
 };
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may

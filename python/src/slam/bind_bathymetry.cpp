@@ -166,6 +166,8 @@ void init_bathymetry_mission(py::module_& m) {
                      DOC(BathymetryMissionOptions, rail_spacing))
       .def_readwrite("depth", &BathymetryMissionOptions::depth, DOC(BathymetryMissionOptions, depth))
       .def_readwrite("transects", &BathymetryMissionOptions::transects, DOC(BathymetryMissionOptions, transects))
+      .def_readwrite("tie_line_angle", &BathymetryMissionOptions::tie_line_angle,
+                     DOC(BathymetryMissionOptions, tie_line_angle))
       .def_readwrite("seabed", &BathymetryMissionOptions::seabed, DOC(BathymetryMissionOptions, seabed))
       .def_readwrite("tide", &BathymetryMissionOptions::tide, DOC(BathymetryMissionOptions, tide))
       .def_readwrite("bounds", &BathymetryMissionOptions::bounds, DOC(BathymetryMissionOptions, bounds));

@@ -127,6 +127,13 @@ void init_slam(py::module_& m) {
             return c.contract(p, w, z);
           },
           py::arg("p"), py::arg("w"), py::arg("z"), DOC(CtcPImpliesZ, contract, TubeVector_TubeVector_Tube))
+      .def(
+          "iterate",
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row) {
+            py::gil_scoped_release unlocked;
+            return c.iterate(p, w, z, row);
+          },
+          py::arg("p"), py::arg("w"), py::arg("z"), py::arg("row"), DOC(CtcPImpliesZ, iterate))
       .def("__repr__", [](const CtcPImpliesZ& c) {
         return "CtcPImpliesZ(eps=" + py::repr(py::float_(c.eps())).cast<std::string>() +
                ", fast=" + (c.fast() ? "True" : "False") + ")";
@@ -138,9 +145,7 @@ void init_slam(py::module_& m) {
       .def_readwrite("fast", &TemporalSlamOptions::fast, DOC(TemporalSlamOptions, fast))
       .def_readwrite("accurate", &TemporalSlamOptions::accurate, DOC(TemporalSlamOptions, accurate))
       .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, DOC(TemporalSlamOptions, max_rounds))
-      .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration,
-                     "None, or a callable(row, p) called after every iteration of C_{p=>z} with its SlamRow and a "
-                     "copy of the contracted p (2-D TubeVector): to check the truth or keep snapshots.")
+      .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration, DOC(TemporalSlamOptions, on_iteration))
       .def("__repr__", [](const py::object& self) { return fields_repr(self); });
 
   m.def(

@@ -100,7 +100,8 @@ void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<Do
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
   check_not_contracting("add");
   if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  add_bound(domains, [ctc](const std::vector<BoundDomain>& bound) { return ctc->make_node(bound); });
+  add_bound(domains,
+            [ctc, domains](const std::vector<BoundDomain>& bound) { return ctc->make_node_for(domains, bound); });
   NetworkCtc::Gates g = ctc->gates_for(domains);
   if (g.tdomain && !g.times.empty()) pending_gates_.push_back(std::move(g));
 }

@@ -29,6 +29,9 @@ void check_options(const BathymetryMissionOptions& o) {
   if (o.rail_spacing >= 2 * o.turn_radius)
     throw Error("BathymetryMission: rail_spacing must be < 2 turn_radius (keyhole turns), got " +
                 std::to_string(o.rail_spacing) + " >= 2 * " + std::to_string(o.turn_radius));
+  if (!(o.tie_line_angle >= 0 && o.tie_line_angle <= 45))
+    throw Error("BathymetryMission: tie_line_angle must be in [0, 45] degrees (0: no tie lines), got " +
+                std::to_string(o.tie_line_angle));
   if (o.speed * 1.02 > o.bounds.speed_max)
     throw Error("BathymetryMission: speed " + std::to_string(o.speed) + " too close to the stated speed_max");
 }
@@ -39,7 +42,8 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
     : seed_(seed), options_(options), seabed_((check_options(options), generate_seabed(seed, options.seabed))) {
   const auto& o = options_;
   detail::BathymetryRng rng(seed ^ 0x5eedba7f00dULL);
-  const BathymetryPlan plan(o.seabed.size, o.speed, o.turn_radius, o.rail_spacing, o.depth, o.duration, o.transects);
+  const BathymetryPlan plan(o.seabed.size, o.speed, o.turn_radius, o.rail_spacing, o.depth, o.duration, o.transects,
+                            o.tie_line_angle * kDeg);
   double ph[10];
   for (double& p : ph) p = rng.uniform(0, 2 * kPi);
 

@@ -52,13 +52,12 @@ double smoothstep(double s) { return s * s * (3 - 2 * s); }
 double smoothstep_integral(double s) { return s * s * s - s * s * s * s / 2; }
 }  // namespace
 
-BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, double depth, double duration,
-                               bool transects) {
-  if (L < 300) throw Error("BathymetryPlan: the area must be at least 300 m wide");
-  const double m = 0.08 * L;  // margin from the edges
-  x0_ = m, y0_ = transects ? 0.3 * L : m, yaw0_ = transects ? 0 : kPi / 4;
-  Walker w{x0_, y0_, yaw0_, 0, u, R, {}, {}, {}};
-  // Overall crossing: a diagonal, or an east-west transect across the rails.
+namespace {
+
+// The overall crossing (two diagonals joined along the northern edge, or two
+// east-west transects), then the rails towards the west; w at the start.
+Walker crossing_then_rails(Walker w, double L, double beta, double duration, bool transects) {
+  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L, R = w.R;
   w.straight_to_x(L - m - 2 * R);
   if (transects) {  // north along the east side, the second transect west, north, then the diagonal
     w.turn(kPi / 2);
@@ -76,7 +75,6 @@ BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, dou
   w.straight_to_y(transects ? 0.34 * L : 0.22 * L);  // the rails start ~0.15 L from the east edge
   w.turn(3 * kPi / 4);
   // Boustrophedon towards the west.
-  const double beta = keyhole_beta(u, R, spacing), y_lo = 0.2 * L, y_hi = 0.8 * L;
   bool north = true;
   while (w.t < duration + 100 && w.x > m + R) {
     w.straight_to_y(north ? y_hi : y_lo);
@@ -84,6 +82,54 @@ BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, dou
     else w.turn(beta), w.turn(-kPi - beta);
     north = !north;
   }
+  return w;
+}
+
+// Tie lines first (the least drift): from the south-east of the rail area,
+// legs at alpha to the north-south rails, alternately north-west and
+// south-west, joined by turns of pi - 2 alpha that bulge westward, until the
+// west side; then the rails towards the east, back over the tie lines, each
+// crossing one of them at the small angle alpha (and back west over the same
+// rails if the east side comes before the duration); w at the start.
+Walker tie_lines_then_rails(Walker w, double L, double beta, double duration, double alpha) {
+  const double m = 0.08 * L, y_lo = 0.2 * L, y_hi = 0.8 * L, R = w.R, shift = (y_hi - y_lo) * std::tan(alpha);
+  bool north = true;
+  while (w.x - 2 * shift - 2 * R > m + R) {
+    w.straight_to_y(north ? y_hi : y_lo);
+    w.turn(north ? kPi - 2 * alpha : -(kPi - 2 * alpha));
+    north = !north;
+  }
+  w.straight_to_y(north ? y_hi : y_lo);
+  w.turn(north ? kPi - alpha : -(kPi - alpha));  // onto the first rail
+  north = !north;
+  bool east = true;
+  while (w.t < duration + 100) {
+    w.straight_to_y(north ? y_hi : y_lo);
+    if (east && w.x > L - m - 2 * R) east = false;
+    if (north == east) w.turn(beta), w.turn(-kPi - beta);
+    else w.turn(-beta), w.turn(kPi + beta);
+    north = !north;
+  }
+  return w;
+}
+
+}  // namespace
+
+BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, double depth, double duration,
+                               bool transects, double tie_angle) {
+  if (L < 300) throw Error("BathymetryPlan: the area must be at least 300 m wide");
+  if (!(tie_angle >= 0 && tie_angle <= kPi / 4)) {
+    throw Error("BathymetryPlan: the tie lines' angle to the rails must be in [0, 45] degrees");
+  }
+  const double beta = keyhole_beta(u, R, spacing);
+  const double m = 0.08 * L;
+  // The start: the south-east of the rail area (tie lines), the west (transects), the south-west corner.
+  x0_ = tie_angle > 0 ? L - m - R : m;
+  y0_ = tie_angle > 0 ? 0.2 * L : transects ? 0.3 * L : m;
+  yaw0_ = tie_angle > 0 ? kPi / 2 + tie_angle : transects ? 0 : kPi / 4;
+  const Walker start{x0_, y0_, yaw0_, 0, u, R, {}, {}, {}};
+  const Walker w = tie_angle > 0 ? tie_lines_then_rails(start, L, beta, duration, tie_angle)
+                                 : crossing_then_rails(start, L, beta, duration, transects);
   for (std::size_t k = 0; k < w.ts.size(); ++k) turns_.push_back({w.ts[k], w.holds[k], w.rates[k]});
   // Small planned depth changes (+1.5 m, -2 m, +1 m), 90 s each.
   depth_changes_ = {{0.26 * duration, 90, 1.5}, {0.55 * duration, 90, -2.0}, {0.8 * duration, 90, 1.0}};

@@ -1,5 +1,5 @@
 // The network node of CtcPImpliesZ: cn.add(CtcPImpliesZ(eps), {p, w, z})
-// with p and w 2-D and z of any dimension, all on one TDomain. A run takes
+// with p and w 2-D or 1-D and z of any dimension, all on one TDomain. A run takes
 // C_{p⇒z} to its fixed point on copies of the tubes (its own cost, the
 // t-plane, dwarfs the copy) and intersects p with the result, reporting the
 // slices and gates that shrank.
@@ -15,15 +15,16 @@ namespace {
 
 class PImpliesZNode : public TubeNode {
  public:
-  PImpliesZNode(CtcPImpliesZ ctc, const std::vector<BoundDomain>& args)
+  // dim: p's (and w's) dimension, 1 or 2.
+  PImpliesZNode(CtcPImpliesZ ctc, const std::vector<BoundDomain>& args, std::size_t dim)
       : TubeNode(ctc.name(), args), ctc_(std::move(ctc)) {
-    if (args.size() < 5) {
-      throw DimensionError(where() + ": expects p (2 tubes), w (2 tubes) and z (1 tube or more), got " +
-                           std::to_string(args.size()) + " tubes");
+    if (args.size() < 2 * dim + 1) {
+      throw DimensionError(where() + ": expects p (" + std::to_string(dim) + " tube(s)), w (" + std::to_string(dim) +
+                           ") and z (1 tube or more), got " + std::to_string(args.size()) + " tubes");
     }
-    p_ = whole_tubes(0, 2, "p");
-    w_ = whole_tubes(2, 2, "w");
-    z_ = whole_tubes(4, args.size() - 4, "z");
+    p_ = whole_tubes(0, dim, "p");
+    w_ = whole_tubes(dim, dim, "w");
+    z_ = whole_tubes(2 * dim, args.size() - 2 * dim, "z");
   }
 
   bool run(NodeRun& r) const override {
@@ -54,8 +55,26 @@ class PImpliesZNode : public TubeNode {
 
 }  // namespace
 
+// From the flattened arguments alone: 3 or 4 tubes leave room for a 1-D p
+// only, 5 or more are read as a 2-D p (p, w and z given as three tube
+// vectors go through make_node_for, which knows their dimensions).
 std::shared_ptr<const CnNode> CtcPImpliesZ::make_node(const std::vector<BoundDomain>& args) const {
-  return std::make_shared<PImpliesZNode>(*this, args);
+  return std::make_shared<PImpliesZNode>(*this, args, args.size() < 5 ? 1 : 2);
+}
+
+std::shared_ptr<const CnNode> CtcPImpliesZ::make_node_for(const std::vector<DomainRef>& refs,
+                                                           const std::vector<BoundDomain>& args) const {
+  if (refs.size() != 3) return make_node(args);
+  const std::size_t dim = refs[0].parts().size();
+  if (dim != 1 && dim != 2) {
+    throw DimensionError("ContractorNetwork::add(" + name() + "): p has " + std::to_string(dim) +
+                         " components; the loop tests need a 2-D p (degree) or a 1-D p (sign change)");
+  }
+  if (refs[1].parts().size() != dim) {
+    throw DimensionError("ContractorNetwork::add(" + name() + "): w has " + std::to_string(refs[1].parts().size()) +
+                         " components, p has " + std::to_string(dim));
+  }
+  return std::make_shared<PImpliesZNode>(*this, args, dim);
 }
 
 }  // namespace sillage

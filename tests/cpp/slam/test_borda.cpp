@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
@@ -122,6 +123,44 @@ TEST(Borda, AnyBalanceAnyBias) {
   EXPECT_TRUE(b.holds_truth());
   EXPECT_LT(b.p[0].gate(0).diam(), 0.8);
   for (std::size_t k = 0; k <= b.td->nb_slices(); ++k) EXPECT_EQ(b.p[0].gate(k), biased.p[0].gate(k)) << k;
+}
+
+TEST(Borda, InANetworkAsContract) {
+  // cn.add(CtcPImpliesZ(eps), {p, w, z}) with a scalar p: the node runs
+  // C_{p=>z} to its fixed point, as contract() does.
+  Borda direct, in_cn;
+  CtcPImpliesZ(1.0 / 64).contract(direct.p, direct.w, direct.z);
+  auto p = std::make_shared<TubeVector>(in_cn.p);
+  auto w = std::make_shared<TubeVector>(in_cn.w);
+  auto z = std::make_shared<TubeVector>(in_cn.z);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcPImpliesZ>(1.0 / 64), {p, w, z});
+  EXPECT_FALSE(cn.contract().empty);
+  in_cn.p = *p;
+  EXPECT_TRUE(in_cn.holds_truth());
+  EXPECT_LT((*p)[0].gate(0).diam(), 0.8);
+  for (std::size_t k = 0; k <= direct.td->nb_slices(); ++k) {
+    EXPECT_EQ((*p)[0].gate(k), direct.p[0].gate(k)) << k;
+  }
+}
+
+TEST(Borda, InANetworkWithAWideZAndBadDimensions) {
+  // 1 + 1 + 3 tubes: read from the arguments' own sizes, not guessed as a
+  // 2-D p; p and w of different sizes, or a 3-D p: DimensionError.
+  Borda b;
+  auto p = std::make_shared<TubeVector>(b.p);
+  auto w = std::make_shared<TubeVector>(b.w);
+  auto z3 = std::make_shared<TubeVector>(std::vector<Tube>{b.z[0], b.z[0], b.z[0]});
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcPImpliesZ>(1.0 / 64), {p, w, z3});
+  EXPECT_FALSE(cn.contract().empty);
+  EXPECT_LT((*p)[0].gate(0).diam(), 0.8);
+  EXPECT_TRUE((*p)[0].gate(0).contains(kMass));
+  auto w2 = std::make_shared<TubeVector>(std::vector<Tube>{b.w[0], b.w[0]});
+  auto p3 = std::make_shared<TubeVector>(std::vector<Tube>{b.p[0], b.p[0], b.p[0]});
+  ContractorNetwork bad;
+  EXPECT_THROW(bad.add(std::make_shared<CtcPImpliesZ>(1.0 / 64), {p, w2, z3}), DimensionError);
+  EXPECT_THROW(bad.add(std::make_shared<CtcPImpliesZ>(1.0 / 64), {p3, p3, z3}), DimensionError);
 }
 
 TEST(Borda, APointerThatNeverComesBackEmptiesP) {

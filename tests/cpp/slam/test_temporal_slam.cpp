@@ -58,7 +58,9 @@ TEST(TemporalSlam, BothInOneCallNumberTheRows) {
   EXPECT_GT(rows.back().contraction_tf, 0.1);  // against dead reckoning
   for (std::size_t i = 0; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i].iteration, i + 1);
-    if (i) EXPECT_GE(rows[i].cumulated_seconds, rows[i - 1].cumulated_seconds);
+    if (i) {
+      EXPECT_GE(rows[i].cumulated_seconds, rows[i - 1].cumulated_seconds);
+    }
   }
   EXPECT_TRUE(m.x.contains(m.truth));
 }
