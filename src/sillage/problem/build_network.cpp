@@ -111,6 +111,25 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   x = Tube(x.tdomain(), slices, gates);
 }
 
+// The gate at each time point of the table's stamps from its row (gates =
+// {data, value}); gates added between the stamps (an evaluation's times) keep
+// their bounds.
+void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
+  const CsvTable& table = p.table(g.data)->table;
+  const Function f(table.columns(), g.value.expr);
+  const std::vector<double>& pts = p.time.points;
+  const TDomain& td = *x.tdomain();
+  IntervalVector args(table.columns().size());
+  std::size_t row = 0;
+  for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
+    while (row < pts.size() && pts[row] < td.t(k)) ++row;
+    if (row == pts.size() || pts[row] != td.t(k)) continue;
+    const std::vector<double>& values = table.row(row);
+    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+    x.set_gate(k, x.gate(k) & f.eval(args));
+  }
+}
+
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
   if (b.expr.empty()) return Tube(td);
   return Tube(td, Function({"t"}, b.expr));
@@ -217,6 +236,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   b.cn = std::make_unique<ContractorNetwork>();
   ContractorNetwork& cn = *b.cn;
   if (p.network.ratio) cn.set_ratio(*p.network.ratio);
+  cn.set_scheduling(p.network.scheduling);
   for (const VarSpec& v : p.vars) {
     VarDomain d;
     d.spec = std::make_shared<const VarSpec>(v);
@@ -224,6 +244,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
       if (v.slices) set_slices(comps[0], p, *v.slices);
+      if (v.gates) set_gates(comps[0], p, *v.gates);
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
       for (const GateSpec& g : v.at) {
         const std::size_t k = static_cast<std::size_t>(b.td->time_index(g.t));

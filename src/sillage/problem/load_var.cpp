@@ -1,4 +1,5 @@
-// [var.NAME]: a variable's kind, dimension and initial bounds (constants, expressions of t, gates, slices from a table).
+// [var.NAME]: a variable's kind, dimension and initial bounds (constants,
+// expressions of t, gates at given times, slices and gates from a table).
 #include "sillage/problem/problem_loader.h"
 
 #include "sillage/expr/parser.h"
@@ -44,7 +45,7 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
     throw ProblemError(kp, "the variable name '" + name + "'",
                        "an identifier (letters, digits, _; not __, not a function name)");
   const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
-                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices"});
+                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates"});
   VarSpec v;
   v.name = name;
   v.pos = kp;
@@ -82,32 +83,43 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
       v.at.push_back(std::move(gs));
     }
   }
-  if (const toml::node* sn = f.find("slices")) v.slices = read_slices(f, *sn, v);
+  if (const toml::node* sn = f.find("slices")) v.slices = read_from_table(f, *sn, v, false);
+  if (const toml::node* gn = f.find("gates")) v.gates = read_from_table(f, *gn, v, true);
   if (p_.table(name)) throw ProblemError(kp, "the variable '" + name + "' named as a data table", "distinct names");
   p_.vars.push_back(std::move(v));
 }
 
-SliceDataSpec ProblemLoader::read_slices(const Fields& f, const toml::node& sn, const VarSpec& v) {
-  if (v.kind != VarKind::Tube) throw ProblemError(doc_.pos(sn), "'slices' for the " + std::string(kind_name(v.kind)) + " '" + v.name + "'", "'slices' on a tube");
+// slices = {data, value} (gates = false): slice k from row k, an expression of
+// its columns and dt; gates = {data, value} (gates = true): the gate at time
+// point k from row k, an expression of its columns. Both with [time] points.
+SliceDataSpec ProblemLoader::read_from_table(const Fields& f, const toml::node& sn, const VarSpec& v, bool gates) {
+  const std::string key = gates ? "gates" : "slices";
+  if (v.kind != VarKind::Tube)
+    throw ProblemError(doc_.pos(sn), "'" + key + "' for the " + std::string(kind_name(v.kind)) + " '" + v.name + "'",
+                       "'" + key + "' on a tube");
   if (p_.time.points.empty())
-    throw ProblemError(doc_.pos(sn), "'slices' without time points from data", "[time] points = {data, column}");
-  const Fields sf(doc_, f.table(sn, "a table {data = \"NAME\", value = \"expression\"}"), "the slices of " + v.name, {"data", "value"});
+    throw ProblemError(doc_.pos(sn), "'" + key + "' without time points from data", "[time] points = {data, column}");
+  const Fields sf(doc_, f.table(sn, "a table {data = \"NAME\", value = \"expression\"}"), "the " + key + " of " + v.name,
+                  {"data", "value"});
   SliceDataSpec s;
-  const toml::node& dn = sf.require("data", "a [data.NAME] table, one row per slice");
+  const std::size_t rows = gates ? p_.time.points.size() : p_.time.points.size() - 1;
+  const std::string per = gates ? "one row per time point" : "one row per slice";
+  const toml::node& dn = sf.require("data", "a [data.NAME] table, " + per);
   const DataSpec& d = data_table(sf, dn);
   s.data = d.name;
-  if (d.table.nb_rows() + 1 != p_.time.points.size())
+  if (d.table.nb_rows() != rows)
     throw ProblemError(doc_.pos(dn), "the table '" + d.name + "' of " + std::to_string(d.table.nb_rows()) + " rows",
-                       "one row per slice: " + std::to_string(p_.time.points.size() - 1) + " rows");
-  const toml::node& vn = sf.require("value", "an expression of the row's columns and dt");
+                       per + ": " + std::to_string(rows) + " rows");
+  const std::string of = gates ? "an expression of the row's columns" : "an expression of the row's columns and dt";
+  const toml::node& vn = sf.require("value", of);
   s.value = {sf.bound_text(vn), detail::shifted(doc_.pos(vn), vn.is_string() ? 1 : 0)};
   std::vector<std::string> names = d.table.columns();
-  names.push_back("dt");
+  if (!gates) names.push_back("dt");
   try {
     (void)detail::parse_expr(names, s.value.expr);
   } catch (const ParseError& e) {
     throw ProblemError(s.value.pos, std::string("the value \"") + s.value.expr + "\" (" + e.what() + ")",
-                       "an expression of the columns of '" + d.name + "' and dt");
+                       "an expression of the columns of '" + d.name + "'" + (gates ? "" : " and dt"));
   }
   return s;
 }

@@ -37,4 +37,6 @@ const char* kind_name(ConstraintKind k) {
   return "?";
 }
 
+const char* scheduling_name(Scheduling s) { return s == Scheduling::Priority ? "priority" : "fifo"; }
+
 }  // namespace sillage

@@ -43,7 +43,7 @@ class ProblemLoader {
   void check_bound(const BoundSpec& b, bool of_t);
   std::vector<BoundSpec> read_bounds(const Fields& f, const toml::node& n, std::size_t dim, bool of_t);
   void read_var(const std::string& name, const toml::key& key, const toml::node& node);
-  SliceDataSpec read_slices(const Fields& f, const toml::node& sn, const VarSpec& v);
+  SliceDataSpec read_from_table(const Fields& f, const toml::node& sn, const VarSpec& v, bool gates);
   // [[constraint]], one reader per kind
   void read_constraint(const Fields& top, const toml::node& node);       // load_constraint.cpp
   void read_expr_constraint(const Fields& f, ConstraintSpec& c);          // load_constraint.cpp
