@@ -70,7 +70,7 @@ struct VarSpec {
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -92,6 +92,13 @@ struct ConstraintSpec {
   std::string dpsi, turn_accel;
   double window = 0;
   std::size_t stride = 0;
+  // PImpliesZ (CtcPImpliesZ, the temporal SLAM's contractor, thesis (7.9)):
+  // p(t1) = p(t2) => z(t1) = z(t2) with p' = w; p and w tubes of one kind
+  // and dimension (1 or 2), z a tube or tube_vector; t-boxes of width eps;
+  // fast: Alg. 14 (the hull of each loop component) instead of Alg. 13.
+  std::string w, z;
+  double eps = 0;
+  bool fast = false;
   // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); SecondDeriv:
   // x'' in v (CtcSecondDeriv, v the acceleration bounds); Eval: ys[0], vs[0]
   std::string x, v;

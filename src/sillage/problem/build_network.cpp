@@ -12,6 +12,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
+#include "sillage/slam/ctc_p_implies_z.h"
 
 namespace sillage {
 
@@ -178,6 +179,7 @@ std::vector<std::size_t> constraint_order(const Problem& p) {
         case ConstraintKind::Deriv:
         case ConstraintKind::SecondDeriv: return 4;
         case ConstraintKind::HeadingWindow: return 5;
+        case ConstraintKind::PImpliesZ: return 6;  // a t-plane per run: the dearest
       }
       return 6;
     };
@@ -314,6 +316,9 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
                {b.var(c.p).tubes, scalar(c.psi), scalar(c.dist), scalar(c.dpsi), scalar(c.omega)});
         break;
       }
+      case ConstraintKind::PImpliesZ:
+        cn.add(std::make_shared<CtcPImpliesZ>(c.eps, c.fast), {b.var(c.p).tubes, b.var(c.w).tubes, b.var(c.z).tubes});
+        break;
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
         const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;

@@ -2,7 +2,7 @@
 // ProblemLoader: reads the TOML tree of a problem file into a Problem
 // (load_problem.h), one table kind per source file: load_time.cpp,
 // load_data.cpp, load_var.cpp, load_constraint.cpp (dispatch and "expr"),
-// load_deriv.cpp, load_heading.cpp, load_eval.cpp, load_output.cpp,
+// load_deriv.cpp, load_heading.cpp, load_eval.cpp, load_p_implies_z.cpp, load_output.cpp,
 // load_loops.cpp, load_network.cpp; the look-ups they share (tables, tube
 // variables, expressions) in load_lookup.cpp. Every error a ProblemError at
 // the node's file:line:column.
@@ -52,6 +52,7 @@ class ProblemLoader {
   void read_heading_window(const Fields& f, ConstraintSpec& c);           // load_heading.cpp
   void read_odometry(const Fields& f, ConstraintSpec& c, TubeKeys scalars);  // load_heading.cpp
   void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where);  // load_eval.cpp
+  void read_p_implies_z(const Fields& f, ConstraintSpec& c);  // load_p_implies_z.cpp
   // [output] (load_output.cpp, load_loops.cpp)
   std::pair<std::string, std::size_t> tube_ref(const Fields& f, const toml::node& n, bool allow_whole);
   void read_output(const toml::table& t);
