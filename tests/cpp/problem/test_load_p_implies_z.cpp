@@ -8,7 +8,10 @@
 #include <cmath>
 
 #include "problem_text.h"
+#include "sillage/cn/contractor_network.h"
+#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/problem/solve_problem.h"
+#include "sillage/slam/ctc_p_implies_z.h"
 
 using namespace sillage;
 using problem_test::error_of;
@@ -60,6 +63,29 @@ TEST(LoadPImpliesZ, ContractsBeyondDeadReckoningAndKeepsTheTruth) {
   const Problem fast = parse(kHead + kSlam + "fast = true\n");
   EXPECT_TRUE(fast.constraints[1].fast);
   EXPECT_FALSE(solve_problem(fast).empty);
+}
+
+// The file's network is the hand-written one (docs/slam.md: cn.add(CtcDeriv(),
+// [p, w]), cn.add(CtcPImpliesZ(eps), [p, w, z])) on the same initial domains:
+// the same tubes, bit for bit.
+TEST(LoadPImpliesZ, SameTubesAsTheHandWrittenNetwork) {
+  const Problem file = parse(kHead + kSlam);
+  const BuiltProblem start = build_network(file, 0.01);
+  auto p = std::make_shared<TubeVector>(*start.var("p").tubes);
+  auto w = std::make_shared<TubeVector>(*start.var("w").tubes);
+  auto z = std::make_shared<TubeVector>(*start.var("z").tubes);
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {p, w});
+  cn.add(std::make_shared<CtcPImpliesZ>(0.01), {p, w, z});
+  ASSERT_FALSE(cn.contract().empty);
+  const SolveResult r = solve_problem(file);
+  ASSERT_FALSE(r.empty);
+  const TubeVector& q = *r.built.var("p").tubes;
+  for (std::size_t i = 0; i < 2; ++i)
+    for (std::size_t k = 0; k <= q.nb_slices(); ++k) {
+      ASSERT_EQ(q[i].gate(k), (*p)[i].gate(k)) << i << " gate " << k;
+      if (k < q.nb_slices()) ASSERT_EQ(q[i].slice(k), (*p)[i].slice(k)) << i << " slice " << k;
+    }
 }
 
 TEST(LoadPImpliesZ, ErrorsAtTheirPlace) {
