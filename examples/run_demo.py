@@ -53,6 +53,7 @@ EXAMPLES = [
     ("bathymetry_mission", "cpp", "example_bathymetry_mission"),
     ("bathymetry_mission", "py", "bathymetry_mission.py"),
     ("problem_file", "py", "problem_file.py"),
+    ("problem_refinement", "py", "problem_refinement.py"),
     ("temporal_slam_small", "py", "temporal_slam_small.py"),
     ("bathymetry_slam", "cpp", "example_bathymetry_slam"),
     ("bathymetry_slam", "py", "bathymetry_slam.py"),

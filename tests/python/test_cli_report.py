@@ -64,6 +64,29 @@ def test_exit_codes():
     assert run("solve", PROBLEMS / "causal_chain.toml", "--delta", "-1").returncode == 2
 
 
+def test_scheduling_option_and_file_key(tmp_path):
+    """--scheduling priority (or [network] scheduling) in results.json and the report; a bad
+    value of the key is an error at its place (exit 2)."""
+    r = run("solve", PROBLEMS / "line_ranges.toml", "--out", tmp_path, "--quiet", "--scheduling", "priority")
+    assert r.returncode == 0, r.stderr
+    assert json.loads((tmp_path / "results.json").read_text())["scheduling"] == "priority"
+    assert '<p id="scheduling">Scheduling: priority' in (tmp_path / "report.html").read_text()
+    assert run("solve", PROBLEMS / "line_ranges.toml", "--scheduling", "lifo").returncode == 2
+    text = (PROBLEMS / "line_ranges.toml").read_text()
+    lines = text.count("\n")
+    problem = PROBLEMS / "test_scheduling_key.toml"
+    try:
+        problem.write_text(text + '[network]\nscheduling = "lifo"\n')
+        bad = run("check", problem)
+        assert bad.returncode == 2
+        assert f'test_scheduling_key.toml:{lines + 2}:14: found a string "lifo", expected "fifo" or "priority"' \
+            in bad.stderr
+        problem.write_text(text + '[network]\nscheduling = "priority"\n')
+        assert "priority scheduling" in run("check", problem).stdout
+    finally:
+        problem.unlink(missing_ok=True)
+
+
 def test_no_solution_exits_1_and_says_why(tmp_path):
     text = (PROBLEMS / "line_ranges.toml").read_text().replace('value = "[-10, 10]"', 'value = "[5, 10]"')
     problem = PROBLEMS / "test_no_solution.toml"

@@ -50,6 +50,24 @@ def test_auto_delta_by_regions():
     assert regions.schedule[-1]["mean_thickness"] < regions.schedule[0]["mean_thickness"]
 
 
+def test_solve_keywords_are_the_cli_options():
+    """delta="auto", refine="halving" | "regions", scheduling="fifo" | "priority" (or the
+    enums), as `sillage solve --delta auto --refine ... --scheduling ...`."""
+    path = str(PROBLEMS / "line_ranges.toml")
+    a = sillage.solve(path, delta="auto", refine="regions", tolerance=0.05)
+    b = sillage.solve(path, auto_delta=True, refinement=sillage.DeltaRefinement.Regions, tolerance=0.05)
+    assert [s["slices"] for s in a.schedule] == [s["slices"] for s in b.schedule] and len(a.schedule) >= 2
+    assert sillage.solve(path, delta="auto", refine="halving", tolerance=0.05).schedule[-1]["slices"] == \
+        sillage.solve(path, auto_delta=True, tolerance=0.05).schedule[-1]["slices"]
+    fifo, prio = sillage.solve(path, scheduling="fifo"), sillage.solve(path, scheduling=sillage.Scheduling.Priority)
+    assert fifo.scheduling == sillage.Scheduling.Fifo and prio.scheduling == sillage.Scheduling.Priority
+    assert sillage.solve(path).scheduling == sillage.Scheduling.Fifo  # the file's (none: FIFO)
+    assert prio.schedule[-1]["stats"].contractor_calls != fifo.schedule[-1]["stats"].contractor_calls
+    for kw, msg in [({"delta": "coarse"}, "auto"), ({"refine": "thirds"}, "halving"), ({"scheduling": "lifo"}, "priority")]:
+        with pytest.raises(ValueError, match=msg):
+            sillage.solve(path, **kw)
+
+
 def test_load_problem_errors_name_the_place(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text("[time]\ndomain = [0, 1]\ndelta = 0.1\nspeed = 3\n")

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/cn/scheduling.h"
 #include "sillage/io/csv.h"
 #include "sillage/problem/problem_error.h"
 
@@ -49,7 +50,9 @@ struct GateSpec {
 
 // The slices of a tube from a table (one row per slice of the time points of
 // [time] points = {...}): `value` is an expression of the row's columns and
-// dt (the slice's width), e.g. "delta_heading + dt*[-0.005, 0.005]".
+// dt (the slice's width), e.g. "delta_heading + dt*[-0.005, 0.005]". Or its
+// gates (one row per time point): an expression of the row's columns, e.g.
+// "v + [-0.01, 0.01]", the value measured at that time.
 struct SliceDataSpec {
   std::string data;
   BoundSpec value;
@@ -62,11 +65,12 @@ struct VarSpec {
   std::vector<BoundSpec> value;  // one per component
   std::vector<GateSpec> at;      // tubes only
   std::optional<SliceDataSpec> slices;  // scalar tubes only, with time points from data
+  std::optional<SliceDataSpec> gates;   // scalar tubes only, with time points from data
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -88,6 +92,13 @@ struct ConstraintSpec {
   std::string dpsi, turn_accel;
   double window = 0;
   std::size_t stride = 0;
+  // PImpliesZ (CtcPImpliesZ, the temporal SLAM's contractor, thesis (7.9)):
+  // p(t1) = p(t2) => z(t1) = z(t2) with p' = w; p and w tubes of one kind
+  // and dimension (1 or 2), z a tube or tube_vector; t-boxes of width eps;
+  // fast: Alg. 14 (the hull of each loop component) instead of Alg. 13.
+  std::string w, z;
+  double eps = 0;
+  bool fast = false;
   // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); SecondDeriv:
   // x'' in v (CtcSecondDeriv, v the acceleration bounds); Eval: ys[0], vs[0]
   std::string x, v;
@@ -147,12 +158,16 @@ struct OutputSpec {
 // constraints enter the network, hence their order in the first round and in
 // the queue: "file" (as written), or "cost" (the cheap ones first: the
 // evaluations, which touch a few slices, then the pointwise expressions, and
-// the whole-tube contractors last).
+// the whole-tube contractors last). scheduling: the order within each round
+// of the propagation, "fifo" (as woken) or "priority" (by expected
+// contraction over cost, ContractorNetwork::set_scheduling): the same fixed
+// point either way.
 enum class ConstraintOrder { File, Cost };
 
 struct NetworkSpec {
   std::optional<double> ratio;
   ConstraintOrder order = ConstraintOrder::File;
+  Scheduling scheduling = Scheduling::Fifo;
   SourcePos pos;
 };
 
@@ -172,5 +187,7 @@ struct Problem {
 
 const char* kind_name(VarKind k);
 const char* kind_name(ConstraintKind k);
+// "fifo" or "priority", as written in [network] scheduling.
+const char* scheduling_name(Scheduling s);
 
 }  // namespace sillage

@@ -32,6 +32,8 @@ struct SolveOptions {
   double budget_seconds = 60;   // of the automatic δ
   std::size_t max_slices = 1u << 20;
   DeltaRefinement refinement = DeltaRefinement::Halving;  // the faster to a thinner result (docs/cli.md)
+  // The order within a round of the propagation; none: the file's ([network] scheduling, default Fifo).
+  std::optional<Scheduling> scheduling;
   // Regions: a slice is split when its excess thickness over its gates (summed
   // over the bounded tube components) is above this quantile of all the
   // slices' (0.5: the thicker half).
@@ -55,6 +57,7 @@ struct SolveResult {
   // True if the problem has no solution (an empty domain).
   bool empty = false;
   std::string why_empty;  // ContractStats::emptiness + the constraint and its place in the file
+  Scheduling scheduling = Scheduling::Fifo;  // the order the propagation ran
   // Time spent building the networks (all steps).
   double build_seconds() const;
   // Time spent contracting (all steps).
@@ -63,7 +66,9 @@ struct SolveResult {
 
 // Builds the network of the problem and contracts it to the fixed point (GIL released); delta: a
 // slice width (default: the file's), auto_delta: refine δ from coarse until the result changes by
-// less than tolerance or the budget is spent.
+// less than tolerance or the budget is spent; scheduling: the order within a round (default: the file's
+// [network] scheduling). In Python also delta="auto", refine="halving" | "regions" and
+// scheduling="fifo" | "priority", the names of the `sillage solve` options.
 SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
 
 // The mean thickness (volume / duration) summed over the tube components with

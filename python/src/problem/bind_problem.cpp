@@ -43,12 +43,39 @@ py::list schedule(const SolveResult& r) {
   return l;
 }
 
-std::shared_ptr<SolveResult> solve_with(const Problem& p, std::optional<double> delta, bool auto_delta,
-                                        double tolerance, double budget_seconds, DeltaRefinement refinement) {
+// The options of `sillage solve` under the same names: delta = a width or "auto", refine = "halving" |
+// "regions" (or refinement = DeltaRefinement), scheduling = "fifo" | "priority" or a Scheduling.
+SolveOptions options_of(const py::object& delta, bool auto_delta, DeltaRefinement refinement,
+                        const std::optional<std::string>& refine, const py::object& scheduling) {
   SolveOptions o;
-  o.delta = delta;
   o.auto_delta = auto_delta;
+  if (py::isinstance<py::str>(delta)) {
+    if (delta.cast<std::string>() != "auto") throw py::value_error("delta: expected a slice width > 0 or \"auto\"");
+    o.auto_delta = true;
+  } else if (!delta.is_none()) {
+    o.delta = delta.cast<double>();
+  }
   o.refinement = refinement;
+  if (refine) {
+    if (*refine != "halving" && *refine != "regions")
+      throw py::value_error("refine: found \"" + *refine + "\", expected \"halving\" or \"regions\"");
+    o.refinement = *refine == "regions" ? DeltaRefinement::Regions : DeltaRefinement::Halving;
+  }
+  if (py::isinstance<py::str>(scheduling)) {
+    const std::string s = scheduling.cast<std::string>();
+    if (s != "fifo" && s != "priority")
+      throw py::value_error("scheduling: found \"" + s + "\", expected \"fifo\" or \"priority\"");
+    o.scheduling = s == "priority" ? Scheduling::Priority : Scheduling::Fifo;
+  } else if (!scheduling.is_none()) {
+    o.scheduling = scheduling.cast<Scheduling>();
+  }
+  return o;
+}
+
+std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delta, bool auto_delta,
+                                        double tolerance, double budget_seconds, DeltaRefinement refinement,
+                                        const std::optional<std::string>& refine, const py::object& scheduling) {
+  SolveOptions o = options_of(delta, auto_delta, refinement, refine, scheduling);
   o.tolerance = tolerance;
   o.budget_seconds = budget_seconds;
   py::gil_scoped_release release;
@@ -81,6 +108,7 @@ void init_problem(py::module_& m) {
       .def_readonly("empty", &SolveResult::empty, DOC(SolveResult, empty))
       .def_readonly("why_empty", &SolveResult::why_empty,
                     DOC(SolveResult, why_empty))
+      .def_readonly("scheduling", &SolveResult::scheduling, DOC(SolveResult, scheduling))
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
@@ -100,15 +128,19 @@ void init_problem(py::module_& m) {
         DOC(check_summary));
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
-        py::arg("refinement") = DeltaRefinement::Halving, DOC(solve_problem));
+        py::arg("refinement") = DeltaRefinement::Halving, py::arg("refine") = py::none(),
+        py::arg("scheduling") = py::none(), DOC(solve_problem));
   m.def(
       "solve",
-      [](const std::string& path, std::optional<double> delta, bool auto_delta, double tolerance,
-         double budget_seconds, DeltaRefinement refinement) {
-        return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds, refinement);
+      [](const std::string& path, const py::object& delta, bool auto_delta, double tolerance,
+         double budget_seconds, DeltaRefinement refinement, const std::optional<std::string>& refine,
+         const py::object& scheduling) {
+        return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds, refinement, refine,
+                          scheduling);
       },
       py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
       py::arg("budget_seconds") = 60.0, py::arg("refinement") = DeltaRefinement::Halving,
+      py::arg("refine") = py::none(), py::arg("scheduling") = py::none(),
       "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
   m.def(
       "find_loops",

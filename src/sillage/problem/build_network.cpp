@@ -12,6 +12,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
+#include "sillage/slam/ctc_p_implies_z.h"
 
 namespace sillage {
 
@@ -111,6 +112,25 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   x = Tube(x.tdomain(), slices, gates);
 }
 
+// The gate at each time point of the table's stamps from its row (gates =
+// {data, value}); gates added between the stamps (an evaluation's times) keep
+// their bounds.
+void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
+  const CsvTable& table = p.table(g.data)->table;
+  const Function f(table.columns(), g.value.expr);
+  const std::vector<double>& pts = p.time.points;
+  const TDomain& td = *x.tdomain();
+  IntervalVector args(table.columns().size());
+  std::size_t row = 0;
+  for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
+    while (row < pts.size() && pts[row] < td.t(k)) ++row;
+    if (row == pts.size() || pts[row] != td.t(k)) continue;
+    const std::vector<double>& values = table.row(row);
+    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+    x.set_gate(k, x.gate(k) & f.eval(args));
+  }
+}
+
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
   if (b.expr.empty()) return Tube(td);
   return Tube(td, Function({"t"}, b.expr));
@@ -159,6 +179,7 @@ std::vector<std::size_t> constraint_order(const Problem& p) {
         case ConstraintKind::Deriv:
         case ConstraintKind::SecondDeriv: return 4;
         case ConstraintKind::HeadingWindow: return 5;
+        case ConstraintKind::PImpliesZ: return 6;  // a t-plane per run: the dearest
       }
       return 6;
     };
@@ -217,6 +238,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   b.cn = std::make_unique<ContractorNetwork>();
   ContractorNetwork& cn = *b.cn;
   if (p.network.ratio) cn.set_ratio(*p.network.ratio);
+  cn.set_scheduling(p.network.scheduling);
   for (const VarSpec& v : p.vars) {
     VarDomain d;
     d.spec = std::make_shared<const VarSpec>(v);
@@ -224,6 +246,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
       if (v.slices) set_slices(comps[0], p, *v.slices);
+      if (v.gates) set_gates(comps[0], p, *v.gates);
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
       for (const GateSpec& g : v.at) {
         const std::size_t k = static_cast<std::size_t>(b.td->time_index(g.t));
@@ -293,6 +316,9 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
                {b.var(c.p).tubes, scalar(c.psi), scalar(c.dist), scalar(c.dpsi), scalar(c.omega)});
         break;
       }
+      case ConstraintKind::PImpliesZ:
+        cn.add(std::make_shared<CtcPImpliesZ>(c.eps, c.fast), {b.var(c.p).tubes, b.var(c.w).tubes, b.var(c.z).tubes});
+        break;
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
         const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;

@@ -53,7 +53,8 @@ std::string check_summary(const Problem& p) {
     nodes += n;
     s += line("  %-8zu nodes  %s\n", n, c.label.c_str());
   }
-  s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains\n", nodes, domains, bytes / 1048576.0);
+  s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains, %s scheduling\n", nodes, domains,
+            bytes / 1048576.0, scheduling_name(p.network.scheduling));
   return s;
 }
 

@@ -33,8 +33,11 @@ const char* kind_name(ConstraintKind k) {
     case ConstraintKind::Heading: return "heading";
     case ConstraintKind::SecondDeriv: return "second_deriv";
     case ConstraintKind::HeadingWindow: return "heading_window";
+    case ConstraintKind::PImpliesZ: return "p_implies_z";
   }
   return "?";
 }
+
+const char* scheduling_name(Scheduling s) { return s == Scheduling::Priority ? "priority" : "fifo"; }
 
 }  // namespace sillage

@@ -135,7 +135,9 @@ std::string report_html(const Problem& p, const SolveResult& r) {
     h << "<tr><td>" << fmt(s.delta) << "</td><td>" << s.slices << "</td><td>" << fmt(s.mean_thickness) << "</td><td>"
       << s.stats.iterations << "</td><td>" << s.stats.contractor_calls << "</td><td>" << fmt(s.build_seconds, "%.4f")
       << "</td><td>" << fmt(s.contract_seconds, "%.4f") << "</td></tr>\n";
-  h << "</table>\n";
+  h << "</table>\n<p id=\"scheduling\">Scheduling: " << scheduling_name(r.scheduling)
+    << (r.scheduling == Scheduling::Priority ? " (each round by expected contraction over cost)" : " (each round in the order woken)")
+    << ".</p>\n";
 
   std::vector<double> times = p.output.times;
   if (times.empty()) times = {b.td->t0(), (b.td->t0() + b.td->tf()) / 2, b.td->tf()};
@@ -219,6 +221,7 @@ std::string report_html(const Problem& p, const SolveResult& r) {
     << "<tr><td>constraints (file)</td><td>" << p.constraints.size() << "</td></tr>"
     << "<tr><td>network nodes</td><td>" << b.cn->nb_ctc() << "</td></tr>"
     << "<tr><td>network domains</td><td>" << b.cn->nb_dom() << "</td></tr>"
+    << "<tr><td>scheduling</td><td>" << scheduling_name(r.scheduling) << "</td></tr>"
     << "<tr><td>slices</td><td>" << b.td->nb_slices() << "</td></tr>"
     << "<tr><td>tube memory</td><td>" << fmt(b.memory_bytes() / 1048576.0, "%.2f") << " MiB</td></tr>"
     << "<tr><td>build time (all steps)</td><td>" << fmt(build, "%.4f") << " s ("

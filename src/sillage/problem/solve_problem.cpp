@@ -73,6 +73,8 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
     BuiltProblem b = points.empty() ? build_network(p, delta) : build_network(p, points);
     step.build_seconds = seconds_since(t0);
     step.slices = b.td->nb_slices();
+    if (o.scheduling) b.cn->set_scheduling(*o.scheduling);
+    r.scheduling = b.cn->scheduling();
     if (!points.empty()) {
       step.delta = INFINITY;
       for (std::size_t k = 0; k < step.slices; ++k) step.delta = std::min(step.delta, b.td->t(k + 1) - b.td->t(k));

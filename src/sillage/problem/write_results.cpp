@@ -47,6 +47,7 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   j["hash"] = p.hash;
   j["status"] = r.empty ? "no solution" : "solved";
   if (r.empty) j["why"] = r.why_empty;
+  j["scheduling"] = scheduling_name(r.scheduling);
   j["schedule"] = json::array();
   for (const ScheduleStep& s : r.schedule) j["schedule"].push_back(stats_json(s));
   const TDomain& td = *r.built.td;

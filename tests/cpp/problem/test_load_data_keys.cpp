@@ -1,5 +1,5 @@
 // Keys that tie a problem to its data tables: [time] points (the stamps of a
-// table), tubes whose slices come from a table, the heading constraint
+// table), tubes whose slices or gates come from a table, the heading constraint
 // (CtcHeading), eval rows joined to another table, and ${VAR:-default} in
 // data paths. What they build, and their errors at their place.
 #include <gtest/gtest.h>
@@ -82,6 +82,42 @@ TEST(LoadDataKeys, TimePointsErrors) {
   expect_error(table("stamps", "stamps.csv") + table("odo", "odo.csv") + kStamps +
                    "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d + q\" }\n",
                "expected an expression of the columns of 'odo' and dt");
+}
+
+// gates = {data, value}: the value at each time point from its row (a
+// position measured at each stamp), the slices left to the constraints.
+TEST(LoadDataKeys, GatesFromATable) {
+  const std::string head = table("stamps", "stamps.csv") + table("odo", "odo.csv") + kStamps;
+  const Problem p = parse(head + "[var.x]\nkind = \"tube\"\ngates = { data = \"stamps\", value = \"t + [-0.01, 0.01]\" }\n"
+                                 "[var.d]\nkind = \"tube\"\nslices = { data = \"odo\", value = \"d/dt + [-0.5, 0.5]\" }\n"
+                                 "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"d\"\n");
+  ASSERT_TRUE(p.var("x")->gates);
+  EXPECT_EQ(p.var("x")->gates->data, "stamps");
+  const BuiltProblem b = build_network(p, 0.5);
+  const Tube& x0 = (*b.var("x").tubes)[0];
+  const std::vector<double> stamps{0, 0.5, 1.5, 2};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_TRUE(x0.gate(k).contains(stamps[k])) << k;
+    EXPECT_TRUE(x0.gate(k).is_subset(Interval(stamps[k] - 0.0100001, stamps[k] + 0.0100001))) << x0.gate(k);
+  }
+  EXPECT_TRUE(x0.slice(1).is_unbounded());  // the slices are the constraints' to contract
+  const SolveResult r = solve_problem(p);
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  const Tube& x = (*r.built.var("x").tubes)[0];
+  EXPECT_TRUE(x.slice(1).contains(1.0));  // x(t) = t, between its gates 0.5 and 1.5 with x' in [0.5, 1.5]
+  EXPECT_LT(x.slice(1).diam(), 1.1);
+
+  expect_error(head + "[var.x]\nkind = \"tube\"\ngates = { data = \"odo\", value = \"d\" }\n",
+               "found the table 'odo' of 3 rows, expected one row per time point: 4 rows");
+  expect_error(head + "[var.x]\nkind = \"tube\"\ngates = { data = \"stamps\", value = \"t + dt\" }\n",
+               "expected an expression of the columns of 'stamps'");
+  expect_error(head + "[var.x]\nkind = \"tube_vector\"\ndim = 2\ngates = { data = \"stamps\", value = \"t\" }\n",
+               "found 'gates' for the tube_vector 'x', expected 'gates' on a tube");
+  expect_error("[time]\ndomain = [0, 1]\ndelta = 0.1\n" + table("odo", "odo.csv") +
+                   "[var.d]\nkind = \"tube\"\ngates = { data = \"odo\", value = \"d\" }\n",
+               "test.toml:8:9: found 'gates' without time points from data, expected [time] points = {data, column}");
+  expect_error(head + "[var.x]\nkind = \"tube\"\ngates = { data = \"stamps\", value = \"t\", column = \"t\" }\n",
+               "found the unknown key 'column' in the gates of x");
 }
 
 TEST(LoadDataKeys, HeadingConstraint) {

@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include "problem_text.h"
+#include "sillage/problem/check_summary.h"
+#include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
+#include "sillage/problem/write_results.h"
 
 using namespace sillage;
 
@@ -45,4 +48,56 @@ TEST(ProblemScheduling, SameFixedPointAsFifo) {
     }
     std::printf("%s, ratio 0: FIFO %zu runs, priority %zu runs\n", name, fs.contractor_calls, ps.contractor_calls);
   }
+}
+
+// [network] scheduling = "fifo" | "priority": read, given to the network,
+// overridden by SolveOptions::scheduling (`sillage solve --scheduling`), and
+// reported in results.json and report.html; the same fixed point as FIFO.
+TEST(ProblemScheduling, FileKeyReachesTheNetworkAndTheReports) {
+  const std::string text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  const Problem fifo = problem_test::parse(text + "[network]\nratio = 0\n");
+  const Problem prio = problem_test::parse(text + "[network]\nratio = 0\nscheduling = \"priority\"\n");
+  EXPECT_EQ(fifo.network.scheduling, Scheduling::Fifo);
+  EXPECT_EQ(prio.network.scheduling, Scheduling::Priority);
+  EXPECT_EQ(problem_test::parse(text + "[network]\nscheduling = \"fifo\"\n").network.scheduling, Scheduling::Fifo);
+  EXPECT_EQ(build_network(prio, *prio.time.delta).cn->scheduling(), Scheduling::Priority);
+  const SolveResult a = solve_problem(fifo), b = solve_problem(prio);
+  ASSERT_FALSE(a.empty || b.empty);
+  EXPECT_EQ(a.scheduling, Scheduling::Fifo);
+  EXPECT_EQ(b.scheduling, Scheduling::Priority);
+  for (std::size_t v = 0; v < a.built.vars.size(); ++v) {
+    const VarDomain &x = a.built.vars[v], &y = b.built.vars[v];
+    for (std::size_t i = 0; x.tubes && i < x.tubes->size(); ++i)
+      for (std::size_t k = 0; k <= (*x.tubes)[i].nb_slices(); ++k) {
+        ASSERT_EQ((*x.tubes)[i].gate(k), (*y.tubes)[i].gate(k)) << x.spec->name << " gate " << k;
+        if (k < (*x.tubes)[i].nb_slices()) ASSERT_EQ((*x.tubes)[i].slice(k), (*y.tubes)[i].slice(k)) << x.spec->name;
+      }
+    if (x.interval) EXPECT_EQ(*x.interval, *y.interval) << x.spec->name;
+    if (x.box) EXPECT_EQ(*x.box, *y.box) << x.spec->name;
+  }
+  EXPECT_NE(results_json(prio, b).find("\"scheduling\": \"priority\""), std::string::npos);
+  EXPECT_NE(results_json(fifo, a).find("\"scheduling\": \"fifo\""), std::string::npos);
+  EXPECT_NE(report_html(prio, b).find("<p id=\"scheduling\">Scheduling: priority"), std::string::npos);
+  EXPECT_NE(check_summary(prio).find("priority scheduling"), std::string::npos);
+
+  SolveOptions o;
+  o.scheduling = Scheduling::Fifo;  // the option wins over the file
+  const SolveResult c = solve_problem(prio, o);
+  EXPECT_EQ(c.scheduling, Scheduling::Fifo);
+  EXPECT_EQ(c.schedule.back().stats.contractor_calls, a.schedule.back().stats.contractor_calls);
+  EXPECT_NE(b.schedule.back().stats.contractor_calls, a.schedule.back().stats.contractor_calls);  // 49 against 50
+}
+
+TEST(ProblemScheduling, FileKeyErrorsAtTheirPlace) {
+  const std::string text = problem_test::read_file(problem_test::problems_dir() + "/causal_chain.toml");
+  std::size_t lines = 0;
+  for (char ch : text) lines += ch == '\n';
+  const std::string line = "test.toml:" + std::to_string(lines + 2) + ":14: ";
+  const std::string bad = problem_test::error_of(text + "[network]\nscheduling = \"lifo\"\n");
+  EXPECT_NE(bad.find(line + "found a string \"lifo\", expected \"fifo\" or \"priority\""), std::string::npos) << bad;
+  const std::string num = problem_test::error_of(text + "[network]\nscheduling = 1\n");
+  EXPECT_NE(num.find(line + "found an integer 1, expected \"fifo\" or \"priority\""), std::string::npos) << num;
+  const std::string key = problem_test::error_of(text + "[network]\nschedule = \"fifo\"\n");
+  EXPECT_NE(key.find("test.toml:" + std::to_string(lines + 2) + ":1: found the unknown key 'schedule'"),
+            std::string::npos) << key;
 }

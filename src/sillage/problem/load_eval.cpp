@@ -1,0 +1,136 @@
+// [[constraint]] kind = "eval": evaluations at the times of a table's rows and their observation.
+#include "sillage/problem/problem_loader.h"
+
+namespace sillage::detail {
+
+void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::string& where) {
+  c.kind = ConstraintKind::Eval;
+  const toml::node& dn = f.require("data", "the name of a [data.NAME] table");
+  c.data = f.string(dn, "a data table name (string)");
+  const DataSpec* d = p_.table(c.data);
+  if (!d) {
+    std::string names;
+    for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
+    throw ProblemError(doc_.pos(dn), "the unknown table '" + c.data + "'", "a [data.NAME] table (" + names + ")");
+  }
+  std::vector<const VarSpec*> ys;
+  for (const toml::node* n : one_or_many(f, f.require("y", "a tube name or an array of them"),
+                                         "a tube name or an array of them")) {
+    const VarSpec& y = tube_var(f, *n);
+    for (const VarSpec* o : ys)
+      if (o == &y) throw ProblemError(doc_.pos(*n), "'" + y.name + "' twice", "distinct tubes in y");
+    ys.push_back(&y);
+    c.ys.push_back(y.name);
+  }
+  c.vs.assign(ys.size(), "");
+  if (const toml::node* vn = f.find("v")) {
+    const auto vs = one_or_many(f, *vn, "a derivative tube per tube of y");
+    if (vs.size() != ys.size())
+      throw ProblemError(doc_.pos(*vn), std::to_string(vs.size()) + " derivative(s)",
+                         std::to_string(ys.size()) + " (one per tube of y, \"\" for none)");
+    for (std::size_t j = 0; j < vs.size(); ++j) {
+      if (vs[j]->is_string() && vs[j]->as_string()->get().empty()) continue;
+      const VarSpec& v = tube_var(f, *vs[j]);
+      if (v.dim != ys[j]->dim || v.kind != ys[j]->kind)
+        throw ProblemError(doc_.pos(*vs[j]), "'" + v.name + "'",
+                           "a derivative of the kind and dimension of '" + ys[j]->name + "'");
+      c.vs[j] = v.name;
+    }
+  }
+  c.x = c.ys[0];
+  c.v = c.vs[0];
+  auto column = [&](const toml::node& n) {
+    const std::string col = f.string(n, "a column name (string)");
+    if (!d->table.has_column(col)) {
+      std::string cols;
+      for (const auto& h : d->table.columns()) cols += (cols.empty() ? "" : ", ") + h;
+      throw ProblemError(doc_.pos(n), "the column '" + col + "' missing from table '" + c.data + "'", "one of: " + cols);
+    }
+    return col;
+  };
+  if (const toml::node* tn = f.find("time")) {
+    const std::string expected = "a time column, or two columns [lb, ub]";
+    const auto cols = one_or_many(f, *tn, expected);
+    if (cols.size() > 2) throw ProblemError(doc_.pos(*tn), describe(*tn), expected);
+    for (const toml::node* n : cols) c.time_columns.push_back(column(*n));
+  }
+  if (const toml::node* te = f.find("time_error")) {
+    if (f.number(*te, "a time error >= 0") < 0) throw ProblemError(doc_.pos(*te), "a negative time error", "a time error >= 0");
+    if (c.time_columns.empty())
+      throw ProblemError(doc_.pos(*te), "a time error without a time column", "time = \"column\" with it");
+    c.time_error = f.bound_text(*te);
+  }
+  if (const toml::node* er = f.find("errors")) {
+    for (auto&& [key, node] : f.table(*er, "a table {column = error}")) {
+      if (!d->table.has_column(std::string(key.str())))
+        throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
+                                                       c.data + "'", "a column of it");
+      if (f.number(node, "an error >= 0 (number)") < 0)
+        throw ProblemError(doc_.pos(node), "a negative error", "an error >= 0");
+      c.errors[std::string(key.str())] = f.bound_text(node);
+    }
+  }
+  if (const toml::node* wn = f.find("where")) {
+    for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
+      if (!d->table.has_column(std::string(key.str())))
+        throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
+                                                       c.data + "'", "a column of it");
+      c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
+    }
+  }
+  if (const toml::node* g = f.find("gates")) {
+    if (!g->is_boolean()) throw ProblemError(doc_.pos(*g), describe(*g), "true or false");
+    c.gates = g->as_boolean()->get();
+  }
+  const DataSpec* joined = nullptr;
+  if (const toml::node* jn = f.find("join")) {
+    const Fields jf(doc_, f.table(*jn, "a table {data = \"NAME\", on = \"column\"}"), where + " join", {"data", "on"});
+    joined = &data_table(jf, jf.require("data", "a [data.NAME] table"));
+    const toml::node& on = jf.require("on", "a column of both tables");
+    c.join_on = jf.string(on, "a column name (string)");
+    c.join_data = joined->name;
+    if (!d->table.has_column(c.join_on) || !joined->table.has_column(c.join_on))
+      throw ProblemError(doc_.pos(on), "the column '" + c.join_on + "'", "a column of both '" + c.data + "' and '" + joined->name + "'");
+    for (const auto& col : joined->table.columns())
+      if (col != c.join_on && d->table.has_column(col))
+        throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
+  }
+  const auto has_column = [&](const std::string& n) { return d->table.has_column(n) || (joined && joined->table.has_column(n)); };
+  // In the observation: the evaluated values are named as their tubes, the columns by name.
+  const auto y_of = [&](const std::string& n) -> const VarSpec* {
+    for (const VarSpec* y : ys)
+      if (y->name == n) return y;
+    return nullptr;
+  };
+  auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
+    if (const VarSpec* y = y_of(n)) return y->dim;
+    if (has_column(n)) return 1;
+    const VarSpec* v = p_.var(n);
+    if (v && !v->is_tube()) return v->dim;
+    return std::nullopt;
+  };
+  auto vec = [&](const std::string& n) {
+    if (const VarSpec* y = y_of(n)) return y->kind == VarKind::TubeVector;
+    const VarSpec* v = p_.var(n);
+    return !has_column(n) && v && v->kind == VarKind::Box;
+  };
+  std::string known, names;
+  for (const VarSpec* y : ys) {
+    known += y->name + (y->kind == VarKind::TubeVector ? "[i]" : "") + " (the value " + y->name + "(t)), ";
+    names += (names.empty() ? "" : ", ") + y->name;
+  }
+  known += "the columns of '" + c.data + "'" + (joined ? " and '" + joined->name + "'" : "");
+  for (const VarSpec& v : p_.vars)
+    if (!v.is_tube()) known += ", " + v.name;
+  read_expr(f, c, dims, vec, known);
+  std::vector<std::string> cols = d->table.columns();
+  if (joined) cols.insert(cols.end(), joined->table.columns().begin(), joined->table.columns().end());
+  for (const auto& col : cols)
+    if (p_.var(col) && !y_of(col))
+      throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
+  c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
+            (c.time_columns.empty() ? std::string("t unknown") : c.time_columns[0]) + ") for every row of '" +
+            c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");
+}
+
+}  // namespace sillage::detail

@@ -1,0 +1,66 @@
+// The look-ups every table of a problem file shares: tables, tube variables, expressions.
+#include "sillage/problem/problem_loader.h"
+
+#include <cctype>
+#include "sillage/expr/parser.h"
+#include "sillage/problem/var_refs.h"
+
+namespace sillage::detail {
+
+bool valid_name(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return s.find("__") == std::string::npos && !detail::is_reserved_name(s);
+}
+
+const DataSpec& ProblemLoader::data_table(const Fields& f, const toml::node& dn) {
+  const std::string name = f.string(dn, "a data table name (string)");
+  if (const DataSpec* d = p_.table(name)) return *d;
+  std::string names;
+  for (const DataSpec& x : p_.data) names += (names.empty() ? "" : ", ") + x.name;
+  throw ProblemError(doc_.pos(dn), "the unknown table '" + name + "'", "a [data.NAME] table (" + names + ")");
+}
+
+std::string ProblemLoader::known_vars() const {
+  std::string s;
+  for (const VarSpec& v : p_.vars)
+    s += (s.empty() ? "" : ", ") + (v.dim > 1 || v.kind == VarKind::TubeVector || v.kind == VarKind::Box
+                                        ? v.name + "[0.." + std::to_string(v.dim - 1) + "]"
+                                        : v.name);
+  return s;
+}
+
+const VarSpec& ProblemLoader::tube_var(const Fields& f, const char* key) {
+  return tube_var(f, f.require(key, "the name of a tube variable"));
+}
+
+const VarSpec& ProblemLoader::tube_var(const Fields& f, const toml::node& n) {
+  const std::string name = f.string(n, "the name of a tube variable (string)");
+  const VarSpec* v = p_.var(name);
+  if (!v || !v->is_tube())
+    throw ProblemError(doc_.pos(n), v ? "the " + std::string(kind_name(v->kind)) + " '" + name + "'" : "'" + name + "'",
+                       "a tube or tube_vector variable (" + known_vars() + ")");
+  return *v;
+}
+
+void ProblemLoader::read_expr(const Fields& f, ConstraintSpec& c, const DimOf& dims, const IsVector& vec, const std::string& known) {
+  const toml::node& e = f.require("expr", "an expression such as \"v[0] - 10*cos(x[2])\" (= 0)");
+  c.expr = f.string(e, "an expression (string)");
+  c.expr_pos = shifted(doc_.pos(e), 1);
+  (void)rewrite_refs(c.expr, c.expr_pos, dims, vec, known);
+}
+
+// A string or an array of strings (at least one).
+std::vector<const toml::node*> ProblemLoader::one_or_many(const Fields& f, const toml::node& n, const std::string& expected) {
+  std::vector<const toml::node*> out;
+  if (n.is_array()) {
+    for (const toml::node& e : f.array(n, expected)) out.push_back(&e);
+    if (out.empty()) throw ProblemError(doc_.pos(n), "an empty array", expected);
+  } else {
+    out.push_back(&n);
+  }
+  return out;
+}
+
+}  // namespace sillage::detail

@@ -1,0 +1,75 @@
+#pragma once
+// ProblemLoader: reads the TOML tree of a problem file into a Problem
+// (load_problem.h), one table kind per source file: load_time.cpp,
+// load_data.cpp, load_var.cpp, load_constraint.cpp (dispatch and "expr"),
+// load_deriv.cpp, load_heading.cpp, load_eval.cpp, load_p_implies_z.cpp, load_output.cpp,
+// load_loops.cpp, load_network.cpp; the look-ups they share (tables, tube
+// variables, expressions) in load_lookup.cpp. Every error a ProblemError at
+// the node's file:line:column.
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sillage/problem/problem.h"
+#include "sillage/problem/toml_fields.h"
+
+namespace sillage::detail {
+
+// A table, variable or column name: an identifier, no "__", not a function name.
+bool valid_name(const std::string& s);
+
+class ProblemLoader {
+ public:
+  // text: the file's content; path names it in messages and is the base of the data paths.
+  ProblemLoader(const std::string& text, const std::string& path);
+  Problem run();
+
+ private:
+  using DimOf = std::function<std::optional<std::size_t>(const std::string&)>;
+  using IsVector = std::function<bool(const std::string&)>;
+  using TubeKeys = std::initializer_list<std::pair<const char*, std::string*>>;
+
+  // [time] (load_time.cpp)
+  void read_time(const toml::table& t);
+  void read_time_points(const Fields& f, const toml::node& pn);
+  // [data.NAME] (load_data.cpp)
+  void read_data(const std::string& name, const toml::key& key, const toml::node& node);
+  // [var.NAME] (load_var.cpp)
+  void check_bound(const BoundSpec& b, bool of_t);
+  std::vector<BoundSpec> read_bounds(const Fields& f, const toml::node& n, std::size_t dim, bool of_t);
+  void read_var(const std::string& name, const toml::key& key, const toml::node& node);
+  SliceDataSpec read_from_table(const Fields& f, const toml::node& sn, const VarSpec& v, bool gates);
+  // [[constraint]], one reader per kind
+  void read_constraint(const Fields& top, const toml::node& node);       // load_constraint.cpp
+  void read_expr_constraint(const Fields& f, ConstraintSpec& c);          // load_constraint.cpp
+  void read_deriv(const Fields& f, ConstraintSpec& c, const std::string& kind, const char* vkey);  // load_deriv.cpp
+  void read_heading(const Fields& f, ConstraintSpec& c);                  // load_heading.cpp
+  void read_heading_window(const Fields& f, ConstraintSpec& c);           // load_heading.cpp
+  void read_odometry(const Fields& f, ConstraintSpec& c, TubeKeys scalars);  // load_heading.cpp
+  void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where);  // load_eval.cpp
+  void read_p_implies_z(const Fields& f, ConstraintSpec& c);  // load_p_implies_z.cpp
+  // [output] (load_output.cpp, load_loops.cpp)
+  std::pair<std::string, std::size_t> tube_ref(const Fields& f, const toml::node& n, bool allow_whole);
+  void read_output(const toml::table& t);
+  void read_loops(const Fields& f, const toml::node& ln);
+  // [network] (load_network.cpp)
+  void read_network(const toml::table& t);
+  // Shared look-ups (load_lookup.cpp)
+  const DataSpec& data_table(const Fields& f, const toml::node& dn);
+  std::string known_vars() const;
+  const VarSpec& tube_var(const Fields& f, const char* key);
+  const VarSpec& tube_var(const Fields& f, const toml::node& n);
+  void read_expr(const Fields& f, ConstraintSpec& c, const DimOf& dims, const IsVector& vec, const std::string& known);
+  std::vector<const toml::node*> one_or_many(const Fields& f, const toml::node& n, const std::string& expected);
+
+  Problem p_;
+  Document doc_;
+  std::filesystem::path base_;
+};
+
+}  // namespace sillage::detail
