@@ -2,7 +2,8 @@
 // Interval: a closed connected subset [lb, ub] of the reals, possibly empty or
 // unbounded (thesis 2.2.2). Bounds are binary64; every operation returns an
 // interval guaranteed to contain the exact set result (outward rounding by
-// error-free transformations, see rounding.h). + - * / sqr sqrt are optimal:
+// AVX-512F static rounding modes or by error-free transformations, see
+// arith_kernels.h). + - * / sqr sqrt are optimal:
 // their bounds are the correctly rounded exact bounds.
 //
 // Set-based semantics (IEEE 1788): an operation acts on the part of its
@@ -17,6 +18,7 @@
 #include <utility>
 
 #include "sillage/error.h"
+#include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/rounding.h"
 
 namespace sillage {
@@ -136,44 +138,34 @@ Interval::Interval(T n) : Interval(static_cast<double>(n)) {
 }
 
 // ---- arithmetic (2.13)-(2.20): inline, they are the hot path ----
+// No branch on the data (arith_kernels.h): the rounding path, hardware or
+// portable, is chosen once per process (hardware_rounding.h).
 
 inline Interval operator+(const Interval& x, const Interval& y) {
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  return {rounding::add_down(x.lo_, y.lo_), rounding::add_up(x.hi_, y.hi_), Interval::Unchecked{}};
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::add_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
 }
 
 inline Interval operator-(const Interval& x, const Interval& y) {
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  return {rounding::sub_down(x.lo_, y.hi_), rounding::sub_up(x.hi_, y.lo_), Interval::Unchecked{}};
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sub_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
 }
 
 inline Interval operator*(const Interval& x, const Interval& y) {
-  using rounding::mul_down, rounding::mul_up;
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  const double a = x.lo_, b = x.hi_, c = y.lo_, d = y.hi_;
-  const Interval::Unchecked u{};
-  if (a >= 0) {                       // x >= 0
-    if (c >= 0) return {mul_down(a, c), mul_up(b, d), u};
-    if (d <= 0) return {mul_down(b, c), mul_up(a, d), u};
-    return {mul_down(b, c), mul_up(b, d), u};
-  }
-  if (b <= 0) {                       // x <= 0
-    if (c >= 0) return {mul_down(a, d), mul_up(b, c), u};
-    if (d <= 0) return {mul_down(b, d), mul_up(a, c), u};
-    return {mul_down(a, d), mul_up(a, c), u};
-  }
-  if (c >= 0) return {mul_down(a, d), mul_up(b, d), u};  // x straddles 0
-  if (d <= 0) return {mul_down(b, c), mul_up(a, c), u};
-  return {std::min(mul_down(a, d), mul_down(b, c)), std::max(mul_up(a, c), mul_up(b, d)), u};
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::mul_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
+}
+
+// Division: the hull of the real quotient set, (2.19)-(2.20).
+inline Interval operator/(const Interval& x, const Interval& y) {
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::div_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
 }
 
 inline Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
 inline Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }
 inline Interval& Interval::operator*=(const Interval& y) { return *this = *this * y; }
 inline Interval& Interval::operator/=(const Interval& y) { return *this = *this / y; }
-
-// Division: the hull of the real quotient set, (2.19)-(2.20).
-Interval operator/(const Interval& x, const Interval& y);
 
 // Relational (extended) division: the set {z : z * b in [c] for some b in [b]}
 // as up to two disjoint intervals, lower piece first (the second is empty when
@@ -183,9 +175,15 @@ Interval operator/(const Interval& x, const Interval& y);
 std::pair<Interval, Interval> div2(const Interval& c, const Interval& b);
 
 // x^2, tighter than x * x (the two factors are the same variable).
-Interval sqr(const Interval& x);
+inline Interval sqr(const Interval& x) {
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sqr_bounds<R>(x.lb(), x.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
+}
 // Square root, on the part of x above 0 (empty if x < 0).
-Interval sqrt(const Interval& x);
+inline Interval sqrt(const Interval& x) {
+  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sqrt_bounds<R>(x.lb(), x.ub()); });
+  return {r.lo, r.hi, Interval::Unchecked{}};
+}
 // Absolute value {|v| : v in x}.
 Interval abs(const Interval& x);
 // {min(a, b) : a in x, b in y}.
