@@ -21,6 +21,7 @@
 #include <random>
 #include <vector>
 
+#include "dead_reckoning_ivp.h"
 #include "dead_reckoning_network.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ivp_memory.h"
@@ -129,12 +130,9 @@ void BM_DeadReckoning(benchmark::State& state) {
   // The known part of the inputs is written in f with the time as a state
   // (τ' = 1); only the noise is an input tube.
   const auto td = TDomain::create(0.0, 64.0, 0.5);
-  const TubeVector u(td, 2, Interval(-1, 1) / Interval(1000));
-  const CtcIvp ctc(Function({"x1", "x2", "x3", "x4", "tau", "n1", "n2"},
-                            "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)"),
-                   2, 10, TimePropag::FORWARD);
-  const Interval c = Interval(-1, 1) / Interval(100);
-  const IntervalVector x0{Interval(-1, 1), Interval(-1, 1), Interval::half_pi() + c, c, Interval(0.0)};
+  const TubeVector u(td, 2, dead_reckoning::ivp_noise());
+  const CtcIvp ctc = dead_reckoning::ivp_contractor();
+  const IntervalVector x0 = dead_reckoning::ivp_initial_gate();
   IntervalVector end;
   for (auto _ : state) {
     TubeVector x(td, 5);

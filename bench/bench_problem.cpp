@@ -7,6 +7,14 @@
 //                     (o = 0: the queue as written, FIFO) or cheap first (o = 1,
 //                     [network] order = "cost"); counters: contractor calls,
 //                     rounds, mean thickness (the fixed point reached)
+//   BM_AutoDelta/i/m  the δ of the file (m = 0) against the automatic δ by
+//                     uniform halving (m = 1) and by time regions (m = 2, the
+//                     thicker half of the slices split); counters: slices,
+//                     steps and mean thickness of the result (the problems
+//                     with a δ: 0 to 5)
+//   BM_Schedule/i/s   the network's scheduling (s = 0: FIFO, 1: by expected
+//                     contraction over cost); counters: contractor calls,
+//                     rounds, mean thickness (the same fixed point)
 //   BM_Plaza1Cpp      the C++ example's network on the same data
 //                     (examples/cpp/plaza1_network.h), to compare with
 //                     BM_Solve of plaza1.toml
@@ -92,6 +100,47 @@ void BM_Order(benchmark::State& state) {
                  (state.range(1) == 0 ? " file order" : " cost order"));
 }
 BENCHMARK(BM_Order)->ArgsProduct({benchmark::CreateDenseRange(0, 6, 1), {0, 1}})->Unit(benchmark::kMillisecond);
+
+void BM_AutoDelta(benchmark::State& state) {
+  const Problem p = load_problem(path_of(state.range(0)));
+  SolveOptions o;
+  o.auto_delta = state.range(1) != 0;
+  o.refinement = state.range(1) == 1 ? DeltaRefinement::Halving : DeltaRefinement::Regions;
+  SolveResult r;
+  for (auto _ : state) r = solve_problem(p, o);
+  state.counters["slices"] = static_cast<double>(r.schedule.back().slices);
+  state.counters["steps"] = static_cast<double>(r.schedule.size());
+  state.counters["thickness"] = r.schedule.back().mean_thickness;
+  static constexpr std::array<const char*, 3> kModes{" file delta", " auto halving", " auto regions"};
+  state.SetLabel(std::string(kProblems.at(static_cast<std::size_t>(state.range(0)))) +
+                 kModes.at(static_cast<std::size_t>(state.range(1))));
+}
+BENCHMARK(BM_AutoDelta)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, 5, 1), {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_Schedule(benchmark::State& state) {
+  if (skip_without_data(state)) return;
+  const Problem p = load_problem(path_of(state.range(0)));
+  const Scheduling scheduling = state.range(1) == 0 ? Scheduling::Fifo : Scheduling::Priority;
+  ContractStats s;
+  double thickness = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    BuiltProblem b = build_network(p, p.time.delta.value_or(p.time.tf - p.time.t0));
+    b.cn->set_scheduling(scheduling);
+    state.ResumeTiming();
+    s = b.cn->contract();
+    thickness = mean_thickness(b);
+  }
+  state.counters["calls"] = static_cast<double>(s.contractor_calls);
+  state.counters["rounds"] = static_cast<double>(s.iterations);
+  state.counters["thickness"] = thickness;
+  state.SetLabel(std::string(kProblems.at(static_cast<std::size_t>(state.range(0)))) +
+                 (state.range(1) == 0 ? " fifo" : " priority"));
+}
+BENCHMARK(BM_Schedule)->ArgsProduct({benchmark::CreateDenseRange(0, 6, 1), {0, 1}})->Unit(benchmark::kMillisecond);
 
 void BM_Plaza1Cpp(benchmark::State& state) {
   if (!std::filesystem::exists(kPlaza1 / "odometry.csv")) {

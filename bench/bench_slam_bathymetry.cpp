@@ -5,10 +5,12 @@
 // <= 10 s, accurate <= 60 s. Each benchmark iteration takes a new mission
 // (seed 7, 8, ...; generation and tubes untimed), so nothing is replayed.
 // Counters: iterations of C_{p⇒z}, detections and proofs of the last
-// iteration, contraction of [p](t_f) against dead reckoning.
+// iteration, contraction of [p](t_f) against dead reckoning. Second argument:
+// the default mission (0) or the coastal one (1).
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <string>
 
 #include "sillage/expr/function.h"
 #include "sillage/slam/bathymetry_mission.h"
@@ -24,22 +26,31 @@ struct SlamInput {
   Tube z;
 };
 
-SlamInput slam_input(std::uint64_t seed, double dt) {
-  const BathymetryMission m(seed);
+// coastal: the coastal seabed, a narrow-beam altimeter (6 deg cone) and the
+// east-west transects (docs/slam.md); otherwise the smoother default mission.
+SlamInput slam_input(std::uint64_t seed, double dt, bool coastal) {
+  BathymetryMissionOptions mo;
+  if (coastal) {
+    mo.seabed = coastal_seabed_options();
+    mo.transects = true;
+    mo.bounds.beam_angle = 0;
+    mo.bounds.beam_spread = 3;
+  }
+  const BathymetryMission m(seed, mo);
   const auto td = m.tdomain(dt);
   TubeVector w = bathymetry_velocity_tube(m, td);
   return {bathymetry_dead_reckoning(m, td, bathymetry_initial_box(m)), w, w, bathymetry_observation_tube(m, td)};
 }
 
 void BM_BathymetrySlam(benchmark::State& state) {
-  const bool accurate = state.range(0) != 0;
+  const bool accurate = state.range(0) != 0, coastal = state.range(1) != 0;
   const Function f({"x1", "x2", "x3", "u1", "u2", "u3"}, "(u1, u2, u3)");
   const Function h({"x1", "x2", "x3"}, "(x1, x2)");
   std::uint64_t seed = 7;
   double iterations = 0, detections = 0, proofs = 0, contraction = 0, runs = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    SlamInput in = slam_input(seed++, 1.0);
+    SlamInput in = slam_input(seed++, 1.0, coastal);
     const TubeVector z(std::vector<Tube>{in.z});
     TemporalSlamOptions o;
     o.eps = 1.0;
@@ -62,13 +73,20 @@ void BM_BathymetrySlam(benchmark::State& state) {
     runs += 1;
     state.ResumeTiming();
   }
-  state.SetLabel(accurate ? "accurate (from the fast fixed point)" : "fast (from dead reckoning)");
+  state.SetLabel(std::string(accurate ? "accurate (from the fast fixed point)" : "fast (from dead reckoning)") +
+                 (coastal ? ", coastal mission" : ", default mission"));
   state.counters["iterations"] = iterations / runs;
   state.counters["detections"] = detections / runs;
   state.counters["proofs"] = proofs / runs;
   state.counters["contraction_tf"] = contraction / runs;
 }
-BENCHMARK(BM_BathymetrySlam)->Arg(0)->Arg(1)->Iterations(3)->Unit(benchmark::kSecond);
+BENCHMARK(BM_BathymetrySlam)
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Iterations(3)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 

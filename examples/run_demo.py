@@ -56,6 +56,8 @@ EXAMPLES = [
     ("temporal_slam_small", "py", "temporal_slam_small.py"),
     ("bathymetry_slam", "cpp", "example_bathymetry_slam"),
     ("bathymetry_slam", "py", "bathymetry_slam.py"),
+    ("plaza1_slam", "cpp", "example_plaza1_slam"),
+    ("plaza1_slam", "py", "plaza1_slam.py"),
 ]
 
 

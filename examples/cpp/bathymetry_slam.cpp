@@ -10,13 +10,17 @@
 // fix (+-1 m) in the middle of the mission; the SLAM propagates it backward
 // and forward, and the table reports the contraction of [p](t_0) too.
 // --duration shortens the mission (the demo); the full 5760 s is the default
-// of the bench (bench/bench_slam_bathymetry.cpp).
+// of the bench (bench/bench_slam_bathymetry.cpp). --seabed 2 --transects 1
+// --beam-angle 0 --beam-spread 3 is the coastal mission (coastal seabed,
+// east-west transects, a 6 deg narrow-beam altimeter); --study 1 prints, per
+// proven detection, what limits the contraction (bathymetry_study.h) and stops.
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "bathymetry_check.h"
+#include "bathymetry_study.h"
 #include "example_args.h"
 #include "example_check.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -49,9 +53,15 @@ int main(int argc, char** argv) {
 
   BathymetryMissionOptions mo;
   mo.duration = duration;
+  const int seabed = static_cast<int>(example::option_number(argc, argv, "--seabed", 1));
+  if (seabed != 1 && seabed != 2) example::usage_error("bathymetry_slam", "--seabed is 1 (smooth) or 2 (coastal)");
+  if (seabed == 2) mo.seabed = coastal_seabed_options();
+  mo.seabed.dune_height = example::option_number(argc, argv, "--dune-height", mo.seabed.dune_height);
+  mo.transects = example::option_number(argc, argv, "--transects", 0) != 0;
   mo.seabed.relief = example::option_number(argc, argv, "--relief", 1);
   mo.depth = example::option_number(argc, argv, "--vehicle-depth", mo.depth);
   mo.bounds.beam_angle = example::option_number(argc, argv, "--beam-angle", mo.bounds.beam_angle);
+  mo.bounds.beam_spread = example::option_number(argc, argv, "--beam-spread", mo.bounds.beam_spread);
   const BathymetryMission m(seed, mo);
   const auto td = m.tdomain(dt);
   const std::size_t N = td->nb_slices();
@@ -93,6 +103,10 @@ int main(int argc, char** argv) {
     dr = xd.subvector(0, 1);
   }
   tf_boxes.push_back(dr.gate(N));
+  if (example::option_number(argc, argv, "--study", 0) != 0) {  // what limits it, then stop
+    example::bathymetry_study(m, dr, w.subvector(0, 1), z[0], eps);
+    return 0;
+  }
 
   std::printf("Bathymetric temporal SLAM, scenario %d (%s), seed %llu\n", scenario,
               scenario == 1 ? "start known to +-1 m" : "start unknown, one +-1 m fix at mid-mission",

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "dead_reckoning_ivp.h"
 #include "dead_reckoning_network.h"
 #include "example_args.h"
 #include "example_check.h"
@@ -178,18 +179,12 @@ TubeVector solve_linear(const Problem& p, const TaylorSolution& ty, std::size_t 
 }
 
 // ---- 5. validated integration (CtcIvp) ----
-// State (x1, x2, x3, x4, tau), inputs (n1, n2) = the noise of (3.16): the
-// nominal inputs are smooth functions of tau, so the Taylor series see them;
-// only the noise, not differentiable, is an input tube. Forward only (x0 is
-// the only bounded gate before the run).
+// f(x1, x2, x3, x4, tau, n1, n2) with the noise as inputs (dead_reckoning_ivp.h).
 TubeVector solve_ivp(const Problem& p) {
-  const CtcIvp ctc(Function({"x1", "x2", "x3", "x4", "tau", "n1", "n2"},
-                            "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)"),
-                   2, 10, TimePropag::FORWARD);
+  const CtcIvp ctc = dead_reckoning::ivp_contractor();
   TubeVector x(p.td, 5);
-  const IntervalVector b = initial_box();
-  x.set_gate(0, IntervalVector{b[0], b[1], b[2], b[3], Interval(0.0)});
-  const TubeVector noise(p.td, 2, kNoise);
+  x.set_gate(0, dead_reckoning::ivp_initial_gate());
+  const TubeVector noise(p.td, 2, dead_reckoning::ivp_noise());
   if (!ctc.contract(x, noise)) std::printf("  ivp: EMPTY (no trajectory fits x0 and the inputs)\n");
   return x.subvector(0, 3);
 }

@@ -26,12 +26,13 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
       {"drifting_clock", {"--dt=X", "--ratio=X"}},
       {"lowcost_beacons", {"--dt=X", "--ratio=X"}},
       {"plaza1", {"--data", "--unknown-start=X", "--q-ranges=X", "--heading-window=X", PLAZA1_BOUND_OPTIONS}},
+      {"plaza1_slam", {"--data", "--eps=X", "--heading-window=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_plaza1", {"--data", "--eps-div=X", "--reverse-below=X", "--glitch-above=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X"}},
       {"loops_utias", {"--data", "--robot"}},
       {"outliers_ranges", {"--eps=X"}},
       {"bathymetry_mission", {"--seed=X", "--dt=X"}},
-      {"bathymetry_slam", {"--seed=X", "--dt=X", "--eps=X", "--duration=X", "--scenario=X", "--relief=X", "--beam-angle=X", "--vehicle-depth=X"}},
+      {"bathymetry_slam", {"--seed=X", "--dt=X", "--eps=X", "--duration=X", "--scenario=X", "--relief=X", "--beam-angle=X", "--vehicle-depth=X", "--study=X", "--seabed=X", "--beam-spread=X", "--transects=X", "--dune-height=X"}},
   };
   return table;
 }

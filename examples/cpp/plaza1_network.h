@@ -46,6 +46,7 @@ using namespace sillage;
 struct Solution {
   std::shared_ptr<TubeVector> p;
   std::shared_ptr<Tube> psi;  // the heading
+  std::shared_ptr<TubeVector> v;  // the velocity, p' = v
   ContractStats stats;
   std::size_t nb_ranges = 0;
 };
@@ -129,6 +130,7 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
     if (q >= 0) cn.add(std::make_shared<CtcQEval>(q, std::move(obs)), {s.p, v});
   }
   s.psi = psi;
+  s.v = v;
   s.stats = cn.contract();
   return s;
 }

@@ -44,10 +44,10 @@ def slice_tube(td, slices):
 HEADING_WINDOW = 40.0
 
 
-def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None):
+def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None):
     """The position tube at the fixed point with the bounds b (default: the table); q >= 0: at most q
     ranges wrong (one CtcQEval instead of a CtcEval per range); window > 0: CtcHeadingWindow over windows
-    of that many seconds. heading: a list that receives the heading tube."""
+    of that many seconds. heading, velocity: lists that receive the heading tube, the velocity tube."""
     b = b or plaza1_bounds.bounds(None, d)
     t0 = time.process_time()
     td = TDomain(list(d["t"]))
@@ -104,6 +104,8 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None):
     cpu = time.process_time() - t0
     if heading is not None:
         heading.append(psi)
+    if velocity is not None:
+        velocity.append(v)
     gx, gy = p[0].gates_array(), p[1].gates_array()
     inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
     diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]

@@ -163,3 +163,21 @@ def test_relief_scales_the_seabed_class():
     o.relief = -1.0
     with pytest.raises(sillage.Error, match="relief"):
         sillage.generate_seabed(5, o)
+
+
+def test_coastal_seabed_and_transects():
+    smooth = sillage.generate_seabed(7)
+    coastal = sillage.generate_seabed(7, sillage.coastal_seabed_options())
+    assert coastal.bounds.curvature > smooth.bounds.curvature
+    box = sillage.IntervalVector([[320, 350], [200, 230]])
+    assert coastal.dem.eval(box).diam() > smooth.dem.eval(box).diam()
+    o = sillage.coastal_seabed_options()
+    assert o.dune_height > 0 and o.rock_height_min >= 1.5
+    o.rock_height_max = o.rock_height_min - 1
+    with pytest.raises(sillage.Error, match="rock_height"):
+        sillage.generate_seabed(7, o)
+    mo = sillage.BathymetryMissionOptions()
+    mo.duration, mo.transects = 600.0, True
+    m = sillage.BathymetryMission(seed=7, options=mo)
+    # The first leg is the eastward transect at 0.3 of the side.
+    assert abs(m.x2[3000] - 150) < 3 and m.x1[3000] > m.x1[0] + 250

@@ -9,20 +9,16 @@ from sillage import (ContractorNetwork, CtcDeriv, CtcHeading, CtcQEval, Interval
                      TubeObservation, TubeVector)
 
 import contractor_kit as kit
+from turning_vehicle import turning
 from test_contractor_laws import qeval_case
 
 TRACK = 0.05
 
 
 def heading_case(rng):
-    """A vehicle at speed s turning at rate b from heading a, travelling at a constant e off its heading:
-    p(t) = p0 + (s / b) (sin(phi(t)) - sin(phi(0)), cos(phi(0)) - cos(phi(t))), phi = a + e + b t."""
-    a, b, s, e = rng.uniform(-3, 3), rng.uniform(0.1, 0.9), rng.uniform(0.5, 2.5), rng.uniform(-TRACK, TRACK)
-    x0, y0 = rng.uniform(-5, 5), rng.uniform(-5, 5)
-    psi = lambda t: Interval(a) + Interval(b) * t  # noqa: E731
-    phi = lambda t: psi(t) + Interval(e)  # noqa: E731
-    px = lambda t: Interval(x0) + Interval(s) / Interval(b) * (sillage.sin(phi(t)) - sillage.sin(phi(Interval(0))))  # noqa
-    py = lambda t: Interval(y0) + Interval(s) / Interval(b) * (sillage.cos(phi(Interval(0))) - sillage.cos(phi(t)))  # noqa
+    """The turning vehicle of turning_vehicle.py inside its domains."""
+    v = turning(rng, TRACK)
+    s, b, psi, px, py = v.s, v.b, v.psi, v.px, v.py
     td = kit.random_tdomain(rng, 15)
     n = td.nb_slices()
     dist = [kit.around(Interval(s) * td.slice_width(k), rng, 0.05) for k in range(n)]

@@ -9,19 +9,16 @@ from sillage import (ContractorNetwork, CtcDeriv, CtcHeadingWindow, CtcIncrement
                      Tube, TubeVector)
 
 import contractor_kit as kit
+from turning_vehicle import turning
 
 TRACK, WINDOW, ACCEL = 0.05, 2.0, 1.0
 
 
 def window_case(rng):
-    """A vehicle at speed s turning at rate b from heading a, travelling at a constant e off its heading;
-    domains p, psi, d (distance per slice), dpsi (heading increment per slice), w (psi')."""
-    a, b, s, e = rng.uniform(-3, 3), rng.uniform(0.1, 0.9), rng.uniform(0.5, 2.5), rng.uniform(-TRACK, TRACK)
-    x0, y0 = rng.uniform(-5, 5), rng.uniform(-5, 5)
-    psi = lambda t: Interval(a) + Interval(b) * t  # noqa: E731
-    phi = lambda t: psi(t) + Interval(e)  # noqa: E731
-    px = lambda t: Interval(x0) + Interval(s) / Interval(b) * (sillage.sin(phi(t)) - sillage.sin(phi(Interval(0))))  # noqa
-    py = lambda t: Interval(y0) + Interval(s) / Interval(b) * (sillage.cos(phi(Interval(0))) - sillage.cos(phi(t)))  # noqa
+    """The turning vehicle of turning_vehicle.py inside the domains p, psi, d (distance per slice),
+    dpsi (heading increment per slice), w (psi')."""
+    v = turning(rng, TRACK)
+    s, b, psi, px, py = v.s, v.b, v.psi, v.px, v.py
     td = kit.random_tdomain(rng, 20)
     n = td.nb_slices()
     free = [Interval()] * (n + 1)

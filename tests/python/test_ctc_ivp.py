@@ -69,6 +69,41 @@ def test_input_tube_covers_every_input():
         assert x.gate(k).diam() < 1.5 * (hi - lo).ub() + 1e-9
 
 
+def test_dead_reckoning_inside_the_linearised_resolution():
+    # Thesis 3.4 with f(x1, x2, x3, x4, tau, n1, n2), the noise n in [-1/1000, 1/1000]^2 as
+    # inputs: the final box lies inside the example's linearised resolution
+    # [33.09, 43.56] x [48.36, 57.77] and holds extreme paths (constant noise at a corner,
+    # RK4 with a fine step: its error is far below the 1e-6 margin).
+    td = TDomain(0.0, 64.0, 0.5)
+    f = Function(["x1", "x2", "x3", "x4", "tau", "n1", "n2"],
+                 "(x4*cos(x3), x4*sin(x3), -9/20*cos(tau/5) + n1, 1/10 + sin(tau/4) + n2, 1)")
+    x = TubeVector(td, 5)
+    c = Interval(-1, 1) / Interval(100)
+    x.set_gate(0, IntervalVector([Interval(-1, 1), Interval(-1, 1), Interval.half_pi() + c, c, Interval(0)]))
+    u = TubeVector(td, 2, Interval(-1, 1) / Interval(1000))
+    assert CtcIvp(f, nb_inputs=2, order=10, time_propag=sillage.TimePropag.FORWARD).contract(x, u)
+    end = x.gate(td.nb_slices())
+    assert end[0].is_subset(Interval(33.09, 43.56)), end
+    assert end[1].is_subset(Interval(48.36, 57.77)), end
+
+    def rhs(s, n1, n2):
+        return [s[3] * math.cos(s[2]), s[3] * math.sin(s[2]), -9 / 20 * math.cos(s[4] / 5) + n1,
+                0.1 + math.sin(s[4] / 4) + n2, 1.0]
+
+    for s0, n1, n2 in [([1, -1, math.pi / 2 + 0.01, 0.01, 0], 1e-3, 1e-3),
+                       ([-1, 1, math.pi / 2 - 0.01, -0.01, 0], -1e-3, -1e-3),
+                       ([1, 1, math.pi / 2 - 0.01, 0.01, 0], -1e-3, 1e-3)]:
+        s, h = list(map(float, s0)), 1 / 64
+        for _ in range(64 * 64):
+            k1 = rhs(s, n1, n2)
+            k2 = rhs([a + h / 2 * b for a, b in zip(s, k1)], n1, n2)
+            k3 = rhs([a + h / 2 * b for a, b in zip(s, k2)], n1, n2)
+            k4 = rhs([a + h * b for a, b in zip(s, k3)], n1, n2)
+            s = [a + h / 6 * (b + 2 * c2 + 2 * d + e) for a, b, c2, d, e in zip(s, k1, k2, k3, k4)]
+        for i in range(4):
+            assert end[i].inflate(1e-6).contains(s[i]), (i, s[i], end[i])
+
+
 def test_in_a_network():
     td = TDomain(0.0, 4.0, 0.5)
     x = TubeVector(td, 2)

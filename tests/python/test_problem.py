@@ -38,6 +38,18 @@ def test_auto_delta_schedule():
     assert len(deltas) >= 2 and all(b == a / 2 for a, b in zip(deltas, deltas[1:]))
 
 
+def test_auto_delta_by_regions():
+    """refinement=Regions splits only the slices thick over their gates: fewer
+    slices than halving for about the same thickness, the truth x(0) = 1 inside."""
+    path = str(PROBLEMS / "line_ranges.toml")
+    halving = sillage.solve(path, auto_delta=True, tolerance=0.05)
+    regions = sillage.solve(path, auto_delta=True, tolerance=0.05, refinement=sillage.DeltaRefinement.Regions)
+    assert regions.domains["x"](0.0).contains(1.0)
+    slices = [s["slices"] for s in regions.schedule]
+    assert all(b > a for a, b in zip(slices, slices[1:])) and slices[-1] < halving.schedule[-1]["slices"]
+    assert regions.schedule[-1]["mean_thickness"] < regions.schedule[0]["mean_thickness"]
+
+
 def test_load_problem_errors_name_the_place(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text("[time]\ndomain = [0, 1]\ndelta = 0.1\nspeed = 3\n")

@@ -1,5 +1,5 @@
 // The sillage command (docs/cli.md):
-//   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--threads N] [--quiet]
+//   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions] [--threads N] [--quiet]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
@@ -45,11 +45,13 @@ std::optional<double> parse_delta(const std::string& s, bool& is_auto) {
   return v;
 }
 
-int solve(const std::string& file, std::string out, const std::string& delta_text, int threads, bool quiet) {
+int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions, int threads,
+          bool quiet) {
   std::optional<tbb::global_control> control;
   if (threads > 0) control.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   SolveOptions o;
   o.delta = parse_delta(delta_text, o.auto_delta);
+  if (regions) o.refinement = DeltaRefinement::Regions;
   const auto start = std::chrono::steady_clock::now();
   const Problem p = load_problem(file);
   if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(file).stem()).string();
@@ -123,13 +125,15 @@ int plot(const std::string& path, const std::string& out) {
 int main(int argc, char** argv) {
   CLI::App app{"sillage: guaranteed state estimation from a problem file (docs/cli.md)"};
   app.require_subcommand(1);
-  std::string problem, out, delta, tube_file;
+  std::string problem, out, delta, tube_file, refine = "halving";
   int threads = 0;
   bool quiet = false;
   auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
   s->add_option("problem", problem, "the problem file (TOML)")->required();
   s->add_option("--out", out, "output directory (default out/<problem name>)");
   s->add_option("--delta", delta, "slice width: auto or a value (default: the file's)");
+  s->add_option("--refine", refine, "how the automatic delta refines: halving (every slice) or regions (the thick ones)")
+      ->check(CLI::IsMember({"halving", "regions"}));
   s->add_option("--threads", threads, "worker threads (default: all)")->check(CLI::PositiveNumber);
   s->add_flag("--quiet", quiet, "no progress line, no summary");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
@@ -146,7 +150,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
   try {
-    if (*s) return solve(problem, out, delta, threads, quiet);
+    if (*s) return solve(problem, out, delta, refine == "regions", threads, quiet);
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);

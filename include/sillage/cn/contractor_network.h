@@ -29,7 +29,8 @@
 // contractor shrank by more than ratio() (shrink.h; default 0.01) wakes the
 // other contractors acting on it, which run in the next round (each contractor
 // at most once per round; one already waiting in the current round is not
-// queued again). The propagation stops when a round wakes nobody, or at once
+// queued again; set_scheduling: the order within a round, as woken or by
+// expected contraction). The propagation stops when a round wakes nobody, or at once
 // when a domain becomes empty (that domain is set empty, the others keep their
 // last values, which remain valid enclosures; ContractStats::empty tells).
 //
@@ -56,6 +57,7 @@
 #include "sillage/cn/cn_node.h"
 #include "sillage/cn/domain_ref.h"
 #include "sillage/cn/network_ctc.h"
+#include "sillage/cn/scheduling.h"
 #include "sillage/cn/watchers.h"
 
 namespace sillage {
@@ -127,6 +129,10 @@ class ContractorNetwork {
   // Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on
   // it; 0 <= ratio < 1 (else Error).
   void set_ratio(double ratio);
+  // The order of the contractors within a round (scheduling.h; default Fifo).
+  Scheduling scheduling() const { return scheduling_; }
+  // Sets scheduling(): Fifo or Priority (by expected contraction over cost).
+  void set_scheduling(Scheduling s) { scheduling_ = s; }
   // Limits of contract(): max_boxes counts contractor calls (10^7 by
   // default), max_seconds the wall-clock time, cancel stops it from another
   // thread (Python: Ctrl-C). Exceeded: BudgetExceeded (cancelled: Cancelled),
@@ -176,6 +182,7 @@ class ContractorNetwork {
   void add_pending_gates();
   bool acts_on(const CnNode& node, const TDomain& td) const;
   double ratio_ = 0.01;
+  Scheduling scheduling_ = Scheduling::Fifo;
   Budget budget_;
   // True during contract(): a contractor calling back into the network (a
   // Python one may) must not grow the arrays contract() is walking.

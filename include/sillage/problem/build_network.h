@@ -48,6 +48,11 @@ std::vector<std::size_t> constraint_order(const Problem& p);
 // δ > 0. Error (ProblemError) for a bound or a row that cannot be built.
 BuiltProblem build_network(const Problem& p, double delta);
 
+// The same on the time points given (strictly increasing, from t0 to tf; the
+// gates of the file are added to them): slices of several widths, as the
+// automatic δ refines the time regions where the tubes are thick.
+BuiltProblem build_network(const Problem& p, const std::vector<double>& points);
+
 // The slice count δ gives on the problem's time domain.
 std::size_t nb_slices_for(const Problem& p, double delta);
 

@@ -66,7 +66,7 @@ struct VarSpec {
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -80,7 +80,17 @@ struct ConstraintSpec {
   // Heading (CtcHeading): position p (tube_vector, dim 2), heading psi,
   // distance per slice dist, turn rate omega (tubes), track error (rad, as written).
   std::string p, psi, dist, omega, track = "0";
-  std::string x, v;  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); Eval: ys[0], vs[0]
+  // HeadingWindow (CtcHeadingWindow): p, psi, dist, omega and track as for
+  // Heading, dpsi the heading increment per slice (a tube), windows of
+  // `window` seconds, one every `stride` slices (0: a quarter of a window at
+  // the mean slice width, at least 1), the turn acceleration bound
+  // `turn_accel` (rad/s², as written; "": none).
+  std::string dpsi, turn_accel;
+  double window = 0;
+  std::size_t stride = 0;
+  // Deriv: x' = v; Increment: x(t_{k+1}) - x(t_k) in v(k); SecondDeriv:
+  // x'' in v (CtcSecondDeriv, v the acceleration bounds); Eval: ys[0], vs[0]
+  std::string x, v;
   // Eval: per kept row of `data`, one time t_i and one CtcEval z = y(t_i) per
   // tube y of `ys` (with y' = vs[j] unless ""), all at the same t_i. t_i is
   // the stamp column ± time_error (one column), the hull of two columns

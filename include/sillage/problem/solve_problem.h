@@ -1,11 +1,14 @@
 #pragma once
 // Solves a Problem: builds its network (build_network.h) and contracts it to
 // the fixed point, for the δ of the file, a given δ, or δ chosen
-// automatically: start coarse ((tf - t0)/64), halve while the result still
-// changes by more than `tolerance` (relative change of the mean thickness of
-// the bounded tubes) and the time budget allows the next step (estimated at
-// twice the last one). Every step is a guaranteed enclosure; the finest one is
-// the result, and the schedule (δ, slices, thickness, time) is kept.
+// automatically: start coarse ((tf - t0)/64 slices), refine while the result
+// still changes by more than `tolerance` (relative change of the mean
+// thickness of the bounded tubes) and the time budget allows the next step
+// (estimated from the last one, in proportion to the slices). Refining
+// either halves every slice, or splits only the slices of the time regions
+// where the tubes are thick (docs/cli.md, "Automatic δ", compares both).
+// Every step is a guaranteed enclosure; the finest one is the result, and the
+// schedule (δ, slices, thickness, time) is kept.
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -16,18 +19,29 @@
 
 namespace sillage {
 
+// How the automatic δ refines the slices from one step to the next.
+enum class DeltaRefinement {
+  Halving,  // every slice split in two (a uniform δ halved)
+  Regions,  // only the slices whose thickness over their gates is above a quantile
+};
+
 struct SolveOptions {
   std::optional<double> delta;  // a given δ; none: the file's, or auto if the file says "auto"
   bool auto_delta = false;      // force the automatic δ
   double tolerance = 0.01;      // relative change that stops the refinement
   double budget_seconds = 60;   // of the automatic δ
   std::size_t max_slices = 1u << 20;
+  DeltaRefinement refinement = DeltaRefinement::Halving;  // the faster to a thinner result (docs/cli.md)
+  // Regions: a slice is split when its excess thickness over its gates (summed
+  // over the bounded tube components) is above this quantile of all the
+  // slices' (0.5: the thicker half).
+  double split_quantile = 0.5;
   // Called after each step (progress line).
   std::function<void(const struct ScheduleStep&)> on_step;
 };
 
 struct ScheduleStep {
-  double delta = 0;
+  double delta = 0;  // the slice width (regions: the narrowest slice)
   std::size_t slices = 0;
   double mean_thickness = 0;  // over the bounded tube components
   double build_seconds = 0, contract_seconds = 0;

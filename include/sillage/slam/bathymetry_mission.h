@@ -38,6 +38,10 @@ struct BathymetryMissionOptions {
   double turn_radius = 28;   // m
   double rail_spacing = 40;  // m (< 2 turn_radius: keyhole turns)
   double depth = 14.5;       // m, depth below the surface at the start
+  // The overall crossing as two east-west transects across the north-south
+  // rails (at 30 % and 70 % of the side) instead of a diagonal and the
+  // northern edge: every rail crosses them at right angles.
+  bool transects = false;
   // The SeabedOptions.
   SeabedOptions seabed;
   // The TideModel.

@@ -30,7 +30,21 @@ struct SeabedOptions {
   // Number of sandbanks.
   int nb_banks = 2;
   double relief = 1;          // factor on every relief amplitude (slope, banks, rocks, waves, swell)
+  double rock_height_min = 0.8;  // m, rocks (they stand at least 8 rock_sigma_max apart)
+  double rock_height_max = 1.5;  // m
+  double rock_sigma_min = 8;     // m, Gaussian sigma of a rock
+  double rock_sigma_max = 12;    // m
+  // A field of sand waves at the scale of a drift window (0: none): three
+  // trains of wavelengths 10-16, 18-26 and 28-40 m in random directions, whose
+  // amplitudes sum to dune_height (m, crest above the mean level), in the rough part.
+  double dune_height = 0;
 };
+
+// A coastal seabed with information at the scale of the drift (tens of
+// metres): a sand-wave field of 10-40 m wavelengths about 1 m high and rocky
+// outcrops 1.5-3 m high every ~70 m in the east, the smooth western strip
+// kept. The default SeabedOptions are the smoother seabed.
+SeabedOptions coastal_seabed_options();
 
 // Stated bounds of a generated seabed: curvature (Hessian norm), slope, node roughness.
 struct SeabedClass {

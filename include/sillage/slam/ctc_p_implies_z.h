@@ -19,8 +19,9 @@
 // count. Iterations go on until p no longer shrinks by more than `ratio` on
 // any gate or slice (or max_iterations).
 //
-// p is 2-D (the t-plane's loop tests are planar, thesis ch. 6): DimensionError
-// otherwise. w on p's TDomain; z's time domain must cover p's.
+// p is 2-D (the t-plane's loop tests are planar, thesis ch. 6) or 1-D (then
+// the pieces of scalar_loops.h and their sign-change test replace steps 1-2):
+// DimensionError otherwise. w on p's TDomain; z's time domain must cover p's.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -34,9 +35,8 @@
 namespace sillage {
 
 // The inter-temporal implication contractor C_{p=>z} (thesis (7.9), Alg. 13, fast=true: Alg. 14):
-// p(t1) = p(t2) => z(t1) = z(t2), p' = w. contract(p, w, z) contracts the 2-D TubeVector p to a
-// fixed
-// point and returns one SlamRow per iteration; ContractorNetwork.add(CtcPImpliesZ(eps), [p, w, z])
+// p(t1) = p(t2) => z(t1) = z(t2), p' = w. contract(p, w, z) contracts the 2-D (or 1-D) TubeVector p
+// to a fixed point and returns one SlamRow per iteration; ContractorNetwork.add(CtcPImpliesZ(eps), [p, w, z])
 // binds it.
 class CtcPImpliesZ : public NetworkCtc {
  public:

@@ -35,7 +35,7 @@ struct TemporalSlamOptions {
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may
 // be empty: then f has the n variables of x only), z the observations (any
-// size); f: (x, u) -> v, n outputs; h: x -> p, 2 outputs, linear. Every tube
+// size); f: (x, u) -> v, n outputs; h: x -> p, 2 outputs (or 1: scalar_loops.h), linear. Every tube
 // on x's TDomain (z may cover a larger time domain). Returns one row per
 // iteration of C_{p⇒z}, numbered over the whole run; contractions of p(t_f)
 // and p(t_0) relative to dead reckoning (h(x) after the first C_d/dt). DimensionError / Error on sizes,

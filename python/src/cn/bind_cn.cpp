@@ -81,6 +81,9 @@ void init_cn(py::module_& m) {
                ", empty=" + (s.empty ? "True, emptiness='" + s.emptiness + "'" : std::string("False")) + ")";
       });
 
+  py::enum_<Scheduling>(m, "Scheduling", DOC(Scheduling))
+      .value("Fifo", Scheduling::Fifo)
+      .value("Priority", Scheduling::Priority);
   py::class_<ContractorNetwork>(m, "ContractorNetwork",
                                 DOC(ContractorNetwork))
       .def("__repr__",
@@ -145,7 +148,10 @@ void init_cn(py::module_& m) {
       .def("set_budget", &ContractorNetwork::set_budget, py::arg("budget"),
            DOC(ContractorNetwork, set_budget))
       .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"),
-           DOC(ContractorNetwork, set_ratio));
+           DOC(ContractorNetwork, set_ratio))
+      .def("scheduling", &ContractorNetwork::scheduling, DOC(ContractorNetwork, scheduling))
+      .def("set_scheduling", &ContractorNetwork::set_scheduling, py::arg("scheduling"),
+           DOC(ContractorNetwork, set_scheduling));
 }
 
 }  // namespace sillage::python

@@ -44,10 +44,11 @@ py::list schedule(const SolveResult& r) {
 }
 
 std::shared_ptr<SolveResult> solve_with(const Problem& p, std::optional<double> delta, bool auto_delta,
-                                        double tolerance, double budget_seconds) {
+                                        double tolerance, double budget_seconds, DeltaRefinement refinement) {
   SolveOptions o;
   o.delta = delta;
   o.auto_delta = auto_delta;
+  o.refinement = refinement;
   o.tolerance = tolerance;
   o.budget_seconds = budget_seconds;
   py::gil_scoped_release release;
@@ -57,6 +58,9 @@ std::shared_ptr<SolveResult> solve_with(const Problem& p, std::optional<double> 
 }  // namespace
 
 void init_problem(py::module_& m) {
+  py::enum_<DeltaRefinement>(m, "DeltaRefinement", DOC(DeltaRefinement))
+      .value("Halving", DeltaRefinement::Halving)
+      .value("Regions", DeltaRefinement::Regions);
   py::class_<Problem>(m, "Problem", DOC(Problem))
       .def_readonly("file", &Problem::file, "The path of the file.")
       .def_readonly("hash", &Problem::hash, DOC(Problem, hash))
@@ -96,13 +100,15 @@ void init_problem(py::module_& m) {
         DOC(check_summary));
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
-        DOC(solve_problem));
+        py::arg("refinement") = DeltaRefinement::Halving, DOC(solve_problem));
   m.def(
       "solve",
       [](const std::string& path, std::optional<double> delta, bool auto_delta, double tolerance,
-         double budget_seconds) { return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds); },
+         double budget_seconds, DeltaRefinement refinement) {
+        return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds, refinement);
+      },
       py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
-      py::arg("budget_seconds") = 60.0,
+      py::arg("budget_seconds") = 60.0, py::arg("refinement") = DeltaRefinement::Halving,
       "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
   m.def(
       "find_loops",

@@ -38,7 +38,13 @@ void init_bathymetry_data(py::module_& m) {
       .def_readwrite("smooth_width", &SeabedOptions::smooth_width, DOC(SeabedOptions, smooth_width))
       .def_readwrite("nb_rocks", &SeabedOptions::nb_rocks, DOC(SeabedOptions, nb_rocks))
       .def_readwrite("nb_banks", &SeabedOptions::nb_banks, DOC(SeabedOptions, nb_banks))
-      .def_readwrite("relief", &SeabedOptions::relief, DOC(SeabedOptions, relief));
+      .def_readwrite("relief", &SeabedOptions::relief, DOC(SeabedOptions, relief))
+      .def_readwrite("rock_height_min", &SeabedOptions::rock_height_min, DOC(SeabedOptions, rock_height_min))
+      .def_readwrite("rock_height_max", &SeabedOptions::rock_height_max, DOC(SeabedOptions, rock_height_max))
+      .def_readwrite("rock_sigma_min", &SeabedOptions::rock_sigma_min, DOC(SeabedOptions, rock_sigma_min))
+      .def_readwrite("rock_sigma_max", &SeabedOptions::rock_sigma_max, DOC(SeabedOptions, rock_sigma_max))
+      .def_readwrite("dune_height", &SeabedOptions::dune_height, DOC(SeabedOptions, dune_height));
+  m.def("coastal_seabed_options", &coastal_seabed_options, DOC(coastal_seabed_options));
   py::class_<SeabedClass>(m, "SeabedClass",
                           DOC(SeabedClass))
       .def(py::init<double, double, double>(), py::arg("curvature"), py::arg("slope"), py::arg("roughness"),
@@ -159,6 +165,7 @@ void init_bathymetry_mission(py::module_& m) {
       .def_readwrite("rail_spacing", &BathymetryMissionOptions::rail_spacing,
                      DOC(BathymetryMissionOptions, rail_spacing))
       .def_readwrite("depth", &BathymetryMissionOptions::depth, DOC(BathymetryMissionOptions, depth))
+      .def_readwrite("transects", &BathymetryMissionOptions::transects, DOC(BathymetryMissionOptions, transects))
       .def_readwrite("seabed", &BathymetryMissionOptions::seabed, DOC(BathymetryMissionOptions, seabed))
       .def_readwrite("tide", &BathymetryMissionOptions::tide, DOC(BathymetryMissionOptions, tide))
       .def_readwrite("bounds", &BathymetryMissionOptions::bounds, DOC(BathymetryMissionOptions, bounds));

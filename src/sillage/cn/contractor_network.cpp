@@ -4,6 +4,7 @@
 #include <chrono>
 #include <functional>
 
+#include "sillage/cn/round_order.h"
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/ctc/shrink.h"
@@ -313,8 +314,10 @@ ContractStats ContractorNetwork::contract() {
   std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
   // pending[i]: positions of node i's atoms that shrank since it last ran.
   std::vector<std::vector<std::size_t>> pending(nodes_.size());
+  detail::RoundOrder order(scheduling_, nodes_.size());
   while (!round.empty()) {
     ++stats.iterations;
+    order.order(round, pending);
     for (const std::size_t i : round) {
       queued[i] = 0;
       changed.clear();
@@ -326,6 +329,7 @@ ContractStats ContractorNetwork::contract() {
       meter.add();
       ++stats.contractor_calls;
       const bool ok = node.run(run);
+      order.ran(i, changed.size(), node.nb_atoms());
       dirty.clear();
       check_layouts_after(node);
       if (!ok) {

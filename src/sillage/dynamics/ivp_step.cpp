@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "sillage/dynamics/ivp_generators.h"
 #include "sillage/interval/elementary.h"
 
 namespace sillage::detail {
@@ -106,54 +107,72 @@ bool inverse_enclosure(const Matrix& q, IntervalMatrix& inv) {
   return true;
 }
 
-// [-|x|, |x|]: x times a symbol w in [-1, 1].
-Interval symmetric(const Interval& x) { return Interval(-x.mag(), x.mag()); }
-
-// The point part of an interval generator; the rest, times w ∈ [-1, 1],
-// goes to the box `extra`.
-Vector split_generator(const IntervalVector& g, IntervalVector& extra) {
-  Vector mid = g.mid();
-  for (std::size_t i = 0; i < g.size(); ++i) extra[i] += symmetric(g[i] - Interval(mid[i]));
-  return mid;
-}
-
-// Past this many generators the cheapest to box (Girard: ‖g‖₁ − ‖g‖∞,
-// zero for a generator along an axis) become a box: their correlation with
-// the rest is lost, not their bound.
+// Past this many generators they are reduced (ivp_generators.h).
 constexpr std::size_t kMaxGenerators = 256;
 
-void reduce_generators(std::vector<Vector>& G, IntervalVector& extra) {
-  if (G.size() <= kMaxGenerators) return;
-  std::vector<std::pair<double, std::size_t>> cost;
-  for (std::size_t j = 0; j < G.size(); ++j) {
-    double l1 = 0.0, linf = 0.0;
-    for (double x : G[j]) l1 += std::abs(x), linf = std::max(linf, std::abs(x));
-    cost.emplace_back(l1 - linf, j);
+// The secant matrix of the step's polynomial is the mean of its Jacobian
+// over K boxes c + (l/K)([X] - c), l = 1..K (see step()); those boxes run
+// to a low order, the higher orders of the Jacobian over [X] enclose theirs.
+constexpr int kSecantBoxes = 8;
+constexpr int kSecantOrder = 2;
+
+// M = Σ_k V_k h^k from the variational coefficients v (orders 0..p), entry
+// by entry; orders ≤ q taken from `low` when given.
+IntervalMatrix jacobian_sum(const std::vector<Interval>& v, const std::vector<Interval>* low, int q, std::size_t n,
+                            int p, const Interval& h) {
+  IntervalMatrix M(n, n);
+  for (std::size_t e = 0; e < n * n; ++e) {
+    Interval s = v[static_cast<std::size_t>(p) * n * n + e];
+    for (int k = p - 1; k >= 0; --k) {
+      const std::vector<Interval>& src = low && k <= q ? *low : v;
+      s = s * h + src[static_cast<std::size_t>(k) * n * n + e];
+    }
+    M(e / n, e % n) = s;
   }
-  std::sort(cost.begin(), cost.end());
-  const std::size_t drop = G.size() - kMaxGenerators / 2;
-  std::vector<bool> gone(G.size(), false);
-  for (std::size_t k = 0; k < drop; ++k) {
-    const Vector& g = G[cost[k].second];
-    for (std::size_t i = 0; i < g.size(); ++i) extra[i] += Interval(-std::abs(g[i]), std::abs(g[i]));
-    gone[cost[k].second] = true;
-  }
-  std::vector<Vector> kept;
-  for (std::size_t j = 0; j < G.size(); ++j) {
-    if (!gone[j]) kept.push_back(std::move(G[j]));
-  }
-  G = std::move(kept);
+  return M;
 }
 
-// A symmetric box as generators along the axes (the zero ones skipped).
-void box_to_generators(const IntervalVector& box, std::vector<Vector>& G) {
-  for (std::size_t i = 0; i < box.size(); ++i) {
-    const double m = box[i].mag();
-    if (m == 0.0) continue;
-    Vector g(box.size(), 0.0);
-    g[i] = m;
-    G.push_back(std::move(g));
+// States that no derivative depends on (their column of every V_k, k ≥ 1, is 0).
+std::vector<bool> passive_states(const std::vector<Interval>& v, std::size_t n, int p) {
+  std::vector<bool> passive(n, true);
+  for (int k = 1; k <= p; ++k) {
+    for (std::size_t e = 0; e < n * n; ++e) {
+      if (v[static_cast<std::size_t>(k) * n * n + e] != Interval(0.0)) passive[e % n] = false;
+    }
   }
+  return passive;
+}
+
+// The set is wide enough for the secant matrix to pay for its cost.
+bool wide(const IntervalVector& X, const Vector& c) {
+  for (std::size_t i = 0; i < X.size(); ++i) {
+    if (X[i].rad() > 1e-9 * std::max(1.0, std::abs(c[i]))) return true;
+  }
+  return false;
+}
+
+// The secant matrix ∫_0^1 DP(c + s(x - c)) ds of the step's polynomial P,
+// for every x in [X] (c ∈ [X]): over s ∈ [(l-1)/K, l/K] the Jacobian lies in
+// its enclosure over the box c + (l/K)([X] - c), whose width shrinks with l;
+// the mean of the K enclosures halves the mean-value form's second-order
+// overestimation as K grows ((K + 1) / 2K of it). M holds the Jacobian over
+// [X] (l = K) and receives the mean. False if f is not smooth there.
+bool secant_matrix(const TaylorOde& ode, const IntervalVector& X, const Vector& c, const std::vector<Interval>& vs,
+                   const IntervalVector& u0, const Interval& h, int p, double sign, IntervalMatrix& M) {
+  const std::size_t n = X.size();
+  const Interval share = Interval(1.0) / Interval(static_cast<double>(kSecantBoxes));
+  const IntervalVector cc = IntervalVector::from_point(c);
+  const int q = std::min(p, kSecantOrder);
+  IntervalMatrix sum = M * share;
+  for (int l = 1; l < kSecantBoxes; ++l) {
+    const Interval s = Interval(static_cast<double>(l)) * share;
+    const IntervalVector Xl = cc + (X - cc) * s;
+    std::vector<Interval> xl(Xl.components().begin(), Xl.components().end()), vl;
+    if (!ode.coefficients(xl, vl, u0.components().data(), q, sign)) return false;
+    sum = sum + jacobian_sum(vs, &vl, q, n, p, h) * share;
+  }
+  M = sum;
+  return true;
 }
 
 }  // namespace
@@ -180,12 +199,28 @@ LohnerSet LohnerSet::from_box(const IntervalVector& x, bool zonotope) {
   return s;
 }
 
+bool IvpStepper::centre_coefficients(const Vector& c, const IntervalVector& u0, double sign,
+                                     std::vector<Interval>& cs) const {
+  const std::size_t n = ode_.nb_states();
+  if (cache_sign_ != sign || cache_c_ != c || !(cache_u0_ == u0)) {
+    cache_.assign(n, Interval());
+    for (std::size_t i = 0; i < n; ++i) cache_[i] = Interval(c[i]);
+    if (!ode_.coefficients(cache_, u0.components().data(), order_ + 1, sign)) {
+      cache_sign_ = 0.0;
+      return false;
+    }
+    cache_c_ = c;
+    cache_u0_ = u0;
+    cache_sign_ = sign;
+  }
+  cs = cache_;
+  return true;
+}
+
 double IvpStepper::suggest(const LohnerSet& set, const IntervalVector& u, double sign, double tol) const {
   const std::size_t n = ode_.nb_states();
-  std::vector<Interval> xs(n);
-  for (std::size_t i = 0; i < n; ++i) xs[i] = Interval(set.c[i]);
-  const IntervalVector u0 = IntervalVector::from_point(u.mid());
-  if (!ode_.coefficients(xs, u0.components().data(), order_ + 1, sign)) return 0.0;
+  std::vector<Interval> xs;
+  if (!centre_coefficients(set.c, IntervalVector::from_point(u.mid()), sign, xs)) return 0.0;
   double scale = 1.0;
   for (double ci : set.c) scale = std::max(scale, std::abs(ci));
   double h = kInf;
@@ -289,7 +324,7 @@ bool IvpStepper::input_share(const IntervalVector& B, const Vector& c, const Int
   if (J.is_unbounded() || Jc.is_unbounded()) return false;
   // e = x - y (x with u(·), y with u0, same start):
   //   e(h) = ∫ J_x(ξ) e + ∫ J_u(y, η)(u - u0)
-  //        ∈ s·h·J_u^c·ū + s·h·(J_u - J_u^c)·([u] - u0) + s·h·J_x·[E],
+  //        ∈ s·h·J_u^c·ū + s·h·(J_u - J_u^c)·([u] - u0) + (s·h/2)·J_x·[E],
   // ū = the mean of u - u0 over the step, any point of [u] - u0 (a new
   // symbol per input: a generator), [E] ⊇ e over the step.
   const IntervalVector E = input_deviation(J, h, u, u0, sign);
@@ -307,10 +342,12 @@ bool IvpStepper::input_share(const IntervalVector& B, const Vector& c, const Int
     G.push_back(split_generator(g, rest));
     for (std::size_t i = 0; i < n; ++i) box[i] += Interval(-std::abs(G.back()[i]), std::abs(G.back()[i]));
   }
+  // |e(τ)| ≤ τ·e^{Pτ}δ ≤ (τ/h)·[E] on the step, so ∫_0^h J_x e ∈ (h/2)·J_x·[E].
+  const Interval half_sh = sh / Interval(2.0);
   for (std::size_t i = 0; i < n; ++i) {
     Interval s(0.0);
     for (std::size_t l = 0; l < n; ++l) s += J(i, l) * E[l];
-    rest[i] += sh * s;
+    rest[i] += half_sh * s;
   }
   for (std::size_t i = 0; i < n; ++i) rest[i] = symmetric(rest[i]);
   box += rest;
@@ -338,19 +375,15 @@ bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u
     for (std::size_t i = 0; i < n; ++i) last[i] = bs[static_cast<std::size_t>(p + 1) * n + i];
   }
   // The polynomial at the centre, plus the remainder: the flow with u0.
-  std::vector<Interval> cs(n);
-  for (std::size_t i = 0; i < n; ++i) cs[i] = Interval(set.c[i]);
-  if (!ode_.coefficients(cs, u0.components().data(), p, sign)) return false;
+  std::vector<Interval> cs;
+  if (!centre_coefficients(set.c, u0, sign, cs)) return false;
   const Interval hp1 = pow(h, p + 1);
   IntervalVector z(n);
   for (std::size_t i = 0; i < n; ++i) z[i] = horner(cs, n, i, p, h) + last[i] * hp1;
-  // M = Σ_k V_k([X]) h^k, entry by entry.
-  IntervalMatrix M(n, n);
-  for (std::size_t e = 0; e < n * n; ++e) {
-    Interval s = vs[static_cast<std::size_t>(p) * n * n + e];
-    for (int k = p - 1; k >= 0; --k) s = s * h + vs[static_cast<std::size_t>(k) * n * n + e];
-    M(e / n, e % n) = s;
-  }
+  // M encloses the secant matrix: P(x) - P(c) = M·(x - c) for every x in
+  // [X], P the step's polynomial (secant_matrix).
+  IntervalMatrix M = jacobian_sum(vs, nullptr, 0, n, p, h);
+  if (wide(Xc, set.c) && !secant_matrix(ode_, Xc, set.c, vs, u0, h, p, sign, M)) return false;
   // The generators follow the linear part: M·g = mid(M·g) + a residual box.
   IntervalVector extra(n, Interval(0.0));
   std::vector<Vector> G;
@@ -359,7 +392,7 @@ bool IvpStepper::step(LohnerSet& set, const Interval& h, const IntervalVector& u
   // The inputs' share: new generators and their remainder (input_share).
   IntervalVector input_box(n, Interval(0.0));
   if (inputs && !input_share(B, set.c, h, u, u0, sign, G, extra, input_box)) return false;
-  reduce_generators(G, extra);
+  reduce_generators(G, extra, passive_states(vs, n, p), kMaxGenerators);
   if (set.zonotope) {
     box_to_generators(extra, G);
     extra = IntervalVector(n, Interval(0.0));

@@ -12,8 +12,10 @@
 //     x_{p+1}([B̃])[0,h]^{p+1} ⊆ int [B̃]), of order 1 with inputs
 //     ([X] + [0,h]·f([B̃], [u]) ⊆ int [B̃]), which covers every u(t) ∈ [u];
 //  2. the Taylor polynomial at the centre with u0 = mid [u] and its
-//     remainder x_{p+1}([B̃])·h^{p+1}; the Jacobian of the polynomial over
-//     [X] from the variational coefficients, M = Σ V_k([X]) h^k;
+//     remainder x_{p+1}([B̃])·h^{p+1}; the secant matrix M of the
+//     polynomial over [X] from the variational coefficients: Σ V_k([X]) h^k,
+//     or on a wide set the mean of that sum over K nested boxes around c
+//     (about half the second-order overestimation);
 //  3. with inputs, the distance from a solution of the inclusion to the
 //     solution with u0 from the same start, componentwise by comparison
 //     with a Metzler majorant P of s·J_x over [B]: |x - y| ≤ h·e^{Ph}·δ,
@@ -21,6 +23,7 @@
 //  4. Lohner's QR update: A' = Q of a QR factorisation of mid(M·A)
 //     (columns sorted by their length times the width of [r]), [r'] =
 //     Q⁻¹(M·A)[r] + Q⁻¹([z] - c'), with a rigorous enclosure of Q⁻¹.
+// With inputs the set carries generators (ivp_generators.h), mapped by M.
 // Everything is outward rounded; the box of the new set is also intersected
 // with the mean-value form [z] + M([X] - c).
 #include <cstddef>
@@ -51,6 +54,7 @@ struct LohnerSet {
   IntervalVector hull() const;
 };
 
+// Not thread-safe (it caches the coefficients at the last centre): one per sweep.
 class IvpStepper {
  public:
   IvpStepper(const TaylorOde& ode, int order) : ode_(ode), order_(order) {}
@@ -76,8 +80,18 @@ class IvpStepper {
                    const IntervalVector& u0, double sign, std::vector<Vector>& G, IntervalVector& extra,
                    IntervalVector& box) const;
 
+  // The Taylor coefficients at the centre c with u0 (orders 0..p + 1):
+  // suggest() computes them, step() on the same set reuses them.
+  bool centre_coefficients(const Vector& c, const IntervalVector& u0, double sign,
+                           std::vector<Interval>& cs) const;
+
   const TaylorOde& ode_;
   int order_;
+  // The last centre_coefficients() call (a stepper serves one sweep).
+  mutable Vector cache_c_;
+  mutable IntervalVector cache_u0_;
+  mutable double cache_sign_ = 0.0;
+  mutable std::vector<Interval> cache_;
 };
 
 }  // namespace sillage::detail

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/op_eval.h"
 #include "sillage/expr/tape.h"
 
@@ -11,22 +12,26 @@ namespace sillage::detail {
 
 namespace {
 
+// flatten: the interval operations and their rounding kernels are inlined
+// into the loop (no call per box).
 template <class F>
-void unary_loop(Interval* r, const Interval* a, std::size_t count, F f) {
+[[gnu::flatten]] void unary_loop(Interval* r, const Interval* a, std::size_t count, F f) {
   for (std::size_t i = 0; i < count; ++i) r[i] = f(a[i]);
 }
 
 template <class F>
-void binary_loop(Interval* r, const Interval* a, const Interval* b, std::size_t count, F f) {
+[[gnu::flatten]] void binary_loop(Interval* r, const Interval* a, const Interval* b, std::size_t count, F f) {
   for (std::size_t i = 0; i < count; ++i) r[i] = f(a[i], b[i]);
 }
 
+// Row k of the batch; + − × by the kernels of the rounding policy (Ops, batch_kernels.h).
+template <class Ops>
 void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b, std::size_t cnt) {
   using I = const Interval&;
   switch (in.op) {
-    case Op::Add: return binary_loop(r, a, b, cnt, [](I x, I y) { return x + y; });
-    case Op::Sub: return binary_loop(r, a, b, cnt, [](I x, I y) { return x - y; });
-    case Op::Mul: return binary_loop(r, a, b, cnt, [](I x, I y) { return x * y; });
+    case Op::Add: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::add(x, y); });
+    case Op::Sub: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::sub(x, y); });
+    case Op::Mul: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::mul(x, y); });
     case Op::Div: return binary_loop(r, a, b, cnt, [](I x, I y) { return x / y; });
     case Op::Neg: return unary_loop(r, a, cnt, [](I x) { return -x; });
     case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return sqr(x); });
@@ -44,25 +49,31 @@ void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b
   }
 }
 
-}  // namespace
-
-void Tape::forward_batch(const Interval* const* xs, std::size_t count, Interval* rows,
-                         Interval* const* out) const {
+// Tape::forward_batch with the interval operations Ops.
+template <class Ops>
+void forward_rows(const Tape& t, const Interval* const* xs, std::size_t count, Interval* rows, Interval* const* out) {
   thread_local std::vector<const Interval*> row;
-  row.assign(code_.size(), nullptr);
-  for (std::size_t k = 0; k < nb_vars_; ++k) row[k] = xs[k];
-  for (std::size_t k = nb_vars_; k < code_.size(); ++k) {
-    const Instr& in = code_[k];
+  row.assign(t.code().size(), nullptr);
+  for (std::size_t k = 0; k < t.nb_vars(); ++k) row[k] = xs[k];
+  for (std::size_t k = t.nb_vars(); k < t.code().size(); ++k) {
+    const Instr& in = t.code()[k];
     Interval* r = rows + k * count;
     row[k] = r;
     if (in.op == Op::Const) {
       std::fill(r, r + count, in.value);
     } else {
-      eval_row(in, r, row[in.a], row[in.b], count);
+      eval_row<Ops>(in, r, row[in.a], row[in.b], count);
     }
   }
   if (!out) return;
-  for (std::size_t o = 0; o < outputs_.size(); ++o) std::copy(row[outputs_[o]], row[outputs_[o]] + count, out[o]);
+  for (std::size_t o = 0; o < t.outputs().size(); ++o) std::copy(row[t.outputs()[o]], row[t.outputs()[o]] + count, out[o]);
+}
+
+}  // namespace
+
+void Tape::forward_batch(const Interval* const* xs, std::size_t count, Interval* rows,
+                         Interval* const* out) const {
+  with_rounded_ops([&](auto ops) { forward_rows<decltype(ops)>(*this, xs, count, rows, out); });
 }
 
 }  // namespace sillage::detail

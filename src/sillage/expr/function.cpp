@@ -146,7 +146,8 @@ void Function::hc4_revise_batch(std::span<Interval* const> xs, std::size_t count
   thread_local std::vector<std::uint8_t> ok;
   rows.resize(std::max(rows.size(), t.size() * std::min(kChunk, count)));
   ok.resize(std::min(kChunk, count));
-  std::vector<const Interval*> cols(n);
+  thread_local std::vector<const Interval*> cols;
+  cols.resize(n);
   for (std::size_t start = 0; start < count; start += kChunk) {
     const std::size_t cnt = std::min(kChunk, count - start);
     std::fill(ok.begin(), ok.begin() + static_cast<std::ptrdiff_t>(cnt), y.is_empty() ? 0 : 1);

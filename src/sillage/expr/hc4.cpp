@@ -12,8 +12,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/tape.h"
 #include "sillage/interval/backward.h"
+#include "sillage/interval/backward_detail.h"
 
 namespace sillage::detail {
 
@@ -106,9 +108,54 @@ void meet(Interval& x, const Interval& p, std::uint8_t& moved) {
   }
 }
 
+// Projects slot k (rows r, operands ra, rb) onto its operands for the boxes
+// j < count still to be contracted; `proj` is the projection of the slot's
+// operation, chosen once per row so that the box loop holds no dispatch.
+template <bool kBinary, class Proj>
+void backward_row(std::size_t count, Idle rule, Interval* r, Interval* ra, Interval* rb, const std::uint8_t* m,
+                  std::uint8_t* ma, std::uint8_t* mb, std::uint8_t* ok, Proj proj) {
+  for (std::size_t j = 0; j < count; ++j) {
+    if (!ok[j]) continue;
+    if (r[j].is_empty()) {
+      ok[j] = 0;
+      continue;
+    }
+    if (!m[j] && keeps_operands(rule, ra[j], kBinary ? rb[j] : ra[j])) continue;
+    Interval a = ra[j];
+    Interval b = kBinary ? rb[j] : Interval();
+    if (!proj(r[j], a, b)) {
+      ok[j] = 0;
+      continue;
+    }
+    meet(ra[j], a, ma[j]);
+    if (kBinary) meet(rb[j], b, mb[j]);
+    if (ra[j].is_empty() || (kBinary && rb[j].is_empty())) ok[j] = 0;
+  }
+}
+
+// bwd_add and bwd_sub of backward_arith.cpp with the operations Ops
+// (batch_kernels.h): the same results, the rounding kernels inlined.
+template <class Ops>
+bool bwd_add_with(const Interval& y_in, Interval& x1, Interval& x2) {
+  const Interval y = y_in;
+  x1 &= Ops::sub(y, x2);
+  x2 &= Ops::sub(y, x1);
+  return settle(x1, x2);
+}
+
+template <class Ops>
+bool bwd_sub_with(const Interval& y_in, Interval& x1, Interval& x2) {
+  const Interval y = y_in;
+  x1 &= Ops::add(y, x2);
+  x2 &= Ops::sub(x1, y);
+  return settle(x1, x2);
+}
+
 // The backward pass over `count` boxes (see Tape::backward_batch); kOne: a
-// single box, for which the compiler drops the inner loops.
-template <bool kOne>
+// single box, for which the compiler drops the inner loops, and which keeps
+// the projections of backward.h (the reference of the batch). Ops: the
+// interval operations of the batch's + and − rows.
+template <bool kOne, class Ops = ScalarOps>
 void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const Interval* y, std::uint8_t* ok,
                    bool skip_idle) {
   const std::size_t count = kOne ? 1 : count_in;
@@ -127,28 +174,39 @@ void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const In
       if (o[j].is_empty()) ok[j] = 0;
     }
   }
+  using I = const Interval&;
   for (std::size_t k = code.size(); k-- > t.nb_vars();) {
     const Instr& in = code[k];
-    const bool binary = op_arity(in.op) == 2;
     const Idle rule = skip_idle ? idle_rule(in) : Idle::Project;
     Interval *const r = row(k), *const ra = row(in.a), *const rb = row(in.b);
     std::uint8_t *const m = moved(k), *const ma = moved(in.a), *const mb = moved(in.b);
-    for (std::size_t j = 0; j < count; ++j) {
-      if (!ok[j]) continue;
-      if (r[j].is_empty()) {
-        ok[j] = 0;
-        continue;
-      }
-      if (in.op == Op::Const || (!m[j] && keeps_operands(rule, ra[j], rb[j]))) continue;
-      Interval a = ra[j];
-      Interval b = binary ? rb[j] : Interval();
-      if (!project(in, r[j], a, b)) {
-        ok[j] = 0;
-        continue;
-      }
-      meet(ra[j], a, ma[j]);
-      if (binary) meet(rb[j], b, mb[j]);
-      if (ra[j].is_empty() || (binary && rb[j].is_empty())) ok[j] = 0;
+    const auto binary = [&](auto proj) { backward_row<true>(count, rule, r, ra, rb, m, ma, mb, ok, proj); };
+    const auto unary = [&](auto proj) { backward_row<false>(count, rule, r, ra, rb, m, ma, mb, ok, proj); };
+    switch (in.op) {  // the frequent operations get a loop of their own
+      case Op::Const:  // nothing to project: an emptied constant empties its box
+        for (std::size_t j = 0; j < count; ++j)
+          if (r[j].is_empty()) ok[j] = 0;
+        break;
+      case Op::Add:
+        if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_add(v, a, b); });
+        else binary([](I v, Interval& a, Interval& b) { return bwd_add_with<Ops>(v, a, b); });
+        break;
+      case Op::Sub:
+        if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_sub(v, a, b); });
+        else binary([](I v, Interval& a, Interval& b) { return bwd_sub_with<Ops>(v, a, b); });
+        break;
+      case Op::Mul: binary([](I v, Interval& a, Interval& b) { return bwd_mul(v, a, b); }); break;
+      case Op::Div: binary([](I v, Interval& a, Interval& b) { return bwd_div(v, a, b); }); break;
+      case Op::Sqr: unary([](I v, Interval& a, Interval&) { return bwd_sqr(v, a); }); break;
+      case Op::Sqrt: unary([](I v, Interval& a, Interval&) { return bwd_sqrt(v, a); }); break;
+      case Op::Sin: unary([](I v, Interval& a, Interval&) { return bwd_sin(v, a); }); break;
+      case Op::Cos: unary([](I v, Interval& a, Interval&) { return bwd_cos(v, a); }); break;
+      default:
+        if (op_arity(in.op) == 2) {
+          binary([&in](I v, Interval& a, Interval& b) { return project(in, v, a, b); });
+        } else {
+          unary([&in](I v, Interval& a, Interval& b) { return project(in, v, a, b); });
+        }
     }
   }
   for (std::size_t k = 0; k < t.nb_vars(); ++k)
@@ -166,7 +224,7 @@ bool Tape::backward(Interval* v, const Interval* y, bool skip_idle) const {
 
 void Tape::backward_batch(Interval* rows, std::size_t count, const Interval* y, std::uint8_t* ok,
                           bool skip_idle) const {
-  backward_rows<false>(*this, rows, count, y, ok, skip_idle);
+  with_rounded_ops([&](auto ops) { backward_rows<false, decltype(ops)>(*this, rows, count, y, ok, skip_idle); });
 }
 
 }  // namespace sillage::detail

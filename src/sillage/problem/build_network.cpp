@@ -7,6 +7,8 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"
+#include "sillage/dynamics/ctc_heading_window.h"
+#include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
@@ -154,9 +156,11 @@ std::vector<std::size_t> constraint_order(const Problem& p) {
         case ConstraintKind::Expr: return 1;
         case ConstraintKind::Increment: return 2;
         case ConstraintKind::Heading: return 3;
-        case ConstraintKind::Deriv: return 4;
+        case ConstraintKind::Deriv:
+        case ConstraintKind::SecondDeriv: return 4;
+        case ConstraintKind::HeadingWindow: return 5;
       }
-      return 5;
+      return 6;
     };
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
   }
@@ -174,9 +178,27 @@ std::size_t nb_slices_for(const Problem& p, double delta) {
   return static_cast<std::size_t>(std::ceil((p.time.tf - p.time.t0) / delta));
 }
 
+namespace {
+
+BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td);
+
+}  // namespace
+
 BuiltProblem build_network(const Problem& p, double delta) {
+  return build_on(p, p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points));
+}
+
+BuiltProblem build_network(const Problem& p, const std::vector<double>& points) {
+  if (points.size() < 2 || points.front() != p.time.t0 || points.back() != p.time.tf)
+    throw Error("build_network: time points from t0 to tf expected");
+  return build_on(p, TDomain::create(points));
+}
+
+namespace {
+
+BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   BuiltProblem b;
-  b.td = p.time.points.empty() ? TDomain::create(p.time.t0, p.time.tf, delta) : TDomain::create(p.time.points);
+  b.td = std::move(td);
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
       if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
@@ -242,10 +264,12 @@ BuiltProblem build_network(const Problem& p, double delta) {
         break;
       }
       case ConstraintKind::Deriv:
+      case ConstraintKind::SecondDeriv:
       case ConstraintKind::Increment: {
         const VarDomain &x = b.var(c.x), &v = b.var(c.v);
         std::shared_ptr<const NetworkCtc> ctc;
         if (c.kind == ConstraintKind::Deriv) ctc = std::make_shared<CtcDeriv>();
+        else if (c.kind == ConstraintKind::SecondDeriv) ctc = std::make_shared<CtcSecondDeriv>();
         else ctc = std::make_shared<CtcIncrement>();
         if (x.spec->kind == VarKind::Tube) cn.add(ctc, {x.tubes->shared_component(0), v.tubes->shared_component(0)});
         else cn.add(ctc, {x.tubes, v.tubes});
@@ -256,6 +280,17 @@ BuiltProblem build_network(const Problem& p, double delta) {
         const auto scalar = [&](const std::string& n) { return b.var(n).tubes->shared_component(0); };
         cn.add(std::make_shared<CtcHeading>(constant_text(c.track, c.pos).ub()),
                {pos.tubes, scalar(c.psi), scalar(c.dist), scalar(c.omega)});
+        break;
+      }
+      case ConstraintKind::HeadingWindow: {
+        const auto scalar = [&](const std::string& n) { return b.var(n).tubes->shared_component(0); };
+        // A window every quarter of a window at the mean slice width, unless the file says.
+        const double mean_width = (b.td->tf() - b.td->t0()) / static_cast<double>(b.td->nb_slices());
+        const std::size_t stride =
+            c.stride ? c.stride : static_cast<std::size_t>(std::max(1.0, std::round(c.window / 4 / mean_width)));
+        const double accel = c.turn_accel.empty() ? INFINITY : constant_text(c.turn_accel, c.pos).ub();
+        cn.add(std::make_shared<CtcHeadingWindow>(c.window, constant_text(c.track, c.pos).ub(), accel, stride),
+               {b.var(c.p).tubes, scalar(c.psi), scalar(c.dist), scalar(c.dpsi), scalar(c.omega)});
         break;
       }
       case ConstraintKind::Eval: {
@@ -352,5 +387,7 @@ BuiltProblem build_network(const Problem& p, double delta) {
   }
   return b;
 }
+
+}  // namespace
 
 }  // namespace sillage

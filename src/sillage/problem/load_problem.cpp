@@ -297,7 +297,8 @@ class Loader {
     const toml::node* kn = t.get("kind");
     ConstraintSpec c;
     c.pos = doc_.pos(node);
-    const std::string expected_kind = "kind = \"expr\", \"deriv\", \"increment\", \"eval\" or \"heading\"";
+    const std::string expected_kind =
+        "kind = \"expr\", \"deriv\", \"second_deriv\", \"increment\", \"eval\", \"heading\" or \"heading_window\"";
     if (!kn) throw ProblemError(c.pos, "constraint " + std::to_string(index) + " without a kind", expected_kind);
     const std::string ks = top.string(*kn, expected_kind);
     const std::string where = "constraint " + std::to_string(index) + " (" + ks + ")";
@@ -314,43 +315,73 @@ class Loader {
       c.kind = ConstraintKind::Expr;
       read_expr(f, c, dims, is_vec, known_vars());
       c.label = where + ": " + c.expr + " = 0";
-    } else if (ks == "deriv" || ks == "increment") {
-      const Fields f(doc_, t, where, {"kind", "x", "v"});
-      c.kind = ks == "deriv" ? ConstraintKind::Deriv : ConstraintKind::Increment;
+    } else if (ks == "deriv" || ks == "increment" || ks == "second_deriv") {
+      // x' = v, x(t_k+1) - x(t_k) in v(k), x'' in a: a tube of x's kind and dimension.
+      const char* vkey = ks == "second_deriv" ? "a" : "v";
+      const Fields f(doc_, t, where, {"kind", "x", vkey});
+      c.kind = ks == "deriv" ? ConstraintKind::Deriv : ks == "increment" ? ConstraintKind::Increment : ConstraintKind::SecondDeriv;
       const VarSpec& x = tube_var(f, "x");
-      const VarSpec& v = tube_var(f, "v");
+      const VarSpec& v = tube_var(f, vkey);
       if (x.dim != v.dim || x.kind != v.kind)
-        throw ProblemError(doc_.pos(*f.find("v")),
+        throw ProblemError(doc_.pos(*f.find(vkey)),
                            "'" + v.name + "' (" + kind_name(v.kind) + ", dim " + std::to_string(v.dim) + ")",
                            "a variable of the kind and dimension of '" + x.name + "' (" + kind_name(x.kind) + ", dim " +
                                std::to_string(x.dim) + ")");
       c.x = x.name;
       c.v = v.name;
-      c.label = where + ": " + (ks == "deriv" ? c.x + "' = " + c.v : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
+      c.label = where + ": " + (ks == "deriv"          ? c.x + "' = " + c.v
+                                : ks == "second_deriv" ? c.x + "'' in " + c.v
+                                                       : c.x + "(t_k+1) - " + c.x + "(t_k) in " + c.v + "(k)");
     } else if (ks == "heading") {
       const Fields f(doc_, t, where, {"kind", "p", "psi", "dist", "omega", "track"});
       c.kind = ConstraintKind::Heading;
-      const VarSpec& p = tube_var(f, "p");
-      if (p.kind != VarKind::TubeVector || p.dim != 2)
-        throw ProblemError(doc_.pos(*f.find("p")), "'" + p.name + "' (" + kind_name(p.kind) + ", dim " + std::to_string(p.dim) + ")",
-                           "a position: a tube_vector of dim 2");
-      c.p = p.name;
-      for (auto [key, out] : {std::pair{"psi", &c.psi}, std::pair{"dist", &c.dist}, std::pair{"omega", &c.omega}}) {
-        const VarSpec& s = tube_var(f, key);
-        if (s.kind != VarKind::Tube) throw ProblemError(doc_.pos(*f.find(key)), "the tube_vector '" + s.name + "'", "a scalar tube");
-        *out = s.name;
-      }
-      if (const toml::node* tr = f.find("track")) {
-        if (!(f.number(*tr, "a track error >= 0 (rad)") >= 0)) throw ProblemError(doc_.pos(*tr), "a negative track error", "a track error >= 0");
-        c.track = f.bound_text(*tr);
-      }
+      read_odometry(f, c, {std::pair{"psi", &c.psi}, std::pair{"dist", &c.dist}, std::pair{"omega", &c.omega}});
       c.label = where + ": " + c.p + " from " + c.dist + " along " + c.psi + " (track error " + c.track + ")";
+    } else if (ks == "heading_window") {
+      const Fields f(doc_, t, where, {"kind", "p", "psi", "dist", "dpsi", "omega", "track", "window", "turn_accel", "stride"});
+      c.kind = ConstraintKind::HeadingWindow;
+      read_odometry(f, c,
+                    {std::pair{"psi", &c.psi}, std::pair{"dist", &c.dist}, std::pair{"dpsi", &c.dpsi}, std::pair{"omega", &c.omega}});
+      const toml::node& wn = f.require("window", "the length of the windows (s, a number > 0)");
+      c.window = f.number(wn, "the length of the windows (s, a number > 0)");
+      if (!(c.window > 0)) throw ProblemError(doc_.pos(wn), "window = " + doc_.raw(wn), "a window length > 0 (s)");
+      if (const toml::node* an = f.find("turn_accel")) {
+        if (!(f.number(*an, "a turn acceleration bound > 0 (rad/s^2)") > 0))
+          throw ProblemError(doc_.pos(*an), "turn_accel = " + doc_.raw(*an), "a turn acceleration bound > 0 (rad/s^2)");
+        c.turn_accel = f.bound_text(*an);
+      }
+      if (const toml::node* sn = f.find("stride")) {
+        const std::int64_t s = f.integer(*sn, "a window every `stride` slices (an integer >= 1)");
+        if (s < 1) throw ProblemError(doc_.pos(*sn), "stride = " + doc_.raw(*sn), "an integer >= 1 (slices)");
+        c.stride = static_cast<std::size_t>(s);
+      }
+      c.label = where + ": " + c.p + " over windows of " + doc_.raw(wn) + " s against " + c.psi + " and " + c.dpsi;
     } else if (ks == "eval") {
       read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr"}), c, where);
     } else {
       throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
     }
     p_.constraints.push_back(std::move(c));
+  }
+
+  // The odometry of a planar vehicle (heading, heading_window): p a 2-D
+  // tube_vector, the scalar tubes of `scalars`, and the track error.
+  void read_odometry(const Fields& f, ConstraintSpec& c,
+                     std::initializer_list<std::pair<const char*, std::string*>> scalars) {
+    const VarSpec& p = tube_var(f, "p");
+    if (p.kind != VarKind::TubeVector || p.dim != 2)
+      throw ProblemError(doc_.pos(*f.find("p")), "'" + p.name + "' (" + kind_name(p.kind) + ", dim " + std::to_string(p.dim) + ")",
+                         "a position: a tube_vector of dim 2");
+    c.p = p.name;
+    for (auto [key, out] : scalars) {
+      const VarSpec& s = tube_var(f, key);
+      if (s.kind != VarKind::Tube) throw ProblemError(doc_.pos(*f.find(key)), "the tube_vector '" + s.name + "'", "a scalar tube");
+      *out = s.name;
+    }
+    if (const toml::node* tr = f.find("track")) {
+      if (!(f.number(*tr, "a track error >= 0 (rad)") >= 0)) throw ProblemError(doc_.pos(*tr), "a negative track error", "a track error >= 0");
+      c.track = f.bound_text(*tr);
+    }
   }
 
   template <class Dims, class Vec>

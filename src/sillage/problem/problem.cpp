@@ -31,6 +31,8 @@ const char* kind_name(ConstraintKind k) {
     case ConstraintKind::Increment: return "increment";
     case ConstraintKind::Eval: return "eval";
     case ConstraintKind::Heading: return "heading";
+    case ConstraintKind::SecondDeriv: return "second_deriv";
+    case ConstraintKind::HeadingWindow: return "heading_window";
   }
   return "?";
 }

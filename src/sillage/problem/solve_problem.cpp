@@ -1,7 +1,10 @@
 #include "sillage/problem/solve_problem.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+
+#include "sillage/problem/refined_points.h"
 
 namespace sillage {
 
@@ -62,13 +65,18 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
   SolveResult r;
   const auto start = std::chrono::steady_clock::now();
   double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;
+  std::vector<double> points;  // regions: the time points of the next step (none: the uniform δ)
   for (;;) {
     ScheduleStep step;
     step.delta = delta;
     auto t0 = std::chrono::steady_clock::now();
-    BuiltProblem b = build_network(p, delta);
+    BuiltProblem b = points.empty() ? build_network(p, delta) : build_network(p, points);
     step.build_seconds = seconds_since(t0);
     step.slices = b.td->nb_slices();
+    if (!points.empty()) {
+      step.delta = INFINITY;
+      for (std::size_t k = 0; k < step.slices; ++k) step.delta = std::min(step.delta, b.td->t(k + 1) - b.td->t(k));
+    }
     t0 = std::chrono::steady_clock::now();
     step.stats = b.cn->contract();
     step.contract_seconds = seconds_since(t0);
@@ -86,9 +94,16 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
       const double prev = r.schedule[r.schedule.size() - 2].mean_thickness, cur = step.mean_thickness;
       if (std::abs(prev - cur) <= o.tolerance * std::abs(prev)) return r;
     }
+    std::size_t next_slices = 2 * step.slices;
+    if (o.refinement == DeltaRefinement::Regions) {
+      points = detail::refined_points(r.built, o.split_quantile);
+      next_slices = points.size() - 1;
+    }
+    // The next step, estimated in proportion to its slices.
     const double last = step.build_seconds + step.contract_seconds;
-    if (seconds_since(start) + 2 * last > o.budget_seconds) return r;
-    if (2 * step.slices > o.max_slices) return r;
+    const double growth = static_cast<double>(next_slices) / static_cast<double>(step.slices);
+    if (seconds_since(start) + growth * last > o.budget_seconds) return r;
+    if (next_slices > o.max_slices || next_slices == step.slices) return r;
     delta /= 2;
   }
 }

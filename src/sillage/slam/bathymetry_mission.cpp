@@ -39,7 +39,7 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
     : seed_(seed), options_(options), seabed_((check_options(options), generate_seabed(seed, options.seabed))) {
   const auto& o = options_;
   detail::BathymetryRng rng(seed ^ 0x5eedba7f00dULL);
-  const BathymetryPlan plan(o.seabed.size, o.speed, o.turn_radius, o.rail_spacing, o.depth, o.duration);
+  const BathymetryPlan plan(o.seabed.size, o.speed, o.turn_radius, o.rail_spacing, o.depth, o.duration, o.transects);
   double ph[10];
   for (double& p : ph) p = rng.uniform(0, 2 * kPi);
 

@@ -52,17 +52,28 @@ double smoothstep(double s) { return s * s * (3 - 2 * s); }
 double smoothstep_integral(double s) { return s * s * s - s * s * s * s / 2; }
 }  // namespace
 
-BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, double depth, double duration) {
+BathymetryPlan::BathymetryPlan(double L, double u, double R, double spacing, double depth, double duration,
+                               bool transects) {
   if (L < 300) throw Error("BathymetryPlan: the area must be at least 300 m wide");
   const double m = 0.08 * L;  // margin from the edges
-  x0_ = m, y0_ = m, yaw0_ = kPi / 4;
+  x0_ = m, y0_ = transects ? 0.3 * L : m, yaw0_ = transects ? 0 : kPi / 4;
   Walker w{x0_, y0_, yaw0_, 0, u, R, {}, {}, {}};
-  // Overall crossing.
+  // Overall crossing: a diagonal, or an east-west transect across the rails.
   w.straight_to_x(L - m - 2 * R);
-  w.turn(3 * kPi / 4);
-  w.straight_to_x(m + 1.2 * R);
-  w.turn(3 * kPi / 4);
-  w.straight_to_y(0.22 * L);
+  if (transects) {  // north along the east side, the second transect west, north, then the diagonal
+    w.turn(kPi / 2);
+    w.straight_to_y(0.7 * L - R);  // the turn adds R: the transect at 0.7 L
+    w.turn(kPi / 2);
+    w.straight_to_x(m + 2.2 * R);
+    w.turn(-kPi / 2);
+    w.straight_to_y(L - m - 2 * R);
+    w.turn(-3 * kPi / 4);
+  } else {  // west along the northern edge, then the diagonal
+    w.turn(3 * kPi / 4);
+    w.straight_to_x(m + 1.2 * R);
+    w.turn(3 * kPi / 4);
+  }
+  w.straight_to_y(transects ? 0.34 * L : 0.22 * L);  // the rails start ~0.15 L from the east edge
   w.turn(3 * kPi / 4);
   // Boustrophedon towards the west.
   const double beta = keyhole_beta(u, R, spacing), y_lo = 0.2 * L, y_hi = 0.8 * L;

@@ -4,16 +4,20 @@
 // smoothstep (so the yaw is C^2 with a bounded second derivative), and a depth
 // programme of smootherstep changes. Layout on a square area of side L:
 // start near the south-west corner, diagonal to the north-east, west along
-// the northern edge, diagonal to the south-east (the overall crossing), then
-// north-south rails towards the west, joined by keyhole turns (a turn away by
-// beta then back by pi + beta, beta chosen for the rail spacing).
+// the northern edge (or: two east-west transects across the rails), diagonal
+// to the south-east (the overall crossing), then north-south rails towards
+// the west, joined by keyhole turns (a turn away by beta then back by
+// pi + beta, beta chosen for the rail spacing).
 #include <vector>
 
 namespace sillage::detail {
 
 class BathymetryPlan {
  public:
-  BathymetryPlan(double size, double speed, double radius, double spacing, double depth, double duration);
+  // transects: the overall crossing as two east-west transects across the
+  // rails (at 0.3 and 0.7 size) instead of the first diagonal and the northern edge.
+  BathymetryPlan(double size, double speed, double radius, double spacing, double depth, double duration,
+                 bool transects = false);
   double start_x() const { return x0_; }
   double start_y() const { return y0_; }
   double yaw(double t) const;         // rad, counter-clockwise from east

@@ -25,6 +25,25 @@ struct Gaussian {  // A exp(-(a^2/(2 s1^2) + b^2/(2 s2^2))), (a, b) the rotated 
   double smin() const { return std::min(s1, s2); }
 };
 
+struct Wave {  // amp sin(k (cos th x + sin th y) + phase)
+  double amp, k, cth, sth, phase;
+  double operator()(double x, double y) const { return amp * std::sin(k * (cth * x + sth * y) + phase); }
+};
+
+// Three sand-wave trains (wavelengths 10-16, 18-26, 28-40 m, random directions
+// and phases) whose amplitudes sum to `height`: relief at the scale of a
+// drift window with no single period.
+std::vector<Wave> dune_trains(detail::BathymetryRng rng, double height) {
+  if (!(height > 0)) return {};
+  const double lmin[3] = {10, 18, 28}, lmax[3] = {16, 26, 40}, share[3] = {0.3, 0.33, 0.37};
+  std::vector<Wave> out;
+  for (int i = 0; i < 3; ++i) {
+    const double wl = rng.uniform(lmin[i], lmax[i]), th = rng.uniform(0, kPi);
+    out.push_back({height * share[i], 2 * kPi / wl, std::cos(th), std::sin(th), rng.uniform(0, 2 * kPi)});
+  }
+  return out;
+}
+
 // 1 / (1 + exp(-(x - x0)/w)): 0 in the smooth west, 1 in the rough east.
 double logistic(double x, double x0, double w) { return 1 / (1 + std::exp(-(x - x0) / w)); }
 
@@ -35,6 +54,11 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
       !(o.smooth_width >= 0) || o.smooth_width > o.size || o.nb_rocks < 0 || o.nb_banks < 0 || !(o.relief >= 0) ||
       !std::isfinite(o.relief))
     throw Error("generate_seabed: size > 10, cell > 0, 0 <= smooth_width <= size, counts >= 0, finite relief >= 0 expected");
+  if (!(o.rock_height_min >= 0) || !(o.rock_height_max >= o.rock_height_min) || !(o.rock_sigma_min > 0) ||
+      !(o.rock_sigma_max >= o.rock_sigma_min) || !std::isfinite(o.rock_height_max + o.rock_sigma_max) ||
+      !(o.dune_height >= 0) || !std::isfinite(o.dune_height))
+    throw Error("generate_seabed: 0 <= rock_height_min <= rock_height_max, 0 < rock_sigma_min <= rock_sigma_max, "
+                "finite dune_height >= 0 expected");
   const double R = o.relief;  // scales every relief amplitude (and so the class bounds)
   detail::BathymetryRng rng(seed);
   const double L = o.size;
@@ -48,11 +72,12 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
     banks.push_back({rng.uniform(x_edge + 60, L - 60), rng.uniform(60, L - 60), -R * rng.uniform(2.0, 3.5),
                      rng.uniform(90, 130), rng.uniform(35, 50), std::cos(th), std::sin(th)});
   }
-  // Rocks 0.8-1.5 m high, sigma 8-12 m, at least 8 sigma_max = 96 m apart.
-  const double rock_smax = 12;
+  // Rocks (default 0.8-1.5 m high, sigma 8-12 m), at least 8 sigma_max apart.
+  const double rock_smax = o.rock_sigma_max;
   for (int k = 0, tries = 0; k < o.nb_rocks && tries < 10000; ++tries) {
-    const double s = rng.uniform(8, rock_smax), cx = rng.uniform(x_edge + 30, L - 20), cy = rng.uniform(20, L - 20);
-    const double amp = -R * rng.uniform(0.8, 1.5);
+    const double s = rng.uniform(o.rock_sigma_min, rock_smax), cx = rng.uniform(x_edge + 30, L - 20),
+                 cy = rng.uniform(20, L - 20);
+    const double amp = -R * rng.uniform(o.rock_height_min, o.rock_height_max);
     bool far = true;
     for (const auto& r : rocks) far = far && std::hypot(r.cx - cx, r.cy - cy) >= 8 * rock_smax;
     if (!far) continue;
@@ -65,6 +90,8 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
   // A gentle swell in the smooth part too (0.3 m over 200 m).
   const double gamp = R * 0.3, gk = 2 * kPi / 200, gph = rng.uniform(0, 2 * kPi);
   const double roughness = 0.03;
+  // The dune field, from its own stream (drawn only when asked: the smoother seabed's draws are unchanged).
+  const std::vector<Wave> dunes = o.dune_height > 0 ? dune_trains(rng.fork(2), R * o.dune_height) : std::vector<Wave>{};
 
   // The class, from the parameters. Gaussian: |H| <= A/s_min^2, |grad| <= A/s_min e^{-1/2}.
   // Rocks >= 8 s_max apart: at any point all but one are >= 4 s away, each adding at most
@@ -79,6 +106,10 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
   const double kk = 2 * kPi / wl;
   curv += wamp * (kk * kk + 2 * kk / (4 * tw) + 0.0963 / (tw * tw));
   slope += wamp * (kk + 1 / (4 * tw));
+  for (const Wave& d : dunes) {
+    curv += d.amp * (d.k * d.k + 2 * d.k / (4 * tw) + 0.0963 / (tw * tw));
+    slope += d.amp * (d.k + 1 / (4 * tw));
+  }
   // Every term rounded up by a relative margin for the floating-point evaluation.
   curv *= 1.01, slope *= 1.01;
 
@@ -91,13 +122,24 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
       double d = o.base_depth + sx * x + sy * y + gamp * std::sin(gk * (x + 0.6 * y) / std::hypot(1.0, 0.6) + gph);
       for (const auto& b : banks) d += b(x, y);
       for (const auto& r : rocks) d += r(x, y);
-      d += logistic(x, x_edge, tw) * wamp * std::sin(kx * x + ky * y + wph);
+      double waves = wamp * std::sin(kx * x + ky * y + wph);
+      for (const Wave& w : dunes) waves += w(x, y);
+      d += logistic(x, x_edge, tw) * waves;
       d += noise.uniform(-roughness, roughness);
       z[j * n + i] = std::round(d * 1000) / 1000;  // millimetre quantization
     }
   Seabed s{BathymetryDem(0, 0, o.cell, n, n, std::move(z)), {curv, slope, roughness + 0.0005},
            IntervalVector{Interval(0, x_edge), Interval(0, L)}};
   return s;
+}
+
+SeabedOptions coastal_seabed_options() {
+  SeabedOptions o;
+  o.nb_rocks = 24;
+  o.rock_height_min = 1.5, o.rock_height_max = 3;
+  o.rock_sigma_min = 5, o.rock_sigma_max = 8;
+  o.dune_height = 0.9;
+  return o;
 }
 
 std::string repr(const SeabedClass& c) {

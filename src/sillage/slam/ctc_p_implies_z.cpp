@@ -12,6 +12,7 @@
 #include "sillage/loops/tplane.h"
 #include "sillage/paving/sivia.h"
 #include "sillage/slam/ctc_omega.h"
+#include "sillage/slam/scalar_loops.h"
 
 namespace sillage {
 
@@ -35,13 +36,13 @@ double contraction(const IntervalVector& before, const IntervalVector& after) {
 namespace {
 
 void check(const TubeVector& p, const TubeVector& w, const TubeVector& z, const char* where) {
-  if (p.size() != 2) {
+  if (p.size() != 2 && p.size() != 1) {
     throw DimensionError(std::string(where) + ": p has " + std::to_string(p.size()) +
-                         " components; the t-plane's loop tests need a 2-D p");
+                         " components; the loop tests need a 2-D p (degree) or a 1-D p (sign change)");
   }
   if (w.size() != p.size() || w.tdomain() != p.tdomain()) {
-    throw DimensionError(std::string(where) + ": w must be 2-D on p's TDomain (it has " + std::to_string(w.size()) +
-                         " components)");
+    throw DimensionError(std::string(where) + ": w must have p's dimension (" + std::to_string(p.size()) +
+                         ") on p's TDomain (it has " + std::to_string(w.size()) + " components)");
   }
   if (z.size() == 0) throw DimensionError(std::string(where) + ": z has no component");
   if (!p.tdomain()->t0_tf().is_subset(z.tdomain()->t0_tf())) {
@@ -73,6 +74,36 @@ IntervalVector hull_of(const std::vector<IntervalVector>& boxes) {
   return h;
 }
 
+// Planar p: the t-plane (7.28) and the degree test 𝒯 on each Ω_i as detected.
+std::vector<std::vector<IntervalVector>> planar_proofs(double eps, const TubeVector& p, const TubeVector& w,
+                                                       SlamRow& row) {
+  TPlane tp(p.tdomain());
+  tp.compute_detections(eps, p, w);
+  ProofOptions po;
+  po.newton = false;  // the degree test 𝒯 is the existence test of Alg. 13
+  po.count = false;
+  tp.compute_proofs(p, w, po);
+  row.nb_detections = tp.nb_complete_detections();
+  row.nb_proofs = tp.nb_proofs();
+  std::vector<std::vector<IntervalVector>> out;
+  for (const Loop& l : tp.detections()) {
+    if (l.proven()) out.push_back(l.boxes());
+  }
+  return out;
+}
+
+// Scalar p: the pieces of scalar_loops.h and their sign-change test.
+std::vector<std::vector<IntervalVector>> scalar_proofs(double eps, const TubeVector& p, const TubeVector& w,
+                                                       SlamRow& row) {
+  std::vector<std::vector<IntervalVector>> out;
+  for (ScalarLoop& l : scalar_loops(eps, p, w)) {
+    ++row.nb_detections;
+    if (l.proven) out.push_back(std::move(l.boxes));
+  }
+  row.nb_proofs = out.size();
+  return out;
+}
+
 }  // namespace
 
 CtcPImpliesZ::CtcPImpliesZ(double eps, bool fast) : eps_(eps), fast_(fast) {
@@ -95,26 +126,16 @@ bool CtcPImpliesZ::iterate(TubeVector& p, const TubeVector& w, const TubeVector&
   check(p, w, z, "CtcPImpliesZ::iterate(p, w, z)");
   row.fast = fast_;
   if (p.is_empty()) return false;
-  // 1-2. Detections of 𝕋_p with (7.28) and the degree test on each Ω_i as detected.
-  TPlane tp(p.tdomain());
-  tp.compute_detections(eps_, p, w);
-  ProofOptions po;
-  po.newton = false;  // the degree test 𝒯 is the existence test of Alg. 13
-  po.count = false;
-  tp.compute_proofs(p, w, po);
-  row.nb_detections = tp.nb_complete_detections();
-  row.nb_proofs = tp.nb_proofs();
-  std::vector<const Loop*> proven;
-  for (const Loop& l : tp.detections()) {
-    if (l.proven()) proven.push_back(&l);
-  }
+  // 1-2. Detections and their existence tests: the proven t-sets.
+  const std::vector<std::vector<IntervalVector>> proven =
+      p.size() == 2 ? planar_proofs(eps_, p, w, row) : scalar_proofs(eps_, p, w, row);
   // 3-4. Per proven component, against the tube as it is now.
   const TubeVector ref = p;
   const CtcOmega omega;
   std::vector<OmegaHull> hulls(proven.size());
   tbb::enumerable_thread_specific<std::optional<TubeVector>> works;
   tbb::parallel_for(std::size_t{0}, proven.size(), [&](std::size_t i) {
-    std::vector<IntervalVector> boxes = intersect_tz(proven[i]->boxes(), z, eps_);
+    std::vector<IntervalVector> boxes = intersect_tz(proven[i], z, eps_);
     if (boxes.empty()) {
       hulls[i].empty = true;  // the proven loop is nowhere in 𝕋_z
       return;

@@ -79,8 +79,8 @@ void check(const TubeVector& x, const TubeVector& v, const TubeVector& u, const 
     throw DimensionError(where + ": f must map the " + std::to_string(x.size() + u.size()) +
                          " variables (x, u) to " + std::to_string(x.size()) + " values");
   }
-  if (h.nb_vars() != x.size() || h.image_dim() != 2) {
-    throw DimensionError(where + ": h must map the " + std::to_string(x.size()) + " variables of x to 2 values");
+  if (h.nb_vars() != x.size() || (h.image_dim() != 2 && h.image_dim() != 1)) {
+    throw DimensionError(where + ": h must map the " + std::to_string(x.size()) + " variables of x to 2 values (or 1)");
   }
   if (!o.fast && !o.accurate) throw Error(where + ": options.fast and options.accurate are both off");
   if (o.max_rounds == 0) throw Error(where + ": options.max_rounds must be at least 1");
@@ -94,9 +94,10 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
   const auto td = x.tdomain();
   const std::size_t n = x.nb_slices();
   const auto at = [&](const TubeVector& y, std::size_t k, bool gate) { return gate ? y.gate(k) : y.slice(k); };
-  TubeVector p(td, 2), w(td, 2);
+  const std::size_t m = h.image_dim();  // 2, or 1 for a scalar configuration (scalar_loops.h)
+  TubeVector p(td, m), w(td, m);
   // The reference of the contractions: dead reckoning, p after the first C_d/dt.
-  IntervalVector tf0(2), t00(2);
+  IntervalVector tf0(m), t00(m);
   bool reference = false;
 
   std::vector<SlamRow> rows;

@@ -42,7 +42,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
     if (x.tube) last = 2 * x.tube->nb_slices();
   }
   const std::size_t chunk = constants ? 1 : kChunk;
-  std::vector<Interval> before(n * chunk), box;
+  std::vector<Interval> box(n * chunk);  // the tubes keep the values before contraction
   std::vector<std::size_t> ids;  // the time atoms of the chunk
   std::vector<char> touched(n, 0);
   const auto touch = [&] {
@@ -67,7 +67,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
         const std::size_t i = ids[j];
         for (std::size_t v = 0; v < n; ++v) {
           if (!vars[v].tube) {
-            before[v * c + j] = params[vars[v].param];
+            box[v * c + j] = params[vars[v].param];
             continue;
           }
           TubeData& d = vars[v].tube->data();
@@ -78,10 +78,9 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
             if (i < last) h &= d.slices[i / 2];
             if (h != x) narrow(v, i, x, x, h);
           }
-          before[v * c + j] = x;
+          box[v * c + j] = x;
         }
       }
-      box.assign(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(n * c));
       contract_boxes(ctc, f, box, c);
       // Scatter, in order: a box proven empty stops there.
       for (std::size_t j = 0; j < c; ++j) {
@@ -96,7 +95,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
           }
           Interval& x = TubeAtoms::time_atom(vars[v].tube->data(), i);
           const Interval now = x & got;
-          if (now != x) narrow(v, i, x, before[v * c + j], now);
+          if (now != x) narrow(v, i, x, x, now);
         }
         if (!ok) {
           params.set_empty();

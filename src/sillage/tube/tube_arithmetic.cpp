@@ -3,6 +3,7 @@
 #include <string>
 
 #include "sillage/error.h"
+#include "sillage/expr/batch_kernels.h"
 
 namespace sillage {
 
@@ -27,7 +28,7 @@ Tube unary(const Tube& x, F f) {
 
 // x := f(x, y) slice- and gate-wise, same TDomain.
 template <class F>
-void binary_inplace(Tube& x, const Tube& y, F f, const char* where) {
+[[gnu::flatten]] void binary_inplace(Tube& x, const Tube& y, F f, const char* where) {
   if (x.tdomain() != y.tdomain()) {
     throw DimensionError(std::string(where) + ": the two tubes are not on the same TDomain");
   }
@@ -36,6 +37,15 @@ void binary_inplace(Tube& x, const Tube& y, F f, const char* where) {
   for (std::size_t k = 0; k < d.slices.size(); ++k) d.slices[k] = f(d.slices[k], e.slices[k]);
   for (std::size_t k = 0; k < d.gates.size(); ++k) d.gates[k] = f(d.gates[k], e.gates[k]);
   x.touch();
+}
+
+// binary_inplace with the operation `op` of the rounding policy in use
+// (batch_kernels.h: the results of interval.h, the rounding inlined).
+template <class Op>
+void rounded_inplace(Tube& x, const Tube& y, Op op, const char* where) {
+  detail::with_rounded_ops([&](auto ops) {
+    binary_inplace(x, y, [&](const Interval& a, const Interval& b) { return op(ops, a, b); }, where);
+  });
 }
 
 template <class F>
@@ -48,16 +58,23 @@ Tube binary(const Tube& x, const Tube& y, F f, const char* where) {
   return z;
 }
 
-const auto kAdd = [](const Interval& a, const Interval& b) { return a + b; };
-const auto kSub = [](const Interval& a, const Interval& b) { return a - b; };
-const auto kMul = [](const Interval& a, const Interval& b) { return a * b; };
+const auto kAdd = [](auto ops, const Interval& a, const Interval& b) { return ops.add(a, b); };
+const auto kSub = [](auto ops, const Interval& a, const Interval& b) { return ops.sub(a, b); };
+const auto kMul = [](auto ops, const Interval& a, const Interval& b) { return ops.mul(a, b); };
 const auto kDiv = [](const Interval& a, const Interval& b) { return a / b; };
+
+template <class Op>
+Tube rounded(const Tube& x, const Tube& y, Op op, const char* where) {
+  Tube z(x);  // rounded_inplace checks the TDomains
+  rounded_inplace(z, y, op, where);
+  return z;
+}
 
 }  // namespace
 
-Tube& Tube::operator+=(const Tube& y) { binary_inplace(*this, y, kAdd, "Tube::operator+="); return *this; }
-Tube& Tube::operator-=(const Tube& y) { binary_inplace(*this, y, kSub, "Tube::operator-="); return *this; }
-Tube& Tube::operator*=(const Tube& y) { binary_inplace(*this, y, kMul, "Tube::operator*="); return *this; }
+Tube& Tube::operator+=(const Tube& y) { rounded_inplace(*this, y, kAdd, "Tube::operator+="); return *this; }
+Tube& Tube::operator-=(const Tube& y) { rounded_inplace(*this, y, kSub, "Tube::operator-="); return *this; }
+Tube& Tube::operator*=(const Tube& y) { rounded_inplace(*this, y, kMul, "Tube::operator*="); return *this; }
 Tube& Tube::operator/=(const Tube& y) { binary_inplace(*this, y, kDiv, "Tube::operator/="); return *this; }
 
 Tube& Tube::operator+=(const Interval& y) { return unary_inplace(*this, [&](const Interval& a) { return a + y; }); }
@@ -67,9 +84,9 @@ Tube& Tube::operator/=(const Interval& y) { return unary_inplace(*this, [&](cons
 
 Tube operator-(const Tube& x) { return unary(x, [](const Interval& a) { return -a; }); }
 
-Tube operator+(const Tube& x, const Tube& y) { return binary(x, y, kAdd, "operator+(Tube, Tube)"); }
-Tube operator-(const Tube& x, const Tube& y) { return binary(x, y, kSub, "operator-(Tube, Tube)"); }
-Tube operator*(const Tube& x, const Tube& y) { return binary(x, y, kMul, "operator*(Tube, Tube)"); }
+Tube operator+(const Tube& x, const Tube& y) { return rounded(x, y, kAdd, "operator+(Tube, Tube)"); }
+Tube operator-(const Tube& x, const Tube& y) { return rounded(x, y, kSub, "operator-(Tube, Tube)"); }
+Tube operator*(const Tube& x, const Tube& y) { return rounded(x, y, kMul, "operator*(Tube, Tube)"); }
 Tube operator/(const Tube& x, const Tube& y) { return binary(x, y, kDiv, "operator/(Tube, Tube)"); }
 
 Tube operator+(const Tube& x, const Interval& y) { return unary(x, [&](const Interval& a) { return a + y; }); }

@@ -67,7 +67,7 @@ TEST(TemporalSlam, BadInputSaysWhatAndWhere) {
   Mission m;
   TemporalSlamOptions o;
   EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, Function({"x1", "x2"}, "(x1, x2)"), m.h, o), DimensionError);
-  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, Function({"x1", "x2", "x3"}, "x1"), o), DimensionError);
+  EXPECT_THROW(temporal_slam(m.x, m.v, m.u, m.s.z, m.f, Function({"x1", "x2", "x3"}, "(x1, x2, x1)"), o), DimensionError);
   TubeVector v2(m.s.td, 2);
   EXPECT_THROW(temporal_slam(m.x, v2, m.u, m.s.z, m.f, m.h, o), DimensionError);
   o.fast = o.accurate = false;

@@ -1,0 +1,24 @@
+// The loops of a scalar configuration (scalar_loops.h): the pieces of the loop
+// set of a 1-D p and their sign-change existence test (Borda's weighing).
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "docstrings.h"
+#include "sillage/slam/scalar_loops.h"
+
+namespace sillage::python {
+
+void init_scalar_loops(py::module_& m) {
+  py::class_<ScalarLoop>(m, "ScalarLoop", DOC(ScalarLoop))
+      .def(py::init<>(), "An empty piece, not proven.")
+      .def_readwrite("boxes", &ScalarLoop::boxes, DOC(ScalarLoop, boxes))
+      .def_readwrite("hull", &ScalarLoop::hull, DOC(ScalarLoop, hull))
+      .def_readwrite("proven", &ScalarLoop::proven, DOC(ScalarLoop, proven))
+      .def("__repr__", [](const ScalarLoop& l) { return repr(l); }, "ScalarLoop(boxes=..., hull=..., proven=...).");
+  m.def("scalar_loop_exists", &scalar_loop_exists, py::arg("boxes"), py::arg("p"), py::arg("w"),
+        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loop_exists));
+  m.def("scalar_loops", &scalar_loops, py::arg("eps"), py::arg("p"), py::arg("w"),
+        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loops));
+}
+
+}  // namespace sillage::python

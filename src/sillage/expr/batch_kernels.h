@@ -1,0 +1,83 @@
+#pragma once
+// Interval +, − and × for the row loops of the batch evaluator and of the
+// batch HC4 (internal header): the bounds come from a rounding policy of
+// rounding_policies.h, inlined and without a branch on the rounding error
+// (the branch of rounding.h is mispredicted every other time on real data).
+//
+// The results are those of interval.h bit for bit, signs of zero included,
+// so that a batch gives the box-by-box results exactly:
+//  - an exact zero sum is the round-to-nearest one (+0, or -0 for -0 + -0),
+//    as rounding.h leaves it, where a downward-rounding unit gives -0; an
+//    upper bound is never -0 (rounding.h adds +0.0);
+//  - × takes the policy only where it is exact (HardRounding: correctly
+//    rounded, as rounding.h); SoftRounding steps one ulp too far below
+//    2^-968, so its × stays that of interval.h.
+// ScalarOps are the operations of interval.h themselves, for one box.
+#include <type_traits>
+
+#include "sillage/interval/interval.h"
+#include "sillage/interval/rounding_policies.h"
+
+namespace sillage::detail {
+
+struct ScalarOps {
+  static Interval add(const Interval& x, const Interval& y) { return x + y; }
+  static Interval sub(const Interval& x, const Interval& y) { return x - y; }
+  static Interval mul(const Interval& x, const Interval& y) { return x * y; }
+};
+
+template <class R>
+struct RoundedOps {
+  // A lower bound l of the exact a + b, with rounding.h's sign for an exact zero.
+  static double down_zero_as_nearest(double l, double nearest) { return select(l == 0, nearest, l); }
+
+  static Interval add(const Interval& x, const Interval& y) {
+    if (x.is_empty() || y.is_empty()) return Interval::empty();
+    const double lo = down_zero_as_nearest(R::add_down(x.lb(), y.lb()), x.lb() + y.lb());
+    return Interval::from_bounds_unchecked(lo, R::add_up(x.ub(), y.ub()) + 0.0);
+  }
+
+  static Interval sub(const Interval& x, const Interval& y) {
+    if (x.is_empty() || y.is_empty()) return Interval::empty();
+    const double lo = down_zero_as_nearest(R::sub_down(x.lb(), y.ub()), x.lb() - y.ub());
+    return Interval::from_bounds_unchecked(lo, R::sub_up(x.ub(), y.lb()) + 0.0);
+  }
+
+  // The sign cases of interval.h's operator*, the same bound products.
+  static Interval mul(const Interval& x, const Interval& y) {
+    if constexpr (!kExactMul) {
+      return x * y;
+    } else {
+      if (x.is_empty() || y.is_empty()) return Interval::empty();
+      const double a = x.lb(), b = x.ub(), c = y.lb(), d = y.ub();
+      const auto make = [](double lo, double hi) { return Interval::from_bounds_unchecked(lo, hi); };
+      if (a >= 0) {
+        if (c >= 0) return make(R::mul_down(a, c), R::mul_up(b, d));
+        if (d <= 0) return make(R::mul_down(b, c), R::mul_up(a, d));
+        return make(R::mul_down(b, c), R::mul_up(b, d));
+      }
+      if (b <= 0) {
+        if (c >= 0) return make(R::mul_down(a, d), R::mul_up(b, c));
+        if (d <= 0) return make(R::mul_down(b, d), R::mul_up(a, c));
+        return make(R::mul_down(a, d), R::mul_up(a, c));
+      }
+      if (c >= 0) return make(R::mul_down(a, d), R::mul_up(b, d));
+      if (d <= 0) return make(R::mul_down(b, c), R::mul_up(a, c));
+      return make(std::min(R::mul_down(a, d), R::mul_down(b, c)), std::max(R::mul_up(a, c), R::mul_up(b, d)));
+    }
+  }
+
+ private:
+  static constexpr bool kExactMul = !std::is_same_v<R, SoftRounding>;
+};
+
+// f(ops) with the operations of the rounding policy in use (hardware_rounding()).
+template <class F>
+decltype(auto) with_rounded_ops(F&& f) {
+#if SILLAGE_HARD_ROUNDING
+  if (hardware_rounding()) return f(RoundedOps<HardRounding>{});
+#endif
+  return f(RoundedOps<SoftRounding>{});
+}
+
+}  // namespace sillage::detail
