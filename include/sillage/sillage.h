@@ -6,11 +6,8 @@
 #include "sillage/budget.h"
 #include "sillage/error.h"
 
-#include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/backward.h"
-#include "sillage/interval/branchless_rounding.h"
 #include "sillage/interval/elementary.h"
-#include "sillage/interval/hardware_rounding.h"
 #include "sillage/interval/interval.h"
 #include "sillage/interval/interval_matrix.h"
 #include "sillage/interval/interval_vector.h"

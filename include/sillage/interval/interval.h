@@ -3,8 +3,8 @@
 // unbounded (thesis 2.2.2). Bounds are binary64; every operation returns an
 // interval guaranteed to contain the exact set result (outward rounding by
 // AVX-512F static rounding modes or by error-free transformations, see
-// arith_kernels.h). + - * / sqr sqrt are optimal:
-// their bounds are the correctly rounded exact bounds.
+// docs/intervals.md). + - * / sqr sqrt are optimal: their bounds are the
+// correctly rounded exact bounds.
 //
 // Set-based semantics (IEEE 1788): an operation acts on the part of its
 // argument inside its domain; sqrt([-4,4]) = [0,2], 1/[0,0] = empty,
@@ -18,7 +18,6 @@
 #include <utility>
 
 #include "sillage/error.h"
-#include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/rounding.h"
 
 namespace sillage {
@@ -113,12 +112,6 @@ class Interval {
  private:
   struct Unchecked {};
   Interval(double lb, double ub, Unchecked) : lo_(lb), hi_(ub) {}
-  friend Interval operator+(const Interval&, const Interval&);
-  friend Interval operator-(const Interval&, const Interval&);
-  friend Interval operator*(const Interval&, const Interval&);
-  friend Interval operator/(const Interval&, const Interval&);
-  friend Interval sqr(const Interval&);
-  friend Interval sqrt(const Interval&);
 
   double lo_, hi_;
 };
@@ -137,30 +130,18 @@ Interval::Interval(T n) : Interval(static_cast<double>(n)) {
   }
 }
 
-// ---- arithmetic (2.13)-(2.20): inline, they are the hot path ----
-// No branch on the data (arith_kernels.h): the rounding path, hardware or
-// portable, is chosen once per process (hardware_rounding.h).
+// ---- arithmetic (2.13)-(2.20) ----
+// Defined out of line (interval_arith.cpp), without a branch on the data: the
+// rounding path, AVX-512F or portable, is chosen once per process.
 
-inline Interval operator+(const Interval& x, const Interval& y) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::add_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
-
-inline Interval operator-(const Interval& x, const Interval& y) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sub_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
-
-inline Interval operator*(const Interval& x, const Interval& y) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::mul_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
-
+// {a + b : a in x, b in y}.
+Interval operator+(const Interval& x, const Interval& y);
+// {a - b : a in x, b in y}.
+Interval operator-(const Interval& x, const Interval& y);
+// {a * b : a in x, b in y}; [0, 0] times anything non-empty is [0, 0].
+Interval operator*(const Interval& x, const Interval& y);
 // Division: the hull of the real quotient set, (2.19)-(2.20).
-inline Interval operator/(const Interval& x, const Interval& y) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::div_bounds<R>(x.lb(), x.ub(), y.lb(), y.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
+Interval operator/(const Interval& x, const Interval& y);
 
 inline Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
 inline Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }
@@ -175,15 +156,9 @@ inline Interval& Interval::operator/=(const Interval& y) { return *this = *this 
 std::pair<Interval, Interval> div2(const Interval& c, const Interval& b);
 
 // x^2, tighter than x * x (the two factors are the same variable).
-inline Interval sqr(const Interval& x) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sqr_bounds<R>(x.lb(), x.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
+Interval sqr(const Interval& x);
 // Square root, on the part of x above 0 (empty if x < 0).
-inline Interval sqrt(const Interval& x) {
-  const auto r = detail::with_rounding([&]<class R>(R) { return detail::sqrt_bounds<R>(x.lb(), x.ub()); });
-  return {r.lo, r.hi, Interval::Unchecked{}};
-}
+Interval sqrt(const Interval& x);
 // Absolute value {|v| : v in x}.
 Interval abs(const Interval& x);
 // {min(a, b) : a in x, b in y}.

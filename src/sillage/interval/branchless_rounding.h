@@ -1,8 +1,7 @@
 #pragma once
 // Directed +, -, ×, ÷, √ without data-dependent branches: the branch-free
 // sibling of rounding.h, for hot loops (Interval's arithmetic, CtcDeriv's
-// slice rule, polygon hulls). Public because Interval's inline operators use
-// it; the names are implementation details (namespace detail).
+// slice rule, polygon hulls, the batch kernels). Internal header.
 //
 // Why: rounding.h decides "step to the next double or not" with a branch on
 // the sign of the rounding error, which is random on real data: on a long
