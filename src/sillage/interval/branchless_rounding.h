@@ -9,10 +9,11 @@
 // slower). Here the same error-free transformations feed integer masks.
 //
 // Two families:
-//  - the *_exact functions: the exactly rounded result for every operand but
-//    NaN, outside rare ranges (tiny or huge magnitudes where the residual of
-//    the error-free transformation could be inexact) that the *_rare
-//    predicates report, so that the caller can fall back to rounding.h;
+//  - Interval's portable path (BranchFreeRounding in arith_kernels.h): the
+//    exactly rounded result for every operand but NaN, outside rare ranges
+//    (tiny or huge magnitudes where the residual of the error-free
+//    transformation could be inexact) that the *_rare predicates here
+//    report, so that the caller can fall back to rounding.h;
 //  - add_up ... div_up_pos, the slice rule's: results are those of rounding.h
 //    bit for bit (the exact upward-rounded value), except for products below
 //    2^-968 in magnitude and quotients with tiny or huge operands, where the
@@ -107,39 +108,17 @@ inline double div_up_pos(double a, double b) {
   return next_up_if(q, ((r > 0) | !safe) & (q < std::numeric_limits<double>::infinity()));
 }
 
-// ---- exact, every operand but NaN (0·inf gives NaN: the caller decides) ----
+// ---- where BranchFreeRounding (arith_kernels.h) is exact ----
 // The residual of an fma is exact while the result stays above 2^-968 in
 // magnitude (and, for ÷, the operands and quotient within [2^-968, 2^1000]):
 // the step to the next double then follows the exact sign of the error.
 // Infinite results and operands give a NaN residual, hence no step: they are
 // exact already (an overflow is reported rare).
 
-inline double mul_up_exact(double a, double b) {
-  const double p = a * b;
-  return next_up_if(p, std::fma(a, b, -p) > 0);
-}
-
-inline double mul_down_exact(double a, double b) {
-  const double p = a * b;
-  return next_down_if(p, std::fma(a, b, -p) < 0);
-}
-
-// a·b may be inexactly rounded by the *_exact functions: tiny nonzero product.
+// a·b may be inexactly rounded by BranchFreeRounding: tiny nonzero product.
 inline bool mul_rare(double a, double b) { return (std::fabs(a * b) < 0x1p-968) & (a != 0) & (b != 0); }
 
-inline double div_up_exact(double a, double b) {
-  const double q = a / b;
-  const double r = std::fma(-q, b, a);  // a - q·b: the error a/b - q has the sign of r·b
-  return next_up_if(q, ((r > 0) & (b > 0)) | ((r < 0) & (b < 0)));
-}
-
-inline double div_down_exact(double a, double b) {
-  const double q = a / b;
-  const double r = std::fma(-q, b, a);
-  return next_down_if(q, ((r < 0) & (b > 0)) | ((r > 0) & (b < 0)));
-}
-
-// a / b may be inexactly rounded by the *_exact functions: finite nonzero
+// a / b may be inexactly rounded by BranchFreeRounding: finite nonzero
 // operands with an operand or the quotient outside [2^-968, 2^1000].
 inline bool div_rare(double a, double b) {
   const double fa = std::fabs(a), fb = std::fabs(b), fq = std::fabs(a / b);
@@ -149,17 +128,7 @@ inline bool div_rare(double a, double b) {
   return finite_nonzero & !safe;
 }
 
-inline double sqrt_up_exact(double a) {
-  const double s = std::sqrt(a);
-  return next_up_if(s, std::fma(-s, s, a) > 0);
-}
-
-inline double sqrt_down_exact(double a) {
-  const double s = std::sqrt(a);
-  return next_down_if(s, std::fma(-s, s, a) < 0);
-}
-
-// sqrt(a) may be inexactly rounded by the *_exact functions: tiny positive a.
+// sqrt(a) may be inexactly rounded by BranchFreeRounding: tiny positive a.
 inline bool sqrt_rare(double a) { return (a > 0) & (a < 0x1p-968); }
 
 }  // namespace sillage::detail
