@@ -16,6 +16,9 @@
 // contractor sweep), the k-th pair being x[k mod 4096] with
 // y[(k + 1237 floor(k / 4096)) mod 4096]: 256 different partners per x.
 // SILLAGE_ROUNDING=portable in the environment measures the portable path.
+// BM_<op>_kernel_mix: the same mix through the internal kernels inlined into
+// the loop, as the library's own hot loops may call them; the difference with
+// BM_<op>_sillage_mix is the cost of calling the out-of-line operator.
 #include <benchmark/benchmark.h>
 
 #include <boost/numeric/interval.hpp>
@@ -23,6 +26,7 @@
 #include <random>
 #include <vector>
 
+#include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
 
@@ -185,6 +189,21 @@ BENCHMARK(BM_mul_sillage_mix);
 BENCHMARK(BM_div_sillage_mix);
 BENCHMARK(BM_sqr_sillage_mix);
 BENCHMARK(BM_sqrt_sillage_mix);
+
+#define SILLAGE_BENCH_KERNEL(op, kernel)                                                             \
+  void BM_##op##_kernel_mix(benchmark::State& s) {                                                   \
+    binary_mix(s, [](const Interval& a, const Interval& b) {                                         \
+      const auto r = sillage::detail::with_rounding(                                                 \
+          [&]<class R>(R) { return sillage::detail::kernel<R>(a.lb(), a.ub(), b.lb(), b.ub()); });   \
+      return Interval::from_bounds_unchecked(r.lo, r.hi);                                            \
+    });                                                                                              \
+  }                                                                                                  \
+  BENCHMARK(BM_##op##_kernel_mix);
+
+SILLAGE_BENCH_KERNEL(add, add_bounds)
+SILLAGE_BENCH_KERNEL(sub, sub_bounds)
+SILLAGE_BENCH_KERNEL(mul, mul_bounds)
+SILLAGE_BENCH_KERNEL(div, div_bounds)
 
 #ifdef SILLAGE_BENCH_MPFI
 // ---- MPFI: C structs, results into one preallocated interval ----
