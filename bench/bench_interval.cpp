@@ -5,6 +5,20 @@
 // the three; every result goes through benchmark::DoNotOptimize.
 // Run: bench_interval --benchmark_counters_tabular=true ; the per_op column is
 // the time of one operation.
+//
+// Two operand sets. "Predictable" (BM_<op>_<library>): 1024 pairs of plain
+// random intervals replayed in a cycle, so the branch predictor learns every
+// data-dependent branch; the figure most libraries publish. "Unpredictable"
+// (BM_<op>_sillage_mix): 2^20 distinct pairs drawn from a mix of signs,
+// magnitudes, zero-straddling, unbounded and empty intervals, the shape of
+// real contractor work; no branch on the data can be learnt. The pairs come
+// from two pools of 4096 intervals (cache resident, as operands are in a
+// contractor sweep), the k-th pair being x[k mod 4096] with
+// y[(k + 1237 floor(k / 4096)) mod 4096]: 256 different partners per x.
+// SILLAGE_ROUNDING=portable in the environment measures the portable path.
+// BM_<op>_kernel_mix: the same mix through the internal kernels inlined into
+// the loop, as the library's own hot loops may call them; the difference with
+// BM_<op>_sillage_mix is the cost of calling the out-of-line operator.
 #include <benchmark/benchmark.h>
 
 #include <boost/numeric/interval.hpp>
@@ -12,6 +26,7 @@
 #include <random>
 #include <vector>
 
+#include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
 
@@ -53,11 +68,12 @@ const Bounds& ys() { static const Bounds b = bounds(0.5, 10, 1, 2); return b; }
 const Bounds& ps() { static const Bounds b = bounds(0.01, 100, 1, 3); return b; }
 const Bounds& ss() { static const Bounds b = bounds(-10, 10, 0.1, 4); return b; }
 
-void report(benchmark::State& state) {
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kN));
+// n operations per iteration.
+void report(benchmark::State& state, std::size_t n = kN) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
   state.counters["per_op"] =
-      benchmark::Counter(static_cast<double>(kN), benchmark::Counter::kIsIterationInvariantRate |
-                                                       benchmark::Counter::kInvert);
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                      benchmark::Counter::kInvert);
 }
 
 // ---- sillage and Boost: value types, one template ----
@@ -106,6 +122,88 @@ SILLAGE_BENCH_BOTH(sqrt, SQRT)
 SILLAGE_BENCH_BOTH(exp, EXP)
 SILLAGE_BENCH_BOTH(log, LOG)
 SILLAGE_BENCH_BOTH(sin, SIN)
+
+// ---- the unpredictable mix (sillage only) ----
+
+constexpr std::size_t kPool = 4096;
+constexpr std::size_t kPairs = std::size_t{1} << 20;
+
+// One interval of the mix: 2 % empty, 3 % unbounded, 3 % degenerate, 2 % with
+// a zero bound, the rest [v, v + w] with v and w over 40 binades, v of either
+// sign (a third of them straddle 0).
+Interval mixed(std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> kind(0, 99);
+  std::uniform_real_distribution<double> binade(-20, 20), unit(0, 1);
+  auto magnitude = [&] { return std::exp2(binade(rng)); };
+  auto signed_magnitude = [&] { return unit(rng) < 0.5 ? -magnitude() : magnitude(); };
+  const int k = kind(rng);
+  const double inf = sillage::rounding::kInf;
+  if (k < 2) return Interval::empty();
+  if (k < 3) return Interval::all_reals();
+  if (k < 4) return {-inf, signed_magnitude()};
+  if (k < 5) return {signed_magnitude(), inf};
+  if (k < 8) return Interval(signed_magnitude());
+  if (k < 9) return {0.0, magnitude()};
+  if (k < 10) return {-magnitude(), 0.0};
+  const double v = signed_magnitude();
+  return {v, sillage::rounding::add_up(v, magnitude())};
+}
+
+std::vector<Interval> pool(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Interval> v;
+  for (std::size_t i = 0; i < kPool; ++i) v.push_back(mixed(rng));
+  return v;
+}
+
+const std::vector<Interval>& mix_x() { static const auto v = pool(11); return v; }
+const std::vector<Interval>& mix_y() { static const auto v = pool(12); return v; }
+
+template <class F>
+void binary_mix(benchmark::State& state, F f) {
+  const Interval* x = mix_x().data();
+  const Interval* y = mix_y().data();
+  for (auto _ : state)
+    for (std::size_t k = 0; k < kPairs; ++k)
+      benchmark::DoNotOptimize(f(x[k % kPool], y[(k + 1237 * (k / kPool)) % kPool]));
+  report(state, kPairs);
+}
+
+template <class F>
+void unary_mix(benchmark::State& state, F f) {
+  const Interval* x = mix_x().data();
+  for (auto _ : state)
+    for (std::size_t k = 0; k < kPairs; ++k) benchmark::DoNotOptimize(f(x[k % kPool]));
+  report(state, kPairs);
+}
+
+void BM_add_sillage_mix(benchmark::State& s) { binary_mix(s, [](const Interval& a, const Interval& b) { return a + b; }); }
+void BM_sub_sillage_mix(benchmark::State& s) { binary_mix(s, [](const Interval& a, const Interval& b) { return a - b; }); }
+void BM_mul_sillage_mix(benchmark::State& s) { binary_mix(s, [](const Interval& a, const Interval& b) { return a * b; }); }
+void BM_div_sillage_mix(benchmark::State& s) { binary_mix(s, [](const Interval& a, const Interval& b) { return a / b; }); }
+void BM_sqr_sillage_mix(benchmark::State& s) { unary_mix(s, [](const Interval& a) { return sillage::sqr(a); }); }
+void BM_sqrt_sillage_mix(benchmark::State& s) { unary_mix(s, [](const Interval& a) { return sillage::sqrt(a); }); }
+BENCHMARK(BM_add_sillage_mix);
+BENCHMARK(BM_sub_sillage_mix);
+BENCHMARK(BM_mul_sillage_mix);
+BENCHMARK(BM_div_sillage_mix);
+BENCHMARK(BM_sqr_sillage_mix);
+BENCHMARK(BM_sqrt_sillage_mix);
+
+#define SILLAGE_BENCH_KERNEL(op, kernel)                                                             \
+  void BM_##op##_kernel_mix(benchmark::State& s) {                                                   \
+    binary_mix(s, [](const Interval& a, const Interval& b) {                                         \
+      const auto r = sillage::detail::with_rounding(                                                 \
+          [&]<class R>(R) { return sillage::detail::kernel<R>(a.lb(), a.ub(), b.lb(), b.ub()); });   \
+      return Interval::from_bounds_unchecked(r.lo, r.hi);                                            \
+    });                                                                                              \
+  }                                                                                                  \
+  BENCHMARK(BM_##op##_kernel_mix);
+
+SILLAGE_BENCH_KERNEL(add, add_bounds)
+SILLAGE_BENCH_KERNEL(sub, sub_bounds)
+SILLAGE_BENCH_KERNEL(mul, mul_bounds)
+SILLAGE_BENCH_KERNEL(div, div_bounds)
 
 #ifdef SILLAGE_BENCH_MPFI
 // ---- MPFI: C structs, results into one preallocated interval ----

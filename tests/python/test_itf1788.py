@@ -35,13 +35,19 @@ KNOWN_UPSTREAM_ERRORS = {
 }
 
 
-def run_checker(tmp_path, *args):
+# Both rounding paths of the interval core: the hardware one (AVX-512F, where
+# the CPU has it; "auto") and the portable one, forced by the environment.
+PATHS = ["auto", "portable"]
+
+
+def run_checker(tmp_path, *args, rounding="auto"):
     if not CHECKER.is_file():
         pytest.fail(f"ITF1788 checker not found at {CHECKER} (expected <repo>/../shared/itf1788)")
     results = tmp_path / "results.csv"
     env = dict(os.environ)
     package_root = str(Path(sillage.__file__).resolve().parent.parent)
     env["PYTHONPATH"] = os.pathsep.join([package_root, env.get("PYTHONPATH", "")])
+    env["SILLAGE_ROUNDING"] = rounding
     proc = subprocess.run(
         [sys.executable, str(CHECKER), str(ADAPTER), "--results-csv", str(results),
          "--show-failures", "50", "--show-errors", "50", *args],
@@ -57,8 +63,9 @@ def summary(proc):
     return f"\n{proc.stdout}\n{proc.stderr}"
 
 
-def test_no_failed_or_error_row(tmp_path):
-    proc, rows = run_checker(tmp_path)
+@pytest.mark.parametrize("rounding", PATHS)
+def test_no_failed_or_error_row(tmp_path, rounding):
+    proc, rows = run_checker(tmp_path, rounding=rounding)
     errors = [r for r in rows if r["category"] == "error"]
     failed = [r for r in rows if r["category"] == "failed"
               and (r["source_file"], r["test_id"]) not in KNOWN_UPSTREAM_ERRORS]
@@ -73,8 +80,9 @@ def test_no_failed_or_error_row(tmp_path):
         assert op in supported, f"{op} is not mapped by the adapter"
 
 
-def test_basic_operations_are_tight(tmp_path):
-    proc, rows = run_checker(tmp_path, "--ops", ",".join(TIGHT_OPS), "--require-tight")
+@pytest.mark.parametrize("rounding", PATHS)
+def test_basic_operations_are_tight(tmp_path, rounding):
+    proc, rows = run_checker(tmp_path, "--ops", ",".join(TIGHT_OPS), "--require-tight", rounding=rounding)
     loose = [r for r in rows if r["category"] != "tight"]
     assert not loose, (f"{len(loose)} rows not tight, e.g. "
                        + "; ".join(f"{r['op']} {r['test_id']} {r['category']} got {r['got']}" for r in loose[:10])

@@ -2,8 +2,9 @@
 // Interval: a closed connected subset [lb, ub] of the reals, possibly empty or
 // unbounded (thesis 2.2.2). Bounds are binary64; every operation returns an
 // interval guaranteed to contain the exact set result (outward rounding by
-// error-free transformations, see rounding.h). + - * / sqr sqrt are optimal:
-// their bounds are the correctly rounded exact bounds.
+// AVX-512F static rounding modes or by error-free transformations, see
+// docs/intervals.md). + - * / sqr sqrt are optimal: their bounds are the
+// correctly rounded exact bounds.
 //
 // Set-based semantics (IEEE 1788): an operation acts on the part of its
 // argument inside its domain; sqrt([-4,4]) = [0,2], 1/[0,0] = empty,
@@ -111,12 +112,6 @@ class Interval {
  private:
   struct Unchecked {};
   Interval(double lb, double ub, Unchecked) : lo_(lb), hi_(ub) {}
-  friend Interval operator+(const Interval&, const Interval&);
-  friend Interval operator-(const Interval&, const Interval&);
-  friend Interval operator*(const Interval&, const Interval&);
-  friend Interval operator/(const Interval&, const Interval&);
-  friend Interval sqr(const Interval&);
-  friend Interval sqrt(const Interval&);
 
   double lo_, hi_;
 };
@@ -135,45 +130,23 @@ Interval::Interval(T n) : Interval(static_cast<double>(n)) {
   }
 }
 
-// ---- arithmetic (2.13)-(2.20): inline, they are the hot path ----
+// ---- arithmetic (2.13)-(2.20) ----
+// Defined out of line (interval_arith.cpp), without a branch on the data: the
+// rounding path, AVX-512F or portable, is chosen once per process.
 
-inline Interval operator+(const Interval& x, const Interval& y) {
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  return {rounding::add_down(x.lo_, y.lo_), rounding::add_up(x.hi_, y.hi_), Interval::Unchecked{}};
-}
-
-inline Interval operator-(const Interval& x, const Interval& y) {
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  return {rounding::sub_down(x.lo_, y.hi_), rounding::sub_up(x.hi_, y.lo_), Interval::Unchecked{}};
-}
-
-inline Interval operator*(const Interval& x, const Interval& y) {
-  using rounding::mul_down, rounding::mul_up;
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  const double a = x.lo_, b = x.hi_, c = y.lo_, d = y.hi_;
-  const Interval::Unchecked u{};
-  if (a >= 0) {                       // x >= 0
-    if (c >= 0) return {mul_down(a, c), mul_up(b, d), u};
-    if (d <= 0) return {mul_down(b, c), mul_up(a, d), u};
-    return {mul_down(b, c), mul_up(b, d), u};
-  }
-  if (b <= 0) {                       // x <= 0
-    if (c >= 0) return {mul_down(a, d), mul_up(b, c), u};
-    if (d <= 0) return {mul_down(b, d), mul_up(a, c), u};
-    return {mul_down(a, d), mul_up(a, c), u};
-  }
-  if (c >= 0) return {mul_down(a, d), mul_up(b, d), u};  // x straddles 0
-  if (d <= 0) return {mul_down(b, c), mul_up(a, c), u};
-  return {std::min(mul_down(a, d), mul_down(b, c)), std::max(mul_up(a, c), mul_up(b, d)), u};
-}
+// {a + b : a in x, b in y}.
+Interval operator+(const Interval& x, const Interval& y);
+// {a - b : a in x, b in y}.
+Interval operator-(const Interval& x, const Interval& y);
+// {a * b : a in x, b in y}; [0, 0] times anything non-empty is [0, 0].
+Interval operator*(const Interval& x, const Interval& y);
+// Division: the hull of the real quotient set, (2.19)-(2.20).
+Interval operator/(const Interval& x, const Interval& y);
 
 inline Interval& Interval::operator+=(const Interval& y) { return *this = *this + y; }
 inline Interval& Interval::operator-=(const Interval& y) { return *this = *this - y; }
 inline Interval& Interval::operator*=(const Interval& y) { return *this = *this * y; }
 inline Interval& Interval::operator/=(const Interval& y) { return *this = *this / y; }
-
-// Division: the hull of the real quotient set, (2.19)-(2.20).
-Interval operator/(const Interval& x, const Interval& y);
 
 // Relational (extended) division: the set {z : z * b in [c] for some b in [b]}
 // as up to two disjoint intervals, lower piece first (the second is empty when

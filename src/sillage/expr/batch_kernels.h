@@ -6,9 +6,9 @@
 //
 // The results are those of interval.h bit for bit, signs of zero included,
 // so that a batch gives the box-by-box results exactly:
-//  - an exact zero sum is the round-to-nearest one (+0, or -0 for -0 + -0),
-//    as rounding.h leaves it, where a downward-rounding unit gives -0; an
-//    upper bound is never -0 (rounding.h adds +0.0);
+//  - a zero bound is +0, never -0, as interval.h's kernels give it (+ 0.0:
+//    a downward-rounding unit gives -0 for an exact zero sum, an upward one
+//    -0 for a tiny negative product);
 //  - × takes the policy only where it is exact (HardRounding: correctly
 //    rounded, as rounding.h); SoftRounding steps one ulp too far below
 //    2^-968, so its × stays that of interval.h.
@@ -28,19 +28,14 @@ struct ScalarOps {
 
 template <class R>
 struct RoundedOps {
-  // A lower bound l of the exact a + b, with rounding.h's sign for an exact zero.
-  static double down_zero_as_nearest(double l, double nearest) { return select(l == 0, nearest, l); }
-
   static Interval add(const Interval& x, const Interval& y) {
     if (x.is_empty() || y.is_empty()) return Interval::empty();
-    const double lo = down_zero_as_nearest(R::add_down(x.lb(), y.lb()), x.lb() + y.lb());
-    return Interval::from_bounds_unchecked(lo, R::add_up(x.ub(), y.ub()) + 0.0);
+    return Interval::from_bounds_unchecked(R::add_down(x.lb(), y.lb()) + 0.0, R::add_up(x.ub(), y.ub()) + 0.0);
   }
 
   static Interval sub(const Interval& x, const Interval& y) {
     if (x.is_empty() || y.is_empty()) return Interval::empty();
-    const double lo = down_zero_as_nearest(R::sub_down(x.lb(), y.ub()), x.lb() - y.ub());
-    return Interval::from_bounds_unchecked(lo, R::sub_up(x.ub(), y.lb()) + 0.0);
+    return Interval::from_bounds_unchecked(R::sub_down(x.lb(), y.ub()) + 0.0, R::sub_up(x.ub(), y.lb()) + 0.0);
   }
 
   // The sign cases of interval.h's operator*, the same bound products.
@@ -50,7 +45,7 @@ struct RoundedOps {
     } else {
       if (x.is_empty() || y.is_empty()) return Interval::empty();
       const double a = x.lb(), b = x.ub(), c = y.lb(), d = y.ub();
-      const auto make = [](double lo, double hi) { return Interval::from_bounds_unchecked(lo, hi); };
+      const auto make = [](double lo, double hi) { return Interval::from_bounds_unchecked(lo + 0.0, hi + 0.0); };
       if (a >= 0) {
         if (c >= 0) return make(R::mul_down(a, c), R::mul_up(b, d));
         if (d <= 0) return make(R::mul_down(b, c), R::mul_up(a, d));

@@ -104,37 +104,6 @@ Interval Interval::inflate(double r) const {
   return {rounding::sub_down(lo_, r), rounding::add_up(hi_, r), Unchecked{}};
 }
 
-Interval operator/(const Interval& x, const Interval& y) {
-  using rounding::div_down, rounding::div_up;
-  if (x.is_empty() || y.is_empty()) return Interval::empty();
-  const double a = x.lo_, b = x.hi_, c = y.lo_, d = y.hi_;
-  const Interval::Unchecked u{};
-  if (c == 0 && d == 0) return Interval::empty();
-  if (c > 0) {                        // y > 0
-    if (a >= 0) return {div_down(a, d), div_up(b, c), u};
-    if (b <= 0) return {div_down(a, c), div_up(b, d), u};
-    return {div_down(a, c), div_up(b, c), u};
-  }
-  if (d < 0) {                        // y < 0
-    if (a >= 0) return {div_down(b, d), div_up(a, c), u};
-    if (b <= 0) return {div_down(b, c), div_up(a, d), u};
-    return {div_down(b, d), div_up(a, d), u};
-  }
-  // 0 in y: the hull of the quotient set (2.19); 0 / y = 0 counts.
-  if (a == 0 && b == 0) return {0.0, 0.0, u};
-  if (c == 0) {                       // y = [0, d], d > 0
-    if (a >= 0) return {div_down(a, d), kInf, u};
-    if (b <= 0) return {-kInf, div_up(b, d), u};
-    return Interval::all_reals();
-  }
-  if (d == 0) {                       // y = [c, 0], c < 0
-    if (a >= 0) return {-kInf, div_up(a, c), u};
-    if (b <= 0) return {div_down(b, c), kInf, u};
-    return Interval::all_reals();
-  }
-  return Interval::all_reals();
-}
-
 std::pair<Interval, Interval> div2(const Interval& c, const Interval& b) {
   using rounding::div_down, rounding::div_up;
   const Interval e = Interval::empty();
@@ -154,22 +123,6 @@ std::pair<Interval, Interval> div2(const Interval& c, const Interval& b) {
   if (b1 == 0) return {make(-kInf, div_up(c2, b2)), e};
   if (b2 == 0) return {make(div_down(c2, b1), kInf), e};
   return {make(-kInf, div_up(c2, b2)), make(div_down(c2, b1), kInf)};
-}
-
-Interval sqr(const Interval& x) {
-  using rounding::mul_down, rounding::mul_up;
-  if (x.is_empty()) return Interval::empty();
-  const double a = x.lo_, b = x.hi_;
-  const Interval::Unchecked u{};
-  if (a >= 0) return {mul_down(a, a), mul_up(b, b), u};
-  if (b <= 0) return {mul_down(b, b), mul_up(a, a), u};
-  return {0.0, std::max(mul_up(a, a), mul_up(b, b)), u};
-}
-
-Interval sqrt(const Interval& x) {
-  const Interval y = x & Interval::pos_reals();
-  if (y.is_empty()) return Interval::empty();
-  return {rounding::sqrt_down(y.lo_), rounding::sqrt_up(y.hi_), Interval::Unchecked{}};
 }
 
 Interval abs(const Interval& x) {

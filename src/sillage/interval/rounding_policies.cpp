@@ -1,6 +1,8 @@
 #include "sillage/interval/rounding_policies.h"
 
-#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace sillage::detail {
 
@@ -16,11 +18,27 @@ bool detect() {
 #endif
 }
 
-std::atomic<bool>& enabled() {
-  static std::atomic<bool> on{detect()};
-  return on;
+// SILLAGE_ROUNDING=portable forces the software path; unset, empty or "auto"
+// takes the hardware when present. Another value is reported, not obeyed.
+bool portable_forced() {
+  const char* v = std::getenv("SILLAGE_ROUNDING");
+  if (v == nullptr || *v == '\0' || std::strcmp(v, "auto") == 0) return false;
+  if (std::strcmp(v, "portable") == 0) return true;
+  std::fprintf(stderr, "sillage: SILLAGE_ROUNDING=%s is not 'portable' or 'auto'; using 'auto'\n", v);
+  return false;
 }
 
+}  // namespace
+
+// Constant-initialised to the software path, then set during static
+// initialisation: any operation that runs earlier is exact all the same.
+constinit std::atomic<bool> hardware_rounding_on{false};
+
+namespace {
+[[maybe_unused]] const bool chosen = [] {
+  hardware_rounding_on.store(hardware_rounding_available() && !portable_forced(), std::memory_order_relaxed);
+  return true;
+}();
 }  // namespace
 
 bool hardware_rounding_available() {
@@ -28,8 +46,10 @@ bool hardware_rounding_available() {
   return available;
 }
 
-bool hardware_rounding() { return enabled().load(std::memory_order_relaxed); }
+bool hardware_rounding() { return use_hardware_rounding(); }
 
-void set_hardware_rounding(bool on) { enabled().store(on && hardware_rounding_available(), std::memory_order_relaxed); }
+void set_hardware_rounding(bool on) {
+  hardware_rounding_on.store(on && hardware_rounding_available(), std::memory_order_relaxed);
+}
 
 }  // namespace sillage::detail

@@ -1,8 +1,10 @@
 // + - * / sqr sqrt against MPFR: every result must contain the exact image
-// and its bounds must be the correctly rounded ones, bit for bit.
+// and its bounds must be the correctly rounded ones, bit for bit, on both
+// rounding paths (AVX-512F when the CPU has it, and the portable one).
 #include <gtest/gtest.h>
 
 #include "mpfr_oracle.h"
+#include "sillage/interval/hardware_rounding.h"
 #include "sillage/interval/interval.h"
 
 using namespace oracle;
@@ -121,9 +123,26 @@ Expected exact_sqrt(const Interval& x) {
 
 const std::size_t kCases = scaled(1'000'000);
 
+// The parameter: true for the hardware path, false for the portable one.
+class MpfrArith : public ::testing::TestWithParam<bool> {
+ protected:
+  void SetUp() override {
+    if (GetParam() && !sillage::detail::hardware_rounding_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+    sillage::detail::set_hardware_rounding(GetParam());
+  }
+  void TearDown() override { sillage::detail::set_hardware_rounding(initial_); }
+
+ private:
+  bool initial_ = sillage::detail::hardware_rounding();
+};
+
+std::string path_name(const ::testing::TestParamInfo<bool>& p) { return p.param ? "hardware" : "portable"; }
+
 }  // namespace
 
-TEST(MpfrArith, AddSubAreOptimal) {
+INSTANTIATE_TEST_SUITE_P(Paths, MpfrArith, ::testing::Bool(), path_name);
+
+TEST_P(MpfrArith, AddSubAreOptimal) {
   DoubleRange range;
   Gen g(0x5111a9e0001);
   Checker add("+", 0), sub("-", 0);
@@ -136,7 +155,7 @@ TEST(MpfrArith, AddSubAreOptimal) {
   expect_ok(sub);
 }
 
-TEST(MpfrArith, MulIsOptimal) {
+TEST_P(MpfrArith, MulIsOptimal) {
   DoubleRange range;
   Gen g(0x5111a9e0002);
   Checker mul_c("*", 0);
@@ -147,7 +166,7 @@ TEST(MpfrArith, MulIsOptimal) {
   expect_ok(mul_c);
 }
 
-TEST(MpfrArith, DivIsOptimal) {
+TEST_P(MpfrArith, DivIsOptimal) {
   DoubleRange range;
   Gen g(0x5111a9e0003);
   Checker div_c("/", 0);
@@ -159,7 +178,7 @@ TEST(MpfrArith, DivIsOptimal) {
   expect_ok(div_c);
 }
 
-TEST(MpfrArith, SqrAndSqrtAreOptimal) {
+TEST_P(MpfrArith, SqrAndSqrtAreOptimal) {
   DoubleRange range;
   Gen g(0x5111a9e0004);
   Checker sqr_c("sqr", 0), sqrt_c("sqrt", 0);
