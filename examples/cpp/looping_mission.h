@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -469,6 +470,43 @@ class Mission {
   std::size_t nb_blocks_ = 0;
   std::shared_ptr<TDomain> td_;
   std::vector<std::array<double, 2>> measured_;
+  std::unique_ptr<TubeVector> v_;
+};
+
+// The open Lissajous path of bench_tplane: p*(t) = (A sin(w1 t), A sin(w2 t + 0.4)),
+// A = 120 m, w1 = 7 and w2 = 8.3 cycles per hour (up to ~1.7 m/s), crossing
+// itself about 70 times in the first hour; the velocity tube p*' +- e sliced
+// every dt (the expression is evaluated in interval arithmetic over each slice).
+class Lissajous {
+ public:
+  explicit Lissajous(double duration, double e = 0.01, double dt = 0.1)
+      : td_(TDomain::create(0, duration, dt)) {
+    char err[80];
+    std::snprintf(err, sizeof err, "[-%.17g,%.17g]", e, e);
+    const std::string w1 = "(2*pi*7/3600)", w2 = "(2*pi*8.3/3600)";
+    v_ = std::make_unique<TubeVector>(td_, "(120*" + w1 + "*cos(" + w1 + "*t) + " + std::string(err) + ", 120*" + w2 + "*cos(" +
+                                               w2 + "*t + 0.4) + " + err + ")");
+  }
+  double tf() const { return td_->tf(); }
+  const std::shared_ptr<TDomain>& tdomain() const { return td_; }
+  const TubeVector& velocity_tube() const { return *v_; }
+  std::array<double, 2> position(double t) const { return {kA * std::sin(kW1 * t), kA * std::sin(kW2 * t + 0.4)}; }
+  std::array<double, 2> velocity(double t) const {
+    return {kA * kW1 * std::cos(kW1 * t), kA * kW2 * std::cos(kW2 * t + 0.4)};
+  }
+  // The crossings of the path sampled every `step` seconds.
+  std::vector<PathCrossing> true_crossings(double step) const {
+    std::vector<double> t, x, y;
+    for (std::size_t k = 0; double(k) * step < tf(); ++k) {
+      const auto q = position(double(k) * step);
+      t.push_back(double(k) * step), x.push_back(q[0]), y.push_back(q[1]);
+    }
+    return self_crossings(t, x, y);
+  }
+
+ private:
+  static constexpr double kA = 120.0, kW1 = 2 * pi * 7 / 3600, kW2 = 2 * pi * 8.3 / 3600;
+  std::shared_ptr<TDomain> td_;
   std::unique_ptr<TubeVector> v_;
 };
 

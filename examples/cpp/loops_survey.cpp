@@ -13,22 +13,30 @@
 // The true crossings come from the true path (self_crossings on the path
 // sampled every 0.05 s, refined by Newton on the closed-form path). Checks:
 // every proven detection holds a true crossing (exactly one if proven by N,
-// as many as its count when counted), every true crossing lies in the outer
+// as many as its count when counted), every known degree (of a detection or
+// a piece) is the sum of the indices of the true crossings inside, the
+// pieces' degrees add up to their detection's, every true crossing lies in the outer
 // approximation, and the tube holds the true velocity (sampled); the example
 // exits with 1 if one fails.
 //
 // Options: --out DIR, --hours H (default 1), --eps-divisor D (default 2000),
-// --e E (velocity error bound, default 0.01 m/s), --seed S (default 2017).
+// --e E (velocity error bound, default 0.01 m/s), --seed S (default 2017),
+// --lissajous 1 (the open Lissajous path of bench_tplane instead of the
+// survey), --study 1 (why each unproven true crossing is left: loops_study.h;
+// 2: the same with the detail of every detection studied).
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "example_args.h"
 #include "looping_mission.h"
+#include "loops_study.h"
 #include "sillage/figures/loops_map_figure.h"
 #include "sillage/figures/tplane_figure.h"
 #include "sillage/loops/tplane.h"
@@ -74,6 +82,8 @@ int main(int argc, char** argv) {
   const double hours = example::option_number(argc, argv, "--hours", 1.0);
   const double divisor = example::option_number(argc, argv, "--eps-divisor", 2000.0);
   const double e = example::option_number(argc, argv, "--e", 0.01), seed = example::option_number(argc, argv, "--seed", 2017);
+  const bool lissajous = example::option_number(argc, argv, "--lissajous", 0) != 0;
+  const double study = example::option_number(argc, argv, "--study", 0);
   if (!(hours > 0) || !(divisor >= 1) || !(e > 0) || !(seed >= 0)) {
     std::fprintf(stderr, "loops_survey: need --hours > 0, --eps-divisor >= 1, --e > 0 and --seed >= 0\n");
     return 2;
@@ -85,20 +95,35 @@ int main(int argc, char** argv) {
   params.duration = 3600.0 * hours;
   params.e = e;
   params.seed = static_cast<std::uint64_t>(seed);
-  const looping_mission::Mission mission(params);
-  const TubeVector& v = mission.velocity_tube();
+  // One of the two missions.
+  std::unique_ptr<const looping_mission::Mission> mission;
+  std::unique_ptr<const looping_mission::Lissajous> curve;
+  if (lissajous) {
+    curve = std::make_unique<const looping_mission::Lissajous>(params.duration, params.e, params.dt);
+  } else {
+    mission = std::make_unique<const looping_mission::Mission>(params);
+  }
+  const TubeVector& v = lissajous ? curve->velocity_tube() : mission->velocity_tube();
+  const std::shared_ptr<TDomain>& tdomain = lissajous ? curve->tdomain() : mission->tdomain();
+  const double tf = lissajous ? curve->tf() : mission->tf();
+  const auto velocity = [&](double t) { return lissajous ? curve->velocity(t) : mission->velocity(t); };
   const double t_mission = seconds_since(clock);
   clock = std::chrono::steady_clock::now();
-  const std::vector<PathCrossing> truth = mission.true_crossings(params.dt / 2);
+  const std::vector<PathCrossing> truth =
+      lissajous ? curve->true_crossings(params.dt / 2) : mission->true_crossings(params.dt / 2);
   const double t_truth = seconds_since(clock);
-  std::printf("Mission: %.0f s, %zu blocks, %zu pieces, %.0f m of track, %zu slices, e = %g m/s\n", mission.tf(),
-              mission.nb_blocks(), mission.pieces().size(), mission.path_length(), v.nb_slices(), params.e);
+  if (lissajous) {
+    std::printf("Mission: Lissajous path, %.0f s, %zu slices, e = %g m/s\n", tf, v.nb_slices(), params.e);
+  } else {
+    std::printf("Mission: %.0f s, %zu blocks, %zu pieces, %.0f m of track, %zu slices, e = %g m/s\n", tf,
+                mission->nb_blocks(), mission->pieces().size(), mission->path_length(), v.nb_slices(), params.e);
+  }
   std::printf("  generated in %.3f s; %zu true crossings found in %.3f s (path sampled every %g s)\n", t_mission,
               truth.size(), t_truth, params.dt / 2);
 
   // ---- detections and proofs ----
-  const double eps = mission.tf() / divisor;
-  TPlane tplane(mission.tdomain());
+  const double eps = tf / divisor;
+  TPlane tplane(tdomain);
   clock = std::chrono::steady_clock::now();
   tplane.compute_detections(eps, v);
   const double t_detect = seconds_since(clock);
@@ -133,9 +158,35 @@ int main(int argc, char** argv) {
       if (!l.proven() && in_piece) ++in_proven_pieces;
     }
   }
-  // The pieces of split detections (component_split.h): the same checks.
+  // The index of each true crossing: the degree of a region is the sum of
+  // the indices of the crossings inside it (checked below).
+  std::vector<int> index(truth.size());
+  for (std::size_t i = 0; i < truth.size(); ++i) index[i] = loops_study::orientation(truth[i], velocity);
+  auto net_index = [&](const Loop& l) {
+    int net = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i) net += contains(l, truth[i]) ? index[i] : 0;
+    return net;
+  };
+  std::size_t bad_degrees = 0;
+  auto check_degree = [&](const Loop& l, const char* what) {
+    if (!l.complete() || !l.degree() || *l.degree() == net_index(l)) return;
+    ++bad_degrees;
+    std::printf("  CHECK FAILED: %s t in %s has degree %d, its true crossings add up to %d\n", what,
+                l.t_box().str().c_str(), *l.degree(), net_index(l));
+  };
+  // The pieces of split detections (component_split.h): the same checks, and
+  // the split keeps the degree (the pieces' degrees add up to the detection's).
   for (const Loop& l : tplane.detections()) {
+    check_degree(l, "detection");
+    std::optional<int> sum = l.pieces().empty() ? std::nullopt : std::optional<int>(0);
+    for (const Loop& p : l.pieces()) sum = sum && p.degree() ? std::optional<int>(*sum + *p.degree()) : std::nullopt;
+    if (sum && l.degree() && *sum != *l.degree()) {
+      ++bad_degrees;
+      std::printf("  CHECK FAILED: the pieces of detection t in %s add up to degree %d, not %d\n",
+                  l.t_box().str().c_str(), *sum, *l.degree());
+    }
     for (const Loop& p : l.pieces()) {
+      check_degree(p, "piece");
       std::size_t inside = 0;
       for (const PathCrossing& c : truth) inside += contains(p, c) ? 1 : 0;
       if ((p.proven() && inside == 0) || (p.count() && *p.count() != inside)) {
@@ -169,7 +220,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  const std::size_t misses = velocity_misses(mission);
+  const std::size_t misses = lissajous ? 0 : velocity_misses(*mission);
   if (misses) std::printf("  CHECK FAILED: the velocity tube misses v* at %zu sampled times\n", misses);
 
   const std::size_t nb_det = tplane.nb_detections(), nb_complete = tplane.nb_complete_detections();
@@ -190,6 +241,15 @@ int main(int argc, char** argv) {
   std::printf("  counted   detections with an exact count (Alg. 10)  %4zu   (%zu loops)\n", counted, loops_counted);
   std::printf("\ntimes (wall clock): detections %.3f s, proofs %.3f s, total %.3f s\n", t_detect, t_prove,
               t_detect + t_prove);
+  if (study > 0) {
+    const loops_study::Totals s = loops_study::Study(tplane, v, truth, velocity, study >= 2).run();
+    std::printf("\nstudy: %zu true crossings in complete detections, %zu proven, %zu left:", s.in_complete, s.proven,
+                s.in_complete - s.proven);
+    for (std::size_t r = 0; r < s.by_reason.size(); ++r) {
+      std::printf("%s %zu %s", r ? "," : "", s.by_reason[r], loops_study::kReasonNames[r]);
+    }
+    std::printf("\n");
+  }
 
   // ---- figures ----
   std::vector<std::pair<std::string, std::string>> figures;
@@ -215,7 +275,7 @@ int main(int argc, char** argv) {
     const IntervalVector& h = focus->t_box();
     const double w = std::max(10 * eps, 2.5 * std::max(h[0].diam(), h[1].diam()));
     auto around = [&](const Interval& x) {
-      const double lo = std::max(0.0, x.mid() - w), hi = std::min(mission.tf(), lo + 2 * w);
+      const double lo = std::max(0.0, x.mid() - w), hi = std::min(tf, lo + 2 * w);
       return Interval(std::max(0.0, hi - 2 * w), hi);
     };
     const IntervalVector zoom{around(h[0]), around(h[1])};
@@ -230,7 +290,15 @@ int main(int argc, char** argv) {
                          "of the component, the true crossing(s)");
   }
   std::vector<Vector> path;
-  const auto samples = mission.true_path(0.5);
+  looping_mission::Mission::Samples samples;
+  if (lissajous) {
+    for (double t = 0; t <= tf; t += 0.5) {
+      const auto q = curve->position(t);
+      samples.t.push_back(t), samples.x.push_back(q[0]), samples.y.push_back(q[1]);
+    }
+  } else {
+    samples = mission->true_path(0.5);
+  }
   for (std::size_t k = 0; k < samples.t.size(); ++k) path.push_back({samples.x[k], samples.y[k]});
   const Tube p1 = primitive(v[0]), p2 = primitive(v[1]);
   const TubeVector positions({p1, p2});
@@ -253,7 +321,7 @@ int main(int argc, char** argv) {
                        "Map with the map boxes of the detections (hulls of the "
                        "dead-reckoned positions over [t1] and [t2])");
 
-  const bool ok = outside == 0 && bad_proofs == 0 && bad_counts == 0 && misses == 0;
+  const bool ok = outside == 0 && bad_proofs == 0 && bad_counts == 0 && bad_degrees == 0 && misses == 0;
   char result[300];
   std::snprintf(result, sizeof result,
                 "%.0f h: lambda_N=%zu lambda_T=%zu lambda*=%zu, %zu detections (%zu complete), %.1f%% of lambda* "
