@@ -4,6 +4,7 @@
 //   BM_DetectionsAndProofs/<hours>      both, eps = (tf - t0)/2000 (targets: 1 h <= 0.5 s, 2 h <= 2 s)
 //   BM_Detections/<hours>, BM_Proofs/<hours>   each alone
 //   BM_ProofsWithoutSplit/<hours>       the proofs with ProofOptions::split off (the cost of the split)
+//   BM_ProofsVsSplitLevels/<s>/<levels>  proofs of the <s> seconds mission with split_max_levels = levels
 //   BM_DetectionsVsEps/<divisor>        1 h mission, eps = 3600 s / divisor
 //   BM_TrueCrossings/<points>           self_crossings on the 1 h true path with that many samples
 //   BM_Mission/<hours>                  generation of the mission and its velocity tube
@@ -95,20 +96,26 @@ void BM_Detections(benchmark::State& state) { run_tplane(state, double(state.ran
 BENCHMARK(BM_Detections)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Proofs with the split of degree-0 / uncounted detections (the default), and without it.
-void run_proofs(benchmark::State& state, bool split) {
-  const double hours = double(state.range(0));
+void run_proofs(benchmark::State& state, bool split, double hours, std::size_t levels = ProofOptions{}.split_max_levels) {
   const auto& m = mission(hours);
   TPlane tp(m.tdomain());
   tp.compute_detections(m.tf() / 2000, m.velocity_tube());
   ProofOptions options;
   options.split = split;
+  options.split_max_levels = levels;
   for (auto _ : state) tp.compute_proofs(m.velocity_tube(), options);
   report(state, tp, hours, true);
 }
-void BM_Proofs(benchmark::State& state) { run_proofs(state, true); }
+void BM_Proofs(benchmark::State& state) { run_proofs(state, true, double(state.range(0))); }
 BENCHMARK(BM_Proofs)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
-void BM_ProofsWithoutSplit(benchmark::State& state) { run_proofs(state, false); }
+void BM_ProofsWithoutSplit(benchmark::State& state) { run_proofs(state, false, double(state.range(0))); }
 BENCHMARK(BM_ProofsWithoutSplit)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+
+void BM_ProofsVsSplitLevels(benchmark::State& state) {
+  run_proofs(state, true, double(state.range(0)) / 3600.0, std::size_t(state.range(1)));
+}
+BENCHMARK(BM_ProofsVsSplitLevels)->ArgsProduct({{7200, 10000}, {1, 2, 3, 4, 5, 6, 8}})->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->MeasureProcessCPUTime();
 
 void BM_DetectionsVsEps(benchmark::State& state) { run_tplane(state, 1, double(state.range(0)), true); }
 BENCHMARK(BM_DetectionsVsEps)->Arg(500)->Arg(1000)->Arg(2000)->Arg(4000)->Arg(8000)->Unit(benchmark::kMillisecond)
