@@ -62,6 +62,10 @@
 
 namespace sillage {
 
+namespace detail {
+class DirtyAtoms;
+}
+
 // What contract() did. An empty network is an answer (no solution), explained by
 // emptiness and the empty_* fields.
 struct ContractStats {
@@ -89,7 +93,8 @@ struct ContractStats {
 class ContractorNetwork {
  public:
   // An empty network.
-  ContractorNetwork() = default;
+  ContractorNetwork();
+  ~ContractorNetwork();
   ContractorNetwork(const ContractorNetwork&) = delete;
   ContractorNetwork& operator=(const ContractorNetwork&) = delete;
 
@@ -169,6 +174,8 @@ class ContractorNetwork {
   std::vector<std::string> names_;  // per domain, "" if unnamed
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
+  // Per node, its watched atoms that shrank since it last ran (contract()).
+  std::unique_ptr<detail::DirtyAtoms> dirty_;
   std::vector<std::shared_ptr<const CnNode>> nodes_;
   // Per node, how to build it again on a new layout (make empty: add_node).
   struct Record {

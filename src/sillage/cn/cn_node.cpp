@@ -1,5 +1,9 @@
 #include "sillage/cn/cn_node.h"
 
+#include <memory>
+#include <utility>
+#include <vector>
+
 #include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
 
@@ -36,13 +40,47 @@ CtcNode::CtcNode(std::shared_ptr<const Ctc> ctc, std::vector<AtomRange> ranges)
   }
 }
 
+namespace {
+
+// The boxes of CtcNode::run, reused on this thread (a network runs thousands
+// of such nodes), one pair per nesting level: a contractor (a Python one may)
+// can contract another network inside its contract().
+struct BoxScratch {
+  std::vector<std::unique_ptr<std::pair<IntervalVector, IntervalVector>>> levels;
+  std::size_t depth = 0;
+};
+thread_local BoxScratch box_scratch;
+
+// The pair of boxes of the current level, for as long as it lives.
+class ScratchLevel {
+ public:
+  ScratchLevel() {
+    if (box_scratch.levels.size() == box_scratch.depth) {
+      box_scratch.levels.push_back(std::make_unique<std::pair<IntervalVector, IntervalVector>>(IntervalVector(1), IntervalVector(1)));
+    }
+    boxes_ = box_scratch.levels[box_scratch.depth++].get();
+  }
+  ~ScratchLevel() { --box_scratch.depth; }
+  ScratchLevel(const ScratchLevel&) = delete;
+  ScratchLevel& operator=(const ScratchLevel&) = delete;
+  std::pair<IntervalVector, IntervalVector>& boxes() { return *boxes_; }
+
+ private:
+  std::pair<IntervalVector, IntervalVector>* boxes_;
+};
+
+}  // namespace
+
 bool CtcNode::run(NodeRun& r) const {
-  IntervalVector box(nb_atoms());
+  ScratchLevel level;
+  IntervalVector& box = level.boxes().first;
+  if (box.size() != nb_atoms()) box = IntervalVector(nb_atoms());
   std::size_t k = 0;
   for (const auto& g : ranges()) {
     for (std::size_t a = 0; a < g.count; ++a) box[k++] = r.domains[g.domain]->atom(g.first + a);
   }
-  const IntervalVector before(box);
+  IntervalVector& before = level.boxes().second;
+  before = box;
   ctc_->contract(box);
   if (box.size() != before.size()) {
     throw DimensionError("ContractorNetwork: " + ctc_->name() + " changed the size of its box");

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <functional>
 
+#include "sillage/cn/dirty_atoms.h"
 #include "sillage/cn/round_order.h"
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"
@@ -11,6 +12,10 @@
 #include "sillage/error.h"
 
 namespace sillage {
+
+ContractorNetwork::ContractorNetwork() : dirty_(std::make_unique<detail::DirtyAtoms>()) {}
+
+ContractorNetwork::~ContractorNetwork() = default;
 
 std::shared_ptr<Interval> ContractorNetwork::create_dom(const Interval& x, const std::string& name) {
   auto p = std::make_shared<Interval>(x);
@@ -137,10 +142,12 @@ void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
     }
   }
   const std::size_t id = nodes_.size();
+  std::vector<std::size_t> bit_of;
+  dirty_->add_node(*node, bit_of);
   for (std::size_t g = 0; g < node->ranges().size(); ++g) {
     const AtomRange& a = node->ranges()[g];
     const AtomRange& w = node->watched()[g];
-    if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first)});
+    if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first), bit_of[g]});
   }
   nodes_.push_back(std::move(node));
   records_.emplace_back();
@@ -183,6 +190,7 @@ void ContractorNetwork::add_pending_gates() {
   nodes_.clear();
   records_.clear();
   for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
+  dirty_->clear_nodes();
   for (std::size_t i = 0; i < old.size(); ++i) {
     add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
     records_.back() = std::move(records[i]);
@@ -261,25 +269,6 @@ void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node,
   explain_empty(s, node.ranges()[g].domain, a, node.describe(), run.empty_time);
 }
 
-namespace {
-
-// Sorts v and drops duplicates; v holds positions < n. A long list is
-// bucketed through `mark` (n flags) rather than sorted.
-void sort_unique(std::vector<std::size_t>& v, std::size_t n, std::vector<char>& mark) {
-  if (v.size() < 64 || v.size() < n / 16) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    return;
-  }
-  mark.assign(n, 0);
-  for (const std::size_t p : v) mark[p] = 1;
-  v.clear();
-  for (std::size_t p = 0; p < n; ++p)
-    if (mark[p]) v.push_back(p);
-}
-
-}  // namespace
-
 void ContractorNetwork::set_budget(const Budget& budget) {
   check_budget(budget, "ContractorNetwork::set_budget");
   budget_ = budget;
@@ -309,29 +298,27 @@ ContractStats ContractorNetwork::contract() {
 
   BudgetMeter meter(budget_, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
                     "contractor calls");
-  std::vector<std::size_t> round(nodes_.size()), next, changed;
-  std::vector<char> mark;
+  for (auto& w : watchers_) w.index();
+  dirty_->reset();
+  // Buffers reused by every run: the round, the next one, what a node shrank, what woke it.
+  std::vector<std::size_t> round(nodes_.size()), next, changed, dirty;
   for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
   std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
-  // pending[i]: positions of node i's atoms that shrank since it last ran.
-  std::vector<std::vector<std::size_t>> pending(nodes_.size());
   detail::RoundOrder order(scheduling_, nodes_.size());
   while (!round.empty()) {
     ++stats.iterations;
-    order.order(round, pending);
+    order.order(round, *dirty_);
     for (const std::size_t i : round) {
       queued[i] = 0;
       changed.clear();
       const CnNode& node = *nodes_[i];
-      auto& dirty = pending[i];
-      sort_unique(dirty, node.nb_atoms(), mark);
+      dirty_->take(i, dirty);
       NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
       fresh[i] = 0;
       meter.add();
       ++stats.contractor_calls;
       const bool ok = node.run(run);
       order.ran(i, changed.size(), node.nb_atoms());
-      dirty.clear();
       check_layouts_after(node);
       if (!ok) {
         explain_node_empty(stats, node, run);
@@ -342,10 +329,9 @@ ContractStats ContractorNetwork::contract() {
         // The range holding position k, then the atom it is.
         const std::size_t g = node.range_of(k);
         const AtomRange& a = node.ranges()[g];
-        watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t pos) {
-          if (w == i) return;
-          pending[w].push_back(pos);
-          if (!queued[w]) {
+        watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t, std::size_t bit) {
+          // A node never wakes itself; one already recorded for this atom is queued.
+          if (w != i && dirty_->mark(w, bit) && !queued[w]) {
             queued[w] = 1;
             next.push_back(w);
           }

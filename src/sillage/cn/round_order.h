@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "sillage/cn/dirty_atoms.h"
 #include "sillage/cn/scheduling.h"
 
 namespace sillage::detail {
@@ -13,9 +14,9 @@ class RoundOrder {
   RoundOrder(Scheduling s, std::size_t nb_nodes) : scheduling_(s), share_(nb_nodes, 1.0) {}
   // Node i shrank `changed` of its `atoms` atoms in its last run.
   void ran(std::size_t i, std::size_t changed, std::size_t atoms);
-  // Orders the nodes of a round; pending[i]: the atoms of node i that changed
-  // since it last ran (its cost). Fifo: unchanged.
-  void order(std::vector<std::size_t>& round, const std::vector<std::vector<std::size_t>>& pending) const;
+  // Orders the nodes of a round; dirty.wakes(i): the wake-ups of node i since
+  // it last ran (its cost). Fifo: unchanged.
+  void order(std::vector<std::size_t>& round, const DirtyAtoms& dirty) const;
 
  private:
   Scheduling scheduling_;

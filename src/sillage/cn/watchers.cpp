@@ -7,9 +7,22 @@ void Watchers::add(const Watch& w) {
     whole_.push_back(w);
     return;
   }
-  if (per_atom_.empty()) per_atom_.resize(nb_atoms_);
   parts_.push_back(w);
-  for (std::size_t a = w.first; a < w.first + w.count; ++a) per_atom_[a].push_back(parts_.size() - 1);
+}
+
+void Watchers::index() {
+  if (indexed_ == parts_.size()) return;
+  indexed_ = parts_.size();
+  // Count per atom, then place: the entries of an atom in the order of add().
+  begin_.assign(nb_atoms_ + 1, 0);
+  for (const Watch& w : parts_)
+    for (std::size_t a = w.first; a < w.first + w.count; ++a) ++begin_[a + 1];
+  for (std::size_t a = 0; a < nb_atoms_; ++a) begin_[a + 1] += begin_[a];
+  at_.resize(begin_[nb_atoms_]);
+  std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
+  for (const Watch& w : parts_) {
+    for (std::size_t a = w.first; a < w.first + w.count; ++a) at_[next[a]++] = {w.node, w.offset - w.first, w.bit - w.first};
+  }
 }
 
 }  // namespace sillage

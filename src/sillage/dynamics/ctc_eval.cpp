@@ -60,7 +60,13 @@ bool narrow_gate(TubeData& d, std::size_t i, const Interval& h, bool& changed) {
 // covers only a part of it (Tube::eval with the derivative), so that [t] is
 // never rounded out to whole slices. A gate after [t] is narrowed to F, one
 // before to B, one inside to F ∪ B. False if a gate became empty.
-bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed) {
+// The buffers of sweep_region, reused from call to call.
+struct SweepBuffers {
+  std::vector<Interval> part, hull, front;
+};
+
+bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed,
+                  SweepBuffers& buf) {
   const TDomain& td = *y.tdomain();
   const auto ts = td.times();
   TubeData& d = y.data();
@@ -69,7 +75,11 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   const auto in_t = [&](std::size_t i) { return ta <= ts[i] && ts[i] <= tb; };
   const std::size_t m = r.last - r.first + 1;
   // Per slice of the region: the times of [t] in it and the hull there.
-  std::vector<Interval> part(m, Interval::empty()), hull(m, Interval::empty());
+  auto& part = buf.part;
+  auto& hull = buf.hull;
+  auto& front = buf.front;
+  part.assign(m, Interval::empty());
+  hull.assign(m, Interval::empty());
   for (std::size_t j = 0; j < m; ++j) {
     const std::size_t k = r.first + j;
     if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
@@ -77,7 +87,7 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
     const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
     hull[j] = (whole ? d.slices[k] : y.eval(part[j], w) & d.slices[k]) & z;
   }
-  std::vector<Interval> front(m + 1);
+  front.assign(m + 1, Interval::empty());
   Interval F = Interval::empty();
   for (std::size_t j = 0;; ++j) {
     const std::size_t k = r.first + j;
@@ -192,20 +202,10 @@ bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& cha
   return true;
 }
 
-// f.template operator()<R>() with the faster rounding policy when the CPU
-// has it (both give the same bounds, bit for bit).
-template <class F>
-bool with_rounding(const F& f) {
-#if SILLAGE_HARD_ROUNDING
-  if (detail::hardware_rounding()) return f.template operator()<detail::HardRounding>();
-#endif
-  return f.template operator()<detail::SoftRounding>();
-}
-
 // The fronts outside the region, and the slices next to the gates they changed.
 bool outward(Tube& y, const Tube& w, Region r, bool& changed, const TubeChanges& log = TubeChanges()) {
   const std::size_t n = y.nb_slices();
-  return with_rounding([&]<class R>() {
+  return detail::with_policy([&]<class R>() {
     Reached g;
     if (!sweep_outward<R>(y, w, r, changed, g, log)) return false;
     const std::size_t lo = g.lo > 0 ? g.lo - 1 : 0, hi = std::min(g.hi, n - 1);
@@ -248,6 +248,14 @@ struct RegionSnapshot {
   }
 };
 
+// What contract_all needs from call to call, per thread: a network calls it
+// tens of thousands of times, and would otherwise allocate these each time.
+struct EvalScratch {
+  std::vector<RegionSnapshot> before;
+  IntervalVector z0 = IntervalVector(1);
+  SweepBuffers sweep;
+};
+
 // Passes over [t], [z] and the region until none changes anything, so that
 // one call is a fixed point (a network does not wake a contractor on its own
 // changes). Bounded, as a guard: each pass that goes on shrinks a bound.
@@ -273,12 +281,16 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
   bool ok = prepare_time(t, *y[0], sampling, where) && !z.is_empty();
   Region r;
   if (ok) slice_range(*y[0]->tdomain(), t, r.first, r.last, where);
-  std::vector<RegionSnapshot> before(logs ? y.size() : 0);
-  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].take(*y[i], r);
+  thread_local EvalScratch scratch;
+  auto& before = scratch.before;
+  const std::size_t nb_before = logs ? y.size() : 0;
+  if (before.size() < nb_before) before.resize(nb_before);
+  for (std::size_t i = 0; ok && i < nb_before; ++i) before[i].take(*y[i], r);
   bool deriv_fresh = false;
   for (int pass = 0; ok && pass < kMaxPasses; ++pass) {
     const Interval t0 = t;
-    const IntervalVector z0 = z;
+    IntervalVector& z0 = scratch.z0;
+    z0 = z;
     bool changed = false;
     // [t] from every component first, then [z] and the tubes with the common [t].
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
@@ -289,9 +301,9 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
       bool moved = false;
       ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
       if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
-      if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved);
+      if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved, scratch.sweep);
       if (ok && !w.empty()) {
-        ok = with_rounding([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
+        ok = detail::with_policy([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
       }
       if (moved) y[i]->touch();
       changed = changed || moved;
@@ -324,7 +336,7 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     ok = outward(*y[i], *w[i], r, moved, logs ? (*logs)[i] : TubeChanges());
     if (moved) y[i]->touch();
   }
-  for (std::size_t i = 0; ok && i < before.size(); ++i) before[i].report(*y[i], r, (*logs)[i]);
+  for (std::size_t i = 0; ok && i < nb_before; ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {
     t.set_empty();
     z.set_empty();

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <mutex>
 
 #include "sillage/dynamics/heading_common.h"
+#include "sillage/dynamics/heading_window_inputs.h"
 #include "sillage/error.h"
 #include "sillage/interval/elementary.h"
 
@@ -15,55 +17,6 @@ namespace {
 // The cells of the heading tried against a window: at least kCell wide, at most kMaxCells.
 constexpr double kCell = 0.01;
 constexpr int kMaxCells = 128;
-
-// Per slice j, what every window reads: the distance [d](j) ∩ [0, ∞), the
-// increment [Δψ](j), and the spread of the direction of travel about ψ(t_j):
-// the turn inside the slice (from the turn rate and the turn acceleration)
-// plus the track error.
-struct WindowSlices {
-  std::vector<Interval> dist, spread;
-  const std::vector<Interval>& inc;
-  bool empty = false;  // d is empty somewhere
-  WindowSlices(const TDomain& td, const TubeData& d, const TubeData& dpsi, const TubeData& w, double accel,
-               const Interval& tr)
-      : dist(d.slices.size()), spread(d.slices.size()), inc(dpsi.slices) {
-    for (std::size_t j = 0; j < dist.size(); ++j) {
-      dist[j] = d.slices[j] & Interval::pos_reals();
-      empty = empty || dist[j].is_empty();
-      const Interval delta = td.slice_width(j);
-      Interval r = Interval::all_reals();
-      // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
-      if (!w.slices[j].is_unbounded()) {
-        r &= (inc[j] + Interval(-1, 1) * Interval(w.slices[j].mag()) * delta) / Interval(2.0);
-      }
-      // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
-      if (std::isfinite(accel)) r &= (Interval(0.0) | inc[j]) + Interval(-1, 1) * Interval(accel) * sqr(delta) / Interval(8.0);
-      spread[j] = r + tr;
-    }
-  }
-};
-
-// V = Σ_j [d](j) (cos, sin)(R_j ± track) over slices a..b−1, R_j relative to
-// gate c, and the hull `cone` of the R_j ± track.
-void window_sum(const WindowSlices& sl, std::size_t a, std::size_t b, std::size_t c, Interval& vx, Interval& vy,
-                Interval& cone) {
-  vx = Interval(0.0), vy = Interval(0.0), cone = Interval::empty();
-  const auto add = [&](std::size_t j, const Interval& rel) {
-    const Interval dir = rel + sl.spread[j];
-    vx += sl.dist[j] * cos(dir), vy += sl.dist[j] * sin(dir);
-    cone |= dir;
-  };
-  Interval rel(0.0);  // ψ(t_j) − ψ(t_c)
-  for (std::size_t j = c; j < b; ++j) {
-    add(j, rel);
-    rel += sl.inc[j];
-  }
-  rel = Interval(0.0);
-  for (std::size_t j = c; j-- > a;) {
-    rel -= sl.inc[j];
-    add(j, rel);
-  }
-}
 
 // The direction of a nonzero v in the box V whose parts each point into the
 // arc `cone` (relative to ψ(t_c)): when the arc is narrower than π, every
@@ -80,9 +33,11 @@ Interval travel_direction(const Interval& vx, const Interval& vy, const Interval
 
 // `dirty` (null: every window): prefix counts of the time atoms that changed
 // since the last run (dirty[i] = how many below atom i); a window [a, b] is
-// contracted again only if one of its atoms 2a..2b changed.
+// contracted again only if one of its atoms 2a..2b changed. `in`: the inputs
+// and sums of the windows, as left by the last contraction (a node's) or new.
 bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const Tube& dpsi_t, const Tube& w_t,
-                     const CtcHeadingWindow& ctc, detail::HeadingEmptyAt& at, const std::vector<std::size_t>* dirty = nullptr) {
+                     const CtcHeadingWindow& ctc, detail::HeadingEmptyAt& at, detail::WindowInputs& in,
+                     const std::vector<std::size_t>* dirty = nullptr) {
   const auto td = px_t.tdomain();
   for (const Tube* t : std::initializer_list<const Tube*>{&py_t, &psi_t, &d_t, &dpsi_t, &w_t}) {
     if (t->tdomain() != td) throw DimensionError("CtcHeadingWindow::contract: the tubes are not on one TDomain");
@@ -93,9 +48,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     return detail::finish_heading(false, px_t, py_t, psi_t);
   }
   TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
-  const WindowSlices sl(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(),
-                        Interval(-1, 1) * Interval(ctc.track()));
-  bool ok = !sl.empty;
+  bool ok = in.update(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(), ctc.track());
   std::size_t b = 0;
   for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
     // The window: the least b with t_b − t_a >= window (none: the last windows are shorter, skipped).
@@ -104,8 +57,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     if (b > n) break;
     if (dirty && (*dirty)[2 * b + 1] == (*dirty)[2 * a]) continue;  // nothing changed in the window
     const std::size_t c = (a + b) / 2;
-    Interval vx, vy, cone;
-    window_sum(sl, a, b, c, vx, vy, cone);
+    const auto& [vx, vy, cone] = in.sum(a, b, c);
     // Heading: the directions of the displacement against those of V.
     const Interval dx = px.gates[b] - px.gates[a], dy = py.gates[b] - py.gates[a];
     const Interval dir_v = travel_direction(vx, vy, cone);
@@ -153,14 +105,18 @@ class HeadingWindowNode : public detail::HeadingNodeBase {
     std::vector<std::size_t> dirty(nb_time_atoms() + 1, 0);
     for (const std::size_t i : atoms) ++dirty[i + 1];
     for (std::size_t i = 0; i < nb_time_atoms(); ++i) dirty[i + 1] += dirty[i];
+    const std::lock_guard<std::mutex> lock(*mutex_);
     return run_heading(r, [&](detail::HeadingEmptyAt& at) {
       return contract_window(tube_arg(0), tube_arg(1), tube_arg(2), tube_arg(3), tube_arg(4), tube_arg(5), ctc_, at,
-                             r.all || constants ? nullptr : &dirty);
+                             *inputs_, r.all || constants ? nullptr : &dirty);
     });
   }
 
  private:
   CtcHeadingWindow ctc_;
+  // The inputs and window sums of the last run: a cache checked slice by slice (heading_window_inputs.h).
+  std::shared_ptr<std::mutex> mutex_ = std::make_shared<std::mutex>();
+  std::shared_ptr<detail::WindowInputs> inputs_ = std::make_shared<detail::WindowInputs>();
 };
 
 }  // namespace
@@ -181,7 +137,8 @@ CtcHeadingWindow::CtcHeadingWindow(double window, double track, double turn_acce
 
 bool CtcHeadingWindow::contract(Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& dpsi, const Tube& w) const {
   detail::HeadingEmptyAt at;
-  return contract_window(px, py, psi, d, dpsi, w, *this, at);
+  detail::WindowInputs in;
+  return contract_window(px, py, psi, d, dpsi, w, *this, at, in);
 }
 
 bool CtcHeadingWindow::contract(TubeVector& p, Tube& psi, const Tube& d, const Tube& dpsi, const Tube& w) const {

@@ -30,6 +30,8 @@ class EvalNode : public TubeNode {
     }
     y_ = whole_tubes(i, nb_z_, "y");
     if (rest == 2 * nb_z_) w_ = whole_tubes(i + nb_z_, nb_z_, "w");
+    for (const auto& y : y_) ys_.push_back(&y->tube());
+    for (const auto& w : w_) ws_.push_back(&w->tube());
     // Wake only for the slices around [t] (it only shrinks): what happens
     // elsewhere reaches [t] and [z] through those slices, or is CtcDeriv's.
     const TDomain& td = *y_.front()->tube().tdomain();
@@ -48,21 +50,18 @@ class EvalNode : public TubeNode {
     Domain& td = *r.domains[ranges()[0].domain];
     const Interval t0 = td.atom(ranges()[0].first);
     Interval t = t0;
-    IntervalVector z(nb_z_);
+    // Per thread, reused: a network runs this node and its like tens of thousands of times.
+    thread_local IntervalVector z(1), z0(1);
+    thread_local std::vector<TubeChanges> logs;
+    if (z.size() != nb_z_) z = IntervalVector(nb_z_);
     std::size_t c = 0;
     for (std::size_t a = 1; a <= z_args_; ++a) {
       for (std::size_t j = 0; j < ranges()[a].count; ++j) z[c++] = r.domains[ranges()[a].domain]->atom(ranges()[a].first + j);
     }
-    const IntervalVector z0 = z;
-    std::vector<Tube*> ys;
-    std::vector<const Tube*> ws;
-    std::vector<TubeChanges> logs;
-    for (std::size_t i = 0; i < y_.size(); ++i) {
-      ys.push_back(&y_[i]->tube());
-      logs.push_back(changes(r, 1 + z_args_ + i));
-    }
-    for (const auto& w : w_) ws.push_back(&w->tube());
-    const bool ok = ctc_.contract(t, z, ys, ws, logs);
+    z0 = z;
+    logs.clear();
+    for (std::size_t i = 0; i < y_.size(); ++i) logs.push_back(changes(r, 1 + z_args_ + i));
+    const bool ok = ctc_.contract(t, z, ys_, ws_, logs);
     // Write back t and z (intersected), report what shrank.
     const auto put = [&](std::size_t range, std::size_t j, std::size_t pos, const Interval& was, const Interval& now) {
       Domain& d = *r.domains[ranges()[range].domain];
@@ -95,6 +94,8 @@ class EvalNode : public TubeNode {
   CtcEval ctc_;
   std::size_t nb_z_ = 0, z_args_ = 0;
   std::vector<std::shared_ptr<TubeDomain>> y_, w_;
+  std::vector<Tube*> ys_;  // the tubes of y_ and w_ (kept alive by them)
+  std::vector<const Tube*> ws_;
 };
 
 }  // namespace

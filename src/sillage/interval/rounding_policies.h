@@ -22,4 +22,14 @@ struct SoftRounding : BranchFreeRounding {
   static double div_up(double a, double b) { return detail::div_up_pos(a, b); }
 };
 
+// f.template operator()<R>() with the policy this process uses (hardware when
+// available): for code templated on R, both paths giving the same bits.
+template <class F>
+decltype(auto) with_policy(const F& f) {
+#if SILLAGE_HARD_ROUNDING
+  if (use_hardware_rounding()) return f.template operator()<HardRounding>();
+#endif
+  return f.template operator()<SoftRounding>();
+}
+
 }  // namespace sillage::detail

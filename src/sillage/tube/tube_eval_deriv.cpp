@@ -15,10 +15,10 @@ namespace sillage {
 
 namespace {
 
-using R = detail::SoftRounding;  // evaluations are not the hot path
-
 // Slice k of x with its gates, contracted locally by the slice rule (gates
-// into the slice, forward and backward): the polygon's inputs.
+// into the slice, forward and backward): the polygon's inputs. R: the rounding
+// policy (both give the same bits; CtcEval evaluates in its inner loop).
+template <class R>
 struct LocalSlice {
   double alo, ahi, blo, bhi, slo, shi, vlo, vhi;
   double t0, t1;
@@ -86,67 +86,70 @@ Interval Tube::eval(const Interval& t, const Tube& v) const {
   if (t.is_empty()) return Interval::empty();
   std::size_t first = 0, last = 0;
   slice_range(*td_, t, first, last, where);  // Error if t is not inside the domain
-  const auto ts = td_->times();
-  const TubeData& dx = *data_;
-  const TubeData& dv = *v.data_;
+  return detail::with_policy([&]<class R>() -> Interval {
+    const auto ts = td_->times();
+    const TubeData& dx = *data_;
+    const TubeData& dv = *v.data_;
 
-  if (t.is_degenerate()) {
-    const double c = t.lb();
-    const std::ptrdiff_t g = td_->time_index(c);
-    if (g < 0) {
-      const LocalSlice s(dx, dv, ts, first);
-      return s.ok ? s.hull(c, c) : Interval::empty();
+    if (t.is_degenerate()) {
+      const double c = t.lb();
+      const std::ptrdiff_t g = td_->time_index(c);
+      if (g < 0) {
+        const LocalSlice<R> s(dx, dv, ts, first);
+        return s.ok ? s.hull(c, c) : Interval::empty();
+      }
+      // A time point: the gate, seen from both neighbouring slices.
+      const auto k = static_cast<std::size_t>(g);
+      double lo = dx.gates[k].lb(), hi = dx.gates[k].ub();
+      if (k > 0) {
+        const LocalSlice<R> s(dx, dv, ts, k - 1);
+        if (!s.ok) return Interval::empty();
+        lo = std::max(lo, s.blo);
+        hi = std::min(hi, s.bhi);
+      }
+      if (k < nb_slices()) {
+        const LocalSlice<R> s(dx, dv, ts, k);
+        if (!s.ok) return Interval::empty();
+        lo = std::max(lo, s.alo);
+        hi = std::min(hi, s.ahi);
+      }
+      return lo <= hi ? Interval::from_bounds_unchecked(lo, hi) : Interval::empty();
     }
-    // A time point: the gate, seen from both neighbouring slices.
-    const auto k = static_cast<std::size_t>(g);
-    double lo = dx.gates[k].lb(), hi = dx.gates[k].ub();
-    if (k > 0) {
-      const LocalSlice s(dx, dv, ts, k - 1);
-      if (!s.ok) return Interval::empty();
-      lo = std::max(lo, s.blo);
-      hi = std::min(hi, s.bhi);
-    }
-    if (k < nb_slices()) {
-      const LocalSlice s(dx, dv, ts, k);
-      if (!s.ok) return Interval::empty();
-      lo = std::max(lo, s.alo);
-      hi = std::min(hi, s.ahi);
-    }
-    return lo <= hi ? Interval::from_bounds_unchecked(lo, hi) : Interval::empty();
-  }
 
-  // The two end slices over their part of [t], the slices between in full.
-  Interval r = Interval::empty();
-  auto add_slice = [&](std::size_t k) {
-    const LocalSlice s(dx, dv, ts, k);
-    if (!s.ok) return false;
-    const Interval h = s.hull(std::max(t.lb(), ts[k]), std::min(t.ub(), ts[k + 1]));
-    if (h.is_empty()) return false;
-    r |= h;
-    return true;
-  };
-  if (!add_slice(first)) return Interval::empty();
-  if (last == first) return r;
-  if (!add_slice(last)) return Interval::empty();
-  if (last - first - 1 > kPolygonScanLimit) {
-    r |= (*this)(Interval(ts[first + 1], ts[last]));
-  } else {
-    for (std::size_t k = first + 1; k < last; ++k) {
-      if (!add_slice(k)) return Interval::empty();
+    // The two end slices over their part of [t], the slices between in full.
+    Interval r = Interval::empty();
+    auto add_slice = [&](std::size_t k) {
+      const LocalSlice<R> s(dx, dv, ts, k);
+      if (!s.ok) return false;
+      const Interval h = s.hull(std::max(t.lb(), ts[k]), std::min(t.ub(), ts[k + 1]));
+      if (h.is_empty()) return false;
+      r |= h;
+      return true;
+    };
+    if (!add_slice(first)) return Interval::empty();
+    if (last == first) return r;
+    if (!add_slice(last)) return Interval::empty();
+    if (last - first - 1 > kPolygonScanLimit) {
+      r |= (*this)(Interval(ts[first + 1], ts[last]));
+    } else {
+      for (std::size_t k = first + 1; k < last; ++k) {
+        if (!add_slice(k)) return Interval::empty();
+      }
     }
-  }
-  return r;
+    return r;
+  });
 }
 
 namespace {
 
 // Hull of the times of slices first..last where the polygon meets y, within
 // [ta, tb]; empty if none (or if a slice holds no trajectory).
+template <class R>
 Interval inverse_polygon(const TubeData& dx, const TubeData& dv, std::span<const double> ts, const Interval& y,
                          std::size_t first, std::size_t last, double ta, double tb) {
   double r_lo = rounding::kInf, r_hi = -rounding::kInf;
   for (std::size_t k = first; k <= last; ++k) {
-    const LocalSlice s(dx, dv, ts, k);
+    const LocalSlice<R> s(dx, dv, ts, k);
     if (!s.ok) return Interval::empty();  // no trajectory at all
     if (!(s.slo <= y.ub() && y.lb() <= s.shi)) continue;
     double lo = s.t0, hi = s.t1;
@@ -168,7 +171,9 @@ Interval Tube::inverse(const Interval& y, const Tube& v) const {
   check_v(*this, v, "Tube::inverse(y, v)");
   if (y.is_empty()) return Interval::empty();
   const auto ts = td_->times();
-  return inverse_polygon(*data_, *v.data_, ts, y, 0, nb_slices() - 1, ts.front(), ts.back());
+  return detail::with_policy([&]<class R>() {
+    return inverse_polygon<R>(*data_, *v.data_, ts, y, 0, nb_slices() - 1, ts.front(), ts.back());
+  });
 }
 
 Interval Tube::inverse(const Interval& y, const Tube& v, const Interval& t) const {
@@ -177,7 +182,9 @@ Interval Tube::inverse(const Interval& y, const Tube& v, const Interval& t) cons
   if (y.is_empty() || t.is_empty()) return Interval::empty();
   std::size_t first = 0, last = 0;
   slice_range(*td_, t, first, last, where);  // Error if t is not inside the domain
-  return inverse_polygon(*data_, *v.data_, td_->times(), y, first, last, t.lb(), t.ub());
+  return detail::with_policy([&]<class R>() {
+    return inverse_polygon<R>(*data_, *v.data_, td_->times(), y, first, last, t.lb(), t.ub());
+  });
 }
 
 }  // namespace sillage

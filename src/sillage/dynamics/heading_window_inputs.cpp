@@ -1,0 +1,93 @@
+#include "sillage/dynamics/heading_window_inputs.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#include "sillage/interval/elementary.h"
+
+namespace sillage::detail {
+
+namespace {
+
+// The same bits (zero signs included): what was computed from a is what b gives.
+bool same_bits(const Interval& a, const Interval& b) {
+  return std::bit_cast<std::uint64_t>(a.lb()) == std::bit_cast<std::uint64_t>(b.lb()) &&
+         std::bit_cast<std::uint64_t>(a.ub()) == std::bit_cast<std::uint64_t>(b.ub());
+}
+
+}  // namespace
+
+void WindowInputs::compute_slice(const TDomain& td, std::size_t j) {
+  dist_[j] = d_[j] & Interval::pos_reals();
+  const Interval delta = td.slice_width(j);
+  Interval r = Interval::all_reals();
+  // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
+  if (!w_[j].is_unbounded()) r &= (dpsi_[j] + Interval(-1, 1) * Interval(w_[j].mag()) * delta) / Interval(2.0);
+  // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
+  if (std::isfinite(accel_)) r &= (Interval(0.0) | dpsi_[j]) + Interval(-1, 1) * Interval(accel_) * sqr(delta) / Interval(8.0);
+  spread_[j] = r + Interval(-1, 1) * Interval(track_);
+}
+
+bool WindowInputs::update(const TDomain& td, const TubeData& d, const TubeData& dpsi, const TubeData& w, double accel,
+                          double track) {
+  const auto ts = td.times();
+  const std::size_t n = d.slices.size();
+  const bool same_layout = times_.size() == ts.size() &&
+                           std::equal(ts.begin(), ts.end(), times_.begin(),
+                                      [](double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }) &&
+                           std::bit_cast<std::uint64_t>(accel) == std::bit_cast<std::uint64_t>(accel_) &&
+                           std::bit_cast<std::uint64_t>(track) == std::bit_cast<std::uint64_t>(track_);
+  if (!same_layout) {
+    times_.assign(ts.begin(), ts.end());
+    accel_ = accel, track_ = track;
+    d_.assign(d.slices.begin(), d.slices.end());
+    dpsi_.assign(dpsi.slices.begin(), dpsi.slices.end());
+    w_.assign(w.slices.begin(), w.slices.end());
+    dist_.resize(n), spread_.resize(n);
+    sums_.assign(n + 1, Entry{});
+    for (std::size_t j = 0; j < n; ++j) compute_slice(td, j);
+  } else {
+    // The windows over a changed slice lose their sums: the first changed slice after each start.
+    std::vector<std::size_t> next_change(n + 1, n);
+    for (std::size_t j = n; j-- > 0;) {
+      next_change[j] = next_change[j + 1];
+      if (same_bits(d_[j], d.slices[j]) && same_bits(dpsi_[j], dpsi.slices[j]) && same_bits(w_[j], w.slices[j])) continue;
+      d_[j] = d.slices[j], dpsi_[j] = dpsi.slices[j], w_[j] = w.slices[j];
+      compute_slice(td, j);
+      next_change[j] = j;
+    }
+    for (std::size_t a = 0; a < n; ++a) {
+      if (sums_[a].valid && next_change[a] < sums_[a].b) sums_[a].valid = false;
+    }
+  }
+  for (const Interval& x : dist_)
+    if (x.is_empty()) return false;
+  return true;
+}
+
+const WindowSum& WindowInputs::sum(std::size_t a, std::size_t b, std::size_t c) {
+  Entry& e = sums_[a];
+  if (e.valid && e.b == b && e.c == c) return e.s;
+  Interval vx(0.0), vy(0.0), cone = Interval::empty();
+  const auto add = [&](std::size_t j, const Interval& rel) {
+    const Interval dir = rel + spread_[j];
+    vx += dist_[j] * cos(dir), vy += dist_[j] * sin(dir);
+    cone |= dir;
+  };
+  Interval rel(0.0);  // ψ(t_j) − ψ(t_c)
+  for (std::size_t j = c; j < b; ++j) {
+    add(j, rel);
+    rel += dpsi_[j];
+  }
+  rel = Interval(0.0);
+  for (std::size_t j = c; j-- > a;) {
+    rel -= dpsi_[j];
+    add(j, rel);
+  }
+  e = {b, c, true, {vx, vy, cone}};
+  return e.s;
+}
+
+}  // namespace sillage::detail
