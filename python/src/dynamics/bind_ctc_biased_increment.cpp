@@ -1,5 +1,5 @@
 // CtcBiasedIncrement (increments with one unknown constant bias b0 and an in-run
-// drift): contract(x, b0, i) on the caller's own Tube and Interval, in place; a
+// drift): contract(x, b0, i[, j]) on the caller's own Tube and Interval, in place; a
 // NetworkCtc, so ContractorNetwork.add(CtcBiasedIncrement(d_max), [x, b0, i]) binds it.
 #include <string>
 
@@ -20,11 +20,12 @@ void init_ctc_biased_increment(py::module_& m) {
            })
       .def(
           "contract",
-          [](const CtcBiasedIncrement& c, Tube& x, Interval& b0, const Tube& i) {
+          [](const CtcBiasedIncrement& c, Tube& x, Interval& b0, const Tube& i, Tube* j) {
             py::gil_scoped_release release;
-            return c.contract(x, b0, i);
+            return j ? c.contract(x, b0, i, *j) : c.contract(x, b0, i);
           },
-          py::arg("x"), py::arg("b0").noconvert(), py::arg("i"), DOC(CtcBiasedIncrement, contract));
+          py::arg("x"), py::arg("b0").noconvert(), py::arg("i"), py::arg("j") = nullptr,
+          DOC(CtcBiasedIncrement, contract, Tube_Interval_Tube_Tube));
 }
 
 }  // namespace sillage::python
