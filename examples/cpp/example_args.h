@@ -14,7 +14,7 @@
 #include <vector>
 
 // The bound options of the plaza1 examples (plaza1_bounds.h checks that its table matches).
-#define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-bias=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X", "--track-err=X", "--turn-accel=X"
+#define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-turn-on-bias=X", "--gyro-in-run-drift=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X", "--track-err=X", "--turn-accel=X"
 
 namespace example {
 

@@ -8,7 +8,9 @@
 //      (one CtcQEval in the network), against the strict intersection of 2.
 // The odometry ties heading and positions both ways over each period
 // (CtcHeading) and over windows of 40 s (CtcHeadingWindow; --heading-window S,
-// 0: none), which keeps the heading bounded, even from an unknown start.
+// 0: none), which keeps the heading bounded, even from an unknown start. The
+// gyro's bias is one unknown b0 of the run (--gyro-turn-on-bias) plus a small
+// in-run drift (--gyro-in-run-drift; CtcBiasedIncrement), printed at the end.
 // The stated error bounds (plaza1_bounds.h, each one an option) are the model; the check is that
 // every ground-truth sample lies in the position tube. The network is in
 // plaza1_network.h (shared with bench/bench_plaza1.cpp).
@@ -37,6 +39,7 @@ struct Result {
   double cpu = 0;
   std::size_t inside = 0, nb_ranges = 0;
   std::shared_ptr<Tube> psi;
+  Interval b0;  // the gyro's turn-on bias
   double mean_diam = 0, max_diam = 0;
 };
 
@@ -48,6 +51,7 @@ Result solve_and_check(const Plaza1Data& d, const Bounds& b, bool with_ranges, i
   res.stats = sol.stats;
   res.nb_ranges = sol.nb_ranges;
   res.psi = sol.psi;
+  res.b0 = *sol.b0;
   res.cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
 
   // Ground truth at every time point, and the size of the position boxes.
@@ -137,6 +141,9 @@ int main(int argc, char** argv) {
     std::printf("\n  heading known to +-0.1 rad at %zu of %zu time points", known, n);
     if (known > 0) std::printf(", first at t0 + %.1f s", first_known);
     std::printf("; narrowest heading after t0 + 60 s: +-%.2f rad\n", narrowest / 2);
+    // The turn-on bias learnt by the network (measured minus true rate); the truth's is the slope of
+    // the audit line "gyro turn-on bias".
+    std::printf("  gyro turn-on bias b0 in [%.4f, %.4f] mrad/s\n", 1e3 * r.b0.lb(), 1e3 * r.b0.ub());
     char buf[200];
     std::snprintf(buf, sizeof buf, "%s: truth inside %.1f %%, mean/max box diameter %.2f/%.2f m, %.2f s; ", label,
                   100.0 * static_cast<double>(r.inside) / static_cast<double>(n), r.mean_diam, r.max_diam, r.cpu);

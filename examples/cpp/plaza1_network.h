@@ -3,7 +3,10 @@
 // solve up to the fixed point, shared by examples/cpp/plaza1.cpp and
 // bench/bench_plaza1.cpp. One network, on the time points of the data (one
 // slice per odometry period):
-//   ψ(t_{k+1}) − ψ(t_k) ∈ Δψ_k + δ_k [−b, b]        (CtcIncrement: gyro bias b)
+//   ψ(t_j) − ψ(t_i) ∈ Σ Δψ_k − b0 (t_j − t_i) + [−d, d] (t_j − t_i), b0 ∈ [−b, b] one unknown of
+//     the whole run (the gyro's turn-on bias), d its in-run drift  (CtcBiasedIncrement)
+//   ψ(t_{k+1}) − ψ(t_k) ∈ Δψ_k + δ_k [−b, b]        (CtcIncrement: |b0 + d(t)| <= b at any time;
+//     its increments narrowed by CtcBiasedIncrement to Δψ_k − [b0] δ_k ± d δ_k as b0 is learnt)
 //   ψ' ∈ [−ω_max, ω_max]                             (CtcDeriv: the slices of ψ)
 //   ψ'' ∈ [−α, α]                                    (CtcSecondDeriv: the slices of ψ)
 //   p(t_{k+1}) − p(t_k) ∈ d_k (cos, sin)(ψ over the slice ± track),
@@ -27,6 +30,7 @@
 #include "slice_tube.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
+#include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"
@@ -47,6 +51,7 @@ struct Solution {
   std::shared_ptr<TubeVector> p;
   std::shared_ptr<Tube> psi;  // the heading
   std::shared_ptr<TubeVector> v;  // the velocity, p' = v
+  std::shared_ptr<Interval> b0;   // the gyro's turn-on bias (rad/s; measured minus true rate)
   ContractStats stats;
   std::size_t nb_ranges = 0;
 };
@@ -64,9 +69,10 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   using example::slice_tube;
   const auto td = TDomain::create(d.t);
   const std::size_t n = td->nb_slices();
-  std::vector<Interval> dpsi(n), dist(n);
+  std::vector<Interval> dpsi(n), dist(n), measured(n);
   for (std::size_t k = 0; k < n; ++k) {
     const Interval w = td->slice_width(k);
+    measured[k] = Interval(d.dpsi_drift[k]);
     dpsi[k] = Interval(d.dpsi_drift[k]) + w * Interval(-b.gyro_bias, b.gyro_bias);
     dist[k] = (Interval(d.dist[k]) * Interval(1 - b.dist_rel, 1 + b.dist_rel) + Interval(-b.dist_over, b.dist_under)) &
               Interval(0, INFINITY);
@@ -84,7 +90,15 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   s.p->set_gate(0, IntervalVector{{b.start_x - b.pos0, b.start_x + b.pos0}, {b.start_y - b.pos0, b.start_y + b.pos0}});
 
   ContractorNetwork cn;
+  s.b0 = std::make_shared<Interval>(-b.gyro_bias, b.gyro_bias);
   cn.add(std::make_shared<CtcIncrement>(), {psi, dpsi_t});
+  // The gyro's bias is one unknown b0 of the run plus an in-run drift: every span learns b0, and b0
+  // narrows the heading everywhere, and the increments dpsi that CtcIncrement and the windows read. A drift as large as the bias class states nothing more than the
+  // bias free at every step (CtcIncrement above): no contractor then.
+  if (b.gyro_drift < b.gyro_bias) {
+    const auto measured_t = std::make_shared<Tube>(slice_tube(td, measured));
+    cn.add(std::make_shared<CtcBiasedIncrement>(b.gyro_drift), {psi, s.b0, measured_t, dpsi_t});
+  }
   cn.add(std::make_shared<CtcDeriv>(), {psi, omega});
   // |ψ''| <= α: inside a period the heading stays within α δ² / 8 of the chord of its gates
   // (an unbounded α states nothing: no contractor then).

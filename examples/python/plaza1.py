@@ -5,7 +5,9 @@ beacons, each at an uncertain time (CtcEval); with --q-ranges Q also the ranges
 q-relaxed, at most Q of them wrong (one CtcQEval). The odometry increments tie
 positions and heading both ways, over each period (CtcHeading) and over windows of
 40 s (CtcHeadingWindow, --heading-window S; 0: none), which keeps the heading
-bounded, even from an unknown start. The same network and stated error
+bounded, even from an unknown start. The gyro's bias is one unknown b0 of the run
+(--gyro-turn-on-bias) plus a small in-run drift (--gyro-in-run-drift;
+CtcBiasedIncrement), printed at the end. The same network and stated error
 bounds (plaza1_bounds.py, the table of examples/cpp/plaza1_bounds.h; each one an
 option) as examples/cpp/plaza1.cpp; the check: every ground-truth sample lies in
 the position tube. Figures: the map (tube, truth, beacons) and the thickness."""
@@ -18,7 +20,7 @@ import sillage
 import plaza1_bounds
 from bound_audit import print_audit
 from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
-from sillage import (CsvTable, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
+from sillage import (CsvTable, CtcBiasedIncrement, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
                      CtcSecondDeriv, Function,
                      Interval, IntervalVector, TDomain, Tube, TubeObservation, TubeVector)
 
@@ -44,10 +46,11 @@ def slice_tube(td, slices):
 HEADING_WINDOW = 40.0
 
 
-def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None):
+def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None, bias=None):
     """The position tube at the fixed point with the bounds b (default: the table); q >= 0: at most q
     ranges wrong (one CtcQEval instead of a CtcEval per range); window > 0: CtcHeadingWindow over windows
-    of that many seconds. heading, velocity: lists that receive the heading tube, the velocity tube."""
+    of that many seconds. heading, velocity, bias: lists that receive the heading tube, the velocity tube,
+    the gyro's turn-on bias b0 (an Interval, rad/s)."""
     b = b or plaza1_bounds.bounds(None, d)
     t0 = time.process_time()
     td = TDomain(list(d["t"]))
@@ -65,6 +68,13 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
     cn = sillage.ContractorNetwork()
     dist_t, dpsi_t = slice_tube(td, dist), slice_tube(td, dpsi)
     cn.add(CtcIncrement(), [psi, dpsi_t])
+    # the gyro's bias is one unknown b0 of the run plus an in-run drift: every span learns b0, and b0 narrows
+    # the heading everywhere, and the increments dpsi_t that CtcIncrement and the windows read; a drift as large as the bias class states nothing more than the bias free at
+    # every step (CtcIncrement above): no contractor then
+    b0 = Interval(-b.gyro_bias, b.gyro_bias)
+    if b.gyro_drift < b.gyro_bias:
+        measured = slice_tube(td, [Interval(x) for x in d["dpsi"][:n]])
+        cn.add(CtcBiasedIncrement(b.gyro_drift), [psi, b0, measured, dpsi_t])
     cn.add(CtcDeriv(), [psi, omega])
     # |psi''| <= alpha: inside a period the heading stays within alpha delta^2 / 8 of the chord of its gates
     cn.add(CtcSecondDeriv(), [psi, Tube(td, Interval(-b.turn_accel, b.turn_accel))])
@@ -106,6 +116,8 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
         heading.append(psi)
     if velocity is not None:
         velocity.append(v)
+    if bias is not None:
+        bias.append(b0)
     gx, gy = p[0].gates_array(), p[1].gates_array()
     inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
     diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]
@@ -145,8 +157,9 @@ def main():
     strict = None
     for run in runs:
         with_ranges = run != -2
-        heading = []
-        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b, run, args.heading_window, heading)
+        heading, bias = [], []
+        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b, run, args.heading_window, heading,
+                                                         bias=bias)
         n = len(d["t"])
         label = (f"odometry + ranges, at most {run} wrong" if run >= 0
                  else "odometry + ranges" if with_ranges else "odometry only")
@@ -156,6 +169,8 @@ def main():
         ok = check_stats(stats, label) and enclosure_ok(p) and inside == n and ok
         print("  heading half-width at t0 + " + "; ".join(
             f"{dt:.0f} s: {heading[0].gate(k).diam() / 2:.2f} rad" for dt, k in times_after(d["t"], n)))
+        # the turn-on bias learnt (measured minus true rate); the truth's: the audit line "gyro turn-on bias"
+        print(f"  gyro turn-on bias b0 in [{1e3 * bias[0].lb():.4f}, {1e3 * bias[0].ub():.4f}] mrad/s")
         if run == -1:
             strict = (mean_d, cpu)
         if run >= 0 and strict:

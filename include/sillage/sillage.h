@@ -68,6 +68,7 @@
 #include "sillage/cn/tube_pair_node.h"
 #include "sillage/cn/watchers.h"
 
+#include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_heading.h"

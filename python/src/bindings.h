@@ -56,4 +56,5 @@ void init_ivp(py::module_& m);
 void init_slam(py::module_& m);
 void init_ctc_second_deriv(py::module_& m);
 void init_scalar_loops(py::module_& m);
+void init_ctc_biased_increment(py::module_& m);
 }  // namespace sillage::python

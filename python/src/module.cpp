@@ -33,4 +33,5 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_slam(m);
   sillage::python::init_ctc_second_deriv(m);
   sillage::python::init_scalar_loops(m);
+  sillage::python::init_ctc_biased_increment(m);
 }

@@ -38,10 +38,10 @@ def test_audit_line_text_and_percent(capsys):
 def test_table_has_one_option_per_bound_and_matches_cpp():
     ap = argparse.ArgumentParser()
     plaza1_bounds.add_options(ap)
-    args = ap.parse_args(["--gyro-bias", "0.01", "--start-x", "3"])
+    args = ap.parse_args(["--gyro-turn-on-bias", "0.01", "--gyro-in-run-drift", "0.002", "--start-x", "3"])
     d = dict(x=[1.0], y=[2.0], heading=[0.5])
     b = plaza1_bounds.bounds(args, d)
-    assert b.gyro_bias == 0.01 and b.start_x == 3 and b.start_y == 2.0 and b.start_heading == 0.5
+    assert b.gyro_bias == 0.01 and b.gyro_drift == 0.002 and b.start_x == 3 and b.start_y == 2.0 and b.start_heading == 0.5
     assert b.turn_max == 4.0 and b.range_long == 10.0
     cpp = (ROOT / "examples" / "cpp" / "plaza1_bounds.h").read_text()
     for option, attr, name, unit, value, source in plaza1_bounds.TABLE:
@@ -68,7 +68,7 @@ def test_plaza1_audit_uses_part_of_every_bound():
 @needs_data
 @pytest.mark.parametrize("lang", ["python", "cpp"])
 def test_a_violated_bound_fails_the_example(lang, tmp_path):
-    """--gyro-bias 1e-5 is below the drift of this file: the audit says so and the truth is lost."""
+    """--gyro-turn-on-bias 1e-5 is below the drift of this file: the audit says so and the truth is lost."""
     if lang == "python":
         cmd = [sys.executable, str(EXAMPLES / "plaza1.py")]
     else:
@@ -76,7 +76,7 @@ def test_a_violated_bound_fails_the_example(lang, tmp_path):
         if not exe.exists():
             pytest.skip(f"{exe} is not built")
         cmd = [str(exe)]
-    r = subprocess.run(cmd + ["--out", str(tmp_path), "--gyro-bias", "1e-5"], capture_output=True, text=True,
+    r = subprocess.run(cmd + ["--out", str(tmp_path), "--gyro-turn-on-bias", "1e-5"], capture_output=True, text=True,
                        timeout=600)
     assert r.returncode == 1
-    assert "heading drift: max 0.0003286 rad/s of 1e-05 allowed" in r.stdout and "VIOLATED" in r.stdout
+    assert "gyro turn-on bias: max 0.0003445 rad/s of 1e-05 allowed" in r.stdout and "VIOLATED" in r.stdout

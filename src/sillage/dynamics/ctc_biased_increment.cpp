@@ -1,0 +1,226 @@
+#include "sillage/dynamics/ctc_biased_increment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "sillage/cn/tube_node.h"
+#include "sillage/ctc/shrink.h"
+#include "sillage/error.h"
+
+namespace sillage {
+
+namespace {
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+// Rounds of (bias, sweep) per call: each only shrinks, the second usually changes nothing.
+constexpr int kMaxRounds = 16;
+
+// The upper convex hull of points added left to right (x increasing), and the
+// vertex from which the slope to a point on the right of all of them is least:
+// the line through it leaves every point below, so no earlier point gives a
+// smaller slope. Plain doubles: it only picks a pair, whose bound is then
+// computed with outward rounding, so an imperfect pick costs tightness, never
+// soundness.
+class UpperHull {
+ public:
+  void add(double x, double y, std::size_t id) {
+    while (v_.size() >= 2 && cross(v_[v_.size() - 2], v_.back(), x, y) >= 0) v_.pop_back();
+    v_.push_back({x, y, id});
+  }
+  // The id of the vertex of least slope to (x, y), kNone without vertices.
+  std::size_t tangent(double x, double y) const {
+    if (v_.empty()) return kNone;
+    std::size_t lo = 0, hi = v_.size() - 1;
+    while (lo < hi) {  // the slope falls, then rises, along the hull
+      const std::size_t mid = (lo + hi) / 2;
+      if (slope(v_[mid], x, y) <= slope(v_[mid + 1], x, y)) hi = mid;
+      else lo = mid + 1;
+    }
+    return v_[lo].id;
+  }
+
+ private:
+  struct Vertex {
+    double x, y;
+    std::size_t id;
+  };
+  static double cross(const Vertex& o, const Vertex& a, double x, double y) {
+    return (a.x - o.x) * (y - o.y) - (a.y - o.y) * (x - o.x);
+  }
+  static double slope(const Vertex& a, double x, double y) { return (y - a.y) / (x - a.x); }
+  std::vector<Vertex> v_;
+};
+
+// The exact sums of the lower and of the upper bounds of the increments from the first slice
+// (enclosed): over a span i..j the increments sum to within [lo_j − lo_i, hi_j − hi_i], which
+// the difference of interval prefix sums would widen by the width of every earlier slice.
+struct Prefix {
+  std::vector<Interval> lo, hi;
+  explicit Prefix(const std::vector<Interval>& inc) : lo(inc.size() + 1, Interval(0.0)), hi(inc.size() + 1, Interval(0.0)) {
+    for (std::size_t k = 0; k < inc.size(); ++k) {
+      lo[k + 1] = lo[k] + (std::isfinite(inc[k].lb()) ? Interval(inc[k].lb()) : Interval::all_reals());
+      hi[k + 1] = hi[k] + (std::isfinite(inc[k].ub()) ? Interval(inc[k].ub()) : Interval::all_reals());
+    }
+  }
+};
+
+// [b0] from every pair of gates i < j: b0 (t_j − t_i) ∈ S_ij − ([x](t_j) − [x](t_i)), S_ij the sum of
+// the increments (widened by the drift) over i..j. For each j only the pairs picked by the hulls
+// (least upper bound, greatest lower bound) are evaluated.
+Interval bias_from_spans(const TDomain& td, const std::vector<Interval>& gates, const Prefix& sum) {
+  Interval b = Interval::all_reals();
+  UpperHull up, down;  // up: upper bounds of b0; down: lower bounds, on negated points
+  const auto tau = [&](std::size_t i, std::size_t j) { return Interval(td.t(j)) - Interval(td.t(i)); };
+  const auto upper = [&](std::size_t i, std::size_t j) {  // b0 τ <= S_ij.ub − (l_j − u_i)
+    if (i == kNone) return;
+    const Interval v = ((sum.hi[j] - sum.hi[i]) - (Interval(gates[j].lb()) - Interval(gates[i].ub()))) / tau(i, j);
+    b &= Interval(-INFINITY, v.ub());
+  };
+  const auto lower = [&](std::size_t i, std::size_t j) {  // b0 τ >= S_ij.lb − (u_j − l_i)
+    if (i == kNone) return;
+    const Interval v = ((sum.lo[j] - sum.lo[i]) - (Interval(gates[j].ub()) - Interval(gates[i].lb()))) / tau(i, j);
+    b &= Interval(v.lb(), INFINITY);
+  };
+  for (std::size_t j = 0; j < gates.size(); ++j) {
+    const double t = td.t(j), ph = sum.hi[j].mid(), pl = sum.lo[j].mid(), l = gates[j].lb(), u = gates[j].ub();
+    const bool fh = std::isfinite(ph), fl = std::isfinite(pl);
+    if (fh && std::isfinite(l)) upper(up.tangent(t, ph - l), j);
+    if (fl && std::isfinite(u)) lower(down.tangent(t, u - pl), j);
+    if (b.is_empty()) return b;
+    if (fh && std::isfinite(u)) up.add(t, ph - u, j);
+    if (fl && std::isfinite(l)) down.add(t, l - pl, j);
+  }
+  return b;
+}
+
+// x(t_{k+1}) − x(t_k) ∈ inc_k − [b0] δ_k, forward then backward (CtcIncrement's rule). False: empty.
+bool sweep(std::vector<Interval>& g, const std::vector<Interval>& inc, const std::vector<Interval>& width,
+           const Interval& b) {
+  const std::size_t n = inc.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    g[k + 1] &= g[k] + (inc[k] - b * width[k]);
+    if (g[k + 1].is_empty()) return false;
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    g[k] &= g[k + 1] - (inc[k] - b * width[k]);
+    if (g[k].is_empty()) return false;
+  }
+  return true;
+}
+
+// The slices of j ∩= [i](k) − [b0] δ_k + [−d, d] δ_k. False: empty (j set empty).
+bool narrow_increments(Tube& j, const Tube& i, const Interval& b, double drift) {
+  if (j.tdomain() != i.tdomain()) {
+    throw DimensionError("CtcBiasedIncrement::contract(x, b0, i, j): i and j are not on one TDomain");
+  }
+  const TDomain& td = *i.tdomain();
+  auto& js = j.data().slices;
+  const auto& is = i.data().slices;
+  bool changed = false;
+  for (std::size_t k = 0; k < js.size(); ++k) {
+    const Interval now = js[k] & (is[k] + (Interval(-drift, drift) - b) * td.slice_width(k));
+    changed = changed || now != js[k];
+    js[k] = now;
+    if (now.is_empty()) {
+      j.set(Interval::empty());
+      return false;
+    }
+  }
+  if (changed) j.touch();
+  return true;
+}
+
+bool fail(Tube& x, Interval& b) {
+  x.set(Interval::empty());
+  b = Interval::empty();
+  return false;
+}
+
+// cn.add(ctc, {x, b0, i}).
+class BiasedIncrementNode : public TubeNode {
+ public:
+  BiasedIncrementNode(const CtcBiasedIncrement& ctc, const std::vector<BoundDomain>& args)
+      : TubeNode(ctc.name(), args), ctc_(ctc) {
+    if ((args.size() != 3 && args.size() != 4) || tube(1) || args[1].range.count != 1) {
+      throw DimensionError(where() + ": expects (x, b0, i) or (x, b0, i, j) with x, i, j tubes and b0 an Interval");
+    }
+    x_ = whole_tubes(0, 1, "x").front();
+    i_ = whole_tubes(2, 1, "i").front();
+    if (args.size() == 4) j_ = whole_tubes(3, 1, "j").front();
+  }
+  bool run(NodeRun& r) const override {
+    Domain& bd = *r.domains[ranges()[1].domain];
+    const Interval was = bd.atom(ranges()[1].first);
+    Interval b = was;
+    const Tube& inc = i_->tube();
+    bool ok = contract_tube(r, 0, [&](Tube& x) { return ctc_.contract(x, b, inc); });
+    if (ok && j_) ok = contract_tube(r, 3, [&](Tube& j) { return narrow_increments(j, inc, b, ctc_.drift()); });
+    const Interval now = was & b;
+    if (now != was) bd.set_atom(ranges()[1].first, now);
+    if (shrank(was, now, r.ratio)) r.changed.push_back(offset(1));
+    if (!ok && now.is_empty()) r.empty_at = offset(1);  // no bias left: say so rather than a gate of x
+    return ok;
+  }
+
+ private:
+  CtcBiasedIncrement ctc_;
+  std::shared_ptr<TubeDomain> x_, i_, j_;
+};
+
+}  // namespace
+
+CtcBiasedIncrement::CtcBiasedIncrement(double drift) : drift_(drift) {
+  if (!(drift >= 0) || !std::isfinite(drift)) {
+    throw Error("CtcBiasedIncrement: the in-run drift must be finite and >= 0, got " + std::to_string(drift));
+  }
+}
+
+bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i) const {
+  if (x.tdomain() != i.tdomain()) {
+    throw DimensionError("CtcBiasedIncrement::contract(x, b0, i): x and i are not on one TDomain");
+  }
+  // The increments are the slices of i (its gates are not read).
+  const auto& slices = i.data().slices;
+  const bool no_increment = std::any_of(slices.begin(), slices.end(), [](const Interval& s) { return s.is_empty(); });
+  if (x.is_empty() || no_increment || b0.is_empty()) return fail(x, b0);
+  const TDomain& td = *x.tdomain();
+  const std::size_t n = x.nb_slices();
+  std::vector<Interval> width(n), inc(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    width[k] = td.slice_width(k);
+    inc[k] = slices[k] + Interval(-drift_, drift_) * width[k];
+  }
+  const Prefix prefix(inc);
+  TubeData& d = x.data();
+  const std::vector<Interval> before = d.gates;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const Interval b = b0 & bias_from_spans(td, d.gates, prefix);
+    if (b.is_empty()) return fail(x, b0);
+    const bool moved = b != b0;
+    b0 = b;
+    if (round > 0 && !moved) break;  // the gates are already swept with this bias
+    if (!sweep(d.gates, inc, width, b0)) return fail(x, b0);
+  }
+  if (d.gates != before) x.touch();
+  return true;
+}
+
+bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i, Tube& j) const {
+  if (j.tdomain() != x.tdomain()) {
+    throw DimensionError("CtcBiasedIncrement::contract(x, b0, i, j): x and j are not on one TDomain");
+  }
+  if (contract(x, b0, i) && narrow_increments(j, i, b0, drift_)) return true;
+  x.set(Interval::empty());
+  j.set(Interval::empty());
+  b0 = Interval::empty();
+  return false;
+}
+
+std::shared_ptr<const CnNode> CtcBiasedIncrement::make_node(const std::vector<BoundDomain>& args) const {
+  return std::make_shared<BiasedIncrementNode>(*this, args);
+}
+
+}  // namespace sillage
