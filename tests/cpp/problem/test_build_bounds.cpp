@@ -30,11 +30,12 @@ TEST(BuildBounds, SameTubesAsTubeOfTheExpression) {
   std::string text = "[time]\ndomain = [0, 3]\ndelta = 0.01\n";
   for (std::size_t i = 0; i < bounds.size(); ++i)
     text.append("[var.x").append(std::to_string(i)).append("]\nkind = \"tube\"\nvalue = \"").append(bounds[i]).append("\"\n");
-  const Problem p = problem_test::parse(text + "[[constraint]]\nkind = \"expr\"\nexpr = \"x0 - x1\"\n");
+  text.append("[[constraint]]\nkind = \"expr\"\nexpr = \"x0 - x1\"\n");
+  const Problem p = problem_test::parse(text);
   const BuiltProblem b = build_network(p, 0.01);
   for (std::size_t i = 0; i < bounds.size(); ++i) {
     SCOPED_TRACE(bounds[i]);
-    expect_same((*b.var("x" + std::to_string(i)).tubes)[0], Tube(b.td, Function({"t"}, bounds[i])));
+    expect_same((*b.vars[i].tubes)[0], Tube(b.td, Function({"t"}, bounds[i])));
   }
   EXPECT_TRUE((*b.var("x2").tubes)[0].codomain().is_unbounded());  // undefined: the whole line, as Tube(td, f)
 }
