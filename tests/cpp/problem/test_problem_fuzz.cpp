@@ -69,9 +69,10 @@ TEST(ProblemFuzz, CorpusLoadsAndHoldsEveryKeyFamily) {
   std::string all;
   for (const std::string& text : corpus()) {
     all += text;
-    // Each is a valid problem (the survey's tables are written by the build).
+    // Each is a valid problem, but for data that lives outside the repository
+    // (plaza1's shared folder, the survey's tables written by the build).
     const std::string error = problem_test::error_of(text);
-    EXPECT_TRUE(error.empty() || error.find("loops_survey_") != std::string::npos) << error;
+    EXPECT_TRUE(error.empty() || error.find("cannot open") != std::string::npos) << error;
   }
   for (const char* key : {"points = {", "slices = {", "gates = {", "at = [", "\"p_implies_z\"", "\"heading\"",
                           "\"heading_window\"", "\"second_deriv\"", "\"increment\"", "\"eval\"", "where =", "join =",
