@@ -125,3 +125,26 @@ def test_loops_survey(tmp_path):
     assert r.returncode == 0, r.stdout + r.stderr
     html = (tmp_path / "report.html").read_text()
     assert "101 detections, 100 complete, 100 proven loops (degree test), 89 unique loops (Newton)" in html
+
+
+def test_temporal_slam(tmp_path):
+    """The temporal SLAM of the figure eight (examples/problems/temporal_slam.toml):
+    the truth inside every gate, and the loop's observation narrows the final
+    position below dead reckoning's (the same file without p_implies_z);
+    tests/cpp/problem/test_problem_temporal_slam.cpp compares it with
+    temporal_slam() bit for bit."""
+    res = solve("temporal_slam.toml", tmp_path)
+    assert res["status"] == "solved"
+    assert "202 of 202 truth samples inside" in (tmp_path / "report.html").read_text()
+    text = (PROBLEMS / "temporal_slam.toml").read_text()
+    i = text.index("[[constraint]]           # C_p=>z")
+    j = text.index("[network]")
+    dr_file = tmp_path / "dead_reckoning.toml"
+    dr_file.write_text(text[:i].replace('"data/', f'"{PROBLEMS}/data/') + text[j:])
+    (tmp_path / "dr").mkdir()
+    solve(str(dr_file), tmp_path / "dr")
+    slam, dr = gates(tmp_path, "p"), gates(tmp_path / "dr", "p")
+    for c in ("p0", "p1"):
+        assert np.all(slam[c + "_lb"] >= dr[c + "_lb"]) and np.all(slam[c + "_ub"] <= dr[c + "_ub"])
+    width = lambda g: (g["p0_ub"] - g["p0_lb"])[-1]
+    assert width(slam) < 0.9 * width(dr)

@@ -1,7 +1,9 @@
 #include "sillage/problem/build_network.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <optional>
 
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -10,9 +12,11 @@
 #include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/ctc_increment.h"
+#include "sillage/error.h"
 #include "sillage/expr/function.h"
 #include "sillage/problem/var_refs.h"
 #include "sillage/slam/ctc_p_implies_z.h"
+#include "sillage/tube/tube.h"
 
 namespace sillage {
 
@@ -88,7 +92,8 @@ std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, 
 // The slices of x from a table (row k: slice k of [time] points), after the
 // time points added since (gates of 'at', of evals) split some of them.
 // Gate k: the hull of the slices around it (a value per period, not a
-// continuous trajectory: it may jump at the stamps).
+// continuous trajectory: it may jump at the stamps). Written in place: a
+// row is evaluated once for all the slices it covers.
 void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const CsvTable& table = p.table(s.data)->table;
   std::vector<std::string> names = table.columns();
@@ -97,19 +102,24 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const std::vector<double>& pts = p.time.points;
   const TDomain& td = *x.tdomain();
   IntervalVector args(names.size());
-  std::vector<Interval> slices(x.nb_slices());
-  std::size_t row = 0;
-  for (std::size_t k = 0; k < x.nb_slices(); ++k) {
+  std::vector<Interval>& slices = x.data().slices;
+  std::size_t row = 0, evaluated = table.nb_rows();
+  Interval value;
+  for (std::size_t k = 0; k < slices.size(); ++k) {
     while (row + 1 < table.nb_rows() && pts[row + 1] <= td.t(k)) ++row;
-    const std::vector<double>& values = table.row(row);
-    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
-    args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
-    slices[k] = x.slice(k) & f.eval(args);
+    if (row != evaluated) {
+      const std::vector<double>& values = table.row(row);
+      for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+      args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
+      value = f.eval(args);
+      evaluated = row;
+    }
+    slices[k] &= value;
   }
-  std::vector<Interval> gates(slices.size() + 1);
-  for (std::size_t k = 0; k < gates.size(); ++k)
-    gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < slices.size() ? slices[k] : slices[k - 1]);
-  x = Tube(x.tdomain(), slices, gates);
+  std::vector<Interval>& gates = x.data().gates;
+  const std::size_t n = slices.size();
+  for (std::size_t k = 0; k <= n; ++k) gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < n ? slices[k] : slices[k - 1]);
+  x.touch();
 }
 
 // The gate at each time point of the table's stamps from its row (gates =
@@ -131,8 +141,29 @@ void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
   }
 }
 
+// Whether the expression names the variable t (an identifier token).
+bool names_t(const std::string& e) {
+  const auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < e.size(); ++i)
+    if (e[i] == 't' && (i == 0 || !ident(e[i - 1])) && (i + 1 == e.size() || !ident(e[i + 1]))) return true;
+  return false;
+}
+
+// A bound without t, or nothing: one interval for every slice and gate.
+std::optional<Interval> constant_bound(const BoundSpec& b) {
+  if (b.expr.empty()) return Interval();
+  if (names_t(b.expr)) return std::nullopt;
+  try {
+    return detail::unknown_where_undefined(Function(std::vector<std::string>{}, b.expr).eval(IntervalVector(0)));
+  } catch (const ParseError&) {
+    return std::nullopt;  // Function({"t"}, ...) says what is wrong
+  }
+}
+
+// A constant bound is evaluated once, not at each of the slices and gates
+// (the same values as Tube(td, f)).
 Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
-  if (b.expr.empty()) return Tube(td);
+  if (const std::optional<Interval> c = constant_bound(b)) return Tube(td, *c);
   return Tube(td, Function({"t"}, b.expr));
 }
 
