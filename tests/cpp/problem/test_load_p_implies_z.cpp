@@ -84,7 +84,9 @@ TEST(LoadPImpliesZ, SameTubesAsTheHandWrittenNetwork) {
   for (std::size_t i = 0; i < 2; ++i)
     for (std::size_t k = 0; k <= q.nb_slices(); ++k) {
       ASSERT_EQ(q[i].gate(k), (*p)[i].gate(k)) << i << " gate " << k;
-      if (k < q.nb_slices()) ASSERT_EQ(q[i].slice(k), (*p)[i].slice(k)) << i << " slice " << k;
+      if (k < q.nb_slices()) {
+        ASSERT_EQ(q[i].slice(k), (*p)[i].slice(k)) << i << " slice " << k;
+      }
     }
 }
 
