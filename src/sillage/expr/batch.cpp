@@ -7,6 +7,7 @@
 #include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/op_eval.h"
 #include "sillage/expr/tape.h"
+#include "sillage/interval/trig_batch.h"
 
 namespace sillage::detail {
 
@@ -24,7 +25,8 @@ template <class F>
   for (std::size_t i = 0; i < count; ++i) r[i] = f(a[i], b[i]);
 }
 
-// Row k of the batch; + − × by the kernels of the rounding policy (Ops, batch_kernels.h).
+// Row k of the batch; + − × ÷ x² √ by the kernels of the rounding policy (Ops,
+// batch_kernels.h), sin and cos by the vectorised rows of trig_batch.h.
 template <class Ops>
 void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b, std::size_t cnt) {
   using I = const Interval&;
@@ -32,14 +34,16 @@ void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b
     case Op::Add: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::add(x, y); });
     case Op::Sub: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::sub(x, y); });
     case Op::Mul: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::mul(x, y); });
-    case Op::Div: return binary_loop(r, a, b, cnt, [](I x, I y) { return x / y; });
+    case Op::Div: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::div(x, y); });
     case Op::Neg: return unary_loop(r, a, cnt, [](I x) { return -x; });
-    case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return sqr(x); });
-    case Op::PowInt: return unary_loop(r, a, cnt, [n = in.n](I x) { return pow_int(x, n); });
-    case Op::Sqrt: return unary_loop(r, a, cnt, [](I x) { return sqrt(x); });
+    case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return Ops::sqr(x); });
+    case Op::PowInt:
+      if (in.n == 2) return unary_loop(r, a, cnt, [](I x) { return Ops::sqr(x); });
+      return unary_loop(r, a, cnt, [n = in.n](I x) { return pow_int(x, n); });
+    case Op::Sqrt: return unary_loop(r, a, cnt, [](I x) { return Ops::sqrt(x); });
     case Op::Exp: return unary_loop(r, a, cnt, [](I x) { return exp(x); });
-    case Op::Sin: return unary_loop(r, a, cnt, [](I x) { return sin(x); });
-    case Op::Cos: return unary_loop(r, a, cnt, [](I x) { return cos(x); });
+    case Op::Sin: return sin_rows(a, r, cnt);
+    case Op::Cos: return cos_rows(a, r, cnt);
     default:  // the rarer operations share the generic switch
       if (op_arity(in.op) == 2) {
         for (std::size_t i = 0; i < cnt; ++i) r[i] = eval_op(in.op, a[i], b[i], in.n);
@@ -53,11 +57,19 @@ void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b
 template <class Ops>
 void forward_rows(const Tape& t, const Interval* const* xs, std::size_t count, Interval* rows, Interval* const* out) {
   thread_local std::vector<const Interval*> row;
+  thread_local std::vector<Interval*> dest;  // where row k is written: an output column or the rows
   row.assign(t.code().size(), nullptr);
+  dest.assign(t.code().size(), nullptr);
   for (std::size_t k = 0; k < t.nb_vars(); ++k) row[k] = xs[k];
+  if (out) {  // an output computed by an instruction goes straight to its column (no copy)
+    for (std::size_t o = 0; o < t.outputs().size(); ++o) {
+      const std::uint32_t k = t.outputs()[o];
+      if (k >= t.nb_vars() && !dest[k]) dest[k] = out[o];
+    }
+  }
   for (std::size_t k = t.nb_vars(); k < t.code().size(); ++k) {
     const Instr& in = t.code()[k];
-    Interval* r = rows + k * count;
+    Interval* r = dest[k] ? dest[k] : rows + k * count;
     row[k] = r;
     if (in.op == Op::Const) {
       std::fill(r, r + count, in.value);
@@ -66,7 +78,8 @@ void forward_rows(const Tape& t, const Interval* const* xs, std::size_t count, I
     }
   }
   if (!out) return;
-  for (std::size_t o = 0; o < t.outputs().size(); ++o) std::copy(row[t.outputs()[o]], row[t.outputs()[o]] + count, out[o]);
+  for (std::size_t o = 0; o < t.outputs().size(); ++o)
+    if (row[t.outputs()[o]] != out[o]) std::copy(row[t.outputs()[o]], row[t.outputs()[o]] + count, out[o]);
 }
 
 }  // namespace
