@@ -169,3 +169,10 @@ TEST(BatchBitwise, GenericOperations) {
   check(Function({"y", "a", "b"}, "y - a^3 + min(a, b) - max(a, -b) + tanh(b)"), IntervalVector{band}, 8);
   check(Function({"y", "a", "b"}, "(y - atan(a), -a - b)"), IntervalVector{band, Interval(0, 2)}, 9);
 }
+
+// Outputs that are a variable, a constant, or the same node twice: each
+// column gets its row (an output row is written straight to its column).
+TEST(BatchBitwise, OutputsSharingRows) {
+  check(Function({"y", "a", "b"}, "(a, 3, a * b + y, a * b + y, y - 2 / b)"),
+        IntervalVector{Interval(-1, 1), Interval(3.0), Interval(-2, 2), Interval(-2, 2), Interval(-1, 1)}, 10);
+}
