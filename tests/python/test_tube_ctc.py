@@ -42,8 +42,11 @@ def test_speed_heading():
     x3, x4, v = Tube(td, "t/10 + [-0.01, 0.01]"), Tube(td, "2 + t + [-0.01, 0.01]"), Tube(td)
     c = CtcFunction(Function(["x3", "x4", "v"], "x4*cos(x3) - v"))
     c.contract(x3, x4, v)
+    # Up to rounding: the pointwise cos rows (batch kernel) may differ from cos by a few ulps.
     for k in range(td.nb_slices()):
-        assert v.slice(k) == x4.slice(k) * sillage.cos(x3.slice(k))
+        got, expected = v.slice(k), x4.slice(k) * sillage.cos(x3.slice(k))
+        assert abs(got.lb() - expected.lb()) <= 1e-14 * abs(expected.lb())
+        assert abs(got.ub() - expected.ub()) <= 1e-14 * abs(expected.ub())
 
 
 def test_tubevector_and_components():

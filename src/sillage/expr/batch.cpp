@@ -7,6 +7,7 @@
 #include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/op_eval.h"
 #include "sillage/expr/tape.h"
+#include "sillage/interval/trig_batch.h"
 
 namespace sillage::detail {
 
@@ -24,22 +25,35 @@ template <class F>
   for (std::size_t i = 0; i < count; ++i) r[i] = f(a[i], b[i]);
 }
 
-// Row k of the batch; + − × by the kernels of the rounding policy (Ops, batch_kernels.h).
+// + − × ÷: their rows read a constant operand once (ca, cb: the constant
+// instruction of operand a or b, or null), not from a filled row.
+bool reads_constant_once(Op op) { return op == Op::Add || op == Op::Sub || op == Op::Mul || op == Op::Div; }
+
+// Row k of the batch; + − × ÷ x² √ by the kernels of the rounding policy (Ops,
+// batch_kernels.h), sin and cos by the vectorised rows of trig_batch.h.
 template <class Ops>
-void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b, std::size_t cnt) {
+void eval_row(const Instr& in, const Instr* ca, const Instr* cb, Interval* r, const Interval* a, const Interval* b,
+              std::size_t cnt) {
   using I = const Interval&;
+  const auto arith = [&](auto f) {
+    if (cb) return unary_loop(r, a, cnt, [c = cb->value, f](I x) { return f(x, c); });
+    if (ca) return unary_loop(r, b, cnt, [c = ca->value, f](I y) { return f(c, y); });
+    binary_loop(r, a, b, cnt, f);
+  };
   switch (in.op) {
-    case Op::Add: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::add(x, y); });
-    case Op::Sub: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::sub(x, y); });
-    case Op::Mul: return binary_loop(r, a, b, cnt, [](I x, I y) { return Ops::mul(x, y); });
-    case Op::Div: return binary_loop(r, a, b, cnt, [](I x, I y) { return x / y; });
+    case Op::Add: return arith([](I x, I y) { return Ops::add(x, y); });
+    case Op::Sub: return arith([](I x, I y) { return Ops::sub(x, y); });
+    case Op::Mul: return arith([](I x, I y) { return Ops::mul(x, y); });
+    case Op::Div: return arith([](I x, I y) { return Ops::div(x, y); });
     case Op::Neg: return unary_loop(r, a, cnt, [](I x) { return -x; });
-    case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return sqr(x); });
-    case Op::PowInt: return unary_loop(r, a, cnt, [n = in.n](I x) { return pow_int(x, n); });
-    case Op::Sqrt: return unary_loop(r, a, cnt, [](I x) { return sqrt(x); });
+    case Op::Sqr: return unary_loop(r, a, cnt, [](I x) { return Ops::sqr(x); });
+    case Op::PowInt:
+      if (in.n == 2) return unary_loop(r, a, cnt, [](I x) { return Ops::sqr(x); });
+      return unary_loop(r, a, cnt, [n = in.n](I x) { return pow_int(x, n); });
+    case Op::Sqrt: return unary_loop(r, a, cnt, [](I x) { return Ops::sqrt(x); });
     case Op::Exp: return unary_loop(r, a, cnt, [](I x) { return exp(x); });
-    case Op::Sin: return unary_loop(r, a, cnt, [](I x) { return sin(x); });
-    case Op::Cos: return unary_loop(r, a, cnt, [](I x) { return cos(x); });
+    case Op::Sin: return sin_rows(a, r, cnt);
+    case Op::Cos: return cos_rows(a, r, cnt);
     default:  // the rarer operations share the generic switch
       if (op_arity(in.op) == 2) {
         for (std::size_t i = 0; i < cnt; ++i) r[i] = eval_op(in.op, a[i], b[i], in.n);
@@ -52,21 +66,47 @@ void eval_row(const Instr& in, Interval* r, const Interval* a, const Interval* b
 // Tape::forward_batch with the interval operations Ops.
 template <class Ops>
 void forward_rows(const Tape& t, const Interval* const* xs, std::size_t count, Interval* rows, Interval* const* out) {
+  const std::vector<Instr>& code = t.code();
   thread_local std::vector<const Interval*> row;
-  row.assign(t.code().size(), nullptr);
+  thread_local std::vector<Interval*> dest;  // where row k is written: an output column or the rows
+  thread_local std::vector<std::uint8_t> filled;  // constant k needs its row filled
+  row.assign(code.size(), nullptr);
+  dest.assign(code.size(), nullptr);
+  // The HC4 (out null) reads and contracts every row afterwards; an
+  // evaluation needs a constant's row only where an operation reads it.
+  filled.assign(code.size(), out ? 0 : 1);
+  const auto is_const = [&](std::uint32_t k) { return code[k].op == Op::Const; };
+  for (std::size_t k = t.nb_vars(); k < code.size(); ++k) {
+    const Instr& in = code[k];
+    if (in.op == Op::Const) continue;
+    const bool once = reads_constant_once(in.op);
+    if (!once || (is_const(in.a) && is_const(in.b))) filled[in.a] = 1;
+    if (op_arity(in.op) == 2 && !(once && is_const(in.b))) filled[in.b] = 1;
+  }
   for (std::size_t k = 0; k < t.nb_vars(); ++k) row[k] = xs[k];
-  for (std::size_t k = t.nb_vars(); k < t.code().size(); ++k) {
-    const Instr& in = t.code()[k];
-    Interval* r = rows + k * count;
+  if (out) {  // an output computed by an instruction goes straight to its column (no copy)
+    for (std::size_t o = 0; o < t.outputs().size(); ++o) {
+      const std::uint32_t k = t.outputs()[o];
+      filled[k] = 1;
+      if (k >= t.nb_vars() && !dest[k]) dest[k] = out[o];
+    }
+  }
+  for (std::size_t k = t.nb_vars(); k < code.size(); ++k) {
+    const Instr& in = code[k];
+    Interval* r = dest[k] ? dest[k] : rows + k * count;
     row[k] = r;
     if (in.op == Op::Const) {
-      std::fill(r, r + count, in.value);
+      if (filled[k]) std::fill(r, r + count, in.value);
     } else {
-      eval_row<Ops>(in, r, row[in.a], row[in.b], count);
+      const bool once = reads_constant_once(in.op);
+      const Instr* cb = once && is_const(in.b) ? &code[in.b] : nullptr;
+      const Instr* ca = once && !cb && is_const(in.a) ? &code[in.a] : nullptr;
+      eval_row<Ops>(in, ca, cb, r, row[in.a], row[in.b], count);
     }
   }
   if (!out) return;
-  for (std::size_t o = 0; o < t.outputs().size(); ++o) std::copy(row[t.outputs()[o]], row[t.outputs()[o]] + count, out[o]);
+  for (std::size_t o = 0; o < t.outputs().size(); ++o)
+    if (row[t.outputs()[o]] != out[o]) std::copy(row[t.outputs()[o]], row[t.outputs()[o]] + count, out[o]);
 }
 
 }  // namespace

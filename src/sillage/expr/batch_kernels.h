@@ -1,5 +1,5 @@
 #pragma once
-// Interval +, − and × for the row loops of the batch evaluator and of the
+// Interval +, −, ×, ÷, x² and √ for the row loops of the batch evaluator and of the
 // batch HC4 (internal header): the bounds come from a rounding policy of
 // rounding_policies.h, inlined and without a branch on the rounding error
 // (the branch of rounding.h is mispredicted every other time on real data).
@@ -11,7 +11,9 @@
 //    -0 for a tiny negative product);
 //  - × takes the policy only where it is exact (HardRounding: correctly
 //    rounded, as rounding.h); SoftRounding steps one ulp too far below
-//    2^-968, so its × stays that of interval.h.
+//    2^-968, so its × stays that of interval.h;
+//  - ÷, x² and √ are the kernels of interval.h's operators (arith_kernels.h)
+//    on the same path, inlined.
 // ScalarOps are the operations of interval.h themselves, for one box.
 #include <type_traits>
 
@@ -24,6 +26,9 @@ struct ScalarOps {
   static Interval add(const Interval& x, const Interval& y) { return x + y; }
   static Interval sub(const Interval& x, const Interval& y) { return x - y; }
   static Interval mul(const Interval& x, const Interval& y) { return x * y; }
+  static Interval div(const Interval& x, const Interval& y) { return x / y; }
+  static Interval sqr(const Interval& x) { return sillage::sqr(x); }
+  static Interval sqrt(const Interval& x) { return sillage::sqrt(x); }
 };
 
 template <class R>
@@ -62,8 +67,17 @@ struct RoundedOps {
     }
   }
 
+  static Interval div(const Interval& x, const Interval& y) {
+    return of(div_bounds<Kernel>(x.lb(), x.ub(), y.lb(), y.ub()));
+  }
+  static Interval sqr(const Interval& x) { return of(sqr_bounds<Kernel>(x.lb(), x.ub())); }
+  static Interval sqrt(const Interval& x) { return of(sqrt_bounds<Kernel>(x.lb(), x.ub())); }
+
  private:
   static constexpr bool kExactMul = !std::is_same_v<R, SoftRounding>;
+  // The policy of interval.h's operators on this path (with_rounding in arith_kernels.h).
+  using Kernel = std::conditional_t<std::is_same_v<R, SoftRounding>, BranchFreeRounding, R>;
+  static Interval of(BoundPair b) { return Interval::from_bounds_unchecked(b.lo, b.hi); }
 };
 
 // f(ops) with the operations of the rounding policy in use (hardware_rounding()).

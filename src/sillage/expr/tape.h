@@ -52,7 +52,8 @@ class Tape {
                       bool skip_idle = true) const;
   // Batch: xs[i] are columns of `count` intervals; rows (size() * count
   // intervals) receives row k = instruction k for k >= nb_vars(); out[k]
-  // (if out is not null) receives output k.
+  // (if out is not null, not overlapping xs) receives output k, and then the
+  // row of an instruction that is an output is written there, not in rows.
   void forward_batch(const Interval* const* xs, std::size_t count, Interval* rows, Interval* const* out) const;
 
  private:

@@ -1,7 +1,8 @@
 #include "sillage/tube/time_box_ctc.h"
 
+#include <algorithm>
+
 #include "sillage/ctc/ctc_function.h"
-#include "sillage/tube/tube_atoms.h"
 
 namespace sillage::detail {
 
@@ -35,11 +36,20 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
                                    const TimeChange& changed) {
   const std::size_t n = vars.size();
   const auto* f = dynamic_cast<const CtcFunction*>(&ctc);
+  // Each tube's slices and gates (null for a constant), read in place: the
+  // storage does not move during the contraction.
+  std::vector<Interval*> slices(n, nullptr), gates(n, nullptr);
   bool constants = false;
-  std::size_t last = 0;  // the last atom (gate N)
-  for (const TimeVar& x : vars) {
-    constants = constants || !x.tube;
-    if (x.tube) last = 2 * x.tube->nb_slices();
+  std::size_t nb_slices = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!vars[v].tube) {
+      constants = true;
+      continue;
+    }
+    TubeData& d = vars[v].tube->data();
+    slices[v] = d.slices.data();
+    gates[v] = d.gates.data();
+    nb_slices = d.slices.size();
   }
   const std::size_t chunk = constants ? 1 : kChunk;
   std::vector<Interval> box(n * chunk);  // the tubes keep the values before contraction
@@ -55,6 +65,8 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
     touched[v] = 1;
   };
   // Slices first, then gates (which are intersected with their slices).
+  // Within a chunk the boxes are read and written variable by variable (one
+  // column at a time); each variable still sees its atoms in order.
   for (const int parity : {1, 0}) {
     for (auto next = atoms.begin(); next != atoms.end();) {
       ids.clear();
@@ -62,46 +74,54 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
         if (static_cast<int>(*next & 1) == parity) ids.push_back(*next);
       if (ids.empty()) break;
       const std::size_t c = ids.size();
-      // Gather: box j in column layout, variable v at v * c + j.
-      for (std::size_t j = 0; j < c; ++j) {
-        const std::size_t i = ids[j];
-        for (std::size_t v = 0; v < n; ++v) {
-          if (!vars[v].tube) {
-            box[v * c + j] = params[vars[v].param];
+      for (std::size_t v = 0; v < n; ++v) {
+        Interval* const col = box.data() + v * c;
+        if (!slices[v]) {
+          std::fill(col, col + c, params[vars[v].param]);
+          continue;
+        }
+        Interval* const elems = parity == 1 ? slices[v] : gates[v];
+        for (std::size_t j = 0; j < c; ++j) {
+          const std::size_t k = ids[j] / 2;
+          Interval& x = elems[k];
+          if (parity == 1) {
+            col[j] = x;
             continue;
           }
-          TubeData& d = vars[v].tube->data();
-          Interval& x = TubeAtoms::time_atom(d, i);
-          if (parity == 0) {  // x(t_k) lies in both neighbouring slices
-            Interval h = x;
-            if (i > 0) h &= d.slices[i / 2 - 1];
-            if (i < last) h &= d.slices[i / 2];
-            if (h != x) narrow(v, i, x, x, h);
-          }
-          box[v * c + j] = x;
+          Interval h = x;  // x(t_k) lies in both neighbouring slices
+          if (k > 0) h &= slices[v][k - 1];
+          if (k < nb_slices) h &= slices[v][k];
+          if (h != x) narrow(v, ids[j], x, x, h);
+          col[j] = h;
         }
       }
       contract_boxes(ctc, f, box, c);
-      // Scatter, in order: a box proven empty stops there.
-      for (std::size_t j = 0; j < c; ++j) {
-        const std::size_t i = ids[j];
-        bool ok = true;
-        for (std::size_t v = 0; v < n; ++v) ok = ok && !box[v * c + j].is_empty();
-        for (std::size_t v = 0; v < n; ++v) {
-          const Interval got = ok ? box[v * c + j] : Interval::empty();
-          if (!vars[v].tube) {
-            params[vars[v].param] &= got;
-            continue;
-          }
-          Interval& x = TubeAtoms::time_atom(vars[v].tube->data(), i);
-          const Interval now = x & got;
-          if (now != x) narrow(v, i, x, x, now);
+      // The boxes before the first one proven empty are written back; that one stops there.
+      std::size_t stop = c;
+      for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t j = 0; j < stop; ++j)
+          if (box[v * c + j].is_empty()) stop = j;
+      for (std::size_t v = 0; v < n; ++v) {
+        const Interval* const col = box.data() + v * c;
+        if (!slices[v]) {
+          for (std::size_t j = 0; j < stop; ++j) params[vars[v].param] &= col[j];
+          continue;
         }
-        if (!ok) {
-          params.set_empty();
-          touch();
-          return i;
+        Interval* const elems = parity == 1 ? slices[v] : gates[v];
+        for (std::size_t j = 0; j < stop; ++j) {
+          Interval& x = elems[ids[j] / 2];
+          const Interval now = x & col[j];
+          if (now != x) narrow(v, ids[j], x, x, now);
         }
+        if (stop < c) {
+          Interval& x = elems[ids[stop] / 2];
+          if (!x.is_empty()) narrow(v, ids[stop], x, x, Interval::empty());
+        }
+      }
+      if (stop < c) {
+        params.set_empty();
+        touch();
+        return ids[stop];
       }
     }
   }

@@ -1,5 +1,6 @@
 #include "sillage/tube/tube.h"
 #include "sillage/tube/synthesis_tree.h"
+#include "sillage/tube/tdomain_eval.h"
 
 #include <algorithm>
 #include <cmath>
@@ -95,19 +96,15 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::string& expr_of_t)
 namespace detail {
 
 std::vector<std::vector<Interval>> eval_over_tdomain(const TDomain& td, const Function& f) {
-  // One batch: the N slice domains then the N+1 gate times.
+  // The N slice domains then the N+1 gate times.
   const std::size_t n = td.nb_slices(), m = f.image_dim();
-  std::vector<Interval> in(2 * n + 1);
-  const auto times = td.times();
-  for (std::size_t k = 0; k < n; ++k) in[k] = Interval(times[k], times[k + 1]);
-  for (std::size_t k = 0; k <= n; ++k) in[n + k] = Interval(times[k]);
-  std::vector<std::vector<Interval>> out(m, std::vector<Interval>(in.size()));
-  std::vector<Interval*> ys(m);
-  for (std::size_t i = 0; i < m; ++i) ys[i] = out[i].data();
-  const Interval* xs[1] = {in.data()};
-  f.eval_batch(std::span<const Interval* const>(xs, 1), in.size(), std::span<Interval* const>(ys));
-  for (auto& o : out)
-    for (Interval& y : o) y = unknown_where_undefined(y);
+  std::vector<std::vector<Interval>> out(m, std::vector<Interval>(2 * n + 1));
+  std::vector<Interval*> slices(m), gates(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    slices[i] = out[i].data();
+    gates[i] = out[i].data() + n;
+  }
+  eval_into_tubes(td, f, slices, gates);
   return out;
 }
 
@@ -120,10 +117,12 @@ Tube::Tube(std::shared_ptr<TDomain> td, const Function& f) : td_(std::move(td)) 
                          std::to_string(f.nb_vars()) + " variable(s) and " + std::to_string(f.image_dim()) +
                          " output(s)");
   }
-  const std::vector<Interval> out = std::move(detail::eval_over_tdomain(*td_, f).front());
   data_ = std::make_shared<TubeData>();
-  data_->slices.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n));
-  data_->gates.assign(out.begin() + static_cast<std::ptrdiff_t>(n), out.end());
+  data_->slices.resize(n);
+  data_->gates.resize(n + 1);
+  Interval* const slices[1] = {data_->slices.data()};
+  Interval* const gates[1] = {data_->gates.data()};
+  detail::eval_into_tubes(*td_, f, slices, gates);
   td_->attach(data_);
 }
 

@@ -11,6 +11,7 @@
 
 #include "mpfr_oracle.h"
 #include "sillage/interval/elementary.h"
+#include "sillage/interval/trig_batch.h"
 
 using namespace oracle;
 using sillage::Interval;
@@ -127,11 +128,11 @@ int residues_inside(const TrigTable& t, std::int64_t i, std::int64_t j) {
 }
 
 template <class Ours, class Exact>
-void sweep(const char* name, std::uint64_t seed, Ours&& ours, Exact&& expected) {
+void sweep(const char* name, std::uint64_t seed, Ours&& ours, Exact&& expected, int max_ulps = kMaxUlps) {
   DoubleRange range;
   const TrigTable& t = table();
   Gen g(seed);
-  Checker c(name, kMaxUlps);
+  Checker c(name, max_ulps);
   for_each_pair(t.x, kCases, g, [&](std::int64_t i, std::int64_t j) {
     const Interval x(t.x[i], t.x[j]);
     c.check(ours(x), expected(t, i, j, residues_inside(t, i, j)), [&] { return std::string("(") + hex(x) + ")"; });
@@ -165,4 +166,83 @@ TEST(MpfrTrig, Tan) {
           if (set < 0 || (set & 0b1010) != 0) return Expected::of(-kInf, kInf);  // a pole inside
           return Expected::of(t.t[i].down, t.t[j].up);
         });
+}
+
+// The rows of the batch evaluator (trig_batch.h): enclosures within 8 ulps
+// of the optimal ones on the kernel's lanes (relative widening 2^-50), the
+// scalar functions elsewhere.
+namespace {
+
+constexpr int kRowUlps = 8;
+
+Interval sin_row(const Interval& x) {
+  Interval r;
+  sillage::detail::sin_rows(&x, &r, 1);
+  return r;
+}
+
+Interval cos_row(const Interval& x) {
+  Interval r;
+  sillage::detail::cos_rows(&x, &r, 1);
+  return r;
+}
+
+}  // namespace
+
+TEST(MpfrTrig, SinRows) {
+  sweep("sin rows", 0x7419005, sin_row,
+        [](const TrigTable& t, std::int64_t i, std::int64_t j, int set) { return wave(t.s, i, j, set, 1, 3); }, kRowUlps);
+}
+
+TEST(MpfrTrig, CosRows) {
+  sweep("cos rows", 0x7419006, cos_row,
+        [](const TrigTable& t, std::int64_t i, std::int64_t j, int set) { return wave(t.c, i, j, set, 0, 2); }, kRowUlps);
+}
+
+// The value kernel on every pool point it covers: enclosing bounds, the
+// quadrant of the exact reduction, and a share of covered points large
+// enough that the sweeps above exercise it.
+TEST(MpfrTrig, RowKernelValues) {
+  DoubleRange range;
+  const TrigTable& t = table();
+  const std::size_t n = t.x.size();
+  std::vector<double> lo(n), hi(n), quad(n), fast(n);
+  std::size_t covered = 0, moderate = 0;
+  std::uint64_t worst = 0;
+  for (const bool cosine : {false, true}) {
+    sillage::detail::trig_values(t.x.data(), n, cosine, lo.data(), hi.data(), quad.data(), fast.data());
+    const std::vector<Bounds>& f = cosine ? t.c : t.s;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (std::fabs(t.x[i]) >= 1e-6 && std::fabs(t.x[i]) <= 1e4) ++moderate;
+      if (fast[i] == 0) continue;
+      ++covered;
+      ASSERT_TRUE(lo[i] <= f[i].down && hi[i] >= f[i].up)
+          << (cosine ? "cos(" : "sin(") << hex(t.x[i]) << "): [" << hex(lo[i]) << ", " << hex(hi[i]) << "] misses ["
+          << hex(f[i].down) << ", " << hex(f[i].up) << "]";
+      ASSERT_EQ(static_cast<int>(quad[i]), t.k[i]) << hex(t.x[i]);
+      worst = std::max({worst, ulps_between(lo[i], f[i].down), ulps_between(hi[i], f[i].up)});
+    }
+  }
+  std::printf("[mpfr] row kernel: %zu of %zu values covered, max distance to optimal %llu ulp(s)\n", covered, 2 * n,
+              static_cast<unsigned long long>(worst));
+  EXPECT_GE(covered, moderate * 9 / 10);
+  EXPECT_LE(worst, static_cast<std::uint64_t>(kRowUlps));
+}
+
+// A row of many intervals gives each one's result alone (the lanes are independent).
+TEST(MpfrTrig, RowsOfManyIntervals) {
+  Gen g(0x7419007);
+  std::vector<Interval> x(1000), s(1000), c(1000);
+  for (Interval& v : x) {
+    const double a = g.uniform(-50, 50);
+    v = g.coin() ? Interval(a) : g.integer(0, 20) == 0 ? Interval::empty() : Interval(a, a + g.uniform(0, 4));
+  }
+  sillage::detail::sin_rows(x.data(), s.data(), x.size());
+  sillage::detail::cos_rows(x.data(), c.data(), x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    ASSERT_EQ(hex(s[i]), hex(sin_row(x[i]))) << hex(x[i]);
+    ASSERT_EQ(hex(c[i]), hex(cos_row(x[i]))) << hex(x[i]);
+  }
+  sillage::detail::cos_rows(x.data(), x.data(), x.size());  // in place
+  for (std::size_t i = 0; i < x.size(); ++i) ASSERT_EQ(hex(x[i]), hex(c[i]));
 }

@@ -12,6 +12,8 @@
 #include "sillage/tube/tube_arithmetic.h"
 #include "sillage/tube/tube_ctc.h"
 
+#include "kit/close_bounds.h"
+
 using namespace sillage;
 
 namespace {
@@ -46,11 +48,12 @@ TEST(TubeCtc, SpeedTimesCosHeading) {
   EXPECT_TRUE(contract(c, {&x3, &x4, &v}));
   EXPECT_EQ(x3, x3_0);  // nothing to learn from an unbounded v
   EXPECT_EQ(x4, x4_0);
+  // The batch's cos rows (trig_batch.h) may differ from cos by a few ulps.
   for (std::size_t k = 0; k < td->nb_slices(); ++k) {
     const Interval expect = x4.slice(k) * cos(x3.slice(k));
-    EXPECT_TRUE(expect.is_subset(v.slice(k))) << k;
-    EXPECT_TRUE(v.slice(k).is_subset(expect)) << k;
-    EXPECT_EQ(v.gate(k), v.gate(k) & (x4.gate(k) * cos(x3.gate(k))));
+    EXPECT_TRUE(test::close_bounds(v.slice(k), expect, 1e-14)) << k << ": " << v.slice(k) << " vs " << expect;
+    const Interval gate = x4.gate(k) * cos(x3.gate(k));
+    EXPECT_TRUE(test::close_bounds(v.gate(k), gate, 1e-14)) << k << ": " << v.gate(k) << " vs " << gate;
   }
   // Backward: bounding v bounds x4 (cos(x3) is about 1).
   Tube v2(td, Interval(2.0, 2.2));
