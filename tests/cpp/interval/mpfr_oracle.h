@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "kit/close_bounds.h"
 #include "sillage/interval/interval.h"
 
 namespace oracle {
@@ -107,15 +108,7 @@ inline Bounds eval2(int (*f)(mpfr_ptr, mpfr_srcptr, mpfr_srcptr, mpfr_rnd_t), do
   return rounded([&](mpfr_ptr r, mpfr_rnd_t rnd) { return f(r, xr, yr, rnd); });
 }
 
-// Position of a double on the ordered line of doubles (+0 and -0 both 0).
-inline std::int64_t ord(double x) {
-  const auto u = std::bit_cast<std::int64_t>(x);
-  return u >= 0 ? u : -(u & std::numeric_limits<std::int64_t>::max());
-}
-inline std::uint64_t ulps_between(double x, double y) {
-  const std::int64_t a = ord(x), b = ord(y);
-  return a > b ? static_cast<std::uint64_t>(a - b) : static_cast<std::uint64_t>(b - a);
-}
+using sillage::test::ulps_between;
 
 inline std::string hex(double x) {
   char buf[64];

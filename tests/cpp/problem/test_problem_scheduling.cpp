@@ -8,10 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
-#include <limits>
 
+#include "kit/close_bounds.h"
 #include "problem_text.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/report_html.h"
@@ -33,22 +32,7 @@ BuiltProblem fixed_point(const std::string& name, Scheduling s, ContractStats& s
 
 constexpr std::uint64_t kUlps = 4;
 
-// Doubles between two bounds (0 for equal ones, infinities included).
-std::uint64_t ulps(double x, double y) {
-  if (x == y) return 0;
-  const auto ord = [](double v) {
-    const auto u = std::bit_cast<std::int64_t>(v);
-    return u >= 0 ? u : -(u & std::numeric_limits<std::int64_t>::max());
-  };
-  const std::int64_t a = ord(x), b = ord(y);
-  return static_cast<std::uint64_t>(a > b ? a - b : b - a);
-}
-
-// The larger distance between two bounds in doubles; 0 for two empty sets.
-std::uint64_t ulps(const Interval& x, const Interval& y) {
-  if (x.is_empty() || y.is_empty()) return x.is_empty() && y.is_empty() ? 0 : std::numeric_limits<std::uint64_t>::max();
-  return std::max(ulps(x.lb(), y.lb()), ulps(x.ub(), y.ub()));
-}
+using test::ulps_between;
 
 }  // namespace
 
@@ -70,11 +54,11 @@ TEST(ProblemScheduling, SameFixedPointAsFifo) {
         const Tube &x = (*a.tubes)[i], &y = (*b.tubes)[i];
         ASSERT_EQ(x.nb_slices(), y.nb_slices());
         for (std::size_t k = 0; k < x.nb_slices(); ++k) {
-          ASSERT_LE(ulps(x.slice(k), y.slice(k)), kUlps) << name << " " << a.spec->name << "[" << i << "] slice " << k
+          ASSERT_LE(ulps_between(x.slice(k), y.slice(k)), kUlps) << name << " " << a.spec->name << "[" << i << "] slice " << k
                                                          << ": " << x.slice(k) << " vs " << y.slice(k);
-          ASSERT_LE(ulps(x.gate(k), y.gate(k)), kUlps) << name << " " << a.spec->name << "[" << i << "] gate " << k
+          ASSERT_LE(ulps_between(x.gate(k), y.gate(k)), kUlps) << name << " " << a.spec->name << "[" << i << "] gate " << k
                                                        << ": " << x.gate(k) << " vs " << y.gate(k);
-          worst = std::max({worst, ulps(x.slice(k), y.slice(k)), ulps(x.gate(k), y.gate(k))});
+          worst = std::max({worst, ulps_between(x.slice(k), y.slice(k)), ulps_between(x.gate(k), y.gate(k))});
           differ += x.slice(k) != y.slice(k) ? 1 : 0;
         }
       }
