@@ -120,6 +120,7 @@ int main(int argc, char** argv) {
   const auto data = example::plaza1_from_args(argc, argv, "loops_plaza1");
   if (!data) return 0;
   const example::Plaza1Data& d = *data;
+  const plaza1::Bounds b = plaza1::bounds_from_args(argc, argv, d);
   const auto td = TDomain::create(d.t);
   // eps = (tf - t0) / divisions; --eps-div sets the divisions (2000 by default).
   const std::string div_text = example::option_value(argc, argv, "--eps-div", "2000");
@@ -141,7 +142,6 @@ int main(int argc, char** argv) {
   std::printf("plaza1: %zu slices, eps = %.3f s, %zu true crossings (path thinned to 0.2 m)\n", td->nb_slices(), eps,
               crossings.size());
 
-  const plaza1::Bounds b = plaza1::bounds_from_args(argc, argv, d);
   LoopsBounds lb;
   lb.reverse_below = example::option_number(argc, argv, "--reverse-below", lb.reverse_below);
   lb.glitch_above = example::option_number(argc, argv, "--glitch-above", lb.glitch_above);

@@ -123,6 +123,13 @@ inline Bounds bounds_from_args(int argc, char** argv, const example::Plaza1Data&
       throw std::logic_error(std::string("plaza1 bound option ") + s.option + " missing from program_options()");
     }
     b.*s.field = example::option_number(argc, argv, s.option, b.*s.field);
+    // Every bound but the start's coordinates is a magnitude: a negative one is a typo, not a model.
+    const bool coordinate = s.field == &Bounds::start_x || s.field == &Bounds::start_y || s.field == &Bounds::start_heading;
+    if (!coordinate && !(b.*s.field >= 0)) {
+      example::usage_error(example::program_name(argc > 0 ? argv[0] : nullptr),
+                           std::string("option ") + s.option + " is an error bound (" + s.name + "), expected >= 0, got " +
+                               std::to_string(b.*s.field));
+    }
   }
   if (example::option_number(argc, argv, "--unknown-start", 0) != 0) b = unknown_start(b, d);
   return with_start(b, d);

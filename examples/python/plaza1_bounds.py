@@ -4,6 +4,7 @@ value is stated from the class of the robot and of its sensors, never read off t
 applied to (docs/plaza1.md). A robot of the same class drives at most 2 m/s, has a track of about
 1 m, a low-cost heading (MEMS gyro or wheel odometry), wheel odometry and an RF ranging radio,
 logged by an ordinary PC."""
+import argparse
 import bisect
 import math
 from types import SimpleNamespace
@@ -53,12 +54,21 @@ TABLE = [
 # The same table as the C++ one (plaza1_bounds.h), option for option.
 
 
+def magnitude(text):
+    """An error bound from the command line: a number >= 0 (a negative one is a typo, not a model)."""
+    value = float(text)
+    if not value >= 0:
+        raise argparse.ArgumentTypeError(f"an error bound must be >= 0, got {text}")
+    return value
+
+
 def add_options(ap):
     """One --option per bound (argparse), and --unknown-start."""
     ap.add_argument("--unknown-start", type=float, default=0, metavar="X",
                     help="1: start anywhere within 10 m of the beacons' bounding box, any heading")
     for option, attr, name, unit, value, source in TABLE:
-        ap.add_argument(option, dest=attr, type=float, default=value, metavar="X",
+        ap.add_argument(option, dest=attr, type=float if attr.startswith("start_") else magnitude, default=value,
+                        metavar="X",
                         help=f"{name} [{unit or '1'}] (default {value:g}): {source}".replace("%", "%%"))
 
 

@@ -47,3 +47,30 @@ def test_python_example_bad_options(args, _, tmp_path):
                        capture_output=True, text=True, cwd=tmp_path, timeout=60, env=env)
     assert r.returncode == 2
     assert r.stderr.startswith("usage: drifting_clock.py [-h] [--out OUT] [--dt DT] [--ratio RATIO]\n")
+
+
+# An error bound is a magnitude: a negative one is refused with status 2 before any work, in the
+# three plaza1 programs of each language (examples/cpp/plaza1_bounds.h, examples/python/plaza1_bounds.py).
+NEGATIVE = [("--turn-max", "turn rate"), ("--gyro-in-run-drift", "gyro in-run drift")]
+
+
+@pytest.mark.parametrize("option, name", NEGATIVE)
+@pytest.mark.parametrize("program", ["plaza1", "loops_plaza1", "plaza1_slam"])
+def test_cpp_plaza1_negative_bound(program, option, name, tmp_path):
+    exe = BUILD / "examples" / f"example_{program}"
+    if not exe.exists():
+        pytest.skip(f"{exe} is not built")
+    r = subprocess.run([str(exe), option, "-1"], capture_output=True, text=True, cwd=tmp_path, timeout=60)
+    assert r.returncode == 2
+    assert r.stderr.startswith(f"{program}: option {option} is an error bound ({name}), expected >= 0, got -1")
+    assert r.stdout == ""
+
+
+@pytest.mark.parametrize("option, _", NEGATIVE)
+@pytest.mark.parametrize("program", ["plaza1", "loops_plaza1", "plaza1_slam"])
+def test_python_plaza1_negative_bound(program, option, _, tmp_path):
+    env = dict(os.environ, PYTHONPATH=str(BUILD / "python"))
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "python" / f"{program}.py"), option, "-1"],
+                       capture_output=True, text=True, cwd=tmp_path, timeout=60, env=env)
+    assert r.returncode == 2
+    assert f"argument {option}: an error bound must be >= 0, got -1" in r.stderr
