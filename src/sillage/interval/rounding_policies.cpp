@@ -36,7 +36,10 @@ constinit std::atomic<bool> hardware_rounding_on{false};
 
 namespace {
 [[maybe_unused]] const bool chosen = [] {
-  hardware_rounding_on.store(hardware_rounding_available() && !portable_forced(), std::memory_order_relaxed);
+  // The variable is read on every machine, so that a wrong value is reported
+  // even where there is no hardware path to leave.
+  const bool forced = portable_forced();
+  hardware_rounding_on.store(hardware_rounding_available() && !forced, std::memory_order_relaxed);
   return true;
 }();
 }  // namespace
