@@ -7,6 +7,7 @@
 #include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/op_eval.h"
 #include "sillage/expr/tape.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/trig_batch.h"
 
 namespace sillage::detail {
@@ -29,11 +30,37 @@ template <class F>
 // instruction of operand a or b, or null), not from a filled row.
 bool reads_constant_once(Op op) { return op == Op::Add || op == Op::Sub || op == Op::Mul || op == Op::Div; }
 
+// The row of + − × ÷ x² √ by the AVX2 rows (the same bits) where the portable
+// path runs on a CPU with AVX2; false where it does not apply.
+template <class Ops>
+bool avx2_row(const Instr& in, const Instr* ca, const Instr* cb, Interval* r, const Interval* a, const Interval* b,
+              std::size_t cnt) {
+  if (!Ops::kPortable || !avx2_rows()) return false;
+  RowOp op{};
+  switch (in.op) {
+    case Op::Add: op = RowOp::Add; break;
+    case Op::Sub: op = RowOp::Sub; break;
+    case Op::Mul: op = RowOp::Mul; break;
+    case Op::Div: op = RowOp::Div; break;
+    case Op::Sqr: op = RowOp::Sqr; break;
+    case Op::PowInt:
+      if (in.n != 2) return false;
+      op = RowOp::Sqr;
+      break;
+    case Op::Sqrt: op = RowOp::Sqrt; break;
+    default: return false;
+  }
+  if (op_arity(in.op) != 2) b = a;
+  arith_rows_avx2(op, r, ca ? RowArg{&ca->value, true} : RowArg{a}, cb ? RowArg{&cb->value, true} : RowArg{b}, cnt);
+  return true;
+}
+
 // Row k of the batch; + − × ÷ x² √ by the kernels of the rounding policy (Ops,
 // batch_kernels.h), sin and cos by the vectorised rows of trig_batch.h.
 template <class Ops>
 void eval_row(const Instr& in, const Instr* ca, const Instr* cb, Interval* r, const Interval* a, const Interval* b,
               std::size_t cnt) {
+  if (avx2_row<Ops>(in, ca, cb, r, a, b, cnt)) return;
   using I = const Interval&;
   const auto arith = [&](auto f) {
     if (cb) return unary_loop(r, a, cnt, [c = cb->value, f](I x) { return f(x, c); });

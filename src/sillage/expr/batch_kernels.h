@@ -33,6 +33,9 @@ struct ScalarOps {
 
 template <class R>
 struct RoundedOps {
+  // The portable path, whose rows may also run on AVX2 (interval/arith_rows.h).
+  static constexpr bool kPortable = std::is_same_v<R, SoftRounding>;
+
   static Interval add(const Interval& x, const Interval& y) {
     if (x.is_empty() || y.is_empty()) return Interval::empty();
     return Interval::from_bounds_unchecked(R::add_down(x.lb(), y.lb()) + 0.0, R::add_up(x.ub(), y.ub()) + 0.0);

@@ -1,6 +1,6 @@
 // sin and cos over rows of intervals: one vectorisable pass computes the
-// end point values and quadrants of a block, a second combines them per
-// interval as trig.cpp does; the lanes the kernel does not cover go to the
+// end point values and quadrants of a block, a second (also vectorisable)
+// combines them per interval as trig.cpp does; the lanes the kernel does not cover go to the
 // scalar functions. The error analysis is in trig_batch.h.
 #include "sillage/interval/trig_batch.h"
 
@@ -74,47 +74,63 @@ template <std::size_t N>
 
 constexpr std::size_t kBlock = 64;  // intervals per pass (two end points each)
 
-// Rows of sin (kCos false) or cos: trig.cpp's case analysis on the kernel's values.
+// trig.cpp's case analysis of sin (kCos false) or cos on the kernel's values
+// of the end points a[j] (index j) and b[j] (index m + j), for j < m:
+// branch-free on doubles (quadrants 0..3), so that the compiler vectorises it.
+// Written out without calls (std::min, lambdas): a function with optimize()
+// attributes inlines none, and a loop with calls does not vectorise; and
+// with __restrict, as GCC gives up on checking the overlap of seven arrays.
+template <bool kCos>
+[[gnu::noinline, gnu::optimize("no-trapping-math")]] void combine(const double* __restrict ends,
+                                                                 const double* __restrict lo,
+                                                                 const double* __restrict hi,
+                                                                 const double* __restrict quad, std::size_t m,
+                                                                 double* __restrict rl, double* __restrict rh) {
+  // Maximum 1 leaving quadrant 0 (sin) / 3 (cos), minimum -1 leaving 2 / 1.
+  constexpr double kMinQuadrant = kCos ? 1.0 : 2.0, kMaxQuadrant = kCos ? 3.0 : 0.0;
+  for (std::size_t j = 0; j < m; ++j) {
+    const double a = ends[j], b = ends[m + j], qa = quad[j], qb = quad[m + j];
+    // Boundaries k pi/2 crossed: (qb - qa) mod 4, or 4 (all) when [a, b]
+    // may hold four more (see crossings() in trig.cpp); quadrant q is left
+    // when (q - qa) mod 4 < crossed.
+    const double turns = qb - qa < 0 ? qb - qa + 4.0 : qb - qa;
+    const double crossed = (b - a) * kTwoOverPi > turns + 2.5 ? 4.0 : turns;
+    const double to_min = kMinQuadrant - qa < 0 ? kMinQuadrant - qa + 4.0 : kMinQuadrant - qa;
+    const double to_max = kMaxQuadrant - qa < 0 ? kMaxQuadrant - qa + 4.0 : kMaxQuadrant - qa;
+    // std::min(x, y) is y < x ? y : x, std::max(x, y) is x < y ? y : x.
+    double l = to_min < crossed ? -1.0 : (lo[m + j] < lo[j] ? lo[m + j] : lo[j]);
+    double h = to_max < crossed ? 1.0 : (hi[j] < hi[m + j] ? hi[m + j] : hi[j]);
+    if constexpr (!kCos) {  // the same bounds by sign and size of x as trig.cpp's sin
+      h = a >= 0 && b < h ? b : h;
+      l = b <= 0 && l < a ? a : l;
+      l = a >= 0 && b <= 3 && l < 0.0 ? 0.0 : l;
+      h = b <= 0 && a >= -3 && 0.0 < h ? 0.0 : h;
+    }
+    rl[j] = (l < -1.0 ? -1.0 : l) + 0.0;
+    rh[j] = (1.0 < h ? 1.0 : h) + 0.0;
+  }
+}
+
+// Rows of sin (kCos false) or cos; the lanes the kernel does not cover by the scalar functions.
 template <bool kCos>
 void rows(const Interval* x, Interval* r, std::size_t n) {
   double ends[2 * kBlock], lo[2 * kBlock], hi[2 * kBlock], quad[2 * kBlock], fast[2 * kBlock];
-  std::size_t slow[kBlock];
+  double rl[kBlock], rh[kBlock];
   for (std::size_t start = 0; start < n; start += kBlock) {
     const std::size_t m = std::min(kBlock, n - start);
     const Interval* xb = x + start;
     Interval* rb = r + start;
     for (std::size_t j = 0; j < m; ++j) {
-      ends[2 * j] = xb[j].lb();
-      ends[2 * j + 1] = xb[j].ub();
+      ends[j] = xb[j].lb();
+      ends[m + j] = xb[j].ub();
     }
     values(ends, 2 * m, kCos ? 1.0 : 0.0, lo, hi, quad, fast);
-    std::size_t nb_slow = 0;
+    combine<kCos>(ends, lo, hi, quad, m, rl, rh);
+    for (std::size_t j = 0; j < m; ++j) rb[j] = Interval::from_bounds_unchecked(rl[j], rh[j]);
     for (std::size_t j = 0; j < m; ++j) {
-      if (fast[2 * j] + fast[2 * j + 1] != 2.0) {
-        slow[nb_slow++] = j;
-        continue;
-      }
-      const double a = ends[2 * j], b = ends[2 * j + 1];
-      const int qa = static_cast<int>(quad[2 * j]), qb = static_cast<int>(quad[2 * j + 1]);
-      // Boundaries k pi/2 crossed: (qb - qa) mod 4, or 4 (all) when [a, b]
-      // may hold four more (see crossings() in trig.cpp).
-      const int turns = (qb - qa) & 3;
-      const int crossed = (b - a) * kTwoOverPi > turns + 2.5 ? 4 : turns;
-      const auto crosses_out_of = [&](int q) { return ((q - qa) & 3) < crossed; };
-      // Maximum 1 leaving quadrant 0 (sin) / 3 (cos), minimum -1 leaving 2 / 1.
-      double l = crosses_out_of(kCos ? 1 : 2) ? -1.0 : std::min(lo[2 * j], lo[2 * j + 1]);
-      double h = crosses_out_of(kCos ? 3 : 0) ? 1.0 : std::max(hi[2 * j], hi[2 * j + 1]);
-      if constexpr (!kCos) {  // the same bounds by sign and size of x as trig.cpp's sin
-        if (a >= 0) h = std::min(h, b);
-        if (b <= 0) l = std::max(l, a);
-        if (a >= 0 && b <= 3) l = std::max(l, 0.0);
-        if (b <= 0 && a >= -3) h = std::min(h, 0.0);
-      }
-      rb[j] = Interval::from_bounds_unchecked(std::max(l, -1.0) + 0.0, std::min(h, 1.0) + 0.0);
-    }
-    for (std::size_t s = 0; s < nb_slow; ++s) {
-      const std::size_t j = slow[s];
-      rb[j] = kCos ? cos(xb[j]) : sin(xb[j]);
+      if (fast[j] + fast[m + j] == 2.0) continue;
+      const Interval xj = Interval::from_bounds_unchecked(ends[j], ends[m + j]);  // rb may be xb
+      rb[j] = kCos ? cos(xj) : sin(xj);
     }
   }
 }

@@ -2,20 +2,19 @@
 // for bit: hardware (AVX-512F, when the CPU has it), portable (branch-free
 // error-free transformations) and rounding.h's scalar functions (branches on
 // the rounding error; themselves checked against MPFR in test_mpfr_arith).
-// Adversarial operands: every interval over a list of special bounds (zeros,
-// subnormals, the 2^-968 limit of the portable path, huge, max, infinities),
-// the empty set, plus random intervals over the whole binary64 range.
+// Operands: kit/arith_samples.h.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cstdint>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "sillage/interval/arith_kernels.h"
 #include "sillage/interval/hardware_rounding.h"
 #include "sillage/interval/interval.h"
+
+#include "kit/arith_samples.h"
 
 using namespace sillage;
 using detail::BoundPair;
@@ -25,41 +24,6 @@ namespace {
 const double kInf = rounding::kInf;
 const double kMax = rounding::kMax;
 const double kTiny = std::numeric_limits<double>::denorm_min();
-
-std::vector<Interval> adversarial() {
-  const std::vector<double> v = {
-      -kInf, -kMax, -1e308, -0x1p1000, -3.0, -1.0, -0.1, -0x1.8p-968, -0x1p-968, -0x1p-1000,
-      -std::numeric_limits<double>::min(), -kTiny, 0.0, kTiny, 3 * kTiny, std::numeric_limits<double>::min(),
-      0x1p-1000, 0x1p-969, 0x1p-968, 0x1p-484, 0x1p-500, 0.1, 1.0, 1.0 + 0x1p-52, 3.0, 0x1p512, 0x1p1000,
-      1e308, kMax, kInf};
-  std::vector<Interval> r = {Interval::empty()};
-  for (double a : v)
-    for (double b : v)
-      if (a <= b && a < kInf && b > -kInf) r.push_back(Interval(a, b));
-  return r;
-}
-
-// Random bounds: any binade, both signs, some zeros and infinities.
-std::vector<Interval> random_intervals(std::size_t n) {
-  std::mt19937_64 rng(20261124);
-  std::uniform_int_distribution<int> kind(0, 19), expo(-1074, 1023);
-  std::uniform_real_distribution<double> m(1.0, 2.0);
-  auto bound = [&]() -> double {
-    const int k = kind(rng);
-    if (k == 0) return 0.0;
-    if (k == 1) return (rng() & 1) ? kInf : -kInf;
-    const double x = std::ldexp(m(rng), k < 10 ? expo(rng) : expo(rng) / 30);
-    return (rng() & 1) ? -x : x;
-  };
-  std::vector<Interval> r;
-  while (r.size() < n) {
-    double a = bound(), b = bound();
-    if (a > b) std::swap(a, b);
-    if (kind(rng) == 0) r.push_back(Interval::empty());
-    else if (a < kInf && b > -kInf) r.push_back(Interval(a, b));
-  }
-  return r;
-}
 
 std::string bits(const BoundPair& p) {
   char s[80];
@@ -97,10 +61,10 @@ void compare(const Interval& x, const Interval& y, const char* what, int& failur
 template <class R, class S>
 void compare_all(const char* what) {
   int failures = 0;
-  const auto adv = adversarial();
+  const auto adv = test::adversarial_intervals();
   for (const Interval& x : adv)
     for (const Interval& y : adv) compare<R, S>(x, y, what, failures);
-  const auto rnd = random_intervals(200'000);
+  const auto rnd = test::random_intervals(200'000);
   for (std::size_t i = 0; i + 1 < rnd.size(); ++i) compare<R, S>(rnd[i], rnd[i + 1], what, failures);
   EXPECT_EQ(failures, 0) << what;
 }

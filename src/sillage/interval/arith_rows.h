@@ -1,0 +1,36 @@
+#pragma once
+// Interval +, −, ×, ÷, x² and √ over whole rows, four intervals at a time
+// with AVX2 and FMA (internal header; arith_rows_avx2.cpp). The bounds are
+// those of Interval's portable path (BranchFreeRounding in arith_kernels.h)
+// bit for bit, signs of zero included: the same error-free transformations
+// on the same operands, lane by lane, the sign cases as blends, the step to
+// the next double as a 64-bit integer add. A block of four with a rare lane
+// (a magnitude beyond 2^±968, the *_rare predicates) is redone by
+// Interval's operators, whose exact fallback it needs.
+//
+// The library is compiled for AVX (-mfma) only: the code is compiled for
+// AVX2 in its own file and runs only where the CPU has it (avx2_rows()).
+#include <cstddef>
+#include <cstdint>
+
+#include "sillage/interval/interval.h"
+
+namespace sillage::detail {
+
+enum class RowOp : std::uint8_t { Add, Sub, Mul, Div, Sqr, Sqrt };
+
+// An operand of a row: `count` intervals, or (constant) the interval *p for every row index.
+struct RowArg {
+  const Interval* p = nullptr;
+  bool constant = false;
+};
+
+// True if this CPU runs the AVX2 rows (checked once).
+bool avx2_rows();
+
+// r[i] = a[i] op b[i] (op a[i] for x² and √; b unused) for i < count, the
+// bounds of Interval's operators on the portable rounding path. r may be a
+// or b. Call only where avx2_rows() is true.
+void arith_rows_avx2(RowOp op, Interval* r, RowArg a, RowArg b, std::size_t count);
+
+}  // namespace sillage::detail
