@@ -19,6 +19,8 @@
 // BM_<op>_kernel_mix: the same mix through the internal kernels inlined into
 // the loop, as the library's own hot loops may call them; the difference with
 // BM_<op>_sillage_mix is the cost of calling the out-of-line operator.
+// BM_<op>_rows_mix: the same pairs through the AVX2 rows of the batch
+// evaluator (interval/arith_rows.h; portable path's bits), rows of 4096.
 #include <benchmark/benchmark.h>
 
 #include <boost/numeric/interval.hpp>
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "sillage/interval/arith_kernels.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
 
@@ -204,6 +207,40 @@ SILLAGE_BENCH_KERNEL(add, add_bounds)
 SILLAGE_BENCH_KERNEL(sub, sub_bounds)
 SILLAGE_BENCH_KERNEL(mul, mul_bounds)
 SILLAGE_BENCH_KERNEL(div, div_bounds)
+
+// The pairs of binary_mix by rows of kPool: block b pairs x with y rotated by
+// 1237 b, a contiguous window of y written twice.
+void rows_mix(benchmark::State& state, sillage::detail::RowOp op) {
+  using namespace sillage::detail;
+  if (!avx2_rows()) {
+    state.SkipWithError("no AVX2 on this CPU");
+    return;
+  }
+  const std::vector<Interval>& x = mix_x();
+  std::vector<Interval> yy = mix_y(), out(kPool);
+  yy.insert(yy.end(), mix_y().begin(), mix_y().end());
+  for (auto _ : state) {
+    for (std::size_t b = 0; b < kPairs / kPool; ++b) {
+      arith_rows_avx2(op, out.data(), RowArg{x.data()}, RowArg{yy.data() + (1237 * b) % kPool}, kPool);
+      benchmark::DoNotOptimize(out.data());
+      benchmark::ClobberMemory();
+    }
+  }
+  report(state, kPairs);
+}
+
+void BM_add_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Add); }
+void BM_sub_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Sub); }
+void BM_mul_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Mul); }
+void BM_div_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Div); }
+void BM_sqr_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Sqr); }
+void BM_sqrt_rows_mix(benchmark::State& s) { rows_mix(s, sillage::detail::RowOp::Sqrt); }
+BENCHMARK(BM_add_rows_mix);
+BENCHMARK(BM_sub_rows_mix);
+BENCHMARK(BM_mul_rows_mix);
+BENCHMARK(BM_div_rows_mix);
+BENCHMARK(BM_sqr_rows_mix);
+BENCHMARK(BM_sqrt_rows_mix);
 
 #ifdef SILLAGE_BENCH_MPFI
 // ---- MPFI: C structs, results into one preallocated interval ----

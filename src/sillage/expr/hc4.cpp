@@ -14,6 +14,7 @@
 
 #include "sillage/expr/batch_kernels.h"
 #include "sillage/expr/tape.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/backward.h"
 #include "sillage/interval/backward_detail.h"
 
@@ -151,6 +152,38 @@ bool bwd_sub_with(const Interval& y_in, Interval& x1, Interval& x2) {
   return settle(x1, x2);
 }
 
+// backward_row of bwd_add_with (kSub false) or bwd_sub_with on the AVX2 rows
+// (arith_rows.h, the same bits): their two interval operations computed over
+// the whole row first (four boxes at a time; wasted on the boxes that skip),
+// then applied to the boxes the loop of backward_row would project.
+template <bool kSub>
+void add_sub_row_avx2(std::size_t count, Idle rule, Interval* r, Interval* ra, Interval* rb, const std::uint8_t* m,
+                      std::uint8_t* ma, std::uint8_t* mb, std::uint8_t* ok) {
+  thread_local std::vector<Interval> tmp;
+  tmp.resize(2 * count);
+  Interval *const x1 = tmp.data(), *const p2 = tmp.data() + count;
+  // y = a + b: a &= y - b, b &= y - a; y = a - b: a &= y + b, b &= a - y.
+  arith_rows_avx2(kSub ? RowOp::Add : RowOp::Sub, x1, RowArg{r}, RowArg{rb}, count);
+  for (std::size_t j = 0; j < count; ++j) x1[j] = ra[j] & x1[j];
+  arith_rows_avx2(RowOp::Sub, p2, RowArg{kSub ? x1 : r}, RowArg{kSub ? r : x1}, count);
+  for (std::size_t j = 0; j < count; ++j) {
+    if (!ok[j]) continue;
+    if (r[j].is_empty()) {
+      ok[j] = 0;
+      continue;
+    }
+    if (!m[j] && keeps_operands(rule, ra[j], rb[j])) continue;
+    const Interval a = x1[j], b = rb[j] & p2[j];
+    if (a.is_empty() || b.is_empty()) {  // settle()
+      ok[j] = 0;
+      continue;
+    }
+    meet(ra[j], a, ma[j]);
+    meet(rb[j], b, mb[j]);
+    if (ra[j].is_empty() || rb[j].is_empty()) ok[j] = 0;
+  }
+}
+
 // The backward pass over `count` boxes (see Tape::backward_batch); kOne: a
 // single box, for which the compiler drops the inner loops, and which keeps
 // the projections of backward.h (the reference of the batch). Ops: the
@@ -189,10 +222,12 @@ void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const In
         break;
       case Op::Add:
         if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_add(v, a, b); });
+        else if (Ops::kPortable && avx2_rows()) add_sub_row_avx2<false>(count, rule, r, ra, rb, m, ma, mb, ok);
         else binary([](I v, Interval& a, Interval& b) { return bwd_add_with<Ops>(v, a, b); });
         break;
       case Op::Sub:
         if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_sub(v, a, b); });
+        else if (Ops::kPortable && avx2_rows()) add_sub_row_avx2<true>(count, rule, r, ra, rb, m, ma, mb, ok);
         else binary([](I v, Interval& a, Interval& b) { return bwd_sub_with<Ops>(v, a, b); });
         break;
       case Op::Mul: binary([](I v, Interval& a, Interval& b) { return bwd_mul(v, a, b); }); break;
