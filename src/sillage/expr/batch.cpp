@@ -31,11 +31,11 @@ template <class F>
 bool reads_constant_once(Op op) { return op == Op::Add || op == Op::Sub || op == Op::Mul || op == Op::Div; }
 
 // The row of + − × ÷ x² √ by the AVX2 rows (the same bits) where the portable
-// path runs on a CPU with AVX2; false where it does not apply.
+// path runs on a CPU with AVX2 and the row is not short; false where it does not apply.
 template <class Ops>
 bool avx2_row(const Instr& in, const Instr* ca, const Instr* cb, Interval* r, const Interval* a, const Interval* b,
               std::size_t cnt) {
-  if (!Ops::kPortable || !avx2_rows()) return false;
+  if (!Ops::kPortable || !avx2_rows_for(cnt)) return false;
   RowOp op{};
   switch (in.op) {
     case Op::Add: op = RowOp::Add; break;

@@ -222,12 +222,12 @@ void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const In
         break;
       case Op::Add:
         if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_add(v, a, b); });
-        else if (Ops::kPortable && avx2_rows()) add_sub_row_avx2<false>(count, rule, r, ra, rb, m, ma, mb, ok);
+        else if (Ops::kPortable && avx2_rows_for(count)) add_sub_row_avx2<false>(count, rule, r, ra, rb, m, ma, mb, ok);
         else binary([](I v, Interval& a, Interval& b) { return bwd_add_with<Ops>(v, a, b); });
         break;
       case Op::Sub:
         if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_sub(v, a, b); });
-        else if (Ops::kPortable && avx2_rows()) add_sub_row_avx2<true>(count, rule, r, ra, rb, m, ma, mb, ok);
+        else if (Ops::kPortable && avx2_rows_for(count)) add_sub_row_avx2<true>(count, rule, r, ra, rb, m, ma, mb, ok);
         else binary([](I v, Interval& a, Interval& b) { return bwd_sub_with<Ops>(v, a, b); });
         break;
       case Op::Mul: binary([](I v, Interval& a, Interval& b) { return bwd_mul(v, a, b); }); break;

@@ -6,7 +6,7 @@
 // on the same operands, lane by lane, the sign cases as blends, the step to
 // the next double as a 64-bit integer add. A block of four with a rare lane
 // (a magnitude beyond 2^±968, the *_rare predicates) is redone by
-// Interval's operators, whose exact fallback it needs.
+// Interval's operators, whose exact fallback it needs; so is a tail below four.
 //
 // The library is compiled for AVX (-mfma) only: the code is compiled for
 // AVX2 in its own file and runs only where the CPU has it (avx2_rows()).
@@ -27,6 +27,11 @@ struct RowArg {
 
 // True if this CPU runs the AVX2 rows (checked once).
 bool avx2_rows();
+
+// Whether a row of `count` intervals should take the AVX2 rows: not a short
+// one (a box at a time, as the pointwise contractor with constants goes),
+// where the inlined scalar kernels cost less than the call and the tail.
+inline bool avx2_rows_for(std::size_t count) { return count >= 8 && avx2_rows(); }
 
 // r[i] = a[i] op b[i] (op a[i] for x² and √; b unused) for i < count, the
 // bounds of Interval's operators on the portable rounding path. r may be a

@@ -11,7 +11,6 @@
 #define SILLAGE_AVX2_ROWS 0
 #endif
 
-#include <algorithm>
 #include <type_traits>
 
 #include "sillage/interval/rounding.h"
@@ -230,20 +229,12 @@ SILLAGE_AVX2_INLINE void block(Interval* out, Operand x, Operand y, std::size_t 
   }
 }
 
-// Rows i < count with kernel K; a tail below four goes through a padded copy.
+// Rows i < count with kernel K; a tail below four by Interval's operators.
 template <class K>
 SILLAGE_AVX2 void rows(Interval* r, Operand a, Operand b, std::size_t count) {
   std::size_t i = 0;
   for (; i + 4 <= count; i += 4) block<K>(r, a, b, i);
-  if (i == count) return;
-  const std::size_t m = count - i;
-  Interval xa[4], xb[4], out[4];
-  for (std::size_t j = 0; j < 4; ++j) {
-    xa[j] = j < m ? a.at(i + j) : Interval(1.0);
-    xb[j] = j < m ? b.at(i + j) : Interval(1.0);
-  }
-  block<K>(out, Operand{xa, false}, Operand{xb, false}, 0);
-  std::copy(out, out + m, r + i);
+  for (; i < count; ++i) r[i] = K::scalar(a.at(i), b.at(i));
 }
 
 }  // namespace

@@ -95,9 +95,9 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
             col[j] = x;
             continue;
           }
-          Interval h = x;  // x(t_k) lies in both neighbouring slices
-          if (k > 0) h &= slices[v][k - 1];
-          if (k < nb_slices) h &= slices[v][k];
+          // x(t_k) lies in both neighbouring slices (x itself stands for a
+          // missing one: x & x is x); one expression keeps h in registers.
+          const Interval h = (x & slices[v][k > 0 ? k - 1 : k]) & (k < nb_slices ? slices[v][k] : x);
           if (h != x) narrow(v, ids[j], x, h);
           col[j] = h;
         }
