@@ -6,7 +6,7 @@
 // (seed 7, 8, ...; generation and tubes untimed), so nothing is replayed.
 // Counters: iterations of C_{p⇒z}, detections and proofs of the last
 // iteration, contraction of [p](t_f) against dead reckoning. Second argument:
-// the default mission (0) or the coastal one (1).
+// the default mission (0), the coastal one (1) or the bank one (2).
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
@@ -26,11 +26,12 @@ struct SlamInput {
   Tube z;
 };
 
-// coastal: the coastal seabed, a narrow-beam altimeter (6 deg cone) and the
-// east-west transects (docs/slam.md); otherwise the smoother default mission.
-SlamInput slam_input(std::uint64_t seed, double dt, bool coastal) {
-  BathymetryMissionOptions mo;
-  if (coastal) {
+// 1 (coastal): the coastal seabed, a narrow-beam altimeter (6 deg cone) and
+// the east-west transects (docs/slam.md); 2: bank_mission_options(); 0: the
+// smoother default mission.
+SlamInput slam_input(std::uint64_t seed, double dt, int mission) {
+  BathymetryMissionOptions mo = mission == 2 ? bank_mission_options() : BathymetryMissionOptions{};
+  if (mission == 1) {
     mo.seabed = coastal_seabed_options();
     mo.transects = true;
     mo.bounds.beam_angle = 0;
@@ -43,14 +44,15 @@ SlamInput slam_input(std::uint64_t seed, double dt, bool coastal) {
 }
 
 void BM_BathymetrySlam(benchmark::State& state) {
-  const bool accurate = state.range(0) != 0, coastal = state.range(1) != 0;
+  const bool accurate = state.range(0) != 0;
+  const int mission = static_cast<int>(state.range(1));
   const Function f({"x1", "x2", "x3", "u1", "u2", "u3"}, "(u1, u2, u3)");
   const Function h({"x1", "x2", "x3"}, "(x1, x2)");
   std::uint64_t seed = 7;
   double iterations = 0, detections = 0, proofs = 0, contraction = 0, runs = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    SlamInput in = slam_input(seed++, 1.0, coastal);
+    SlamInput in = slam_input(seed++, 1.0, mission);
     const TubeVector z(std::vector<Tube>{in.z});
     TemporalSlamOptions o;
     o.eps = 1.0;
@@ -74,7 +76,7 @@ void BM_BathymetrySlam(benchmark::State& state) {
     state.ResumeTiming();
   }
   state.SetLabel(std::string(accurate ? "accurate (from the fast fixed point)" : "fast (from dead reckoning)") +
-                 (coastal ? ", coastal mission" : ", default mission"));
+                 (mission == 2 ? ", bank mission" : mission == 1 ? ", coastal mission" : ", default mission"));
   state.counters["iterations"] = iterations / runs;
   state.counters["detections"] = detections / runs;
   state.counters["proofs"] = proofs / runs;
@@ -85,6 +87,8 @@ BENCHMARK(BM_BathymetrySlam)
     ->Args({1, 0})
     ->Args({0, 1})
     ->Args({1, 1})
+    ->Args({0, 2})
+    ->Args({1, 2})
     ->Iterations(3)
     ->Unit(benchmark::kSecond);
 

@@ -14,6 +14,8 @@
 // --beam-angle 0 --beam-spread 3 is the coastal mission (coastal seabed,
 // east-west transects, a 6 deg narrow-beam altimeter); --study 1 prints, per
 // proven detection, what limits the contraction (bathymetry_study.h) and stops.
+// --seabed 3 is the bank mission (bank_mission_options: two channel flanks
+// under the east-west transects, the narrow-beam altimeter): it contracts.
 // --tie-lines A (degrees) flies tie lines at A to the rails first, then the
 // rails back over them (docs/slam.md: measured, no better than the default).
 #include <cmath>
@@ -53,13 +55,15 @@ int main(int argc, char** argv) {
   const int scenario = static_cast<int>(example::option_number(argc, argv, "--scenario", 1));
   if (scenario != 1 && scenario != 2) example::usage_error("bathymetry_slam", "--scenario is 1 or 2");
 
-  BathymetryMissionOptions mo;
-  mo.duration = duration;
   const int seabed = static_cast<int>(example::option_number(argc, argv, "--seabed", 1));
-  if (seabed != 1 && seabed != 2) example::usage_error("bathymetry_slam", "--seabed is 1 (smooth) or 2 (coastal)");
+  if (seabed < 1 || seabed > 3)
+    example::usage_error("bathymetry_slam", "--seabed is 1 (smooth), 2 (coastal) or 3 (channel banks)");
+  // --seabed 3 is the whole bank mission (seabed, transects, narrow beam); the flags below override it.
+  BathymetryMissionOptions mo = seabed == 3 ? bank_mission_options() : BathymetryMissionOptions{};
+  mo.duration = duration;
   if (seabed == 2) mo.seabed = coastal_seabed_options();
   mo.seabed.dune_height = example::option_number(argc, argv, "--dune-height", mo.seabed.dune_height);
-  mo.transects = example::option_number(argc, argv, "--transects", 0) != 0;
+  mo.transects = example::option_number(argc, argv, "--transects", mo.transects) != 0;
   mo.tie_line_angle = example::option_number(argc, argv, "--tie-lines", 0);
   mo.seabed.relief = example::option_number(argc, argv, "--relief", 1);
   mo.depth = example::option_number(argc, argv, "--vehicle-depth", mo.depth);

@@ -2,11 +2,11 @@
 // What limits the bathymetric temporal SLAM, measured per proven detection on
 // the dead-reckoning tube (the first iteration of C_p=>z): the width of the
 // component Omega_i in t1 and t2, the fraction of its area the observation
-// removes (Omega_i minus T_z), the t1-width of the hull of what is left (what
-// the fast algorithm contracts with), and the seabed's true depth variation
-// over the t1 window against the mean gate width of [z] there. Contraction
-// needs T_z to keep a short piece of the t1 window: the seabed must vary over
-// the drift window by several gate widths of [z].
+// removes (Omega_i minus T_z), the t1- and t2-widths of the hull of what is
+// left (what the fast algorithm contracts with), and the seabed's true depth
+// variation over the t1 window against the mean gate width of [z] there.
+// Contraction needs T_z to keep a short piece of the t1 or of the t2 window:
+// the seabed must vary along one of the passes by several gate widths of [z].
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -50,9 +50,9 @@ inline double bathymetry_study(const sillage::BathymetryMission& m, const sillag
     return n ? s / static_cast<double>(n) : 0.0;
   };
   std::printf("  study: %zu detections, %zu proofs\n", tp.nb_complete_detections(), tp.nb_proofs());
-  std::printf("  %8s %8s %7s %7s %9s %9s %9s %9s\n", "t1 mid", "t2 mid", "w t1", "w t2", "removed", "b t1",
-              "dz t1 win", "gate z");
-  double removed_sum = 0;
+  std::printf("  %8s %8s %7s %7s %9s %7s %7s %9s %9s\n", "t1 mid", "t2 mid", "w t1", "w t2", "removed", "b t1",
+              "b t2", "dz t1 win", "gate z");
+  double removed_sum = 0, ratio1 = 0, ratio2 = 0;
   std::size_t n = 0;
   SiviaOptions so;
   so.parallel = false;
@@ -66,13 +66,15 @@ inline double bathymetry_study(const sillage::BathymetryMission& m, const sillag
       for (const IntervalVector& k : kernel_sivia(b, fz, eps, so).outer()) kept |= k, kept_area += box_area(k);
     }
     const double removed = area > 0 ? 1 - kept_area / area : 0;
+    const double b1 = kept.is_empty() ? 0.0 : kept[0].diam(), b2 = kept.is_empty() ? 0.0 : kept[1].diam();
     removed_sum += removed, ++n;
-    std::printf("  %8.0f %8.0f %7.0f %7.0f %8.0f%% %9.0f %9.2f %9.2f\n", hull[0].mid(), hull[1].mid(), hull[0].diam(),
-                hull[1].diam(), 100 * removed, kept.is_empty() ? 0.0 : kept[0].diam(), depth_range(hull[0]),
-                mean_gate(hull[0]));
+    ratio1 += b1 / hull[0].diam(), ratio2 += b2 / hull[1].diam();
+    std::printf("  %8.0f %8.0f %7.0f %7.0f %8.0f%% %7.0f %7.0f %9.2f %9.2f\n", hull[0].mid(), hull[1].mid(),
+                hull[0].diam(), hull[1].diam(), 100 * removed, b1, b2, depth_range(hull[0]), mean_gate(hull[0]));
   }
-  const double mean = n ? removed_sum / static_cast<double>(n) : 0;
-  std::printf("  study: mean fraction of Omega removed by T_z %.0f%% over %zu proofs\n", 100 * mean, n);
+  const double mean = n ? removed_sum / static_cast<double>(n) : 0, nn = n ? static_cast<double>(n) : 1;
+  std::printf("  study: mean fraction of Omega removed by T_z %.0f%% over %zu proofs; hull of Omega and T_z over "
+              "Omega, mean: %.2f in t1, %.2f in t2\n", 100 * mean, n, ratio1 / nn, ratio2 / nn);
   return mean;
 }
 

@@ -8,6 +8,8 @@ point; the truth is checked inside [p](.) at every gate and slice after every it
 --scenario 2 is thesis 7.3.3 (Table 7.3): the start unknown, one +-1 m fix at mid-mission.
 --coastal: the coastal seabed (sand waves, rocky outcrops), a narrow-beam altimeter and the
 east-west transects (docs/slam.md explains why it still contracts little).
+--bank: the bank mission (bank_mission_options: two channel flanks under the east-west transects,
+the narrow-beam altimeter), which contracts [p](t_f) (docs/slam.md).
 --duration shortens the mission (the demo: 1800 s); the full 5760 s run is in
 bench/bench_slam_bathymetry.cpp."""
 import argparse
@@ -47,20 +49,24 @@ def main():
     parser.add_argument("--out", default="out", help="folder for the figures")
     parser.add_argument("--duration", type=float, default=1800.0, help="mission duration (s)")
     parser.add_argument("--scenario", type=int, choices=(1, 2), default=1, help="1: start known; 2: mid fix")
-    parser.add_argument("--coastal", action="store_true",
+    seabed = parser.add_mutually_exclusive_group()
+    seabed.add_argument("--coastal", action="store_true",
                         help="coastal seabed, narrow-beam altimeter, east-west transects (docs/slam.md)")
+    seabed.add_argument("--bank", action="store_true",
+                        help="two channel flanks under the east-west transects, narrow-beam altimeter (docs/slam.md)")
     parser.add_argument("--tie-lines", type=float, default=0.0,
                         help="tie lines at this angle (deg) to the rails first, instead of the overall crossing "
                              "or the transects (docs/slam.md); 0: none")
     args = parser.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    opts = sillage.BathymetryMissionOptions()
+    opts = sillage.bank_mission_options() if args.bank else sillage.BathymetryMissionOptions()
     opts.duration = args.duration
     opts.bounds = stated_bounds()
     if args.coastal:  # sand waves and outcrops at the drift scale, a 6-degree altimeter cone
         opts.seabed = sillage.coastal_seabed_options()
         opts.transects = True
+    if args.coastal or args.bank:
         opts.bounds.beam_angle, opts.bounds.beam_spread = 0.0, bound(3.0)
     opts.tie_line_angle = args.tie_lines
     m = sillage.BathymetryMission(seed=SEED, options=opts)

@@ -198,3 +198,63 @@ def test_tie_line_layout():
         mo.tie_line_angle = bad
         with pytest.raises(sillage.Error, match="tie_line_angle"):
             sillage.BathymetryMission(seed=7, options=mo)
+
+
+def test_channel_banks_class_on_the_nodes():
+    """The bank seabed: two flanks whose stated class holds on the nodes (the flanks alone,
+    as the difference of the DEMs with and without them); ChannelBank from Python."""
+    o = sillage.bank_seabed_options()
+    banks = o.channel_banks
+    assert len(banks) == 2 and banks[0].direction == 180.0 and banks[1].direction == 90.0
+    none = sillage.bank_seabed_options()
+    none.channel_banks = []
+    s, f = sillage.generate_seabed(7, o), sillage.generate_seabed(7, none)
+    kappa = sum(0.385 * abs(b.height) / b.width ** 2 for b in banks)
+    slope = sum(abs(b.height) / (2 * b.width) for b in banks)
+    assert math.isclose(s.bounds.curvature, f.bounds.curvature + 1.01 * kappa, abs_tol=1e-12)
+    assert math.isclose(s.bounds.slope, f.bounds.slope + 1.01 * slope, abs_tol=1e-12)
+    d, q = np.asarray(s.dem.depths()) - np.asarray(f.dem.depths()), 0.001  # two millimetre roundings
+    for axis in (0, 1):
+        assert np.abs(np.diff(d, axis=axis)).max() <= slope + 2 * q
+        assert np.abs(np.diff(d, 2, axis=axis)).max() <= kappa + 4 * q
+    d10 = d[::10, ::10]  # step 10 m: the curvature shows above the rounding
+    worst = max(np.abs(np.diff(d10, 2, axis=a)).max() for a in (0, 1))
+    assert 0.3 * kappa * 100 < worst <= kappa * 100 + 4 * q
+    c = sillage.ChannelBank(height=10.0, width=20.0, direction=90.0, x=0.0, y=100.0)
+    assert "ChannelBank(" in repr(c) and "width=20" in repr(c)
+    o.channel_banks = [c]
+    assert o.channel_banks[0].width == 20.0
+    o.channel_banks = [sillage.ChannelBank(width=0.0)]
+    with pytest.raises(sillage.Error, match="channel bank"):
+        sillage.generate_seabed(7, o)
+    mo = sillage.bank_mission_options()
+    assert mo.transects and mo.bounds.beam_angle == 0.0 and len(mo.seabed.channel_banks) == 2
+
+
+def test_a_channel_flank_contracts_the_end():
+    """The twin of the C++ test (fast algorithm): a rail crossing the southern transect on a
+    flank near the end of a 2100 s mission; the truth at every gate of every iteration."""
+    mo = sillage.bank_mission_options()
+    mo.duration = 2100.0
+    mo.seabed.channel_banks = [sillage.ChannelBank(12.0, 24.0, 0.0, 385.0, 250.0)]
+    m = BathymetryMission(seed=7, options=mo)
+    td = m.tdomain(1.0)
+    w = sillage.bathymetry_velocity_tube(m, td)
+    z = sillage.TubeVector([sillage.bathymetry_observation_tube(m, td)])
+    x = sillage.bathymetry_dead_reckoning(m, td, sillage.bathymetry_initial_box(m))
+    gates = np.asarray(td.times())
+    idx = np.searchsorted(np.asarray(m.times), gates)
+    lost = []
+
+    def on_iteration(row, p):
+        for c, truth in ((0, np.asarray(m.x1)[idx]), (1, np.asarray(m.x2)[idx])):
+            g = np.asarray(p[c].gates_array())
+            lost.append(int(((truth < g[:, 0]) | (truth > g[:, 1])).sum()))
+
+    o = sillage.TemporalSlamOptions()
+    o.eps, o.accurate, o.on_iteration = 1.0, False, on_iteration
+    f = sillage.Function(["x1", "x2", "x3", "u1", "u2", "u3"], "(u1, u2, u3)")
+    h = sillage.Function(["x1", "x2", "x3"], "(x1, x2)")
+    rows = sillage.temporal_slam(x, w.copy(), w, z, f, h, o)
+    assert lost and sum(lost) == 0
+    assert rows[-1].contraction_tf > 0.10  # measured 16.4 %

@@ -55,6 +55,13 @@ struct BathymetryMissionOptions {
   BathymetrySensorBounds bounds;
 };
 
+// The bank mission: the bank seabed (bank_seabed_options), the east-west
+// transects (the southern one flown first up the western flank, the northern
+// one along the northern flank; the late rails in the west cross both) and a
+// narrow-beam altimeter (6 deg cone: the channel puts the seabed up to ~34 m
+// below the vehicle, where the 30 deg Janus footprint would blur it by metres).
+BathymetryMissionOptions bank_mission_options();
+
 // Signals at the sample times, one value per sample.
 struct BathymetrySignals {
   std::vector<double> yaw, pitch, roll;  // rad

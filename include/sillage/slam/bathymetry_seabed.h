@@ -2,7 +2,8 @@
 // A synthetic seabed like the Rade de Brest survey area (thesis Fig. 7.20),
 // deterministic from a seed: a regional slope, sandbanks, sand waves, a few
 // rocks and a smoother western part where the bathymetry carries little
-// information (the weakness of the 19 October mission, thesis 7.3.4), sampled
+// information (the weakness of the 19 October mission, thesis 7.3.4), and on
+// request channel flanks (steep monotone steps of 10-20 m), sampled
 // on a grid (BathymetryDem) with a small node roughness, quantized to the
 // millimetre as a surveyed DEM would be.
 //
@@ -13,11 +14,25 @@
 // altitude footprint filter and the observation tube rely on.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sillage/interval/interval_vector.h"
 #include "sillage/slam/bathymetry_dem.h"
 
 namespace sillage {
+
+// A channel flank: the seabed deepens by height (m) across the smooth step
+// height (1 + tanh(s / width)) / 2, s the signed distance (m) along direction
+// (deg, counter-clockwise from east: downslope) from the line through (x, y).
+// About 80 % of the drop lies within 1.1 width of that line; its steepest
+// slope is |height| / (2 width) and its curvature at most 0.385 |height| / width^2.
+struct ChannelBank {
+  double height = 15;    // m (negative: the seabed rises)
+  double width = 30;     // m
+  double direction = 0;  // deg
+  double x = 250;        // m, a point of the mid-line
+  double y = 250;        // m
+};
 
 // Options of generate_seabed (area, grid, depth, smooth strip, counts).
 struct SeabedOptions {
@@ -29,7 +44,7 @@ struct SeabedOptions {
   int nb_rocks = 7;
   // Number of sandbanks.
   int nb_banks = 2;
-  double relief = 1;          // factor on every relief amplitude (slope, banks, rocks, waves, swell)
+  double relief = 1;          // factor on every relief amplitude (slope, banks, rocks, waves, swell, flanks)
   double rock_height_min = 0.8;  // m, rocks (they stand at least 8 rock_sigma_max apart)
   double rock_height_max = 1.5;  // m
   double rock_sigma_min = 8;     // m, Gaussian sigma of a rock
@@ -38,6 +53,8 @@ struct SeabedOptions {
   // trains of wavelengths 10-16, 18-26 and 28-40 m in random directions, whose
   // amplitudes sum to dune_height (m, crest above the mean level), in the rough part.
   double dune_height = 0;
+  // Channel flanks (none by default): steep, smooth, monotone steps of the seabed.
+  std::vector<ChannelBank> channel_banks;
 };
 
 // A coastal seabed with information at the scale of the drift (tens of
@@ -45,6 +62,15 @@ struct SeabedOptions {
 // outcrops 1.5-3 m high every ~70 m in the east, the smooth western strip
 // kept. The default SeabedOptions are the smoother seabed.
 SeabedOptions coastal_seabed_options();
+
+// The bank seabed: the smoother seabed of the defaults and two flanks of a
+// channel that bends around the north-west of the area, under the transects
+// and the last rails of bank_mission_options: one drops 15 m to the west
+// across x = 110 m (width 30 m: slope up to 25 %), the other 12 m to the
+// north across y = 350 m (width 24 m: 25 %). A crossing on a flank pins the
+// position's component along its gradient; both gradients lie along the axes,
+// the only components a box holds.
+SeabedOptions bank_seabed_options();
 
 // Stated bounds of a generated seabed: curvature (Hessian norm), slope, node roughness.
 struct SeabedClass {

@@ -29,6 +29,20 @@ using Mission = BathymetryMission;
 using MissionPtr = std::shared_ptr<Mission>;
 
 void init_bathymetry_data(py::module_& m) {
+  py::class_<ChannelBank>(m, "ChannelBank", DOC(ChannelBank))
+      .def(py::init([](double height, double width, double direction, double x, double y) {
+             return ChannelBank{height, width, direction, x, y};
+           }),
+           py::arg("height") = ChannelBank{}.height, py::arg("width") = ChannelBank{}.width,
+           py::arg("direction") = ChannelBank{}.direction, py::arg("x") = ChannelBank{}.x,
+           py::arg("y") = ChannelBank{}.y, "Every field by keyword (defaults: 15 m over 30 m, downslope east, "
+           "through (250, 250)).")
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
+      .def_readwrite("height", &ChannelBank::height, DOC(ChannelBank, height))
+      .def_readwrite("width", &ChannelBank::width, DOC(ChannelBank, width))
+      .def_readwrite("direction", &ChannelBank::direction, DOC(ChannelBank, direction))
+      .def_readwrite("x", &ChannelBank::x, DOC(ChannelBank, x))
+      .def_readwrite("y", &ChannelBank::y, DOC(ChannelBank, y));
   py::class_<SeabedOptions>(m, "SeabedOptions", DOC(SeabedOptions))
       .def(py::init<>(), "Defaults: 500 m square, 1 m cells, 21 m base depth, 170 m smooth strip, 7 rocks, 2 banks.")
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
@@ -43,8 +57,11 @@ void init_bathymetry_data(py::module_& m) {
       .def_readwrite("rock_height_max", &SeabedOptions::rock_height_max, DOC(SeabedOptions, rock_height_max))
       .def_readwrite("rock_sigma_min", &SeabedOptions::rock_sigma_min, DOC(SeabedOptions, rock_sigma_min))
       .def_readwrite("rock_sigma_max", &SeabedOptions::rock_sigma_max, DOC(SeabedOptions, rock_sigma_max))
-      .def_readwrite("dune_height", &SeabedOptions::dune_height, DOC(SeabedOptions, dune_height));
+      .def_readwrite("dune_height", &SeabedOptions::dune_height, DOC(SeabedOptions, dune_height))
+      .def_readwrite("channel_banks", &SeabedOptions::channel_banks,
+                     DOC(SeabedOptions, channel_banks) "\nPython: a copy (a list); assign a new list to change it.");
   m.def("coastal_seabed_options", &coastal_seabed_options, DOC(coastal_seabed_options));
+  m.def("bank_seabed_options", &bank_seabed_options, DOC(bank_seabed_options));
   py::class_<SeabedClass>(m, "SeabedClass",
                           DOC(SeabedClass))
       .def(py::init<double, double, double>(), py::arg("curvature"), py::arg("slope"), py::arg("roughness"),
@@ -171,6 +188,7 @@ void init_bathymetry_mission(py::module_& m) {
       .def_readwrite("seabed", &BathymetryMissionOptions::seabed, DOC(BathymetryMissionOptions, seabed))
       .def_readwrite("tide", &BathymetryMissionOptions::tide, DOC(BathymetryMissionOptions, tide))
       .def_readwrite("bounds", &BathymetryMissionOptions::bounds, DOC(BathymetryMissionOptions, bounds));
+  m.def("bank_mission_options", &bank_mission_options, DOC(bank_mission_options));
 
   py::class_<BathymetrySignals>(m, "BathymetrySignals",
                                 "Signals at the sample times (numpy arrays): yaw, pitch, roll (rad), vx, vy, vz "

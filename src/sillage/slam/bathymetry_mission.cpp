@@ -129,6 +129,15 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
   }
 }
 
+BathymetryMissionOptions bank_mission_options() {
+  BathymetryMissionOptions o;
+  o.seabed = bank_seabed_options();
+  o.transects = true;
+  o.bounds.beam_angle = 0;
+  o.bounds.beam_spread = 3;
+  return o;
+}
+
 double BathymetryMission::path_length() const {
   double s = 0;
   for (std::size_t i = 1; i < x1_.size(); ++i) s += std::hypot(x1_[i] - x1_[i - 1], x2_[i] - x2_[i - 1]);

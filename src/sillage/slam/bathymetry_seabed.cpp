@@ -44,6 +44,14 @@ std::vector<Wave> dune_trains(detail::BathymetryRng rng, double height) {
   return out;
 }
 
+// A channel flank (ChannelBank): a tanh step across a straight line.
+struct Flank {
+  double amp, width, cth, sth, cx, cy;
+  double operator()(double x, double y) const {
+    return amp * (1 + std::tanh((cth * (x - cx) + sth * (y - cy)) / width)) / 2;
+  }
+};
+
 // 1 / (1 + exp(-(x - x0)/w)): 0 in the smooth west, 1 in the rough east.
 double logistic(double x, double x0, double w) { return 1 / (1 + std::exp(-(x - x0) / w)); }
 
@@ -59,6 +67,9 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
       !(o.dune_height >= 0) || !std::isfinite(o.dune_height))
     throw Error("generate_seabed: 0 <= rock_height_min <= rock_height_max, 0 < rock_sigma_min <= rock_sigma_max, "
                 "finite dune_height >= 0 expected");
+  for (const ChannelBank& b : o.channel_banks)
+    if (!std::isfinite(b.height + b.direction + b.x + b.y) || !(b.width > 0) || !std::isfinite(b.width))
+      throw Error("generate_seabed: a channel bank needs a finite height, direction, x, y and a finite width > 0");
   const double R = o.relief;  // scales every relief amplitude (and so the class bounds)
   detail::BathymetryRng rng(seed);
   const double L = o.size;
@@ -92,6 +103,12 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
   const double roughness = 0.03;
   // The dune field, from its own stream (drawn only when asked: the smoother seabed's draws are unchanged).
   const std::vector<Wave> dunes = o.dune_height > 0 ? dune_trains(rng.fork(2), R * o.dune_height) : std::vector<Wave>{};
+  // The channel flanks draw nothing: the other features of a seed are the same with or without them.
+  std::vector<Flank> flanks;
+  for (const ChannelBank& b : o.channel_banks) {
+    const double th = b.direction * kPi / 180;
+    flanks.push_back({R * b.height, b.width, std::cos(th), std::sin(th), b.x, b.y});
+  }
 
   // The class, from the parameters. Gaussian: |H| <= A/s_min^2, |grad| <= A/s_min e^{-1/2}.
   // Rocks >= 8 s_max apart: at any point all but one are >= 4 s away, each adding at most
@@ -110,6 +127,12 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
     curv += d.amp * (d.k * d.k + 2 * d.k / (4 * tw) + 0.0963 / (tw * tw));
     slope += d.amp * (d.k + 1 / (4 * tw));
   }
+  // Flank A (1 + tanh(s / w)) / 2: |grad| <= |A| / (2 w); |Hessian| = |A| |tanh''| / (2 w^2)
+  // with |tanh''| = 2 |tanh| sech^2 <= 4 / (3 sqrt 3), so <= 0.385 |A| / w^2 (2 / (3 sqrt 3) = 0.38490).
+  for (const Flank& f : flanks) {
+    slope += std::abs(f.amp) / (2 * f.width);
+    curv += 0.385 * std::abs(f.amp) / (f.width * f.width);
+  }
   // Every term rounded up by a relative margin for the floating-point evaluation.
   curv *= 1.01, slope *= 1.01;
 
@@ -122,6 +145,7 @@ Seabed generate_seabed(std::uint64_t seed, const SeabedOptions& o) {
       double d = o.base_depth + sx * x + sy * y + gamp * std::sin(gk * (x + 0.6 * y) / std::hypot(1.0, 0.6) + gph);
       for (const auto& b : banks) d += b(x, y);
       for (const auto& r : rocks) d += r(x, y);
+      for (const Flank& f : flanks) d += f(x, y);
       double waves = wamp * std::sin(kx * x + ky * y + wph);
       for (const Wave& w : dunes) waves += w(x, y);
       d += logistic(x, x_edge, tw) * waves;
@@ -139,6 +163,15 @@ SeabedOptions coastal_seabed_options() {
   o.rock_height_min = 1.5, o.rock_height_max = 3;
   o.rock_sigma_min = 5, o.rock_sigma_max = 8;
   o.dune_height = 0.9;
+  return o;
+}
+
+SeabedOptions bank_seabed_options() {
+  SeabedOptions o;
+  ChannelBank west, north;
+  west.height = 15, west.width = 30, west.direction = 180, west.x = 110, west.y = 250;
+  north.height = 12, north.width = 24, north.direction = 90, north.x = 250, north.y = 350;
+  o.channel_banks = {west, north};
   return o;
 }
 

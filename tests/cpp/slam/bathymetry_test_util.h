@@ -24,6 +24,17 @@ inline double worst_second_difference(const BathymetryDem& d) {
   return worst;
 }
 
+// Worst first difference of the nodes along x (every third row) and y (every
+// third column), in metres: at most slope h + 2 roughness for the stated class.
+inline double worst_first_difference(const BathymetryDem& d) {
+  double worst = 0;
+  for (std::size_t j = 0; j < d.ny(); j += 3)
+    for (std::size_t i = 0; i + 1 < d.nx(); ++i) worst = std::max(worst, std::abs(d.node(i + 1, j) - d.node(i, j)));
+  for (std::size_t i = 0; i < d.nx(); i += 3)
+    for (std::size_t j = 0; j + 1 < d.ny(); ++j) worst = std::max(worst, std::abs(d.node(i, j + 1) - d.node(i, j)));
+  return worst;
+}
+
 // Largest depth range over the 30 m squares of the column x0 .. x0 + 30.
 inline double local_spread(const BathymetryDem& d, double x0) {
   double worst = 0;

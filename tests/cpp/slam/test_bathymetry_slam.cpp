@@ -1,7 +1,9 @@
 // The temporal SLAM on the synthetic bathymetric mission (thesis 7.3.2, 7.3.3),
 // shortened to 1800 s: the truth inside [p] at every gate and slice of every
 // iteration, accurate never wider than fast, in both scenarios (start known;
-// start unknown with one fix at mid-mission); the SLAM figures.
+// start unknown with one fix at mid-mission); a short mission whose rail
+// crosses the southern transect on a channel flank, which contracts [p](t_f);
+// the SLAM figures.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -38,10 +40,7 @@ struct SlamRun {
   TubeVector dr, x;
 };
 
-SlamRun run(int scenario) {
-  BathymetryMissionOptions mo;
-  mo.duration = 1800;
-  static const BathymetryMission m(7, mo);
+SlamRun run(int scenario, const BathymetryMission& m, bool accurate = true) {
   const auto td = m.tdomain(1.0);
   const std::size_t N = td->nb_slices();
   const TubeVector w = bathymetry_velocity_tube(m, td);
@@ -57,6 +56,7 @@ SlamRun run(int scenario) {
   TubeVector v = w, last_fast(td, 2);
   TemporalSlamOptions o;
   o.eps = 1.0;
+  o.accurate = accurate;
   o.on_iteration = [&](const SlamRow& row, const TubeVector& p) {
     r.lost += misses(m, p);
     if (row.fast) last_fast = p;
@@ -68,10 +68,30 @@ SlamRun run(int scenario) {
   return r;
 }
 
+const BathymetryMission& default_mission() {
+  static const BathymetryMission m(7, [] {
+    BathymetryMissionOptions mo;
+    mo.duration = 1800;
+    return mo;
+  }());
+  return m;
+}
+
+// The bank mission shortened to 2100 s, with one flank (12 m over 24 m: 25 %)
+// dropping eastward across x = 385 m: the rail there crosses the southern
+// transect on it near the end (t ~ 2060 s), the transect running up the slope.
+BathymetryMissionOptions short_bank_mission(bool flank) {
+  BathymetryMissionOptions mo = bank_mission_options();
+  mo.duration = 2100;
+  mo.seabed.channel_banks.clear();
+  if (flank) mo.seabed.channel_banks.push_back(ChannelBank{12, 24, 0, 385, 250});
+  return mo;
+}
+
 }  // namespace
 
 TEST(BathymetrySlam, KnownStartKeepsTheTruthAtEveryIteration) {
-  const SlamRun r = run(1);
+  const SlamRun r = run(1, default_mission());
   ASSERT_GE(r.rows.size(), 2u);  // fast then accurate
   EXPECT_TRUE(r.rows.front().fast);
   EXPECT_FALSE(r.rows.back().fast);
@@ -86,12 +106,28 @@ TEST(BathymetrySlam, KnownStartKeepsTheTruthAtEveryIteration) {
 }
 
 TEST(BathymetrySlam, UnknownStartWithAMidFixKeepsTheTruth) {
-  const SlamRun r = run(2);
+  const SlamRun r = run(2, default_mission());
   ASSERT_GE(r.rows.size(), 2u);
   EXPECT_EQ(r.lost, 0u);
   EXPECT_EQ(r.wider, 0u);
   EXPECT_FALSE(r.x.codomain().is_unbounded());  // propagated backward to t_0 and forward to t_f
   EXPECT_LT(r.x.gate(0)[0].diam(), 50.0);
+}
+
+TEST(BathymetrySlam, AChannelFlankContractsTheEnd) {
+  // Measured 16.4 % (x at t_f 20.5 -> 13.8 m): the transect's depth along the
+  // flank pins the loop time on it to seconds, hence the rail's east.
+  const BathymetryMission m(7, short_bank_mission(true));
+  const SlamRun r = run(1, m);
+  ASSERT_GE(r.rows.size(), 2u);
+  EXPECT_FALSE(r.rows.back().fast);
+  EXPECT_EQ(r.lost, 0u);
+  EXPECT_EQ(r.wider, 0u);
+  EXPECT_GT(r.rows.back().contraction_tf, 0.10);
+  // The same mission without the flank: nothing.
+  const SlamRun flat = run(1, BathymetryMission(7, short_bank_mission(false)), false);
+  EXPECT_EQ(flat.lost, 0u);
+  EXPECT_LT(flat.rows.back().contraction_tf, 0.01);
 }
 
 TEST(SlamFigures, ThicknessAndMap) {
