@@ -91,7 +91,7 @@ TEST(CtcQEval, NetworkFormIsTheDirectCall) {
       continue;
     }
     EXPECT_TRUE(x->is_subset(direct)) << "q " << q;
-    if (s.contractor_calls == 1) EXPECT_EQ(*x, direct) << "q " << q;
+    if (s.contractor_calls == 1) { EXPECT_EQ(*x, direct) << "q " << q; }
     EXPECT_TRUE(test::holds_circle(*x)) << "q " << q;
   }
 }

@@ -118,7 +118,7 @@ TEST(LoopFunction, MemoizedFunctionAnswersTheSame) {
           }
           EXPECT_EQ(memo(box), plain(box)) << box;
           const IntervalVector point{Interval(a), Interval(b)};
-          if (a >= 0 && b <= 4) EXPECT_EQ(memo(point), plain(point)) << point;
+          if (a >= 0 && b <= 4) { EXPECT_EQ(memo(point), plain(point)) << point; }
         }
       }
     }

@@ -47,8 +47,8 @@ TEST(ProblemScheduling, SameFixedPointAsFifo) {
     ASSERT_FALSE(fs.empty || ps.empty) << name;
     for (std::size_t v = 0; v < fifo.vars.size(); ++v) {
       const VarDomain &a = fifo.vars[v], &b = prio.vars[v];
-      if (a.interval) EXPECT_EQ(*a.interval, *b.interval) << name;
-      if (a.box) EXPECT_EQ(*a.box, *b.box) << name;
+      if (a.interval) { EXPECT_EQ(*a.interval, *b.interval) << name; }
+      if (a.box) { EXPECT_EQ(*a.box, *b.box) << name; }
       if (!a.tubes) continue;
       for (std::size_t i = 0; i < a.tubes->size(); ++i) {
         const Tube &x = (*a.tubes)[i], &y = (*b.tubes)[i];
@@ -88,10 +88,10 @@ TEST(ProblemScheduling, FileKeyReachesTheNetworkAndTheReports) {
     for (std::size_t i = 0; x.tubes && i < x.tubes->size(); ++i)
       for (std::size_t k = 0; k <= (*x.tubes)[i].nb_slices(); ++k) {
         ASSERT_EQ((*x.tubes)[i].gate(k), (*y.tubes)[i].gate(k)) << x.spec->name << " gate " << k;
-        if (k < (*x.tubes)[i].nb_slices()) ASSERT_EQ((*x.tubes)[i].slice(k), (*y.tubes)[i].slice(k)) << x.spec->name;
+        if (k < (*x.tubes)[i].nb_slices()) { ASSERT_EQ((*x.tubes)[i].slice(k), (*y.tubes)[i].slice(k)) << x.spec->name; }
       }
-    if (x.interval) EXPECT_EQ(*x.interval, *y.interval) << x.spec->name;
-    if (x.box) EXPECT_EQ(*x.box, *y.box) << x.spec->name;
+    if (x.interval) { EXPECT_EQ(*x.interval, *y.interval) << x.spec->name; }
+    if (x.box) { EXPECT_EQ(*x.box, *y.box) << x.spec->name; }
   }
   EXPECT_NE(results_json(prio, b).find("\"scheduling\": \"priority\""), std::string::npos);
   EXPECT_NE(results_json(fifo, a).find("\"scheduling\": \"fifo\""), std::string::npos);
