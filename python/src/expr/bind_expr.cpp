@@ -255,7 +255,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           "eval_batch",
           [](const Function& f, const py::object& xs) {
             std::vector<IntervalVector> boxes;
-            if (py::isinstance<py::array>(xs)) {
+            if (is_ndarray(xs)) {
               boxes = boxes_from_array(xs.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(),
                                        f.nb_vars());
             } else {

@@ -105,6 +105,17 @@ Interval to_interval(const py::handle& h, const std::string& where) {
   throw Error(where + ": expected an Interval, a number or a pair [lb, ub], got " + type_name(h));
 }
 
+}  // namespace
+
+bool is_ndarray(const py::handle& h) {
+  // An array can only exist once numpy is imported; None there means "import numpy" is blocked.
+  PyObject* numpy = PyDict_GetItemString(PyImport_GetModuleDict(), "numpy");
+  if (numpy == nullptr || numpy == Py_None) return false;
+  return py::isinstance<py::array>(h);
+}
+
+namespace {
+
 IntervalVector vector_from(const py::handle& obj) {
   if (py::isinstance<IntervalVector>(obj)) return obj.cast<IntervalVector>();
   if (py::isinstance<py::int_>(obj)) {
@@ -112,7 +123,7 @@ IntervalVector vector_from(const py::handle& obj) {
     if (n < 0) throw DimensionError("IntervalVector(n): n must be >= 0, got " + std::to_string(n));
     return IntervalVector(static_cast<std::size_t>(n));
   }
-  if (py::isinstance<py::array>(obj)) {
+  if (is_ndarray(obj)) {
     const auto a = FloatArray::ensure(obj);
     if (!a) throw Error("IntervalVector: the array must hold numbers");
     if (a.ndim() == 1) {  // points
@@ -141,7 +152,7 @@ IntervalVector vector_from(const py::handle& obj) {
 
 IntervalMatrix matrix_from(const py::handle& obj) {
   if (py::isinstance<IntervalMatrix>(obj)) return obj.cast<IntervalMatrix>();
-  if (py::isinstance<py::array>(obj)) {
+  if (is_ndarray(obj)) {
     const auto a = FloatArray::ensure(obj);
     if (!a) throw Error("IntervalMatrix: the array must hold numbers");
     if (a.ndim() != 2 && !(a.ndim() == 3 && a.shape(2) == 2)) {
