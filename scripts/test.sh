@@ -6,11 +6,12 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 if [ "${SANITIZE:-0}" = "1" ]; then
   export BUILD_DIR=build-asan BUILD_TYPE=RelWithDebInfo
-  bash scripts/build.sh -DSILLAGE_SANITIZE=ON -DSILLAGE_BUILD_BENCH=OFF -DSILLAGE_BUILD_PYTHON=OFF
+  bash scripts/build.sh -DSILLAGE_SANITIZE=ON -DSILLAGE_BUILD_TESTS=ON -DSILLAGE_BUILD_BENCH=OFF -DSILLAGE_BUILD_PYTHON=OFF
   export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else
   export BUILD_DIR=build
-  bash scripts/build.sh
+  # ON explicitly: the demo leaves the tests and benchmarks OFF in the same build directory.
+  bash scripts/build.sh -DSILLAGE_BUILD_TESTS=ON -DSILLAGE_BUILD_BENCH=ON -DSILLAGE_BUILD_PYTHON=ON
 fi
 
 status=0
