@@ -245,7 +245,7 @@ def save_figures(tp, d, crossings, out, tag, name, figures):
     loop as the path over its [t1] and [t2] and as its map box (from the true start) when narrow."""
     fig, ax = plt.subplots(figsize=(7, 7))
     plot_tplane(ax, tp, truth=crossings)
-    ax.set_title(f"plaza1 (Python), {name}: t-plane", fontsize=9)
+    ax.set_title(f"plaza1 (Python), {name}:\nt-plane", fontsize=9)  # two lines: a long name fits the width
     fig.savefig(out / f"loops_plaza1_{tag}_tplane_py.png", dpi=110)
     plt.close(fig)
     figures.append((f"loops_plaza1_{tag}_tplane_py.png", f"plaza1, {name}: t-plane and true crossings (Python)"))
