@@ -34,7 +34,12 @@ inline void save_loop_figures(const sillage::TPlane& tp, const Path& truth, cons
   }
   std::vector<sillage::Vector> path;
   for (std::size_t i = 0; i < truth.t.size(); ++i) path.push_back(sillage::Vector{truth.x[i], truth.y[i]});
-  const std::string what = title + ": map, true path over [t1] and [t2] of the proven loops";
+  // The title counts the proven loops: a run with none must not read as if it had some.
+  const std::size_t n = loops.size();
+  const std::string what = title + (n == 0   ? ": map, true path (no proven loop)"
+                                    : n == 1 ? ": map, true path over [t1] and [t2] of the 1 proven loop"
+                                             : ": map, true path over [t1] and [t2] of the " + std::to_string(n) +
+                                                   " proven loops");
   sillage::loops_map_figure(loops, &path, &truth.t, nullptr, &crossings, what)
       .save((out / (stem + "_map.svg")).string());
   figures.push_back({stem + "_map.svg", what});

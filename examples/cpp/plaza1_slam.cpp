@@ -148,11 +148,17 @@ int main(int argc, char** argv) {
   std::vector<std::pair<std::string, std::string>> figures;
   const Trajectory tx(d.t, d.x), ty(d.t, d.y);
   if (!p.is_empty()) {
-    TubeStyle grey;
-    grey.slices = {"#dddddd", "#999999", 0.4, 1.0, "dead reckoning"};
-    Figure fig = tube_vector_figure(dead, 0, 1, "plaza1 range-only temporal SLAM: dead reckoning (grey), SLAM (blue), truth",
-                                    grey);
-    draw_tube_vector_2d(fig, p, 0, 1, TubeStyle{}, &tx, &ty);
+    // Framed on the truth (dead reckoning alone reaches kilometres away: the note says how far).
+    const MapView view = map_view(dead, 0, 1, "x1", "x2", &tx, &ty);
+    Figure fig(view.window, 700);
+    fig.set_title("plaza1 range-only temporal SLAM: dead reckoning (grey), SLAM (blue), truth");
+    fig.set_note(view.note);
+    fig.set_labels("x1", "x2");
+    TubeStyle grey, blue;
+    grey.slices = {"#dddddd", "#999999", 0.4, 1.0, "dead reckoning", "dead reckoning"};
+    blue.slices.label = "SLAM";
+    draw_tube_vector_2d(fig, dead, 0, 1, grey);
+    draw_tube_vector_2d(fig, p, 0, 1, blue, &tx, &ty);
     fig.save((out / "plaza1_slam_map.svg").string());
     figures.push_back({"plaza1_slam_map.svg", "plaza1 temporal SLAM map: DR tube, SLAM tube, truth"});
     thickness_figure(p, ThicknessMeasure::MaxDiameter, "plaza1 temporal SLAM: position box diameter")

@@ -210,11 +210,13 @@ int main(int argc, char** argv) {
               ivp_ok ? "yes" : "NO", fixed.x->gate(N).diam());
   Figure cmp(IntervalVector{td->t0_tf(), finite_window(all, clipped)}, 600, 300);
   cmp.set_title("x' = -sin(x), x(0) = 1, delta = 0.01: CtcDeriv fixed point (grey) and CtcIvp (blue)");
-  cmp.set_labels("t", "x");
-  TubeStyle grey;
-  grey.slices = Style{"#bbbbbb", "none", 0, 1, "CtcDeriv"};
+  cmp.set_labels("t (s)", "x");
+  // The thin CtcIvp tube over the wide CtcDeriv one, the truth thinner on top (legend below the plot).
+  TubeStyle grey, blue;
+  grey.slices = Style{"#bbbbbb", "none", 0, 1, "CtcDeriv", "CtcDeriv fixed point"};
+  blue.slices.label = "CtcIvp";
   draw_tube(cmp, *fixed.x, grey);
-  draw_tube(cmp, xi, {}, &truth);
+  draw_tube(cmp, xi, blue, &truth);
   cmp.save((out / "sin_ivp_ctc_ivp.svg").string());
 
   example::print_result("sin_ivp", summary, ok,

@@ -176,6 +176,16 @@ def compare_figure(deriv, ivp, paths, out):
     return ("dead_reckoning_deriv_vs_ivp_py.png", "CtcDeriv network (3.18) in blue, CtcIvp in orange, nominal in red")
 
 
+def map_figure(x, nominal, out):
+    """[x1] x [x2] (SVG) with the nominal RK4 path over it: the path the tube must hold."""
+    fig = sillage.tube_vector_figure(x, 0, 1, "[x1] x [x2], delta = 0.005, and the nominal path")
+    # One point in 16 (4 delta apart): the line stays light and still follows the path.
+    fig.draw_polyline([[float(a), float(b)] for a, b in nominal[::16, :2]],
+                      sillage.Style("none", "#d62728", 1.0, 1.0, "nominal", "nominal path (RK4)"))
+    fig.save(str(out / "dead_reckoning_py.svg"))
+    return ("dead_reckoning_py.svg", "Dead reckoning (3.18): [x1](.) x [x2](.) and the nominal path (red), Python")
+
+
 def box_str(a, b):
     return f"[{a.lb():.2f}, {a.ub():.2f}] x [{b.lb():.2f}, {b.ub():.2f}]"
 
@@ -218,9 +228,7 @@ def main():
                 for k in ("plain", "cn", "taylor", "linear", "ivp"))
             figures.append(compare_figure(results["cn"], results["ivp"], paths, out))
             try:
-                fig = sillage.tube_vector_figure(results["plain"], 0, 1, "[x1] x [x2], delta = 0.005")
-                fig.save(str(out / "dead_reckoning_py.svg"))
-                figures.append(("dead_reckoning_py.svg", "Dead reckoning (3.18): [x1](.) x [x2](.), Python"))
+                figures.append(map_figure(results["plain"], paths[:, 0, :], out))
                 th = sillage.thickness_figure(results["plain"].subvector(0, 1), sillage.ThicknessMeasure.Diagonal,
                                               "Thickness of [x1] x [x2]")
                 th.save(str(out / "dead_reckoning_thickness_py.svg"))

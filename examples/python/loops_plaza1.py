@@ -245,7 +245,7 @@ def save_figures(tp, d, crossings, out, tag, name, figures):
     loop as the path over its [t1] and [t2] and as its map box (from the true start) when narrow."""
     fig, ax = plt.subplots(figsize=(7, 7))
     plot_tplane(ax, tp, truth=crossings)
-    ax.set_title(f"plaza1 (Python), {name}: t-plane", fontsize=9)
+    ax.set_title(f"plaza1 (Python), {name}:\nt-plane", fontsize=9)  # two lines: a long name fits the width
     fig.savefig(out / f"loops_plaza1_{tag}_tplane_py.png", dpi=110)
     plt.close(fig)
     figures.append((f"loops_plaza1_{tag}_tplane_py.png", f"plaza1, {name}: t-plane and true crossings (Python)"))
@@ -275,12 +275,13 @@ def save_figures(tp, d, crossings, out, tag, name, figures):
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    ax.set_title(f"plaza1 (Python), {name}:\nmap, true path over [t1] and [t2] of the {len(tp.proofs())} proven loops",
-                 fontsize=9)
+    n = len(tp.proofs())  # the title counts them: a run with none must not read as if it had some
+    what = ("map, true path (no proven loop)" if n == 0 else
+            f"map, true path over [t1] and [t2] of the {n} proven loop" + ("" if n == 1 else "s"))
+    ax.set_title(f"plaza1 (Python), {name}:\n{what}", fontsize=9)
     fig.savefig(out / f"loops_plaza1_{tag}_map_py.png", dpi=110)
     plt.close(fig)
-    figures.append((f"loops_plaza1_{tag}_map_py.png", f"plaza1, {name}: map, true path over [t1] and [t2] of the "
-                                                      "proven loops (Python)"))
+    figures.append((f"loops_plaza1_{tag}_map_py.png", f"plaza1, {name}: {what} (Python)"))
 
 
 def main():

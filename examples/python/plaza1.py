@@ -178,11 +178,12 @@ def main():
                   f"{strict[0]:.2f} m (x {mean_d / strict[0]:.2f}), {cpu:.2f} s vs {strict[1]:.2f} s")
         summary += f"{label}: truth inside {100 * inside / n:.1f} %, mean/max diameter {mean_d:.2f}/{max_d:.2f} m; "
         tag = "qranges" if run >= 0 else "ranges" if with_ranges else "odometry"
-        fig = sillage.tube_vector_figure(p, 0, 1, f"plaza1 (Python): {label}", sillage.TubeStyle(), *truth)
-        for bx, by in d["beacons"].values():
-            fig.draw_point([bx, by], 5.0, sillage.Style("#d62728", "black"))
+        # the beacons as landmarks: inside the window, dots distinct from the truth's line, in the legend
+        beacons = [[bx, by] for bx, by in d["beacons"].values()]
+        fig = sillage.tube_vector_figure(p, 0, 1, f"plaza1 (Python): {label}", sillage.TubeStyle(), *truth, 600,
+                                         beacons)
         fig.save(str(out / f"plaza1_map_{tag}_py.svg"))
-        figures.append((f"plaza1_map_{tag}_py.svg", f"plaza1 map, {label} (beacons in red), Python"))
+        figures.append((f"plaza1_map_{tag}_py.svg", f"plaza1 map, {label} (beacons as yellow dots), Python"))
         th = sillage.thickness_figure(p, sillage.ThicknessMeasure.MaxDiameter,
                                       f"plaza1: position box diameter, {label}")
         th.save(str(out / f"plaza1_thickness_{tag}_py.svg"))

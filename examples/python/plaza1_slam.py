@@ -116,11 +116,15 @@ def main():
     figures = []
     if not p.is_empty():
         tx, ty = sillage.Trajectory(list(d["t"]), list(d["x"])), sillage.Trajectory(list(d["t"]), list(d["y"]))
-        grey = sillage.TubeStyle()
-        grey.slices = sillage.Style("#dddddd", "#999999", 0.4, 1.0, "dead reckoning")
+        grey, blue = sillage.TubeStyle(), sillage.TubeStyle()
+        grey.slices = sillage.Style("#dddddd", "#999999", 0.4, 1.0, "dead reckoning", "dead reckoning")
+        slices = blue.slices
+        slices.label = "SLAM"
+        blue.slices = slices
+        # given the truth, the window frames it (dead reckoning alone reaches kilometres away: the note says how far)
         fig = sillage.tube_vector_figure(dead, 0, 1, "plaza1 range-only temporal SLAM (Python): dead reckoning "
-                                         "(grey), SLAM (blue), truth", grey)
-        sillage.draw_tube_vector_2d(fig, p, 0, 1, sillage.TubeStyle(), tx, ty)
+                                         "(grey), SLAM (blue), truth", grey, tx, ty)
+        sillage.draw_tube_vector_2d(fig, p, 0, 1, blue, tx, ty)
         fig.save(str(out / "plaza1_slam_map_py.svg"))
         figures.append(("plaza1_slam_map_py.svg", "plaza1 temporal SLAM map: DR tube, SLAM tube, truth, Python"))
     proofs = max((r.nb_proofs for r in rows), default=0)

@@ -49,6 +49,21 @@ def figure_eight_loops(out):
         proven[0].t_box()[1].contains(3 * math.pi / 2)
 
 
+def tube_figure(x, path):
+    """[x](t) (None: no solution) and the truth sin(t) + 1, saved to path; returns the figure."""
+    fig, ax = plt.subplots(figsize=(8, 3))
+    if x is not None:
+        plot.plot_tube(ax, x)
+    ts = [0.1 * i for i in range(201)]
+    ax.plot(ts, [math.sin(t) + 1 for t in ts], "r-", lw=1)
+    ax.set_title("[x](t) from examples/problems/line_ranges.toml, truth in red")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("x")
+    fig.tight_layout()  # room for the title and the axis labels: a wide, short figure clips them otherwise
+    fig.savefig(path, dpi=90)
+    return fig
+
+
 def main():
     out = out_dir(__doc__)
     path = out / "line_ranges.toml"
@@ -65,14 +80,8 @@ def main():
     else:
         print(f"  x(0) in {x(0.0)} (truth 1), max thickness {x.max_thickness():.3g}, 201 truth samples: {inside} inside")
     ok = not r.empty and inside == 201 and figure_eight_loops(out)
-    fig, ax = plt.subplots(figsize=(8, 3))
-    if not r.empty:
-        plot.plot_tube(ax, x)
-    ts = [0.1 * i for i in range(201)]
-    ax.plot(ts, [math.sin(t) + 1 for t in ts], "r-", lw=1)
-    ax.set_title("[x](t) from examples/problems/line_ranges.toml, truth in red")
     name = "problem_file_py.png"
-    fig.savefig(out / name, dpi=90)
+    plt.close(tube_figure(None if r.empty else x, out / name))
     print_result("problem_file", f"{inside}/201 truth samples inside" if not r.empty else "no solution", ok,
                  [(name, "The tube of the problem file (sillage.solve) and the truth")])
     return 0 if ok else 1

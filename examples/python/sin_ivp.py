@@ -152,11 +152,15 @@ def main(deltas=(0.1, 0.01, 0.001, 0.0001), out=None):
     cmp = sillage.Figure(IntervalVector([Interval(0, TF), Interval(first.lb() - margin, first.ub() + margin)]),
                          600, 300)
     cmp.set_title("x' = -sin(x), x(0) = 1, delta = 0.01: CtcDeriv (grey) and CtcIvp (blue) (Python)")
-    cmp.set_labels("t", "x")
-    st = sillage.TubeStyle()
-    st.slices = sillage.Style("#bbbbbb", "none", 0, 1, "CtcDeriv")
+    cmp.set_labels("t (s)", "x")
+    # The thin CtcIvp tube over the wide CtcDeriv one, the truth thinner on top (legend below the plot).
+    st, blue = sillage.TubeStyle(), sillage.TubeStyle()
+    st.slices = sillage.Style("#bbbbbb", "none", 0, 1, "CtcDeriv", "CtcDeriv fixed point")
+    slices = blue.slices
+    slices.label = "CtcIvp"
+    blue.slices = slices
     sillage.draw_tube(cmp, fixed, st)
-    sillage.draw_tube(cmp, xi, sillage.TubeStyle(), truth)
+    sillage.draw_tube(cmp, xi, blue, truth)
     cmp.save(str(out / "sin_ivp_ctc_ivp_py.svg"))
     print_result("sin_ivp", summary, ok,
                  [("sin_ivp_py.svg", "x' = -sin(x), x(0) = 1 (4.22): successive contractions and fixed point, "

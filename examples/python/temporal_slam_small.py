@@ -66,7 +66,8 @@ def main():
         fig.draw_box(IntervalVector([x.gate(n)[0], x.gate(n)[1]]), Style("none", "#d62728", 1.5, 1.0))
     fig.save(str(out / "temporal_slam_small_map.svg"))
     # x1(t): dead reckoning and SLAM.
-    ft = sillage.tube_figure(dr[0], "x1(t): dead reckoning (grey) and temporal SLAM (blue)", grey, truth[0], 700, 300)
+    ft = sillage.tube_figure(dr[0], "x1(t): dead reckoning (grey) and temporal SLAM (blue)", grey, truth[0], 700, 300,
+                             "x1")
     if not x.is_empty():
         sillage.draw_tube(ft, x[0], TubeStyle(), truth[0])
     ft.save(str(out / "temporal_slam_small_x1.svg"))

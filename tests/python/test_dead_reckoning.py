@@ -69,3 +69,19 @@ def test_ivp_contains_the_paths_and_beats_the_network():
         g = ivp[i].gate(n)
         assert g.is_subset(cn[i].gate(n)) and g.diam() < 0.25 * cn[i].gate(n).diam()
         assert g.diam() < 13  # [32.66, 44.00] x [47.81, 58.32] measured
+
+
+def test_map_figure_draws_the_nominal_path(tmp_path):
+    """dead_reckoning_py.svg: the tube, and the nominal path over it, named in the legend."""
+    import xml.etree.ElementTree as ET
+
+    td = TDomain(0.0, 64.0, 0.05)
+    name, _ = dr.map_figure(dr.solve_plain(td), dr.rk4_paths(0.05)[:, 0, :], tmp_path)
+    svg = (tmp_path / name).read_text()
+    root = ET.fromstring(svg.encode())
+    ns = "{http://www.w3.org/2000/svg}"
+    nominal = [e for e in root.iter(ns + "polyline") if e.get("class") == "nominal"]
+    assert len(nominal) == 1 and len(nominal[0].get("points").split()) > 100
+    assert "nominal path (RK4)" in svg
+    # drawn after (over) every slice of the tube
+    assert svg.index('class="nominal"') > svg.rindex('class="slice"')

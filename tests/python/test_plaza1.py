@@ -68,6 +68,23 @@ def test_unknown_start_keeps_the_truth(tmp_path):
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stdout[-2000:]
     assert r.stdout.count("ground truth inside at 9658 / 9658") == 2
+    # The maps show the 4 beacons as landmarks, inside the plot's frame.
+    for tag in ("odometry", "ranges"):
+        assert landmarks_in_frame(tmp_path / f"plaza1_map_{tag}.svg") == 4
+
+
+def landmarks_in_frame(svg_path):
+    """The number of landmark dots of a map; asserts each lies in the plot's frame."""
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    root = ET.parse(svg_path).getroot()
+    frame = next(e for e in root.iter(ns + "rect") if e.get("class") == "frame")
+    x0, y0 = float(frame.get("x")), float(frame.get("y"))
+    x1, y1 = x0 + float(frame.get("width")), y0 + float(frame.get("height"))
+    dots = [e for e in root.iter(ns + "circle") if e.get("class") == "landmark"]
+    for d in dots:
+        assert x0 <= float(d.get("cx")) <= x1 and y0 <= float(d.get("cy")) <= y1
+    return len(dots)
 
 
 @pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")

@@ -132,3 +132,27 @@ def test_plot_tube_vector_2d_and_thickness():
 def test_plot_module_reexports_tube_helpers():
     from sillage import plot
     assert plot.plot_tube is pt.plot_tube
+
+
+def test_axis_labels_landmarks_and_legend():
+    td = TDomain(0, 6, 0.1)
+    v = TubeVector(td, "(cos(t) + [-0.1, 0.1], sin(t) + [-0.1, 0.1])")
+    a, b = Trajectory("cos(t)", Interval(0, 6)), Trajectory("sin(t)", Interval(0, 6))
+    marks = [[3.0, 0.5], [-2.0, -4.0]]
+    svg = sillage.tube_vector_figure(v, 0, 1, "map", sillage.TubeStyle(), a, b, 400, marks, "east (m)",
+                                     "north (m)").svg()
+    root = ET.fromstring(svg.encode())
+    labels = {e.get("class"): e.text for e in root.iter(NS + "text") if e.get("class") in ("x-label", "y-label")}
+    assert labels == {"x-label": "east (m)", "y-label": "north (m)"}
+    frame = elements(svg, "rect", "frame")[0]
+    x0, y0 = float(frame.get("x")), float(frame.get("y"))
+    x1, y1 = x0 + float(frame.get("width")), y0 + float(frame.get("height"))
+    dots = elements(svg, "circle", "landmark")
+    assert len(dots) == 2
+    assert all(x0 <= float(d.get("cx")) <= x1 and y0 <= float(d.get("cy")) <= y1 for d in dots)
+    legend = [e for e in root.iter(NS + "g") if e.get("class") == "legend"]
+    assert len(legend) == 1 and "landmarks" in ET.tostring(legend[0]).decode()
+    y_label = [e for e in ET.fromstring(sillage.tube_figure(v[0], "c", name="c (m)").svg().encode()).iter(NS + "text")
+               if e.get("class") == "y-label"]
+    assert y_label[0].text == "c (m)"
+    assert sillage.Style(label="tube").label == "tube"

@@ -116,7 +116,10 @@ int show(const std::string& path) {
 int plot(const std::string& path, const std::string& out) {
   const TubeVector x = load_any(path);
   const std::string title = std::filesystem::path(path).filename().string();
-  const Figure f = x.size() >= 2 ? tube_vector_figure(x, 0, 1, title) : tube_figure(x[0], title);
+  // A tube file holds no variable name: its stem names the axes (v.tube: v, or v[0] and v[1]).
+  const std::string name = std::filesystem::path(path).stem().string();
+  const Figure f = x.size() >= 2 ? tube_vector_figure(x, 0, 1, title, {}, nullptr, nullptr, 600, nullptr, name + "[0]", name + "[1]")
+                                 : tube_figure(x[0], title, {}, nullptr, 600, 300, name);
   f.save(out);
   std::printf("wrote %s\n", out.c_str());
   return kSolved;

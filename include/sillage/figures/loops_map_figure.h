@@ -56,14 +56,17 @@ LoopsMapCounts draw_loops_map(Figure& fig, const std::vector<MapLoop>& loops, co
                               const LoopsMapOptions& options = {});
 
 // A figure framing the path, the bounded parts of the position tube and the
-// loop boxes (5 % margin, aspect ratio kept), axes x and y in metres.
+// loop boxes (5 % margin, aspect ratio kept), axes labelled x_label and
+// y_label (the position's names and unit), with a legend.
 Figure loops_map_figure(const TPlane& tplane, const std::vector<Vector>* path = nullptr,
                         const std::vector<double>* path_times = nullptr, const TubeVector* positions = nullptr,
                         const std::vector<PathCrossing>* crossings = nullptr, const std::string& title = "",
-                        double width_px = 700, const LoopsMapOptions& options = {});
+                        double width_px = 700, const LoopsMapOptions& options = {},
+                        const std::string& x_label = "x (m)", const std::string& y_label = "y (m)");
 Figure loops_map_figure(const std::vector<MapLoop>& loops, const std::vector<Vector>* path = nullptr,
                         const std::vector<double>* path_times = nullptr, const TubeVector* positions = nullptr,
                         const std::vector<PathCrossing>* crossings = nullptr, const std::string& title = "",
-                        double width_px = 700, const LoopsMapOptions& options = {});
+                        double width_px = 700, const LoopsMapOptions& options = {},
+                        const std::string& x_label = "x (m)", const std::string& y_label = "y (m)");
 
 }  // namespace sillage

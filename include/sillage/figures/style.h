@@ -14,6 +14,9 @@ struct Style {
   double stroke_width = 1.0;     // in pixels
   double opacity = 1.0;          // fill opacity, in [0, 1]
   std::string css_class;         // optional class attribute ("inner", ...)
+  // Text of the legend entry of what is drawn with this style; none if empty.
+  // Initialised so that the older 5-field initialisers stay warning-free.
+  std::string label{};
 };
 
 // The thesis colours of a paving leaf; css_class is the tag in lower case.

@@ -7,7 +7,11 @@
 // Slices smaller than a pixel are aggregated into their hull (consecutive
 // slices, as long as the hull stays within `merge_px` pixels of each slice of
 // the group), so 10^5 slices give a few hundred shapes. The drawn shapes
-// always cover every slice: the display is rigorous, only coarser.
+// always cover every slice: the display is rigorous, only coarser. Slices are
+// drawn at least min_px pixels thick, so that a thin tube still shows around
+// the line of the truth, which is drawn thin and on top. In 2-D, larger boxes
+// are drawn first, so that the smaller ones stay visible over them, and the
+// gates are translucent: a wide final gate does not hide the tube below it.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -22,14 +26,20 @@ namespace sillage {
 
 // Styles of tube figures and the aggregation tolerance merge_px.
 struct TubeStyle {
-  // Style of the slice rectangles.
-  Style slices{"#a9cdf2", "#2a6aa8", 0.4, 1.0, "slice"};
+  // Style of the slice rectangles (its label names the tube in the legend).
+  Style slices{"#a9cdf2", "#2a6aa8", 0.4, 1.0, "slice", "tube"};
   // Style of the gates.
-  Style gates{"#1f3f66", "none", 0.0, 1.0, "gate"};
-  // Style of the true trajectory.
-  Style truth{"none", "#d62728", 1.5, 1.0, "truth"};
-  Style initial{"#f4a6a6", "#c62828", 1.0, 0.8, "initial"};  // gate 0 (2-D figures)
-  Style final{"#a5d6a7", "#2e7d32", 1.0, 0.8, "final"};     // gate N (2-D figures)
+  Style gates{"#1f3f66", "none", 0.0, 1.0, "gate", ""};
+  // Style of the true trajectory: a thin line, drawn over the tube.
+  Style truth{"none", "#d62728", 1.0, 1.0, "truth", "truth"};
+  Style initial{"#f4a6a6", "#c62828", 1.5, 0.3, "initial", "initial box"};  // gate 0 (2-D figures)
+  Style final{"#a5d6a7", "#2e7d32", 1.5, 0.3, "final", "final box"};       // gate N (2-D figures)
+  // Style of the landmarks of a map: dots, distinct from the truth's line.
+  Style landmarks{"#ffd54f", "#000000", 1.2, 1.0, "landmark", "landmarks"};
+  // Radius of the landmark dots, in pixels.
+  double landmark_px = 5.0;
+  // Least thickness of a drawn slice, in pixels (>= 0; display only: the drawing still covers the slice).
+  double min_px = 4.0;
   // Scalar figures: gates as 1-px vertical bars (only if slices are at least
   // 4 px wide on average; else they would just paint the tube).
   bool show_gates = false;
@@ -53,16 +63,41 @@ std::size_t draw_tube_vector_2d(Figure& fig, const TubeVector& x, std::size_t i,
                                 const Trajectory* truth_j = nullptr);
 
 // A figure over [t_0, t_N] x the tube's codomain (with a margin), the tube
-// drawn. An unbounded codomain is clipped to a finite window around the
-// bounded bounds, and the title says so.
+// drawn; the y axis is labelled `name`, the variable and its unit (e.g.
+// "v (m/s)"). An unbounded codomain is clipped to a finite window around the
+// bounded bounds, and the note says so.
 Figure tube_figure(const Tube& x, const std::string& title = "", const TubeStyle& style = {},
-                   const Trajectory* truth = nullptr, double width_px = 600, double height_px = 300);
+                   const Trajectory* truth = nullptr, double width_px = 600, double height_px = 300,
+                   const std::string& name = "x");
 
-// A figure over the codomain of x_i x x_j (clipped like tube_figure, aspect
-// ratio kept), the projection drawn by draw_tube_vector_2d.
+// The window of a map of x_i x x_j, and a note on it.
+struct MapView {
+  // The window: bounded, non-degenerate.
+  IntervalVector window;
+  // What the reader should know (e.g. how far the tube reaches beyond the window); may be empty.
+  std::string note;
+};
+
+// The window of a map: the tube's finite window (clipped like tube_figure)
+// grown to hold the truth (sampled) and the landmarks. When the tube is more
+// than `zoom` times wider than the truth and the landmarks along an axis (a
+// dead-reckoning tube kilometres wide around a walk of a hundred metres),
+// the window frames the truth and the landmarks instead, and the note says
+// how far the tube reaches; names label the two components in the note.
+MapView map_view(const TubeVector& x, std::size_t i, std::size_t j, const std::string& name_i,
+                 const std::string& name_j, const Trajectory* truth_i = nullptr, const Trajectory* truth_j = nullptr,
+                 const std::vector<Vector>* landmarks = nullptr, double zoom = 5);
+
+// A figure of the map_view window (aspect ratio kept), with the projection
+// drawn by draw_tube_vector_2d and the landmarks (if given, 2-D points) as
+// dots on top; a legend names what is drawn. The axes are labelled name_i
+// and name_j (the variables and units, e.g. "x (m)"); x1, x2... (x_{i+1},
+// x_{j+1}) when empty.
 Figure tube_vector_figure(const TubeVector& x, std::size_t i = 0, std::size_t j = 1, const std::string& title = "",
                           const TubeStyle& style = {}, const Trajectory* truth_i = nullptr,
-                          const Trajectory* truth_j = nullptr, double width_px = 600);
+                          const Trajectory* truth_j = nullptr, double width_px = 600,
+                          const std::vector<Vector>* landmarks = nullptr, const std::string& name_i = "",
+                          const std::string& name_j = "");
 
 // A finite window containing every finite bound of `xs` with a 5 % margin
 // (non-degenerate; [-1, 1] if no bound is finite). `clipped` is set when some

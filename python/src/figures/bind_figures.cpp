@@ -24,18 +24,20 @@ std::string quoted(const std::string& x) { return py::repr(py::str(x)).cast<std:
 void init_figures(py::module_& m) {
   py::class_<Style>(m, "Style", DOC(Style))
       .def(py::init([](std::string fill, std::string stroke, double stroke_width, double opacity,
-                       std::string css_class) {
-             return Style{std::move(fill), std::move(stroke), stroke_width, opacity, std::move(css_class)};
+                       std::string css_class, std::string label) {
+             return Style{std::move(fill), std::move(stroke), stroke_width, opacity, std::move(css_class),
+                          std::move(label)};
            }),
            py::arg("fill") = "none", py::arg("stroke") = "black", py::arg("stroke_width") = 1.0,
-           py::arg("opacity") = 1.0, py::arg("css_class") = "",
+           py::arg("opacity") = 1.0, py::arg("css_class") = "", py::arg("label") = "",
            "fill and stroke: SVG colours ('none' for nothing); stroke_width in pixels; opacity in [0, 1];\n"
-           "css_class: an optional class attribute of the SVG elements.")
+           "css_class: an optional class attribute of the SVG elements; label: its legend entry (none if empty).")
       .def_readwrite("fill", &Style::fill, DOC(Style, fill))
       .def_readwrite("stroke", &Style::stroke, DOC(Style, stroke))
       .def_readwrite("stroke_width", &Style::stroke_width, DOC(Style, stroke_width))
       .def_readwrite("opacity", &Style::opacity, DOC(Style, opacity))
       .def_readwrite("css_class", &Style::css_class, DOC(Style, css_class))
+      .def_readwrite("label", &Style::label, DOC(Style, label))
       .def("__repr__", [](const Style& st) {
         return "Style(fill=" + quoted(st.fill) + ", stroke=" + quoted(st.stroke) + ", stroke_width=" +
                num(st.stroke_width) + ", opacity=" + num(st.opacity) + ")";
@@ -47,6 +49,7 @@ void init_figures(py::module_& m) {
            py::arg("height_px") = 0.0,
            DOC(Figure, Figure))
       .def("set_title", &Figure::set_title, py::arg("title"), DOC(Figure, set_title))
+      .def("set_note", &Figure::set_note, py::arg("note"), DOC(Figure, set_note))
       .def("set_labels", &Figure::set_labels, py::arg("x_label"), py::arg("y_label"),
            DOC(Figure, set_labels))
       .def("set_projection", &Figure::set_projection, py::arg("i"), py::arg("j"),

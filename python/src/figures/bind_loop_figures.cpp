@@ -65,14 +65,16 @@ void init_loop_figures(py::module_& m) {
       [](const TPlane& tp, const std::optional<std::vector<Vector>>& path,
          const std::optional<std::vector<double>>& path_times, const TubeVector* positions,
          const std::optional<std::vector<PathCrossing>>& crossings, const std::string& title, double width_px,
-         const LoopsMapOptions& options) {
+         const LoopsMapOptions& options, const std::string& x_label, const std::string& y_label) {
         return loops_map_figure(tp, ptr(path), ptr(path_times), positions, ptr(crossings), title, width_px,
-                                options);
+                                options, x_label, y_label);
       },
       py::arg("tplane"), py::arg("path") = py::none(), py::arg("path_times") = py::none(),
       py::arg("positions") = py::none(), py::arg("crossings") = py::none(), py::arg("title") = "",
-      py::arg("width_px") = 700.0, py::arg("options") = LoopsMapOptions{},
-      DOC(loops_map_figure, TPlane_vector_Vector_vector_double_TubeVector_vector_PathCrossing_string_double_LoopsMapOptions));
+      py::arg("width_px") = 700.0, py::arg("options") = LoopsMapOptions{}, py::arg("x_label") = "x (m)",
+      py::arg("y_label") = "y (m)",
+      DOC(loops_map_figure,
+          TPlane_vector_Vector_vector_double_TubeVector_vector_PathCrossing_string_double_LoopsMapOptions_string_string));
 }
 
 }  // namespace sillage::python

@@ -1,6 +1,7 @@
 // SVG figures of tubes (thesis Figs. 3.4-3.12): the same names as in C++.
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -29,6 +30,9 @@ void init_tube_figures(py::module_& m) {
       .def_readwrite("final", &TubeStyle::final, "Style of the final gate (2-D projections).")
       .def_readwrite("show_gates", &TubeStyle::show_gates, DOC(TubeStyle, show_gates))
       .def_readwrite("merge_px", &TubeStyle::merge_px, DOC(TubeStyle, merge_px))
+      .def_readwrite("landmarks", &TubeStyle::landmarks, DOC(TubeStyle, landmarks))
+      .def_readwrite("landmark_px", &TubeStyle::landmark_px, DOC(TubeStyle, landmark_px))
+      .def_readwrite("min_px", &TubeStyle::min_px, DOC(TubeStyle, min_px))
       .def("__repr__", [](const TubeStyle& st) {
         std::ostringstream os;
         os << "TubeStyle(show_gates=" << (st.show_gates ? "True" : "False") << ", merge_px=" << st.merge_px << ")";
@@ -47,11 +51,19 @@ void init_tube_figures(py::module_& m) {
         py::arg("truth_j") = py::none(), DOC(draw_tube_vector_2d));
   m.def("tube_figure", &tube_figure, py::arg("tube"), py::arg("title") = "", py::arg("style") = TubeStyle{},
         py::arg("truth") = py::none(), py::arg("width_px") = 600.0, py::arg("height_px") = 300.0,
-        DOC(tube_figure));
-  m.def("tube_vector_figure", &tube_vector_figure, py::arg("tube"), py::arg("i") = 0, py::arg("j") = 1,
-        py::arg("title") = "", py::arg("style") = TubeStyle{}, py::arg("truth_i") = py::none(),
-        py::arg("truth_j") = py::none(), py::arg("width_px") = 600.0,
-        DOC(tube_vector_figure));
+        py::arg("name") = "x", DOC(tube_figure));
+  // Landmarks as an optional list: None (no landmark) maps to a null pointer.
+  m.def(
+      "tube_vector_figure",
+      [](const TubeVector& x, std::size_t i, std::size_t j, const std::string& title, const TubeStyle& style,
+         const Trajectory* truth_i, const Trajectory* truth_j, double width_px,
+         const std::optional<std::vector<Vector>>& landmarks, const std::string& name_i, const std::string& name_j) {
+        return tube_vector_figure(x, i, j, title, style, truth_i, truth_j, width_px,
+                                  landmarks ? &*landmarks : nullptr, name_i, name_j);
+      },
+      py::arg("tube"), py::arg("i") = 0, py::arg("j") = 1, py::arg("title") = "", py::arg("style") = TubeStyle{},
+      py::arg("truth_i") = py::none(), py::arg("truth_j") = py::none(), py::arg("width_px") = 600.0,
+      py::arg("landmarks") = py::none(), py::arg("name_i") = "", py::arg("name_j") = "", DOC(tube_vector_figure));
   m.def("thickness_values", py::overload_cast<const Tube&>(&thickness_values), py::arg("tube"),
         DOC(thickness_values, Tube));
   m.def("thickness_values", py::overload_cast<const TubeVector&, ThicknessMeasure>(&thickness_values),

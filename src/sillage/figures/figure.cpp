@@ -6,11 +6,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "sillage/figures/text_width.h"
+
 namespace sillage {
 
 namespace {
 
+// Margins around the plot area; the top one grows with the title's lines.
 constexpr double kLeft = 60, kRight = 20, kTop = 36, kBottom = 44;
+constexpr double kTitleFont = 15, kTitleLine = 18, kNoteFont = 11, kNoteLine = 14;
 
 std::string fmt(double v) {
   char buf[32];
@@ -71,6 +75,19 @@ void Figure::set_labels(const std::string& x_label, const std::string& y_label) 
   y_label_ = y_label;
 }
 
+void Figure::add_legend(const std::string& text, const Style& style, LegendMark mark) {
+  if (text.empty()) return;
+  for (const LegendEntry& e : legend_) {
+    if (e.text == text) return;
+  }
+  legend_.push_back({text, style, mark});
+}
+
+void Figure::push(std::string shape, const Style& style, LegendMark mark) {
+  shapes_.push_back(std::move(shape));
+  add_legend(style.label, style, mark);
+}
+
 void Figure::set_projection(std::size_t i, std::size_t j) {
   if (i == j) throw Error("Figure::set_projection: the two dimensions must differ (" + std::to_string(i) + ")");
   dim_x_ = i;
@@ -79,6 +96,19 @@ void Figure::set_projection(std::size_t i, std::size_t j) {
 
 double Figure::px(double x) const { return kLeft + (x - vx_.lb()) / (vx_.ub() - vx_.lb()) * width_; }
 double Figure::py(double y) const { return kTop + (vy_.ub() - y) / (vy_.ub() - vy_.lb()) * height_; }
+
+double Figure::svg_width() const { return kLeft + width_ + kRight; }
+
+double Figure::plot_top() const {
+  const double lines = kTitleLine * static_cast<double>(wrap_text(title_, kTitleFont, svg_width() - 12).size()) +
+                       kNoteLine * static_cast<double>(wrap_text(note_, kNoteFont, svg_width() - 12).size());
+  return std::max(kTop, lines + 18);
+}
+
+double Figure::svg_height() const {
+  const double legend = legend_.size() >= 2 ? legend_height(legend_, width_) + 4 : 0;
+  return plot_top() + height_ + kBottom + legend;
+}
 
 std::string Figure::style_attributes(const Style& s) const {
   std::string a = " fill=\"" + xml_escape(s.fill) + "\" stroke=\"" + xml_escape(s.stroke) + "\" stroke-width=\"" +
@@ -106,9 +136,10 @@ void Figure::draw_box(const IntervalVector& box, const Style& style) {
   if (box.is_empty()) return;
   const Interval x = box[dim_x_] & vx_, y = box[dim_y_] & vy_;  // clip to the window
   if (x.is_empty() || y.is_empty()) return;
-  shapes_.push_back("<rect x=\"" + fmt(px(x.lb())) + "\" y=\"" + fmt(py(y.ub())) + "\" width=\"" +
+  push("<rect x=\"" + fmt(px(x.lb())) + "\" y=\"" + fmt(py(y.ub())) + "\" width=\"" +
                     fmt(px(x.ub()) - px(x.lb())) + "\" height=\"" + fmt(py(y.lb()) - py(y.ub())) + "\"" +
-                    style_attributes(style) + "/>");
+                    style_attributes(style) + "/>",
+       style, LegendMark::Box);
 }
 
 void Figure::draw_boxes(const std::vector<IntervalVector>& boxes, const Style& style) {
@@ -132,14 +163,15 @@ void Figure::draw_ring(const Vector& center, const Interval& radius, const Style
     d += ' ';
     d += ellipse(radius.lb());
   }
-  shapes_.push_back("<path d=\"" + d + "\" fill-rule=\"evenodd\"" + style_attributes(style) + "/>");
+  push("<path d=\"" + d + "\" fill-rule=\"evenodd\"" + style_attributes(style) + "/>", style, LegendMark::Box);
 }
 
 void Figure::draw_point(const Vector& p, double radius_px, const Style& style) {
   check_point(p, "draw_point");
   if (!(radius_px > 0)) throw Error("Figure::draw_point: the radius must be > 0");
-  shapes_.push_back("<circle cx=\"" + fmt(px(p[dim_x_])) + "\" cy=\"" + fmt(py(p[dim_y_])) + "\" r=\"" +
-                    fmt(radius_px) + "\"" + style_attributes(style) + "/>");
+  push("<circle cx=\"" + fmt(px(p[dim_x_])) + "\" cy=\"" + fmt(py(p[dim_y_])) + "\" r=\"" + fmt(radius_px) + "\"" +
+           style_attributes(style) + "/>",
+       style, LegendMark::Dot);
 }
 
 void Figure::draw_polyline(const std::vector<Vector>& points, const Style& style, bool closed) {
@@ -152,8 +184,8 @@ void Figure::draw_polyline(const std::vector<Vector>& points, const Style& style
     pts += ',';
     pts += fmt(py(p[dim_y_]));
   }
-  shapes_.push_back(std::string(closed ? "<polygon" : "<polyline") + " points=\"" + pts + "\"" +
-                    style_attributes(style) + "/>");
+  push(std::string(closed ? "<polygon" : "<polyline") + " points=\"" + pts + "\"" + style_attributes(style) + "/>",
+       style, closed ? LegendMark::Box : LegendMark::Line);
 }
 
 void Figure::draw_paving(const Paving& paving, bool show_outside) {
@@ -175,7 +207,7 @@ void Figure::draw_contour(const std::vector<ContourLoop>& loops, const Style& st
       pts += ',';
       pts += fmt(py(v.y));
     }
-    shapes_.push_back("<polygon points=\"" + pts + "\"" + style_attributes(style) + "/>");
+    push("<polygon points=\"" + pts + "\"" + style_attributes(style) + "/>", style, LegendMark::Box);
   }
 }
 
@@ -186,7 +218,7 @@ void Figure::draw_text(const Vector& p, const std::string& text, double size_px,
 }
 
 std::string Figure::svg() const {
-  const double w = kLeft + width_ + kRight, h = kTop + height_ + kBottom;
+  const double w = svg_width(), h = svg_height(), top = plot_top();
   std::ostringstream os;
   os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(w) << "\" height=\"" << fmt(h)
@@ -194,37 +226,49 @@ std::string Figure::svg() const {
      << "<defs><clipPath id=\"plot\"><rect x=\"" << fmt(kLeft) << "\" y=\"" << fmt(kTop) << "\" width=\""
      << fmt(width_) << "\" height=\"" << fmt(height_) << "\"/></clipPath></defs>\n"
      << "<rect x=\"0\" y=\"0\" width=\"" << fmt(w) << "\" height=\"" << fmt(h) << "\" fill=\"white\" class=\"background\"/>\n";
-  if (!title_.empty()) {
-    os << "<text x=\"" << fmt(kLeft + width_ / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-       << xml_escape(title_) << "</text>\n";
+  // Title and note lines, centred on the whole width so that they never pass its sides.
+  double y = 4;
+  for (const std::string& line : wrap_text(title_, kTitleFont, w - 12)) {
+    y += kTitleLine;
+    os << "<text x=\"" << fmt(w / 2) << "\" y=\"" << fmt(y) << "\" text-anchor=\"middle\" font-size=\"" << fmt(kTitleFont)
+       << "\" class=\"title\">" << xml_escape(line) << "</text>\n";
   }
-  os << "<g clip-path=\"url(#plot)\">\n";
+  for (const std::string& line : wrap_text(note_, kNoteFont, w - 12)) {
+    y += kNoteLine;
+    os << "<text x=\"" << fmt(w / 2) << "\" y=\"" << fmt(y) << "\" text-anchor=\"middle\" font-size=\"" << fmt(kNoteFont)
+       << "\" fill=\"#555555\" class=\"note\">" << xml_escape(line) << "</text>\n";
+  }
+  // The plot is drawn with its top at kTop (px, py) and shifted below the title.
+  os << "<g class=\"plot\" transform=\"translate(0 " << fmt(top - kTop) << ")\">\n<g clip-path=\"url(#plot)\">\n";
   for (const auto& s : shapes_) os << s << "\n";
   os << "</g>\n<g class=\"axes\" stroke=\"black\" font-size=\"11\">\n"
      << "<rect x=\"" << fmt(kLeft) << "\" y=\"" << fmt(kTop) << "\" width=\"" << fmt(width_) << "\" height=\""
      << fmt(height_) << "\" fill=\"none\" class=\"frame\"/>\n";
   const double sx = tick_step(vx_.diam()), sy = tick_step(vy_.diam());
   for (double t = std::ceil(vx_.lb() / sx) * sx; t <= vx_.ub() + 1e-9 * sx; t += sx) {
-    const double x = px(t), y = kTop + height_;
-    os << "<line x1=\"" << fmt(x) << "\" y1=\"" << fmt(y) << "\" x2=\"" << fmt(x) << "\" y2=\"" << fmt(y + 5)
-       << "\"/><text x=\"" << fmt(x) << "\" y=\"" << fmt(y + 17) << "\" text-anchor=\"middle\" stroke=\"none\">"
+    const double x = px(t), yb = kTop + height_;
+    os << "<line x1=\"" << fmt(x) << "\" y1=\"" << fmt(yb) << "\" x2=\"" << fmt(x) << "\" y2=\"" << fmt(yb + 5)
+       << "\"/><text x=\"" << fmt(x) << "\" y=\"" << fmt(yb + 17) << "\" text-anchor=\"middle\" stroke=\"none\">"
        << label(t) << "</text>\n";
   }
   for (double t = std::ceil(vy_.lb() / sy) * sy; t <= vy_.ub() + 1e-9 * sy; t += sy) {
-    const double y = py(t);
-    os << "<line x1=\"" << fmt(kLeft - 5) << "\" y1=\"" << fmt(y) << "\" x2=\"" << fmt(kLeft) << "\" y2=\""
-       << fmt(y) << "\"/><text x=\"" << fmt(kLeft - 8) << "\" y=\"" << fmt(y + 4)
+    const double yt = py(t);
+    os << "<line x1=\"" << fmt(kLeft - 5) << "\" y1=\"" << fmt(yt) << "\" x2=\"" << fmt(kLeft) << "\" y2=\""
+       << fmt(yt) << "\"/><text x=\"" << fmt(kLeft - 8) << "\" y=\"" << fmt(yt + 4)
        << "\" text-anchor=\"end\" stroke=\"none\">" << label(t) << "</text>\n";
   }
   if (!x_label_.empty()) {
-    os << "<text x=\"" << fmt(kLeft + width_ / 2) << "\" y=\"" << fmt(h - 6)
-       << "\" text-anchor=\"middle\" stroke=\"none\">" << xml_escape(x_label_) << "</text>\n";
+    os << "<text x=\"" << fmt(kLeft + width_ / 2) << "\" y=\"" << fmt(kTop + height_ + kBottom - 6)
+       << "\" text-anchor=\"middle\" stroke=\"none\" class=\"x-label\">" << xml_escape(x_label_) << "</text>\n";
   }
   if (!y_label_.empty()) {
     os << "<text x=\"14\" y=\"" << fmt(kTop + height_ / 2) << "\" text-anchor=\"middle\" stroke=\"none\" "
-       << "transform=\"rotate(-90 14 " << fmt(kTop + height_ / 2) << ")\">" << xml_escape(y_label_) << "</text>\n";
+       << "class=\"y-label\" transform=\"rotate(-90 14 " << fmt(kTop + height_ / 2) << ")\">" << xml_escape(y_label_)
+       << "</text>\n";
   }
-  os << "</g>\n</svg>\n";
+  os << "</g>\n</g>\n";
+  if (legend_.size() >= 2) os << legend_svg(legend_, kLeft, top + height_ + kBottom, width_);
+  os << "</svg>\n";
   return os.str();
 }
 

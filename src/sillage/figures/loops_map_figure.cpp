@@ -77,19 +77,20 @@ LoopsMapCounts draw_loops_map(Figure& fig, const std::vector<MapLoop>& loops, co
   LoopsMapCounts counts;
   if (positions) {
     TubeStyle ts;
-    ts.slices = {"#dfe9f5", "#9fbcdc", 0.3, 1.0, "position"};
+    ts.slices = {"#dfe9f5", "#9fbcdc", 0.3, 1.0, "position", "position tube"};
     ts.merge_px = 3.0;  // a background: coarser groups of slices, still covering every slice
     counts.tube_boxes = draw_tube_vector_2d(fig, *positions, 0, 1, ts);
   }
   if (path && !path->empty()) {
     const std::vector<Vector> kept = thinned(fig, *path, 0, path->size(), options.path_px);
-    fig.draw_polyline(kept, {"none", "#1f4e8c", 0.8, 1.0, "path"});
+    fig.draw_polyline(kept, {"none", "#1f4e8c", 0.8, 1.0, "path", "path"});
     counts.path_points = kept.size();
   }
   for (LoopStatus status : {LoopStatus::Partial, LoopStatus::Unproven, LoopStatus::Proven}) {
     if (status == LoopStatus::Partial && !options.show_partial) continue;
     Style style = loop_style(status);
     style.opacity = 0.2;  // map boxes overlap a lot: keep the path visible through them
+    style.label = "map box, " + to_string(status) + " loop";
     for (const MapLoop& l : loops) {
       if (l.status != status) continue;
       if (options.boxes && !l.map_box.is_empty()) {
@@ -98,7 +99,7 @@ LoopsMapCounts draw_loops_map(Figure& fig, const std::vector<MapLoop>& loops, co
       }
       if (!options.projections || !path_times || l.t_box.is_empty()) continue;
       const Style bold{"none", style.stroke == "#000000" ? "#000000" : style.fill, 2.5, 1.0,
-                       style.css_class + "-projection"};
+                       style.css_class + "-projection", "path over [t1] and [t2], " + to_string(status) + " loop"};
       for (const Interval& t : {l.t_box[0], l.t_box[1]}) {
         // The samples inside [t] (the path is drawn at its sampling: the
         // projection is a piece of the drawn path).
@@ -114,7 +115,7 @@ LoopsMapCounts draw_loops_map(Figure& fig, const std::vector<MapLoop>& loops, co
   }
   if (crossings) {
     for (const PathCrossing& c : *crossings) {
-      fig.draw_point({c.x, c.y}, options.crossing_px, {"#d62728", "#ffffff", 0.5, 1, "crossing"});
+      fig.draw_point({c.x, c.y}, options.crossing_px, {"#d62728", "#ffffff", 0.5, 1, "crossing", "true crossings"});
       ++counts.crossings;
     }
   }
@@ -124,7 +125,7 @@ LoopsMapCounts draw_loops_map(Figure& fig, const std::vector<MapLoop>& loops, co
 Figure loops_map_figure(const std::vector<MapLoop>& loops, const std::vector<Vector>* path,
                         const std::vector<double>* path_times, const TubeVector* positions,
                         const std::vector<PathCrossing>* crossings, const std::string& title, double width_px,
-                        const LoopsMapOptions& options) {
+                        const LoopsMapOptions& options, const std::string& x_label, const std::string& y_label) {
   std::vector<Interval> xs, ys;
   if (path) {
     for (const Vector& p : *path) {
@@ -144,15 +145,17 @@ Figure loops_map_figure(const std::vector<MapLoop>& loops, const std::vector<Vec
   const Interval wx = finite_window(xs, clipped_x), wy = finite_window(ys, clipped_y);
   Figure fig(IntervalVector{wx, wy}, width_px);
   fig.set_title(title);
-  fig.set_labels("x (m)", "y (m)");
+  fig.set_labels(x_label, y_label);
   draw_loops_map(fig, loops, path, path_times, positions, crossings, options);
   return fig;
 }
 
 Figure loops_map_figure(const TPlane& tplane, const std::vector<Vector>* path, const std::vector<double>* path_times,
                         const TubeVector* positions, const std::vector<PathCrossing>* crossings,
-                        const std::string& title, double width_px, const LoopsMapOptions& options) {
-  return loops_map_figure(map_loops(tplane), path, path_times, positions, crossings, title, width_px, options);
+                        const std::string& title, double width_px, const LoopsMapOptions& options,
+                        const std::string& x_label, const std::string& y_label) {
+  return loops_map_figure(map_loops(tplane), path, path_times, positions, crossings, title, width_px, options, x_label,
+                          y_label);
 }
 
 }  // namespace sillage

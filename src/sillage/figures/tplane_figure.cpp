@@ -25,6 +25,21 @@ void check_options(const TPlaneFigureOptions& o) {
   }
 }
 
+// The paving colours, named as in the Python legend (plot_loops.TPLANE_LEGEND).
+Style labelled(PavingTag tag) {
+  Style s = paving_style(tag);
+  s.label = tag == PavingTag::Inner ? "inner" : tag == PavingTag::Boundary ? "boundary" : "outside (no loop)";
+  return s;
+}
+
+Style labelled(LoopStatus status) {
+  Style s = loop_style(status);
+  s.label = status == LoopStatus::Proven     ? "proven loop"
+            : status == LoopStatus::Unproven ? "detection (no proof)"
+                                             : "partial detection";
+  return s;
+}
+
 IntervalVector hull_of(const std::vector<IntervalVector>& boxes) {
   IntervalVector h(2, Interval::empty());
   for (const auto& b : boxes) h |= b;
@@ -60,23 +75,23 @@ TPlaneFigureCounts draw_tplane(Figure& fig, const IntervalVector& view, const Pa
   if (!paving.is_empty()) {
     // The domain in the outside colour, then the leaves of the outer
     // approximation: together they show every leaf with its tag.
-    fig.draw_box(paving.domain(), paving_style(PavingTag::Outside));
+    fig.draw_box(paving.domain(), labelled(PavingTag::Outside));
     for (PavingTag tag : {PavingTag::Inner, PavingTag::Boundary}) {
       for (std::size_t i : paving.leaf_indices(tag)) {
         const IntervalVector b = paving.node_box(i);
         if (!b.intersects(view) || !big_enough(b, options.min_leaf_px)) continue;
-        fig.draw_box(b, paving_style(tag));
+        fig.draw_box(b, labelled(tag));
         ++counts.leaves;
       }
     }
   }
   if (options.show_diagonal) {
     const double lo = std::max(view[0].lb(), view[1].lb()), hi = std::min(view[0].ub(), view[1].ub());
-    if (lo < hi) fig.draw_polyline({{lo, lo}, {hi, hi}}, {"none", "#555555", 0.8, 1.0, "diagonal"});
+    if (lo < hi) fig.draw_polyline({{lo, lo}, {hi, hi}}, {"none", "#555555", 0.8, 1.0, "diagonal", "t1 = t2"});
   }
   // Partial ones first, proven ones last: the proofs stay on top.
   for (LoopStatus status : {LoopStatus::Partial, LoopStatus::Unproven, LoopStatus::Proven}) {
-    const Style style = loop_style(status);
+    const Style style = labelled(status);
     for (const DetectionShape& d : detections) {
       if (d.status != status || d.boxes.empty()) continue;
       const IntervalVector hull = hull_of(d.boxes);
@@ -95,7 +110,7 @@ TPlaneFigureCounts draw_tplane(Figure& fig, const IntervalVector& view, const Pa
   if (crossings) {
     for (const PathCrossing& c : *crossings) {
       if (!view.contains({c.t1, c.t2})) continue;
-      fig.draw_point({c.t1, c.t2}, options.crossing_px, {"#1565c0", "#ffffff", 0.5, 1, "crossing"});
+      fig.draw_point({c.t1, c.t2}, options.crossing_px, {"#1565c0", "#ffffff", 0.5, 1, "crossing", "true crossings"});
       ++counts.crossings;
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "sillage/error.h"
 
@@ -14,8 +15,11 @@ double scale_x(const Figure& f) { return std::abs(f.px(1) - f.px(0)); }
 double scale_y(const Figure& f) { return std::abs(f.py(1) - f.py(0)); }
 
 void check_style(const TubeStyle& s, const char* where) {
-  if (!(s.merge_px >= 0) || !std::isfinite(s.merge_px)) {
-    throw Error(std::string(where) + ": merge_px must be finite and >= 0, got " + std::to_string(s.merge_px));
+  for (const auto& [name, v] : {std::pair{"merge_px", s.merge_px}, std::pair{"min_px", s.min_px},
+                                std::pair{"landmark_px", s.landmark_px}}) {
+    if (!(v >= 0) || !std::isfinite(v)) {
+      throw Error(std::string(where) + ": " + name + " must be finite and >= 0, got " + std::to_string(v));
+    }
   }
 }
 
@@ -97,7 +101,8 @@ std::size_t draw_tube(Figure& fig, const Tube& x, const TubeStyle& style, const 
     }
     // Narrow rectangles: outlines would darken the tube, so stroke with the fill colour.
     const bool narrow = fig.px(td.t(k)) - x0 < 3.0 && style.slices.fill != "none";
-    fig.draw_box(IntervalVector{Interval(td.t(start), td.t(k)), h}, narrow ? dense : style.slices);
+    fig.draw_box(IntervalVector{Interval(td.t(start), td.t(k)), at_least(h, style.min_px, scale_y(fig))},
+                 narrow ? dense : style.slices);
   }
   const std::size_t drawn = fig.nb_shapes() - before;
 
@@ -149,6 +154,7 @@ std::size_t draw_tube_vector_2d(Figure& fig, const TubeVector& x, std::size_t i,
   // Consecutive slice boxes merge while their hull stays within merge_px
   // pixels of each of them (so tiny boxes along a path merge); empty slices
   // (some component empty) end a group and are not drawn.
+  std::vector<IntervalVector> groups;
   for (std::size_t k = 0; k < n;) {
     if (empty_at(k)) {
       ++k;
@@ -164,10 +170,21 @@ std::size_t draw_tube_vector_2d(Figure& fig, const TubeVector& x, std::size_t i,
       core_x = cx2;
       core_y = cy2;
     }
-    fig.draw_box(IntervalVector{hx, hy}, style.slices);
+    groups.push_back(IntervalVector{at_least(hx, style.min_px, sx), at_least(hy, style.min_px, sy)});
   }
+  // Larger boxes first: the smaller ones (the start of a drift, a narrowing) stay visible over them.
+  auto area = [](const IntervalVector& b) { return b.is_unbounded() ? rounding::kInf : b[0].diam() * b[1].diam(); };
+  std::stable_sort(groups.begin(), groups.end(),
+                   [&](const IntervalVector& a, const IntervalVector& b) { return area(a) > area(b); });
+  for (const IntervalVector& g : groups) fig.draw_box(g, style.slices);
   const std::size_t drawn = fig.nb_shapes() - before;
 
+  // Gates 0 and N, translucent and at least 3 px wide so that a point shows.
+  const std::size_t last = x.nb_slices();
+  for (const auto& [k, st] : {std::pair{std::size_t{0}, &style.initial}, std::pair{last, &style.final}}) {
+    fig.draw_box(IntervalVector{at_least(x[i].gate(k), 3, sx), at_least(x[j].gate(k), 3, sy)}, *st);
+  }
+  // The truth last, thin, over the tube and its gates.
   if (truth_i != nullptr && truth_j != nullptr) {
     const Interval dom = truth_i->domain() & truth_j->domain() & x.tdomain()->t0_tf();
     if (!dom.is_empty() && !dom.is_degenerate()) {
@@ -179,49 +196,117 @@ std::size_t draw_tube_vector_2d(Figure& fig, const TubeVector& x, std::size_t i,
       });
     }
   }
-  // Gates 0 and N on top, at least 3 px wide so that a point shows.
-  const std::size_t last = x.nb_slices();
-  for (const auto& [k, st] : {std::pair{std::size_t{0}, &style.initial}, std::pair{last, &style.final}}) {
-    fig.draw_box(IntervalVector{at_least(x[i].gate(k), 3, sx), at_least(x[j].gate(k), 3, sy)}, *st);
-  }
   return drawn;
 }
 
 Figure tube_figure(const Tube& x, const std::string& title, const TubeStyle& style, const Trajectory* truth,
-                   double width_px, double height_px) {
+                   double width_px, double height_px, const std::string& name) {
   std::vector<Interval> all(x.slices().begin(), x.slices().end());
   all.insert(all.end(), x.gates().begin(), x.gates().end());
   bool clipped = false;
   const Interval wy = finite_window(all, clipped);
   Figure fig(IntervalVector{x.tdomain()->t0_tf(), wy}, width_px, height_px);
-  fig.set_title(clipped ? title + " (unbounded: clipped to " + wy.str() + ")" : title);
-  fig.set_labels("t (s)", "x");
+  fig.set_title(title);
+  if (clipped) fig.set_note("Unbounded: clipped to " + wy.str());
+  fig.set_labels("t (s)", name);
   draw_tube(fig, x, style, truth);
   return fig;
 }
 
-Figure tube_vector_figure(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
-                          const TubeStyle& style, const Trajectory* truth_i, const Trajectory* truth_j,
-                          double width_px) {
+namespace {
+
+// All the slices and gates of a tube.
+std::vector<Interval> slices_and_gates(const Tube& c) {
+  std::vector<Interval> v(c.slices().begin(), c.slices().end());
+  v.insert(v.end(), c.gates().begin(), c.gates().end());
+  return v;
+}
+
+// The hull of the finite points (truth samples, landmarks) along x_i and x_j.
+IntervalVector key_hull(const TubeVector& x, const Trajectory* truth_i, const Trajectory* truth_j,
+                        const std::vector<Vector>* landmarks) {
+  IntervalVector h(2, Interval::empty());
+  auto add = [&](double a, double b) {
+    if (std::isfinite(a) && std::isfinite(b)) h |= IntervalVector{Interval(a), Interval(b)};
+  };
+  if (truth_i != nullptr && truth_j != nullptr) {
+    const Interval dom = truth_i->domain() & truth_j->domain() & x.tdomain()->t0_tf();
+    if (!dom.is_empty()) {
+      for (std::size_t s = 0; s <= 2000; ++s) {
+        const double t = s == 2000 ? dom.ub() : dom.lb() + dom.diam() * static_cast<double>(s) / 2000;
+        double a, b;
+        if (finite_value((*truth_i)(t), a) && finite_value((*truth_j)(t), b)) add(a, b);
+      }
+    }
+  }
+  if (landmarks != nullptr) {
+    for (const Vector& p : *landmarks) {
+      if (p.size() != 2) throw DimensionError("map_view: landmarks must be 2-D points, got dimension " + std::to_string(p.size()));
+      add(p[0], p[1]);
+    }
+  }
+  return h;
+}
+
+std::string short_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// Built with append: `"[" + std::string` trips a GCC 12 -Wrestrict false positive.
+std::string range_text(const Interval& x) {
+  return std::string("[").append(short_number(x.lb())).append(", ").append(short_number(x.ub())).append("]");
+}
+
+}  // namespace
+
+MapView map_view(const TubeVector& x, std::size_t i, std::size_t j, const std::string& name_i,
+                 const std::string& name_j, const Trajectory* truth_i, const Trajectory* truth_j,
+                 const std::vector<Vector>* landmarks, double zoom) {
   if (i >= x.size() || j >= x.size() || i == j) {
-    throw DimensionError("tube_vector_figure: components (" + std::to_string(i) + ", " + std::to_string(j) +
+    throw DimensionError("map_view: components (" + std::to_string(i) + ", " + std::to_string(j) +
                          ") of a tube vector of size " + std::to_string(x.size()));
   }
+  if (!(zoom >= 1) || !std::isfinite(zoom)) throw Error("map_view: zoom must be finite and >= 1, got " + number_text(zoom));
   bool ci = false, cj = false;
-  auto all = [&](const Tube& c) {
-    std::vector<Interval> v(c.slices().begin(), c.slices().end());
-    v.insert(v.end(), c.gates().begin(), c.gates().end());
-    return v;
-  };
-  const Interval wx = finite_window(all(x[i]), ci), wy = finite_window(all(x[j]), cj);
-  Figure fig(IntervalVector{wx, wy}, width_px);
-  fig.set_title(ci || cj ? title + " (unbounded: clipped to " + wx.str() + " x " + wy.str() + ")" : title);
+  const Interval wx = finite_window(slices_and_gates(x[i]), ci), wy = finite_window(slices_and_gates(x[j]), cj);
+  MapView v{IntervalVector{wx, wy}, ""};
+  if (ci || cj) v.note = "Unbounded: clipped to " + range_text(wx) + " × " + range_text(wy);
+  const IntervalVector key = key_hull(x, truth_i, truth_j, landmarks);
+  if (key.is_empty()) return v;
+  bool unused = false;  // the same margins as the tube's window
+  const IntervalVector framed{finite_window({key[0]}, unused), finite_window({key[1]}, unused)};
+  if (wx.diam() > zoom * framed[0].diam() || wy.diam() > zoom * framed[1].diam()) {
+    const IntervalVector tube{x[i].codomain(), x[j].codomain()};
+    v.window = framed;
+    const bool truth = truth_i != nullptr && truth_j != nullptr, marks = landmarks != nullptr && !landmarks->empty();
+    v.note = std::string("Framed on ") + (truth && marks ? "the truth and the landmarks" : truth ? "the truth" : "the landmarks") +
+             "; the tube reaches " + name_i + " in " + range_text(tube[0]) + ", " + name_j + " in " + range_text(tube[1]);
+  } else {
+    v.window = v.window | framed;
+  }
+  return v;
+}
+
+Figure tube_vector_figure(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
+                          const TubeStyle& style, const Trajectory* truth_i, const Trajectory* truth_j,
+                          double width_px, const std::vector<Vector>* landmarks, const std::string& name_i,
+                          const std::string& name_j) {
+  check_style(style, "tube_vector_figure");
   // Built with append: `"x" + std::to_string(..)` trips a GCC 12 -Wrestrict false positive.
-  std::string lx = "x", ly = "x";
-  lx.append(std::to_string(i + 1));
-  ly.append(std::to_string(j + 1));
-  fig.set_labels(lx, ly);
+  std::string ni = name_i, nj = name_j;
+  if (ni.empty()) ni.append("x").append(std::to_string(i + 1));
+  if (nj.empty()) nj.append("x").append(std::to_string(j + 1));
+  const MapView view = map_view(x, i, j, ni, nj, truth_i, truth_j, landmarks);
+  Figure fig(view.window, width_px);
+  fig.set_title(title);
+  fig.set_note(view.note);
+  fig.set_labels(ni, nj);
   draw_tube_vector_2d(fig, x, i, j, style, truth_i, truth_j);
+  if (landmarks != nullptr && style.landmark_px > 0) {
+    for (const Vector& p : *landmarks) fig.draw_point(p, style.landmark_px, style.landmarks);
+  }
   return fig;
 }
 

@@ -82,7 +82,8 @@ std::string loops_section(const Problem& p, const BuiltProblem& b) {
   h << figure_block([&] { return tplane_figure(*tp, nullptr, "t-plane of " + (l.p.empty() ? l.v : l.p)); },
                     "The t-plane: detections of loops, proven ones marked");
   const TubeVector* pos = l.p.empty() ? nullptr : b.var(l.p).tubes.get();
-  h << figure_block([&] { return loops_map_figure(*tp, nullptr, nullptr, pos, nullptr, "Loops on the map"); },
+  h << figure_block([&] { return loops_map_figure(*tp, nullptr, nullptr, pos, nullptr, "Loops on the map", 700, {},
+                                                  pos ? l.p + "[0]" : "x", pos ? l.p + "[1]" : "y"); },
                     std::string("The loops on the map") + (pos ? "" : " (positions relative to the start)"));
   return h.str();
 }
@@ -166,18 +167,20 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
       const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
       const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
+      std::vector<Vector> points;  // the landmarks: in the map's window, dots distinct from the truth's line
+      if (marks) {
+        const CsvTable& t = p.table(marks->data)->table;
+        for (std::size_t r = 0; r < t.nb_rows(); ++r)
+          points.push_back(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]});
+      }
       h << figure_block(
           [&] {
-            Figure f = tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr, tj ? &*tj : nullptr);
-            if (marks) {
-              const CsvTable& t = p.table(marks->data)->table;
-              for (std::size_t r = 0; r < t.nb_rows(); ++r)
-                f.draw_point(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]}, 5.0,
-                             Style{"#e53935", "#b71c1c", 1.0, 1.0, ""});
-            }
-            return f;
+            return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr,
+                                      tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
+                                      comp_name(v, pair.second));
           },
-          "Map " + title + (cols ? " (truth in red)" : "") + (marks ? ", landmarks of '" + marks->data + "' as red dots" : ""));
+          "Map " + title + (cols ? " (truth as a red line)" : "") +
+              (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
     }
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())
@@ -193,7 +196,7 @@ std::string report_html(const Problem& p, const SolveResult& r) {
         std::optional<Trajectory> tr;
         if (cols) tr = truth_trajectory(p, (*cols)[i]);
         const std::string name = comp_name(v, i);
-        h << figure_block([&] { return tube_figure((*v.tubes)[i], "[" + name + "](t)", {}, tr ? &*tr : nullptr); },
+        h << figure_block([&] { return tube_figure((*v.tubes)[i], "[" + name + "](t)", {}, tr ? &*tr : nullptr, 600, 300, name); },
                           "The tube [" + name + "](·)" + (tr ? " and the truth" : ""));
         h << figure_block([&] { return thickness_figure((*v.tubes)[i], "Thickness of [" + name + "]"); },
                           "Thickness of [" + name + "](·)");

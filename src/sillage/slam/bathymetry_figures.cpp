@@ -65,19 +65,15 @@ Figure bathymetry_map_figure(const BathymetryMission& m, const TubeVector& p, co
                              double width_px) {
   const TrajectoryVector truth = bathymetry_truth(m);
   TubeStyle style;
-  style.slices = {"#c8c8c8", "#9a9a9a", 0.3, 1.0, "dead-reckoning"};
-  style.truth = {"none", "#1f3f66", 1.0, 1.0, "truth"};
-  Figure fig = tube_vector_figure(p, 0, 1, title, style, &truth[0], &truth[1], width_px);
-  fig.set_labels("east (m)", "north (m)");
-  return fig;
+  style.slices = {"#c8c8c8", "#9a9a9a", 0.3, 1.0, "dead-reckoning", "dead reckoning"};
+  style.truth = {"none", "#1f3f66", 1.0, 1.0, "truth", "truth"};
+  return tube_vector_figure(p, 0, 1, title, style, &truth[0], &truth[1], width_px, nullptr, "east (m)", "north (m)");
 }
 
 Figure bathymetry_observation_figure(const BathymetryMission& m, const Tube& z, const std::string& title,
                                      double width_px) {
   const Trajectory zt = bathymetry_truth_observation(m);
-  Figure fig = tube_figure(z, title, {}, &zt, width_px, 300);
-  fig.set_labels("t (s)", "z (m)");
-  return fig;
+  return tube_figure(z, title, {}, &zt, width_px, 300, "z (m)");
 }
 
 }  // namespace sillage

@@ -138,6 +138,9 @@ TEST(SlamFigures, ThicknessAndMap) {
       slam_thickness_figure({{a, "dead reckoning", "#777777"}, {b, "slam", "#d62728"}}).svg();
   EXPECT_NE(svg.find("dead reckoning"), std::string::npos);
   EXPECT_NE(svg.find("#d62728"), std::string::npos);
+  // Two names for one curve: the figure says that the curves coincide.
+  const std::string same = slam_thickness_figure({{a, "dead reckoning", "#777777"}, {a, "slam", "#d62728"}}).svg();
+  EXPECT_NE(same.find("dead reckoning = slam (the curves coincide)"), std::string::npos);
   const TubeVector other(TDomain::create(0.0, 10.0, 0.5), 2);
   EXPECT_THROW(slam_thickness_figure({{a, "a", "red"}, {other, "b", "blue"}}), DimensionError);
   EXPECT_THROW(slam_thickness_figure({}), Error);
