@@ -93,11 +93,14 @@ def test_no_solution_exits_1_and_says_why(tmp_path):
     try:
         problem.write_text(text)
         r = run("solve", problem, "--out", tmp_path)
+        quiet = run("solve", problem, "--out", tmp_path / "quiet", "--quiet")
     finally:
         problem.unlink()
     assert r.returncode == 1
     assert "NO SOLUTION" in r.stdout and "constraint" in r.stdout
     assert "No solution" in (tmp_path / "report.html").read_text()
+    assert quiet.returncode == 1  # --quiet drops the summary, not the explanation
+    assert "NO SOLUTION" in quiet.stdout and "constraint" in quiet.stdout and "wrote" not in quiet.stdout
 
 
 def test_report_in_headless_chromium(tmp_path):
@@ -133,3 +136,6 @@ def test_show_and_plot_a_tube_file(tmp_path):
     r = run("plot", tmp_path / "x.tube", "--out", tmp_path / "x.svg")
     assert r.returncode == 0 and (tmp_path / "x.svg").read_text().count("<svg") == 1
     assert run("show", tmp_path / "missing.tube").returncode == 2
+    bad = run("show", PROBLEMS / "causal_chain.toml")  # not a tube file: the message names it
+    assert bad.returncode == 2
+    assert f"load tube: '{PROBLEMS / 'causal_chain.toml'}': not a sillage tube file" in bad.stderr

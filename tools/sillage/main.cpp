@@ -75,6 +75,8 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
                 r.build_seconds(), r.contract_seconds());
     if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
     std::printf("  wrote %s/report.html, results.json and one CSV per tube\n", out.c_str());
+  } else if (r.empty) {  // quiet drops the summary, never the answer's explanation
+    std::printf("%s: NO SOLUTION\n  %s\n", file.c_str(), r.why_empty.c_str());
   }
   return r.empty ? kNoSolution : kSolved;
 }
@@ -139,7 +141,7 @@ int main(int argc, char** argv) {
   s->add_option("--scheduling", scheduling, "the order within a round: fifo or priority (default: the file's)")
       ->check(CLI::IsMember({"fifo", "priority"}));
   s->add_option("--threads", threads, "worker threads (default: all)")->check(CLI::PositiveNumber);
-  s->add_flag("--quiet", quiet, "no progress line, no summary");
+  s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
   c->add_option("problem", problem, "the problem file (TOML)")->required();
   auto* sh = app.add_subcommand("show", "summary of a tube file (tube_io)");
