@@ -53,7 +53,7 @@ def test_solve_writes_json_csv_and_report(tmp_path):
     assert table.dtype.names == ("t_lb", "t_ub", "x_lb", "x_ub")
     gates = table[table["t_lb"] == table["t_ub"]]
     assert np.all(gates["x_lb"] <= np.sin(gates["t_lb"]) + 1) and np.all(np.sin(gates["t_lb"]) + 1 <= gates["x_ub"])
-    assert "201 of 201 truth samples inside" in (tmp_path / "report.html").read_text()
+    assert "201 of 201 truth time points inside" in (tmp_path / "report.html").read_text()
 
 
 def test_exit_codes():
