@@ -103,6 +103,29 @@ def test_no_solution_exits_1_and_says_why(tmp_path):
     assert "NO SOLUTION" in quiet.stdout and "constraint" in quiet.stdout and "wrote" not in quiet.stdout
 
 
+def test_rows_outside_the_time_domain(tmp_path):
+    # [0, 10] leaves 4 of the 9 ranges (t = 11.4 ... 17.1) outside: an error naming the file and row,
+    # or, with outside = "skip", skipped and counted by check, in the report and in results.json.
+    text = (PROBLEMS / "line_ranges.toml").read_text().replace("domain = [0, 20]", "domain = [0, 10]")
+    text = text.replace("times = [0, 5, 10, 20]", "times = [0, 5, 10]")
+    problem, skip = PROBLEMS / "test_rows_outside.toml", PROBLEMS / "test_rows_outside_skip.toml"
+    try:
+        problem.write_text(text)
+        skip.write_text(text.replace('time = "t"\n', 'time = "t"\noutside = "skip"\n'))
+        bad, checked = run("check", problem), run("check", skip)
+        solved = run("solve", skip, "--out", tmp_path, "--quiet")
+    finally:
+        problem.unlink()
+        skip.unlink()
+    assert bad.returncode == 2
+    assert ("test_rows_outside.toml:30:1: found row 5 of 'ranges' (" in bad.stderr and
+            "beacon_ranges.csv:8) at t = 11.4, outside the time domain [0, 10]" in bad.stderr), bad.stderr
+    assert checked.returncode == 0 and "4 row(s) of 'ranges' outside [t0, tf] skipped" in checked.stdout
+    assert solved.returncode == 0, solved.stdout + solved.stderr
+    assert list(json.loads((tmp_path / "results.json").read_text())["rows_outside"].values()) == [4]
+    assert "<td>eval rows outside [t0, tf], skipped</td><td>4 (" in (tmp_path / "report.html").read_text()
+
+
 def test_report_in_headless_chromium(tmp_path):
     assert run("solve", PROBLEMS / "dead_reckoning.toml", "--out", tmp_path, "--quiet").returncode == 0
     html = (tmp_path / "report.html").read_text()

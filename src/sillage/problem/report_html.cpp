@@ -87,6 +87,18 @@ std::string loops_section(const Problem& p, const BuiltProblem& b) {
   return h.str();
 }
 
+// Eval rows skipped as outside [t0, tf] (outside = "skip"): "0", or "3 (constraint 2 ...: 3)".
+std::string rows_outside(const Problem& p) {
+  std::size_t n = 0;
+  std::string which;
+  for (const ConstraintSpec& c : p.constraints) {
+    if (c.nb_outside == 0) continue;
+    n += c.nb_outside;
+    which += (which.empty() ? "" : "; ") + xml_escape(c.label) + ": " + std::to_string(c.nb_outside);
+  }
+  return std::to_string(n) + (which.empty() ? "" : " (" + which + ")");
+}
+
 }  // namespace
 
 TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
@@ -223,6 +235,7 @@ std::string report_html(const Problem& p, const SolveResult& r) {
   h << "<h2>Run statistics</h2>\n<table id=\"stats\">"
     << "<tr><td>variables</td><td>" << b.vars.size() << "</td></tr>"
     << "<tr><td>constraints (file)</td><td>" << p.constraints.size() << "</td></tr>"
+    << "<tr><td>eval rows outside [t0, tf], skipped</td><td>" << rows_outside(p) << "</td></tr>"
     << "<tr><td>network nodes</td><td>" << b.cn->nb_ctc() << "</td></tr>"
     << "<tr><td>network domains</td><td>" << b.cn->nb_dom() << "</td></tr>"
     << "<tr><td>scheduling</td><td>" << scheduling_name(r.scheduling) << "</td></tr>"
