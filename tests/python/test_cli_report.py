@@ -54,6 +54,18 @@ def test_solve_writes_json_csv_and_report(tmp_path):
     gates = table[table["t_lb"] == table["t_ub"]]
     assert np.all(gates["x_lb"] <= np.sin(gates["t_lb"]) + 1) and np.all(np.sin(gates["t_lb"]) + 1 <= gates["x_ub"])
     assert "201 of 201 truth time points inside" in (tmp_path / "report.html").read_text()
+    assert res["rows_outside"] == {} and not list(tmp_path.glob("*.tube"))  # .tube files only on request
+
+
+def test_save_tubes_for_show_and_load_tube(tmp_path):
+    r = run("solve", PROBLEMS / "line_ranges.toml", "--out", tmp_path, "--save-tubes")
+    assert r.returncode == 0 and "one CSV and one .tube file per tube" in r.stdout, r.stdout + r.stderr
+    assert sorted(f.name for f in tmp_path.glob("*.tube")) == ["v.tube", "x.tube"]
+    shown = run("show", tmp_path / "x.tube")
+    assert shown.returncode == 0 and "Tube of 1 component(s)" in shown.stdout, shown.stderr
+    x = sillage.load_tube(str(tmp_path / "x.tube"))
+    gates = json.loads((tmp_path / "results.json").read_text())["variables"]["x"]["components"][0]["gates"]
+    assert [[g.lb(), g.ub()] for g in (x.gate(k) for k in range(len(gates)))] == gates
 
 
 def test_exit_codes():
