@@ -46,7 +46,7 @@ std::size_t position_misses(const BathymetryMission& m, const TubeVector& p) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const auto seed = static_cast<std::uint64_t>(example::option_number(argc, argv, "--seed", 7));
   const double dt = example::option_number(argc, argv, "--dt", 1.0);
@@ -175,3 +175,5 @@ int main(int argc, char** argv) {
   example::print_result("bathymetry_slam", summary, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -16,7 +16,7 @@
 
 using namespace sillage;
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   struct Beacon {
     double x1, x2;
@@ -63,3 +63,5 @@ int main(int argc, char** argv) {
                         {{fig_name, "Table 2.1: rings of the three range measurements and the contracted box"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

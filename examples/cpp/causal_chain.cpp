@@ -122,7 +122,7 @@ std::string box_str(const IntervalVector& b) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double dt = 0.01;
   const auto td = TDomain::create(0.0, kTf, dt);
@@ -199,3 +199,5 @@ int main(int argc, char** argv) {
   example::print_result("causal_chain", summary, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

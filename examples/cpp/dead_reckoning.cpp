@@ -266,7 +266,7 @@ std::string box_str(const Interval& a, const Interval& b) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   bool all_inside = true;
   std::string summary;
@@ -355,3 +355,5 @@ int main(int argc, char** argv) {
   example::print_result("dead_reckoning", summary, all_inside, figures);
   return all_inside ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -49,7 +49,7 @@ std::string iv(const Interval& a, int digits = 4) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double dt = example::option_number(argc, argv, "--dt", 0.01);
   const double ratio = example::option_number(argc, argv, "--ratio", 0.0);
@@ -142,3 +142,5 @@ int main(int argc, char** argv) {
                          {"drifting_clock_x.svg", "Ephemeris of the boat (Fig. 5.11)"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -1,9 +1,9 @@
 #pragma once
-// Tiny shared helpers of the C++ examples: `--name value` options, the --out
-// folder and the RESULT line that examples/run_demo.py reads. A bad command
-// line (unknown option, missing value, text where a number is expected)
-// prints the problem and a usage line and exits with status 2, as the Python
-// examples' argparse does.
+// Tiny shared helpers of the C++ examples: their entry (run), `--name value`
+// options, the --out folder and the RESULT line that examples/run_demo.py
+// reads. A bad command line (unknown option, missing value, text where a
+// number is expected) prints the problem and a usage line and exits with
+// status 2, as the Python examples' argparse does; so does bad data (run).
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "sillage/error.h"
 
 // The bound options of the plaza1 examples (plaza1_bounds.h checks that its table matches).
 #define PLAZA1_BOUND_OPTIONS "--start-x=X", "--start-y=X", "--start-heading=X", "--start-pos-err=X", "--start-heading-err=X", "--gyro-turn-on-bias=X", "--gyro-in-run-drift=X", "--turn-max=X", "--odo-scale=X", "--odo-over=X", "--odo-under=X", "--speed-max=X", "--range-short=X", "--range-long=X", "--time-jitter=X", "--track-err=X", "--turn-accel=X"
@@ -62,6 +64,22 @@ inline std::vector<std::string> accepted_options(const std::string& program) {
   }
   std::cerr << std::endl;
   std::exit(2);
+}
+
+// The entry of every example: `int main(int argc, char** argv) { return
+// example::run(argc, argv, example_main); }`. A sillage::Error that escapes
+// the example is bad input (a data file with a missing column, no rows, a
+// cell that is not a number: CsvTable names the file, line and column): its
+// message on stderr and status 2, as for a bad command line, not an abort.
+// An empty result is not an Error: the examples print it and exit 1.
+inline int run(int argc, char** argv, int (*example_main)(int, char**)) {
+  try {
+    return example_main(argc, argv);
+  } catch (const sillage::Error& e) {
+    std::cout.flush();
+    std::cerr << program_name(argc > 0 ? argv[0] : nullptr) << ": " << e.what() << std::endl;
+    return 2;
+  }
 }
 
 // A finite number written whole (no trailing text), else nullopt.

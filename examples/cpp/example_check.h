@@ -11,11 +11,17 @@
 
 namespace example {
 
-// True if the network is not empty; otherwise prints why (stats.emptiness).
+// "EMPTY: <why>": the answer of an empty network, for the output and the
+// RESULT line, which then give no truth or box figures: the domains keep
+// their last values (ContractorNetwork), but no solution lies in them.
+inline std::string empty_text(const sillage::ContractStats& s) {
+  return "EMPTY: " + s.emptiness + " (no solution: the bounds or the data are inconsistent)";
+}
+
+// True if the network is not empty; otherwise prints why (empty_text).
 inline bool check_stats(const sillage::ContractStats& s, const std::string& label = "") {
   if (!s.empty) return true;
-  std::printf("  %sEMPTY: %s (no solution: the bounds or the data are inconsistent)\n",
-              label.empty() ? "" : (label + ": ").c_str(), s.emptiness.c_str());
+  std::printf("  %s%s\n", label.empty() ? "" : (label + ": ").c_str(), empty_text(s).c_str());
   return false;
 }
 

@@ -213,7 +213,7 @@ Trajectory component(const std::vector<State>& path, double h, std::size_t i) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   bool ok = true;
   std::string summary;
@@ -304,3 +304,5 @@ int main(int argc, char** argv) {
   example::print_result("kidnapped_robot", summary, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -97,7 +97,7 @@ std::string box_str(const IntervalVector& b) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const Interval dom(0, kTf);
   // The truth and its derivatives (analytic: the check is rigorous).
@@ -156,3 +156,5 @@ int main(int argc, char** argv) {
                           "Lissajous robot: the CtcDeriv network in blue, CtcIvp in orange, the truth in red"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

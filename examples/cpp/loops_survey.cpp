@@ -77,7 +77,7 @@ std::size_t velocity_misses(const looping_mission::Mission& m) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double hours = example::option_number(argc, argv, "--hours", 1.0);
   const double divisor = example::option_number(argc, argv, "--eps-divisor", 2000.0);
@@ -332,3 +332,5 @@ int main(int argc, char** argv) {
   example::print_result("loops_survey", result, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "example_args.h"
+#include "example_data.h"
 #include "bound_audit.h"
 #include "loops_figures.h"
 #include "loops_real_data.h"
@@ -54,6 +54,10 @@ Robot load_robot(const fs::path& dir) {
   const CsvTable od = CsvTable::read((dir / "odometry.csv").string());
   r.truth = {gt.values("t_s"), gt.values("x_m"), gt.values("y_m")};
   r.heading = gt.values("heading_rad");
+  if (gt.nb_rows() < 2) throw Error(gt.source() + ": " + std::to_string(gt.nb_rows()) + " rows, expected at least 2");
+  for (std::size_t i = 1; i < r.truth.t.size(); ++i) {
+    if (!(r.truth.t[i] > r.truth.t[i - 1])) throw Error(gt.where(i) + ": the times must increase");
+  }
   for (std::size_t i = 1; i < r.heading.size(); ++i) {
     r.heading[i] -= 2 * M_PI * std::round((r.heading[i] - r.heading[i - 1]) / (2 * M_PI));
   }
@@ -61,7 +65,7 @@ Robot load_robot(const fs::path& dir) {
   // A few commands share a time stamp (up to 11 per robot): the last one holds.
   std::size_t m = 0;
   for (std::size_t i = 0; i < r.ct.size(); ++i) {
-    if (m > 0 && r.ct[i] < r.ct[m - 1]) throw Error("utias: odometry times decrease at row " + std::to_string(i + 1));
+    if (m > 0 && r.ct[i] < r.ct[m - 1]) throw Error(od.where(i) + ": the times decrease");
     if (m > 0 && r.ct[i] == r.ct[m - 1]) --m;
     r.ct[m] = r.ct[i], r.v[m] = r.v[i], r.w[m] = r.w[i], ++m;
   }
@@ -137,21 +141,22 @@ example::Path within(const example::Path& p, double t0, double tf) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
-  const fs::path dir =
-      example::option_value(argc, argv, "--data", (fs::path(SILLAGE_SHARED_DIR) / "data" / "utias-mrclam7").string());
   const std::string robot = example::option_value(argc, argv, "--robot", "0");
   const int only = robot.size() == 1 && robot[0] >= '0' && robot[0] <= '5' ? robot[0] - '0' : -1;
   if (only < 0) {
     std::fprintf(stderr, "loops_utias: --robot must be 1..5 (0: all five), got '%s'\n", robot.c_str());
     return 2;
   }
-  if (!fs::exists(dir / "robot1" / "odometry.csv")) {
-    std::printf("no utias-mrclam7 data at %s (pass --data DIR)\n", dir.string().c_str());
-    example::print_result("loops_utias", "skipped: no data", true);
-    return 0;
+  std::vector<std::string> files;
+  for (int id = 1; id <= 5; ++id) {
+    if (only != 0 && id != only) continue;
+    for (const char* f : {"ground_truth.csv", "odometry.csv"}) files.push_back("robot" + std::to_string(id) + "/" + f);
   }
+  const auto data = example::data_dir(argc, argv, "loops_utias", "utias-mrclam7", files);
+  if (!data) return 0;
+  const fs::path& dir = *data;
   const Bounds b;
   // Vicon is accurate to about 1 mm; the tolerance also covers its jitter
   // while the robot stands (commands at 0 for more than `lag`). Crossing
@@ -196,3 +201,5 @@ int main(int argc, char** argv) {
   example::print_result("loops_utias", summary, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

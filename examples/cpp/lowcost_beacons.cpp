@@ -194,7 +194,7 @@ Figure thickness_plot(const TDomain& td, const std::vector<std::vector<double>>&
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double dt = example::option_number(argc, argv, "--dt", 0.05);
   const double ratio = example::option_number(argc, argv, "--ratio", 0.0);
@@ -315,3 +315,5 @@ int main(int argc, char** argv) {
        {"lowcost_beacons_deriv_vs_ivp.svg", "The network's position tube (blue), then contracted by CtcIvp (orange)"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -68,7 +68,7 @@ void draw_scene(Figure& fig, const GomneResult& r) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double eps = example::option_number(argc, argv, "--eps", 0.1);
   if (!(eps > 0)) {
@@ -114,3 +114,5 @@ int main(int argc, char** argv) {
                          {"outliers_ranges_zoom.svg", "Paving of the q-relaxed set around the robot"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "example_args.h"
+#include "example_data.h"
 #include "sillage/error.h"
 #include "sillage/io/csv.h"
 
@@ -38,30 +38,33 @@ inline Plaza1Data load_plaza1(const std::filesystem::path& dir) {
   d.dist = odo.values("delta_dist_m");
   d.dpsi_ins = odo.values("delta_heading_rad"), d.dpsi_drift = odo.values("delta_heading_drp_rad");
   const std::vector<double> ot = odo.values("t_s");
-  if (ot.size() + 1 != d.t.size()) throw sillage::Error("plaza1: expected one odometry row per ground-truth step");
+  if (ot.size() + 1 != d.t.size() || ot.empty()) {
+    throw sillage::Error(odo.source() + ": " + std::to_string(ot.size()) + " rows, expected one per step of " +
+                         gt.source() + " (" + std::to_string(d.t.size()) + " rows, at least 2)");
+  }
   for (std::size_t k = 0; k < ot.size(); ++k) {
     if (ot[k] != d.t[k + 1]) {
-      throw sillage::Error("plaza1: odometry row " + std::to_string(k) + " does not end at t_{k+1}");
+      throw sillage::Error(odo.where(k) + ": t_s = " + sillage::number_text(ot[k]) + ", expected the end of its step, " +
+                           sillage::number_text(d.t[k + 1]) + " (" + gt.where(k + 1) + ")");
     }
   }
   d.rt = rg.values("t_s"), d.rid = rg.values("beacon_id"), d.r = rg.values("range_m");
   const auto ids = bc.values("beacon_id"), bx = bc.values("x_m"), by = bc.values("y_m");
   for (std::size_t i = 0; i < ids.size(); ++i) d.beacons[static_cast<int>(ids[i])] = {bx[i], by[i]};
+  for (std::size_t j = 0; j < d.rid.size(); ++j) {
+    if (d.rid[j] != static_cast<int>(d.rid[j]) || !d.beacons.count(static_cast<int>(d.rid[j]))) {
+      throw sillage::Error(rg.where(j) + ": beacon " + sillage::number_text(d.rid[j]) + " is not in " + bc.source());
+    }
+  }
   return d;
 }
 
 // The data of --data DIR (by default the shared data folder known at build
-// time), or nullopt when the folder holds none: the example `name` then says
-// so and reports itself skipped.
+// time; example_data.h), or nullopt when the example `name` is skipped.
 inline std::optional<Plaza1Data> plaza1_from_args(int argc, char** argv, const std::string& name) {
-  const std::filesystem::path dir =
-      option_value(argc, argv, "--data", (std::filesystem::path(SILLAGE_SHARED_DIR) / "data" / "plaza1").string());
-  if (!std::filesystem::exists(dir / "odometry.csv")) {
-    std::printf("no plaza1 data at %s (pass --data DIR)\n", dir.string().c_str());
-    print_result(name, "skipped: no data", true);
-    return std::nullopt;
-  }
-  return load_plaza1(dir);
+  const auto dir = data_dir(argc, argv, name, "plaza1", {"ground_truth.csv", "odometry.csv", "ranges.csv", "beacons.csv"});
+  if (!dir) return std::nullopt;
+  return load_plaza1(*dir);
 }
 
 }  // namespace example

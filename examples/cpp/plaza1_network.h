@@ -21,6 +21,7 @@
 // the 3529 range observations (at most q of them wrong).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -120,6 +121,10 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   cn.add(std::make_shared<CtcFunction>(Function({"a", "s", "h", "e"}, "a - s*sin(h + e)")),
          {DomainRef::component(v, 1), speed, psi, track});
   cn.add(std::make_shared<CtcDeriv>(), {s.p, v});
+  // Named, as in plaza1.py, so that an empty network says which domain emptied.
+  cn.set_name(s.p, "p");
+  cn.set_name(v, "v");
+  cn.set_name(psi, "psi");
 
   if (with_ranges) {
     const auto eval = std::make_shared<CtcEval>();
@@ -138,6 +143,10 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
         const auto qj = std::make_shared<IntervalVector>(2);
         cn.add(eval, {std::make_shared<Interval>(tj), qj, s.p, v});
         cn.add(ring, {qj});
+        char name[80];
+        std::snprintf(name, sizeof name, "q%zu (beacon %d seen at t = %.2f)", s.nb_ranges, static_cast<int>(d.rid[j]),
+                      d.rt[j]);
+        cn.set_name(qj, name);
       }
       ++s.nb_ranges;
     }

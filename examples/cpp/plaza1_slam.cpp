@@ -53,7 +53,7 @@ double mean_diameter(const TubeVector& p) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const auto data = example::plaza1_from_args(argc, argv, "plaza1_slam");
   if (!data) return 0;
@@ -76,11 +76,17 @@ int main(int argc, char** argv) {
   const TubeVector& dead = *dr.p;
   const TubeVector& w = *dr.v;
   const std::size_t n = dead.nb_slices();
-  std::printf("plaza1_slam: %zu slices; dead reckoning %.2f s, truth inside %zu / %zu gates, box diameter mean %.1f m, "
-              "final %.1f m\n",
-              n, dr_seconds, truth_inside(dead, d), n + 1, mean_diameter(dead), dead.gate(n).max_diam());
-  ok = ok && example::check_stats(dr.stats, "dead reckoning") && example::enclosure_ok(dead) &&
-       truth_inside(dead, d) == n + 1;
+  std::printf("plaza1_slam: %zu slices; dead reckoning %.2f s\n", n, dr_seconds);
+  // No solution, or an unbounded tube: an answer without truth or box figures, and a failed check.
+  if (!example::check_stats(dr.stats, "dead reckoning") || !example::enclosure_ok(dead)) {
+    const std::string why = dr.stats.empty ? example::empty_text(dr.stats) : "UNBOUNDED: the position tube is unbounded";
+    if (!dr.stats.empty) std::printf("  dead reckoning: %s\n", why.c_str());
+    example::print_result("plaza1_slam", "dead reckoning: " + why, false);
+    return 1;
+  }
+  std::printf("  dead reckoning: truth inside %zu / %zu gates, box diameter mean %.1f m, final %.1f m\n",
+              truth_inside(dead, d), n + 1, mean_diameter(dead), dead.gate(n).max_diam());
+  ok = ok && truth_inside(dead, d) == n + 1;
 
   // 2. The observation: the four ranges, beacon positions unused. |z'| <= the stated speed
   // bound (per stamped period, so that the time stamps' jitter is covered as well).
@@ -88,6 +94,7 @@ int main(int argc, char** argv) {
   for (const auto& [id, xy] : d.beacons) ids.push_back(id);
   const RangeBounds rb{b.range_short, b.range_long, b.time_err, b.speed_max};
   TubeVector z(dead.tdomain(), ids.size());
+  std::string inconsistent;  // why the observation has no solution, if it has none
   try {
     z = range_observation_tubes(dead.tdomain(), d.rt, rid, d.r, ids, rb);
     double zw = 0;
@@ -96,7 +103,8 @@ int main(int argc, char** argv) {
     }
     std::printf("  observation: %zu range tubes (%s), mean slice width %.1f m\n", z.size(), repr(rb).c_str(), zw);
   } catch (const Error& e) {  // the ranges contradict each other under these bounds: an answer, not a success
-    std::printf("  observation inconsistent: %s\n", e.what());
+    inconsistent = std::string("observation inconsistent: ") + e.what();
+    std::printf("  %s\n", inconsistent.c_str());
     ok = false;
   }
 
@@ -140,9 +148,10 @@ int main(int argc, char** argv) {
     }
   }
   const double mean_dr = mean_diameter(dead), mean_slam = p.is_empty() ? NAN : mean_diameter(p);
-  std::printf("\nbox diameter, dead reckoning -> SLAM: mean %.2f -> %.2f m (%.1f %%), final %.2f -> %.2f m\n", mean_dr,
-              mean_slam, 100 * (1 - mean_slam / mean_dr), dead.gate(n).max_diam(),
-              p.is_empty() ? NAN : p.gate(n).max_diam());
+  if (inconsistent.empty() && !p.is_empty()) {
+    std::printf("\nbox diameter, dead reckoning -> SLAM: mean %.2f -> %.2f m (%.1f %%), final %.2f -> %.2f m\n", mean_dr,
+                mean_slam, 100 * (1 - mean_slam / mean_dr), dead.gate(n).max_diam(), p.gate(n).max_diam());
+  }
 
   // The map: dead reckoning (grey), SLAM (blue), truth (red).
   std::vector<std::pair<std::string, std::string>> figures;
@@ -171,6 +180,13 @@ int main(int argc, char** argv) {
   std::snprintf(summary, sizeof summary,
                 "%zu iterations, at most %zu loop proofs; mean box %.2f m (dead reckoning %.2f m), final %.2f m; %.2f s",
                 rows.size(), proofs, mean_slam, mean_dr, p.is_empty() ? NAN : p.gate(n).max_diam(), cumulated);
-  example::print_result("plaza1_slam", summary, ok, figures);
+  // An empty [p] is an answer (no trajectory fits), without box figures.
+  const std::string result = !inconsistent.empty() ? inconsistent
+                             : p.is_empty() ? "EMPTY after iteration " + std::to_string(rows.size()) +
+                                                  " of C_{p=>z} (no solution: the bounds or the data are inconsistent)"
+                                            : std::string(summary);
+  example::print_result("plaza1_slam", result, ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -18,7 +18,7 @@ T rump(T x, T y) {
   return T(333.75) * y6 + x2 * (T(11) * x2 * y2 - y6 - T(121) * y4 - T(2)) + T(5.5) * y8 + x / (T(2) * y);
 }
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   example::out_dir(argc, argv);
   volatile double xv = 77617.0, yv = 33096.0;  // volatile: evaluated at run time like user data
   const double f_double = rump<double>(xv, yv);
@@ -38,3 +38,5 @@ int main(int argc, char** argv) {
   example::print_result("rump", result.str(), ok);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -139,7 +139,7 @@ std::string interval_str(const Interval& x) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const Trajectory truth(kTruth, Interval(0, kTf));
   std::printf("x' = -sin(x), x(0) = 1 on [0, 10]; true x(10) = %.12g; validated-integration x(10) in [%.11e, %.11e] "
@@ -226,3 +226,5 @@ int main(int argc, char** argv) {
                                                  "CtcDeriv fixed point (grey)"}});
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -33,7 +33,7 @@ Run timed(const std::string& label, F&& f) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int example_main(int argc, char** argv) {
   const auto out = example::out_dir(argc, argv);
   const double eps = 0.01;
   const IntervalVector x0{{-10, 14}, {-10, 10}};
@@ -85,3 +85,5 @@ int main(int argc, char** argv) {
   example::print_result("sivia_two_beacons", result.str(), ok, figures);
   return ok ? 0 : 1;
 }
+
+int main(int argc, char** argv) { return example::run(argc, argv, example_main); }

@@ -16,7 +16,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import sillage
-from example_args import bound, enclosure_ok, out_dir, print_result
+from example_args import bound, enclosure_ok, out_dir, print_result, run
 from sillage.plot_bathymetry import plot_dem, plot_observation
 from sillage.plot_tube import plot_thickness, plot_tube_vector_2d
 
@@ -110,4 +110,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

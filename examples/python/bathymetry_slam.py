@@ -23,7 +23,7 @@ import numpy as np
 
 import sillage
 from bathymetry_mission import stated_bounds
-from example_args import bound, enclosure_ok, print_result
+from example_args import bound, enclosure_ok, print_result, run
 from sillage import CtcDeriv, Function, Interval, TemporalSlamOptions, TubeVector
 from sillage.plot_bathymetry import plot_dem
 from sillage.plot_tube import plot_thickness, plot_tube_vector_2d
@@ -178,4 +178,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

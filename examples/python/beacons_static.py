@@ -6,7 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result  # noqa: E402
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, run  # noqa: E402
 from sillage import ContractorNetwork, CtcFunction, Function, Interval, IntervalVector  # noqa: E402
 from sillage import plot  # noqa: E402
 
@@ -51,4 +51,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 import sillage
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4, run
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 TF, DT = 14.0, 0.01
@@ -108,4 +108,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()  # exits non-zero when the check fails (print_result)
+    run(main)

@@ -17,7 +17,7 @@ import time
 import numpy as np
 
 import sillage  # noqa: F401
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4, run
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
 TF = 64.0
@@ -239,4 +239,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()  # exits non-zero when the check fails (print_result)
+    run(main)

@@ -11,7 +11,7 @@ import math
 import time
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result, run
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Function, Interval,
                      IntervalVector, Style, TDomain, Trajectory, Tube, TubeStyle, TubeVector)
 
@@ -146,4 +146,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

@@ -15,6 +15,8 @@ import os
 import sys
 from pathlib import Path
 
+import sillage
+
 
 def out_dir(description):
     ap = argparse.ArgumentParser(description=description)
@@ -37,25 +39,58 @@ def out_dir_and_step(description, dt, ratio=0.0):
     return out, args
 
 
-def out_dir_and_data(description, dataset, name, extra_args=None):
-    """--out (created) and --data (default ../shared/data/<dataset> beside the repository):
-    (out, folder, args), or None after reporting the example as skipped when the folder has no
-    odometry.csv. extra_args(parser) may add options."""
+def out_dir_and_data(description, dataset, name, extra_args=None, files=()):
+    """--out (created) and --data: (out, folder, args), or None after reporting the example as
+    skipped. A folder named with --data must hold the data set (`files`, paths inside it): a missing
+    folder or file is bad input (exit 2 with what is missing, data_error). Without --data the
+    default ../shared/data/<dataset> beside the repository is read; when it is absent (a checkout
+    without the data sets) the example is reported as skipped. extra_args(parser) may add options."""
     ap = argparse.ArgumentParser(description=description)
     ap.add_argument("--out", default="out", help="folder for the figures")
-    ap.add_argument("--data", default=str(Path(__file__).resolve().parents[3] / "shared" / "data" / dataset),
-                    help="the data folder")
+    ap.add_argument("--data", help=f"the {dataset} data folder (default: ../shared/data/{dataset} beside the "
+                                   "repository)")
     if extra_args:
         extra_args(ap)
     args = ap.parse_args()
-    out, folder = Path(args.out), Path(args.data)
-    out.mkdir(parents=True, exist_ok=True)
-    if not (folder / "odometry.csv").exists():
+    out = Path(args.out)
+    folder = Path(args.data) if args.data else Path(__file__).resolve().parents[3] / "shared" / "data" / dataset
+    what = f"--data {folder}" if args.data else f"the data folder {folder}"
+    if not args.data and not folder.exists():
+        out.mkdir(parents=True, exist_ok=True)
         print(f"no {dataset} data at {folder} (pass --data DIR; the data sets live in ../shared/data "
               "beside the repository)")
         print_result(name, "skipped: no data", True, skipped=True)
         return None
+    if not folder.is_dir():
+        data_error(ap, f"{what}: no such folder (expected the {dataset} data set)")
+    missing = [f for f in files if not (folder / f).is_file()]
+    if missing:
+        data_error(ap, f"{what}: not the {dataset} data set (missing {', '.join(missing)})")
+    out.mkdir(parents=True, exist_ok=True)
     return out, folder, args
+
+
+def data_error(ap, message):
+    """Bad input in the data: "<program>: <message>" first, then the usage line, exit 2, as the
+    C++ examples' usage_error (argparse's error() would put the usage first)."""
+    print(f"{Path(sys.argv[0]).stem}: {message}", file=sys.stderr)
+    ap.print_usage(sys.stderr)
+    sys.exit(2)
+
+
+def run(main):
+    """The entry of every example: exits with main()'s status (None: 0). A sillage.Error that escapes
+    the example is bad input (a data file with a missing column, no rows, a cell that is not a
+    number: CsvTable names the file, line and column): its message on stderr and status 2, as
+    argparse does for a bad command line, not a traceback. An empty result is not an Error: the
+    examples print it and exit 1 (print_result)."""
+    try:
+        status = main()
+    except sillage.Error as e:
+        sys.stdout.flush()
+        print(f"{Path(sys.argv[0]).stem}: {e}", file=sys.stderr)
+        sys.exit(2)
+    sys.exit(status)
 
 
 def print_result(name, result, check, figures=(), skipped=False):
@@ -87,13 +122,20 @@ def bound(x):
     return x * f
 
 
+def empty_text(stats):
+    """"EMPTY: <why>": the answer of an empty network, for the output and the RESULT line, which
+    then give no truth or box figures: the domains keep their last values (ContractorNetwork), but
+    no solution lies in them."""
+    return (f"EMPTY: {stats.emptiness or stats.empty_domain} "
+            "(no solution: the bounds or the data are inconsistent)")
+
+
 def check_stats(stats, label=""):
-    """True if the network is not empty; otherwise prints why (stats.emptiness): no solution
-    fits the data and the bounds, which is a failure of the example's check."""
+    """True if the network is not empty; otherwise prints why (empty_text): no solution fits the
+    data and the bounds, which is a failure of the example's check."""
     if not stats.empty:
         return True
-    print(f"  {label + ': ' if label else ''}EMPTY: {stats.emptiness or stats.empty_domain} "
-          "(no solution: the bounds or the data are inconsistent)")
+    print(f"  {label + ': ' if label else ''}{empty_text(stats)}")
     return False
 
 

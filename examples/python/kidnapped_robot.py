@@ -22,7 +22,7 @@ import numpy as np
 
 import sillage
 from dead_reckoning import IVP_F, NOISE
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, rk4, run
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF, TM = 64.0, 37.0
@@ -216,4 +216,4 @@ def main(deltas=(0.05, 0.01, 0.005), out=None):
 
 
 if __name__ == "__main__":
-    raise SystemExit(0 if main()[0] else 1)
+    run(lambda: 0 if main()[0] else 1)

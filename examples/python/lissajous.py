@@ -15,7 +15,7 @@ import time
 import sillage
 import numpy as np
 
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir, print_result, run
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube, TubeVector
 
 TF = 2 * math.pi  # the double just below 2 pi: one period
@@ -116,4 +116,4 @@ def main(deltas=(0.01, 0.001, 0.0001), out=None):
 
 
 if __name__ == "__main__":
-    raise SystemExit(0 if main()[0] else 1)
+    run(lambda: 0 if main()[0] else 1)

@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import sillage
-from example_args import bound, out_dir, print_result
+from example_args import bound, out_dir, print_result, run
 from sillage import Interval, TDomain, TPlane, TubeVector
 from sillage.plot_loops import plot_loops_map, plot_tplane
 
@@ -162,4 +162,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

@@ -13,7 +13,7 @@ import numpy as np
 
 import sillage
 from dead_reckoning import IVP_F, NOISE
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir_and_step, print_result, rk4
+from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir_and_step, print_result, rk4, run
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Figure, Function, Interval,
                      IntervalVector, Style, TDomain, ThicknessMeasure, Tube, TubeStyle, TubeVector)
 
@@ -248,4 +248,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

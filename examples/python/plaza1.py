@@ -18,20 +18,12 @@ import time
 
 import sillage
 import plaza1_bounds
+from plaza1_data import FILES, load  # noqa: F401  (load: also the tests' loader)
 from bound_audit import print_audit
-from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
-from sillage import (CsvTable, CtcBiasedIncrement, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
+from example_args import check_stats, empty_text, enclosure_ok, out_dir_and_data, print_result, run
+from sillage import (CtcBiasedIncrement, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
                      CtcSecondDeriv, Function,
                      Interval, IntervalVector, TDomain, Tube, TubeObservation, TubeVector)
-
-def load(folder):
-    gt, odo = CsvTable.read(str(folder / "ground_truth.csv")), CsvTable.read(str(folder / "odometry.csv"))
-    rg, bc = CsvTable.read(str(folder / "ranges.csv")), CsvTable.read(str(folder / "beacons.csv"))
-    beacons = {int(i): (x, y) for i, x, y in zip(bc.values("beacon_id"), bc.values("x_m"), bc.values("y_m"))}
-    return dict(t=gt.values("t_s"), x=gt.values("x_m"), y=gt.values("y_m"), heading=gt.values("heading_rad"),
-                dist=odo.values("delta_dist_m"), dpsi=odo.values("delta_heading_drp_rad"),
-                rt=rg.values("t_s"), rid=rg.values("beacon_id"), r=rg.values("range_m"), beacons=beacons)
-
 
 def slice_tube(td, slices):
     """Per-slice values; gates are hulls of their two slices (no information of their own)."""
@@ -140,9 +132,9 @@ def add_options(ap):
 
 
 def main():
-    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1", add_options)
+    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1", add_options, FILES)
     if parsed is None:
-        return
+        return 0
     out, folder, args = parsed
     if not args.heading_window >= 0 or not math.isfinite(args.heading_window):
         print(f"plaza1: --heading-window takes a length >= 0 in seconds, got {args.heading_window}", file=sys.stderr)
@@ -164,15 +156,25 @@ def main():
         label = (f"odometry + ranges, at most {run} wrong" if run >= 0
                  else "odometry + ranges" if with_ranges else "odometry only")
         print(f"{label}: {nr} ranges, {stats.iterations} rounds, {stats.contractor_calls} contractor runs, "
-              f"{cpu:.2f} s CPU; truth inside at {inside}/{n} time points; box diameter mean {mean_d:.2f} m, "
-              f"max {max_d:.2f} m")
-        ok = check_stats(stats, label) and enclosure_ok(p) and inside == n and ok
+              f"{cpu:.2f} s CPU")
+        # No solution, or an unbounded tube: an answer without truth or box figures, and a failed check.
+        if not check_stats(stats, label) or not enclosure_ok(p):
+            why = empty_text(stats) if stats.empty else "UNBOUNDED: the position tube is unbounded"
+            if not stats.empty:
+                print(f"  {why}")
+            summary += f"{label}: {why}; "
+            ok = False
+            continue
+        print(f"  truth inside at {inside}/{n} time points; box diameter mean {mean_d:.2f} m, max {max_d:.2f} m")
+        ok = inside == n and ok
         print("  heading half-width at t0 + " + "; ".join(
             f"{dt:.0f} s: {heading[0].gate(k).diam() / 2:.2f} rad" for dt, k in times_after(d["t"], n)))
         # the turn-on bias learnt (measured minus true rate); the truth's: the audit line "gyro turn-on bias"
         print(f"  gyro turn-on bias b0 in [{1e3 * bias[0].lb():.4f}, {1e3 * bias[0].ub():.4f}] mrad/s")
         if run == -1:
             strict = (mean_d, cpu)
+        if run >= 0 and not strict:
+            print(f"  q-relaxed (q = {run}): the strict intersection is empty")
         if run >= 0 and strict:
             print(f"  q-relaxed (q = {run}) against the strict intersection: mean box {mean_d:.2f} m vs "
                   f"{strict[0]:.2f} m (x {mean_d / strict[0]:.2f}), {cpu:.2f} s vs {strict[1]:.2f} s")
@@ -192,4 +194,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

@@ -17,7 +17,7 @@ import numpy as np
 import plaza1
 import plaza1_bounds
 from bound_audit import print_audit
-from example_args import check_stats, enclosure_ok, out_dir_and_data, print_result
+from example_args import check_stats, empty_text, enclosure_ok, out_dir_and_data, print_result, run
 import sillage
 from sillage import CtcPImpliesZ, RangeBounds, range_observation_tubes
 
@@ -44,9 +44,9 @@ def add_options(ap):
 
 
 def main():
-    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1_slam", add_options)
+    parsed = out_dir_and_data(__doc__, "plaza1", "plaza1_slam", add_options, plaza1.FILES)
     if parsed is None:
-        return
+        return 0
     out, folder, args = parsed
     if not (args.eps > 0 and math.isfinite(args.eps)) or not (args.heading_window >= 0 and
                                                               math.isfinite(args.heading_window)):
@@ -61,18 +61,27 @@ def main():
     dead, stats, cpu, inside, mean_dr, _, _ = plaza1.solve(d, False, b, -1, args.heading_window, velocity=velocity)
     w = velocity[0]
     n = dead.nb_slices()
-    print(f"plaza1_slam: {n} slices; dead reckoning {cpu:.2f} s CPU, truth inside {inside} / {n + 1} gates, "
-          f"box diameter mean {mean_dr:.1f} m, final {dead.gate(n).max_diam():.1f} m")
-    ok = check_stats(stats, "dead reckoning") and enclosure_ok(dead) and inside == n + 1 and ok
+    print(f"plaza1_slam: {n} slices; dead reckoning {cpu:.2f} s CPU")
+    # No solution, or an unbounded tube: an answer without truth or box figures, and a failed check.
+    if not check_stats(stats, "dead reckoning") or not enclosure_ok(dead):
+        why = empty_text(stats) if stats.empty else "UNBOUNDED: the position tube is unbounded"
+        if not stats.empty:
+            print(f"  dead reckoning: {why}")
+        print_result("plaza1_slam", f"dead reckoning: {why}", False)
+    print(f"  dead reckoning: truth inside {inside} / {n + 1} gates, box diameter mean {mean_dr:.1f} m, "
+          f"final {dead.gate(n).max_diam():.1f} m")
+    ok = inside == n + 1 and ok
 
     # 2. The observation: the four ranges; the beacon positions are not used.
     ids = sorted(d["beacons"])
     rb = RangeBounds(b.range_short, b.range_long, b.time_err, b.speed_max)
+    inconsistent = ""  # why the observation has no solution, if it has none
     try:
         z = range_observation_tubes(dead.tdomain(), list(d["rt"]), [int(i) for i in d["rid"]], list(d["r"]), ids, rb)
         print(f"  observation: {z.size()} range tubes ({rb!r})")
     except sillage.Error as e:  # the ranges contradict each other under these bounds: an answer, not a success
-        print(f"  observation inconsistent: {e}")
+        inconsistent = f"observation inconsistent: {e}"
+        print(f"  {inconsistent}")
         z, ok = None, False
 
     # 3. C_{p=>z}, fast then accurate, one iteration at a time: Table 7.2.
@@ -110,8 +119,9 @@ def main():
     ok = ok and p.is_subset(dead)
     mean_slam = mean_diameter(p) if not p.is_empty() else math.nan
     final = p.gate(n).max_diam() if not p.is_empty() else math.nan
-    print(f"\nbox diameter, dead reckoning -> SLAM: mean {mean_dr:.2f} -> {mean_slam:.2f} m, "
-          f"final {dead.gate(n).max_diam():.2f} -> {final:.2f} m")
+    if not inconsistent and not p.is_empty():
+        print(f"\nbox diameter, dead reckoning -> SLAM: mean {mean_dr:.2f} -> {mean_slam:.2f} m, "
+              f"final {dead.gate(n).max_diam():.2f} -> {final:.2f} m")
 
     figures = []
     if not p.is_empty():
@@ -128,9 +138,14 @@ def main():
         fig.save(str(out / "plaza1_slam_map_py.svg"))
         figures.append(("plaza1_slam_map_py.svg", "plaza1 temporal SLAM map: DR tube, SLAM tube, truth, Python"))
     proofs = max((r.nb_proofs for r in rows), default=0)
-    print_result("plaza1_slam", f"{len(rows)} iterations, at most {proofs} loop proofs; mean box {mean_slam:.2f} m "
-                 f"(dead reckoning {mean_dr:.2f} m), final {final:.2f} m; {cumulated:.2f} s", ok, figures)
+    # An empty [p] is an answer (no trajectory fits), without box figures.
+    result = (inconsistent or
+              (f"EMPTY after iteration {len(rows)} of C_{{p=>z}} (no solution: the bounds or the data are inconsistent)"
+               if p.is_empty() else
+               f"{len(rows)} iterations, at most {proofs} loop proofs; mean box {mean_slam:.2f} m "
+               f"(dead reckoning {mean_dr:.2f} m), final {final:.2f} m; {cumulated:.2f} s"))
+    print_result("plaza1_slam", result, ok, figures)
 
 
 if __name__ == "__main__":
-    main()
+    run(main)

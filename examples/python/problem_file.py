@@ -14,7 +14,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import sillage  # noqa: E402
-from example_args import bound, out_dir, print_result  # noqa: E402
+from example_args import bound, out_dir, print_result, run  # noqa: E402
 from sillage import Interval, plot  # noqa: E402
 
 PROBLEMS = Path(__file__).resolve().parents[1] / "problems"
@@ -88,4 +88,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import sillage  # noqa: E402
-from example_args import bound, check_stats, out_dir, print_result  # noqa: E402
+from example_args import bound, check_stats, out_dir, print_result, run  # noqa: E402
 from sillage import CtcFunction, Function, Interval, IntervalVector, Scheduling, TDomain, Tube, TubeVector  # noqa: E402
 
 PROBLEMS = Path(__file__).resolve().parents[1] / "problems"
@@ -133,4 +133,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

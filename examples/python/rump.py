@@ -3,7 +3,7 @@ confident wrong answer; interval arithmetic encloses the exact value
 -0.827396059946821368... and its width warns that the double result is meaningless."""
 from fractions import Fraction
 
-from example_args import bound, out_dir, print_result
+from example_args import bound, out_dir, print_result, run
 from sillage import Function, IntervalVector
 
 
@@ -28,4 +28,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

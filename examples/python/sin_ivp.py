@@ -12,7 +12,7 @@ slices, drawn beside the CtcDeriv fixed point. Same computations and printed fig
 import time
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result
+from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, run
 from sillage import CtcFunction, Function, Interval, IntervalVector, TDomain, Trajectory, Tube
 
 TF = 10.0
@@ -171,4 +171,4 @@ def main(deltas=(0.1, 0.01, 0.001, 0.0001), out=None):
 
 
 if __name__ == "__main__":
-    raise SystemExit(0 if main()[0] else 1)
+    run(lambda: 0 if main()[0] else 1)

@@ -8,7 +8,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import bound, out_dir, print_result  # noqa: E402
+from example_args import bound, out_dir, print_result, run  # noqa: E402
 from sillage import Function, Interval, IntervalVector, PavingTag, SepFunction, sivia  # noqa: E402
 from sillage import plot  # noqa: E402
 
@@ -49,4 +49,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

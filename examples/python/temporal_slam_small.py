@@ -9,7 +9,7 @@ The true trajectory must stay inside [x](.) at every gate after each algorithm."
 import time
 
 import sillage
-from example_args import bound, out_dir, print_result
+from example_args import bound, out_dir, print_result, run
 from sillage import (CtcDeriv, Function, Interval, IntervalVector, Style, TDomain, TemporalSlamOptions, Trajectory,
                      Tube, TubeStyle, TubeVector)
 
@@ -79,4 +79,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run(main)

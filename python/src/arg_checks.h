@@ -55,11 +55,13 @@ inline std::string shape_text(const py::array& a) {
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
-// Index i of a sequence of n, negative from the end (IndexError naming `what` otherwise).
+// Index i of a sequence of n, negative from the end; otherwise an IndexError
+// that names `what`, the index and the size: "IntervalVector index 5 out of range (size 2)".
 inline std::size_t py_index(long long i, std::size_t n, const char* what) {
-  if (i < 0) i += static_cast<long long>(n);
-  if (i < 0 || i >= static_cast<long long>(n)) throw py::index_error(std::string(what) + " index out of range");
-  return static_cast<std::size_t>(i);
+  const long long k = i < 0 ? i + static_cast<long long>(n) : i;
+  if (k < 0 || k >= static_cast<long long>(n))
+    throw py::index_error(std::string(what) + " index " + std::to_string(i) + " out of range (size " + std::to_string(n) + ")");
+  return static_cast<std::size_t>(k);
 }
 
 }  // namespace sillage::python

@@ -53,7 +53,19 @@ def test_solve_writes_json_csv_and_report(tmp_path):
     assert table.dtype.names == ("t_lb", "t_ub", "x_lb", "x_ub")
     gates = table[table["t_lb"] == table["t_ub"]]
     assert np.all(gates["x_lb"] <= np.sin(gates["t_lb"]) + 1) and np.all(np.sin(gates["t_lb"]) + 1 <= gates["x_ub"])
-    assert "201 of 201 truth samples inside" in (tmp_path / "report.html").read_text()
+    assert "201 of 201 truth time points inside" in (tmp_path / "report.html").read_text()
+    assert res["rows_outside"] == {} and not list(tmp_path.glob("*.tube"))  # .tube files only on request
+
+
+def test_save_tubes_for_show_and_load_tube(tmp_path):
+    r = run("solve", PROBLEMS / "line_ranges.toml", "--out", tmp_path, "--save-tubes")
+    assert r.returncode == 0 and "one CSV and one .tube file per tube" in r.stdout, r.stdout + r.stderr
+    assert sorted(f.name for f in tmp_path.glob("*.tube")) == ["v.tube", "x.tube"]
+    shown = run("show", tmp_path / "x.tube")
+    assert shown.returncode == 0 and "Tube of 1 component(s)" in shown.stdout, shown.stderr
+    x = sillage.load_tube(str(tmp_path / "x.tube"))
+    gates = json.loads((tmp_path / "results.json").read_text())["variables"]["x"]["components"][0]["gates"]
+    assert [[g.lb(), g.ub()] for g in (x.gate(k) for k in range(len(gates)))] == gates
 
 
 def test_exit_codes():
@@ -93,11 +105,37 @@ def test_no_solution_exits_1_and_says_why(tmp_path):
     try:
         problem.write_text(text)
         r = run("solve", problem, "--out", tmp_path)
+        quiet = run("solve", problem, "--out", tmp_path / "quiet", "--quiet")
     finally:
         problem.unlink()
     assert r.returncode == 1
     assert "NO SOLUTION" in r.stdout and "constraint" in r.stdout
     assert "No solution" in (tmp_path / "report.html").read_text()
+    assert quiet.returncode == 1  # --quiet drops the summary, not the explanation
+    assert "NO SOLUTION" in quiet.stdout and "constraint" in quiet.stdout and "wrote" not in quiet.stdout
+
+
+def test_rows_outside_the_time_domain(tmp_path):
+    # [0, 10] leaves 4 of the 9 ranges (t = 11.4 ... 17.1) outside: an error naming the file and row,
+    # or, with outside = "skip", skipped and counted by check, in the report and in results.json.
+    text = (PROBLEMS / "line_ranges.toml").read_text().replace("domain = [0, 20]", "domain = [0, 10]")
+    text = text.replace("times = [0, 5, 10, 20]", "times = [0, 5, 10]")
+    problem, skip = PROBLEMS / "test_rows_outside.toml", PROBLEMS / "test_rows_outside_skip.toml"
+    try:
+        problem.write_text(text)
+        skip.write_text(text.replace('time = "t"\n', 'time = "t"\noutside = "skip"\n'))
+        bad, checked = run("check", problem), run("check", skip)
+        solved = run("solve", skip, "--out", tmp_path, "--quiet")
+    finally:
+        problem.unlink()
+        skip.unlink()
+    assert bad.returncode == 2
+    assert ("test_rows_outside.toml:30:1: found row 5 of 'ranges' (" in bad.stderr and
+            "beacon_ranges.csv:8) at t = 11.4, outside the time domain [0, 10]" in bad.stderr), bad.stderr
+    assert checked.returncode == 0 and "4 row(s) of 'ranges' outside [t0, tf] skipped" in checked.stdout
+    assert solved.returncode == 0, solved.stdout + solved.stderr
+    assert list(json.loads((tmp_path / "results.json").read_text())["rows_outside"].values()) == [4]
+    assert "<td>eval rows outside [t0, tf], skipped</td><td>4 (" in (tmp_path / "report.html").read_text()
 
 
 def test_report_in_headless_chromium(tmp_path):
@@ -133,3 +171,6 @@ def test_show_and_plot_a_tube_file(tmp_path):
     r = run("plot", tmp_path / "x.tube", "--out", tmp_path / "x.svg")
     assert r.returncode == 0 and (tmp_path / "x.svg").read_text().count("<svg") == 1
     assert run("show", tmp_path / "missing.tube").returncode == 2
+    bad = run("show", PROBLEMS / "causal_chain.toml")  # not a tube file: the message names it
+    assert bad.returncode == 2
+    assert f"load tube: '{PROBLEMS / 'causal_chain.toml'}': not a sillage tube file" in bad.stderr

@@ -62,6 +62,10 @@ def test_csv_table():
     assert list(t.values("b")) == [2.0, 4.0] and t.columns() == ["a", "b"]
     with pytest.raises(sillage.ParseError, match="line|:3"):
         sillage.CsvTable.parse("a\n1\nx\n", "f.csv")
+    t = sillage.CsvTable.parse("# c\na\n\n1\n2\n", "f.csv")  # each row's line, for messages about it
+    assert (t.source(), t.line(0), t.line(1), t.where(1)) == ("f.csv", 4, 5, "f.csv:5")
+    with pytest.raises(sillage.OutOfRangeError, match="CsvTable.line: no row -1"):
+        t.line(-1)
     plaza = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1" / "beacons.csv"
     if plaza.exists():
         assert sillage.CsvTable.read(str(plaza)).nb_rows() == 4

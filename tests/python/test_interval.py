@@ -246,8 +246,10 @@ def test_vector_errors():
         IntervalVector([[0, 1]]) & IntervalVector(2)
     with pytest.raises(sillage.Error):
         IntervalVector([[0, 1]]).contains([1, 2])
-    with pytest.raises(IndexError):
+    with pytest.raises(IndexError, match=r"^IntervalVector index 2 out of range \(size 2\)$"):
         IntervalVector(2)[2]
+    with pytest.raises(IndexError, match=r"^IntervalVector index -3 out of range \(size 2\)$"):
+        IntervalVector(2)[-3] = 1
 
 
 def test_vector_access_iteration_and_slices():
@@ -342,8 +344,10 @@ def test_matrix_errors():
         IntervalMatrix(np.zeros((2, 2, 3)))
     with pytest.raises(sillage.Error):
         IntervalMatrix([[[1, 0]]])
-    with pytest.raises(IndexError):
+    with pytest.raises(IndexError, match=r"^IntervalMatrix row index 2 out of range \(size 2\)$"):
         IntervalMatrix(2, 2)[2, 0]
+    with pytest.raises(IndexError, match=r"^IntervalMatrix column index 3 out of range \(size 2\)$"):
+        IntervalMatrix(2, 2)[0, 3]
 
 
 def test_matrix_arithmetic_is_rigorous():

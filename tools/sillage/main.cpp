@@ -1,6 +1,6 @@
 // The sillage command (docs/cli.md):
 //   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions]
-//                 [--scheduling fifo|priority] [--threads N] [--quiet]
+//                 [--scheduling fifo|priority] [--threads N] [--quiet] [--save-tubes]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
@@ -46,8 +46,19 @@ std::optional<double> parse_delta(const std::string& s, bool& is_auto) {
   return v;
 }
 
+// --save-tubes: each tube variable as DIR/NAME.tube (tube_io), for sillage show / plot
+// and load_tube in C++ or Python; a tube stays a Tube, a tube_vector a TubeVector.
+void save_tubes(const SolveResult& r, const std::string& out) {
+  for (const VarDomain& v : r.built.vars) {
+    if (!v.tubes) continue;
+    const std::string path = (std::filesystem::path(out) / (v.spec->name + ".tube")).string();
+    if (v.spec->kind == VarKind::Tube) save((*v.tubes)[0], path);
+    else save(*v.tubes, path);
+  }
+}
+
 int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions,
-          const std::string& scheduling, int threads, bool quiet) {
+          const std::string& scheduling, int threads, bool quiet, bool tubes) {
   std::optional<tbb::global_control> control;
   if (threads > 0) control.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   SolveOptions o;
@@ -68,13 +79,17 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   if (progress) std::fprintf(stderr, "\n");
   write_results(p, r, out);
   write_text_file(out, "report.html", report_html(p, r));
+  if (tubes) save_tubes(r, out);
   if (!quiet) {
     const ScheduleStep& last = r.schedule.back();
     std::printf("%s: %s with δ = %g (%zu slices), %zu contractor runs, build %.3f s, contraction %.3f s\n",
                 file.c_str(), r.empty ? "NO SOLUTION" : "solved", last.delta, last.slices, last.stats.contractor_calls,
                 r.build_seconds(), r.contract_seconds());
     if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
-    std::printf("  wrote %s/report.html, results.json and one CSV per tube\n", out.c_str());
+    std::printf("  wrote %s/report.html, results.json and one CSV%s per tube\n", out.c_str(),
+                tubes ? " and one .tube file" : "");
+  } else if (r.empty) {  // quiet drops the summary, never the answer's explanation
+    std::printf("%s: NO SOLUTION\n  %s\n", file.c_str(), r.why_empty.c_str());
   }
   return r.empty ? kNoSolution : kSolved;
 }
@@ -132,7 +147,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::string problem, out, delta, tube_file, refine = "halving", scheduling;
   int threads = 0;
-  bool quiet = false;
+  bool quiet = false, save_tube_files = false;
   auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
   s->add_option("problem", problem, "the problem file (TOML)")->required();
   s->add_option("--out", out, "output directory (default out/<problem name>)");
@@ -142,7 +157,8 @@ int main(int argc, char** argv) {
   s->add_option("--scheduling", scheduling, "the order within a round: fifo or priority (default: the file's)")
       ->check(CLI::IsMember({"fifo", "priority"}));
   s->add_option("--threads", threads, "worker threads (default: all)")->check(CLI::PositiveNumber);
-  s->add_flag("--quiet", quiet, "no progress line, no summary");
+  s->add_flag("--save-tubes", save_tube_files, "also write each tube as DIR/NAME.tube (for sillage show, load_tube)");
+  s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
   c->add_option("problem", problem, "the problem file (TOML)")->required();
   auto* sh = app.add_subcommand("show", "summary of a tube file (tube_io)");
@@ -157,7 +173,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
   try {
-    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet);
+    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files);
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);

@@ -28,6 +28,12 @@ class CsvTable {
   const std::vector<double>& row(std::size_t i) const;
   // "the table has 3 rows: 0 to 2", for messages about rows.
   std::string rows_text() const;
+  // The file (or the source given to parse) the table was read from.
+  const std::string& source() const { return source_; }
+  // The line of row i in the file, 1-based (blank and comment lines counted; OutOfRangeError if i >= nb_rows()).
+  std::size_t line(std::size_t i) const;
+  // "ranges.csv:12": where row i is written, for messages about it.
+  std::string where(std::size_t i) const;
   // True if a column is called name.
   bool has_column(const std::string& name) const;
   // Index of a column; Error naming the file and the columns it has.
@@ -39,6 +45,7 @@ class CsvTable {
   std::string source_;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
+  std::vector<std::size_t> lines_;  // per row
 };
 
 }  // namespace sillage

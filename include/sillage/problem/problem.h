@@ -119,6 +119,11 @@ struct ConstraintSpec {
   // join_data with the same value in column join_on (ranges -> beacons).
   std::string join_data, join_on;
   bool gates = false;                   // time points at the bounds of every t_i
+  // Eval: a kept row whose time lies wholly outside [t0, tf] is an error
+  // naming the file and row, unless skip_outside (outside = "skip"): then
+  // it is skipped and counted in nb_outside (sillage check, the report, results.json).
+  bool skip_outside = false;
+  std::size_t nb_outside = 0;
   SourcePos pos;
 };
 

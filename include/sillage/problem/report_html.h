@@ -10,7 +10,9 @@
 
 namespace sillage {
 
-// The truth check of [output.truth]: samples inside the tubes, and the first misses.
+// The truth check of [output.truth]: the time points (rows of the truth
+// table within [t0, tf]) and those with every component inside the tubes,
+// and the first misses.
 struct TruthCheck {
   std::size_t samples = 0, inside = 0;
   std::vector<std::string> first_misses;  // up to 10, "x[1] = 3.2 at t = 4 outside [2.9, 3.1]"

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "arg_checks.h"
 #include "bindings.h"
 #include "docstrings.h"
 #include "sillage/interval/backward.h"
@@ -200,12 +201,6 @@ py::object as_array(const py::array& a, const py::object& dtype) {
   return dtype.is_none() ? py::object(a) : a.attr("astype")(dtype);
 }
 
-std::size_t check_index(long long i, std::size_t n) {
-  if (i < 0) i += static_cast<long long>(n);
-  if (i < 0 || i >= static_cast<long long>(n)) throw py::index_error("index out of range");
-  return static_cast<std::size_t>(i);
-}
-
 py::tuple bounds_state(const Interval& x) { return py::make_tuple(x.lb(), x.ub()); }
 
 void init_interval_class(py::module_& m) {
@@ -328,7 +323,7 @@ void init_vector_class(py::module_& m) {
       .def_static("empty", &V::empty, py::arg("n"), DOC(IntervalVector, empty))
       .def("size", &V::size, DOC(IntervalVector, size))
       .def("__len__", &V::size)
-      .def("__getitem__", [](const V& v, long long i) { return v[check_index(i, v.size())]; })
+      .def("__getitem__", [](const V& v, long long i) { return v[py_index(i, v.size(), "IntervalVector")]; })
       .def("__getitem__",
            [](const V& v, const py::slice& s) {
              std::size_t start = 0, stop = 0, step = 0, n = 0;
@@ -339,7 +334,7 @@ void init_vector_class(py::module_& m) {
            })
       .def("__setitem__",
            [](V& v, long long i, const py::object& x) {
-             const std::size_t k = check_index(i, v.size());
+             const std::size_t k = py_index(i, v.size(), "IntervalVector");
              v[k] = to_interval(x, "IntervalVector[" + std::to_string(k) + "]");
            })
       .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
@@ -425,15 +420,15 @@ void init_matrix_class(py::module_& m) {
       .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); }, "(rows, cols).")
       .def("__len__", &M::rows)
       .def("__getitem__", [](const M& a, std::pair<long long, long long> ij) {
-             return a(check_index(ij.first, a.rows()), check_index(ij.second, a.cols()));
+             return a(py_index(ij.first, a.rows(), "IntervalMatrix row"), py_index(ij.second, a.cols(), "IntervalMatrix column"));
            })
-      .def("__getitem__", [](const M& a, long long i) { return a.row(check_index(i, a.rows())); })
+      .def("__getitem__", [](const M& a, long long i) { return a.row(py_index(i, a.rows(), "IntervalMatrix row")); })
       .def("__setitem__", [](M& a, std::pair<long long, long long> ij, const py::object& x) {
-             const std::size_t i = check_index(ij.first, a.rows()), j = check_index(ij.second, a.cols());
+             const std::size_t i = py_index(ij.first, a.rows(), "IntervalMatrix row"), j = py_index(ij.second, a.cols(), "IntervalMatrix column");
              a(i, j) = to_interval(x, "IntervalMatrix[" + std::to_string(i) + ", " + std::to_string(j) + "]");
            })
       .def("__setitem__", [](M& a, long long i, const py::object& r) {
-             a.set_row(check_index(i, a.rows()), vector_from(r));
+             a.set_row(py_index(i, a.rows(), "IntervalMatrix row"), vector_from(r));
            })
       .def("row", &M::row, py::arg("i"), DOC(IntervalMatrix, row))
       .def("col", &M::col, py::arg("j"), DOC(IntervalMatrix, col))

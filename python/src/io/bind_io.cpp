@@ -11,6 +11,16 @@
 
 namespace sillage::python {
 
+namespace {
+
+// Row i of t (signed: a negative i is an OutOfRangeError naming `what`, not a cast error).
+std::size_t row_index(const CsvTable& t, py::ssize_t i, const char* what) {
+  if (i < 0) throw OutOfRangeError(std::string(what) + ": no row " + std::to_string(i) + " (" + t.rows_text() + ")");
+  return static_cast<std::size_t>(i);
+}
+
+}  // namespace
+
 void init_io(py::module_& m) {
   py::class_<CsvTable>(m, "CsvTable",
                        DOC(CsvTable))
@@ -28,13 +38,17 @@ void init_io(py::module_& m) {
       .def("nb_rows", &CsvTable::nb_rows, DOC(CsvTable, nb_rows))
       .def(
           "row",
-          [](const CsvTable& t, py::ssize_t i) {  // signed: row(-1) is an OutOfRangeError, not a cast error
-            if (i < 0) {
-              throw OutOfRangeError("CsvTable.row: no row " + std::to_string(i) + " (" + t.rows_text() + ")");
-            }
-            return t.row(static_cast<std::size_t>(i));
-          },
+          [](const CsvTable& t, py::ssize_t i) { return t.row(row_index(t, i, "CsvTable.row")); },
           py::arg("i"), "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()).")
+      .def("source", &CsvTable::source, DOC(CsvTable, source))
+      .def(
+          "line",
+          [](const CsvTable& t, py::ssize_t i) { return t.line(row_index(t, i, "CsvTable.line")); },
+          py::arg("i"), DOC(CsvTable, line))
+      .def(
+          "where",
+          [](const CsvTable& t, py::ssize_t i) { return t.where(row_index(t, i, "CsvTable.where")); },
+          py::arg("i"), DOC(CsvTable, where))
       .def("has_column", &CsvTable::has_column, py::arg("name"), DOC(CsvTable, has_column))
       .def("column", &CsvTable::column, py::arg("name"),
            DOC(CsvTable, column))

@@ -44,6 +44,8 @@ int prec(const ExprNode& e) {
   }
 }
 
+bool infix(const ExprNode& e) { return e.op == Op::Add || e.op == Op::Sub || e.op == Op::Mul || e.op == Op::Div; }
+
 // Least precedence operand i of e may have without parentheses.
 int operand_prec(const ExprNode& e, std::size_t i) {
   switch (e.op) {
@@ -78,13 +80,31 @@ std::size_t own_length(const ExprNode& e) {
 // Nesting levels (parser.cpp's DepthGuard) that e adds around an operand
 // printed with or without parentheses: a call, a unary sign, parentheses.
 std::size_t added_levels(const ExprNode& e, bool parenthesized) {
-  const bool call = !(e.op == Op::Add || e.op == Op::Sub || e.op == Op::Mul || e.op == Op::Div ||
-                      e.op == Op::Neg || e.op == Op::Sqr || e.op == Op::PowInt);
+  const bool call = !(infix(e) || e.op == Op::Neg || e.op == Op::Sqr || e.op == Op::PowInt);
   return (parenthesized ? 1 : 0) + (call || e.op == Op::Neg ? 1 : 0);
 }
 
 // Names of the shared sub-expressions printed once.
 using Names = std::unordered_map<const ExprNode*, std::string>;
+
+// True if e prints with a sign first ("-2", "-x * y"): down the left
+// operands printed without parentheses; a named node prints as its name.
+bool leading_sign(const ExprNode* e, const Names& names) {
+  for (;;) {
+    if (names.count(e)) return false;
+    if (prec(*e) == kUnary) return true;
+    if (!infix(*e) || prec(*e->args[0].get()) < operand_prec(*e, 0)) return false;
+    e = e->args[0].get();
+  }
+}
+
+// Least precedence the child `a` at operand i of e may have without
+// parentheses. A sign never follows an operator directly: "x - (-2)",
+// "x * (-y * 2)" and "-(-x)", not "x - -2", which reads as a typo.
+int needed_prec(const ExprNode& e, std::size_t i, const ExprNode& a, const Names& names) {
+  const bool after_operator = e.op == Op::Neg || (i == 1 && infix(e));
+  return after_operator && leading_sign(&a, names) ? kAtom : operand_prec(e, i);
+}
 
 // A piece of output: a node to print (in parentheses when its precedence is
 // below min_prec) or a fixed text. An explicit stack instead of recursion:
@@ -99,7 +119,7 @@ struct Piece {
 void print(std::ostream& os, const ExprNode& root, const Names& names) {
   std::vector<Piece> stack{{&root, 0, {}}};
   auto text = [&](std::string t) { stack.push_back({nullptr, 0, std::move(t)}); };
-  auto node = [&](const Expr& a, int p) { stack.push_back({a.get(), p, {}}); };
+  auto node = [&](const ExprNode& e, std::size_t i) { stack.push_back({e.args[i].get(), needed_prec(e, i, e.args[i].node(), names), {}}); };
   while (!stack.empty()) {
     Piece piece = std::move(stack.back());
     stack.pop_back();
@@ -127,28 +147,28 @@ void print(std::ostream& os, const ExprNode& root, const Names& names) {
       case Op::Sub:
       case Op::Mul:
       case Op::Div:
-        node(e.args[1], operand_prec(e, 1));
+        node(e, 1);
         text(std::string(" ").append(op_name(e.op)).append(" "));
-        node(e.args[0], operand_prec(e, 0));
+        node(e, 0);
         break;
       case Op::Neg:
-        node(e.args[0], kUnary);
+        node(e, 0);
         text("-");
         break;
       case Op::Sqr:
       case Op::PowInt:
         text(std::string("^").append(std::to_string(e.op == Op::Sqr ? 2 : e.n)));
-        node(e.args[0], kAtom);
+        node(e, 0);
         break;
       case Op::Root:
         text(std::string(", ").append(std::to_string(e.n)).append(")"));
-        node(e.args[0], 0);
+        node(e, 0);
         text("root(");
         break;
       default:
         text(")");
         for (std::size_t i = e.args.size(); i-- > 0;) {
-          node(e.args[i], 0);
+          node(e, i);
           if (i) text(", ");
         }
         text(std::string(op_name(e.op)).append("("));
@@ -199,7 +219,7 @@ std::vector<const ExprNode*> choose_names(const std::vector<Expr>& order, const 
         n += it->second.size();
         depth = std::max(depth, added_levels(node, false));
       } else {
-        const bool parenthesized = prec(*a) < operand_prec(node, i);
+        const bool parenthesized = prec(*a) < needed_prec(node, i, *a, names);
         n += length[a] + (parenthesized ? 2 : 0);
         depth = std::max(depth, nesting[a] + added_levels(node, parenthesized));
       }

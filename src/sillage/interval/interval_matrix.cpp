@@ -100,13 +100,15 @@ IntervalVector IntervalMatrix::col(std::size_t j) const {
 }
 
 void IntervalMatrix::set_row(std::size_t i, const IntervalVector& r) {
-  if (i >= rows_) throw DimensionError("IntervalMatrix::set_row: row " + std::to_string(i) + " out of range");
+  if (i >= rows_) throw DimensionError("IntervalMatrix::set_row: row " + std::to_string(i) + " out of range for shape " +
+                                       shape(rows_, cols_));
   check_same_size(r.size(), cols_, "IntervalMatrix::set_row");
   std::copy(r.begin(), r.end(), data_.begin() + i * cols_);
 }
 
 void IntervalMatrix::set_col(std::size_t j, const IntervalVector& c) {
-  if (j >= cols_) throw DimensionError("IntervalMatrix::set_col: column " + std::to_string(j) + " out of range");
+  if (j >= cols_) throw DimensionError("IntervalMatrix::set_col: column " + std::to_string(j) + " out of range for shape " +
+                                       shape(rows_, cols_));
   check_same_size(c.size(), rows_, "IntervalMatrix::set_col");
   for (std::size_t i = 0; i < rows_; ++i) (*this)(i, j) = c[i];
 }

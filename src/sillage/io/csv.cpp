@@ -114,6 +114,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
       }
     }
     t.rows_.push_back(std::move(row));
+    t.lines_.push_back(line_no);
   }
   if (t.columns_.empty()) throw ParseError(source + ": no header line");
   return t;
@@ -125,6 +126,13 @@ const std::vector<double>& CsvTable::row(std::size_t i) const {
   }
   return rows_[i];
 }
+
+std::size_t CsvTable::line(std::size_t i) const {
+  row(i);  // the range check and its message
+  return lines_[i];
+}
+
+std::string CsvTable::where(std::size_t i) const { return source_ + ":" + std::to_string(line(i)); }
 
 std::string CsvTable::rows_text() const {
   if (rows_.empty()) return "the table has no rows";

@@ -14,6 +14,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
+#include "sillage/problem/eval_rows.h"
 #include "sillage/problem/var_refs.h"
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/tube/tube.h"
@@ -23,6 +24,9 @@ namespace sillage {
 using detail::RewrittenExpr;
 using detail::VarRef;
 using detail::rewrite_refs;
+using detail::eval_row_kept;
+using detail::eval_row_time;
+using detail::csv_cell;
 
 namespace {
 
@@ -35,26 +39,6 @@ Interval constant_text(const std::string& text, const SourcePos& pos) {
   const Interval x = constant(BoundSpec{text, pos});
   if (x.is_empty() || x.lb() < 0) throw ProblemError(pos, "the error " + text, "an error >= 0");
   return x;
-}
-
-// A CSV cell as written: its decimal text is within half an ulp of the
-// double read, so the double's neighbours enclose it.
-Interval cell(double d) { return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)); }
-
-bool row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values) {
-  for (const auto& [col, value] : c.where)
-    if (values[table.column(col)] != value) return false;
-  return true;
-}
-
-// The time of an eval row: the stamp ± error, or [lb, ub] ± error, or the
-// whole domain (unknown), within the domain (empty: outside it).
-Interval row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
-                  const Interval& terr, const Interval& domain) {
-  if (c.time_columns.empty()) return domain;
-  Interval t = cell(values[table.column(c.time_columns[0])]);
-  if (c.time_columns.size() == 2) t |= cell(values[table.column(c.time_columns[1])]);
-  return (t + Interval(-1, 1) * terr) & domain;
 }
 
 // The observation when it only says "each evaluated value is a column"
@@ -109,7 +93,7 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
     while (row + 1 < table.nb_rows() && pts[row + 1] <= td.t(k)) ++row;
     if (row != evaluated) {
       const std::vector<double>& values = table.row(row);
-      for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+      for (std::size_t c = 0; c < values.size(); ++c) args[c] = csv_cell(values[c]);
       args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
       value = f.eval(args);
       evaluated = row;
@@ -136,7 +120,7 @@ void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
     while (row < pts.size() && pts[row] < td.t(k)) ++row;
     if (row == pts.size() || pts[row] != td.t(k)) continue;
     const std::vector<double>& values = table.row(row);
-    for (std::size_t c = 0; c < values.size(); ++c) args[c] = cell(values[c]);
+    for (std::size_t c = 0; c < values.size(); ++c) args[c] = csv_cell(values[c]);
     x.set_gate(k, x.gate(k) & f.eval(args));
   }
 }
@@ -259,8 +243,8 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
     const CsvTable& table = p.table(c.data)->table;
     const Interval terr = constant_text(c.time_error, c.pos);
     for (std::size_t row = 0; row < table.nb_rows(); ++row) {
-      if (!row_kept(c, table, table.row(row))) continue;
-      const Interval t = row_time(c, table, table.row(row), terr, b.td->t0_tf());
+      if (!eval_row_kept(c, table, table.row(row))) continue;
+      const Interval t = eval_row_time(c, table, table.row(row), terr, b.td->t0_tf());
       if (t.is_empty()) continue;
       for (const double s : {t.lb(), t.ub()})
         if (s > p.time.t0 && s < p.time.tf) b.td->sample(s);
@@ -388,12 +372,12 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           const auto it = errs.find(col);
           const Interval e = it == errs.end() ? Interval(0) : it->second;
           const double v = data.table.has_column(col) ? values[data.table.column(col)] : (*join_values)[joined->column(col)];
-          return cell(v) + Interval(-1, 1) * e;
+          return csv_cell(v) + Interval(-1, 1) * e;
         };
         const auto direct = direct_columns(c, data.table, ys);
         for (std::size_t row = 0; row < data.table.nb_rows(); ++row) {
           const std::vector<double>& values = data.table.row(row);
-          if (!row_kept(c, data.table, values)) continue;
+          if (!eval_row_kept(c, data.table, values)) continue;
           if (joined) {
             const auto j = join_rows.find(values[data.table.column(c.join_on)]);
             if (j == join_rows.end())
@@ -402,7 +386,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
                                  "a matching row in '" + c.join_data + "'");
             join_values = &joined->row(j->second);
           }
-          auto t = std::make_shared<Interval>(row_time(c, data.table, values, terr, b.td->t0_tf()));
+          auto t = std::make_shared<Interval>(eval_row_time(c, data.table, values, terr, b.td->t0_tf()));
           if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
           ++b.extra_domains;
           // One z per evaluated tube, all at the same time t.

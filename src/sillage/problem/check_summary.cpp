@@ -52,6 +52,9 @@ std::string check_summary(const Problem& p) {
     }
     nodes += n;
     s += line("  %-8zu nodes  %s\n", n, c.label.c_str());
+    if (c.nb_outside > 0)
+      s += line("           %zu row(s) of '%s' outside [t0, tf] skipped (outside = \"skip\")\n", c.nb_outside,
+                c.data.c_str());
   }
   s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains, %s scheduling\n", nodes, domains,
             bytes / 1048576.0, scheduling_name(p.network.scheduling));

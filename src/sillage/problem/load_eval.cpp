@@ -1,7 +1,41 @@
 // [[constraint]] kind = "eval": evaluations at the times of a table's rows and their observation.
 #include "sillage/problem/problem_loader.h"
 
+#include <charconv>
+
+#include "sillage/expr/function.h"
+#include "sillage/problem/eval_rows.h"
+
 namespace sillage::detail {
+
+namespace {
+
+// The shortest text that reads back as x ("13.3", where number_text gives 17 digits): a cell as written.
+std::string cell_text(double x) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
+
+// The kept rows of c whose time lies wholly outside the domain: an error
+// naming the first (file and line) unless c.skip_outside, else counted.
+std::size_t outside_rows(const ConstraintSpec& c, const DataSpec& d, const Interval& domain) {
+  if (c.time_columns.empty()) return 0;
+  const Interval terr = Function({"t"}, c.time_error).eval(IntervalVector{Interval(0)});
+  std::size_t n = 0;
+  for (std::size_t row = 0; row < d.table.nb_rows(); ++row) {
+    const std::vector<double>& values = d.table.row(row);
+    if (!eval_row_kept(c, d.table, values) || !eval_row_time(c, d.table, values, terr, domain).is_empty()) continue;
+    if (!c.skip_outside)
+      throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' (" + d.table.where(row) + ") at " +
+                                    c.time_columns[0] + " = " + cell_text(values[d.table.column(c.time_columns[0])]) +
+                                    ", outside the time domain " + domain.str(),
+                         "rows within [t0, tf] (outside = \"skip\" skips the others, counted by sillage check)");
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
 
 void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::string& where) {
   c.kind = ConstraintKind::Eval;
@@ -128,6 +162,12 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   for (const auto& col : cols)
     if (p_.var(col) && !y_of(col))
       throw ProblemError(c.pos, "the column '" + col + "' named as a variable", "distinct names in an eval observation");
+  if (const toml::node* on = f.find("outside")) {
+    const std::string v = f.string(*on, "\"error\" or \"skip\"");
+    if (v != "error" && v != "skip") throw ProblemError(doc_.pos(*on), "\"" + v + "\"", "\"error\" or \"skip\"");
+    c.skip_outside = v == "skip";
+  }
+  c.nb_outside = outside_rows(c, *d, Interval(p_.time.t0, p_.time.tf));
   c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
             (c.time_columns.empty() ? std::string("t unknown") : c.time_columns[0]) + ") for every row of '" +
             c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");

@@ -47,6 +47,11 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   j["hash"] = p.hash;
   j["status"] = r.empty ? "no solution" : "solved";
   if (r.empty) j["why"] = r.why_empty;
+  // Eval rows skipped as outside [t0, tf] (outside = "skip"), per constraint label.
+  json outside = json::object();
+  for (const ConstraintSpec& c : p.constraints)
+    if (c.nb_outside > 0) outside[c.label] = c.nb_outside;
+  j["rows_outside"] = outside;
   j["scheduling"] = scheduling_name(r.scheduling);
   j["schedule"] = json::array();
   for (const ScheduleStep& s : r.schedule) j["schedule"].push_back(stats_json(s));

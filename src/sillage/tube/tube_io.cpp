@@ -7,6 +7,8 @@
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <string>
+#include <utility>
 
 #include "sillage/error.h"
 
@@ -56,14 +58,17 @@ void write_all(std::ostream& os, std::uint32_t kind, const TDomain& td, const st
 
 // ---- reading: every field checked -----------------------------------------
 
+// Every message starts with `where`: "load tube: " for a stream, "load tube:
+// 'path': " for a file, so that a bad file is named.
 class Reader {
  public:
-  explicit Reader(std::istream& is) : is_(is) {}
+  Reader(std::istream& is, std::string where) : is_(is), where_(std::move(where)) {}
+  const std::string& where() const { return where_; }
 
   void bytes(char* out, std::size_t n, const char* what) {
     is_.read(out, static_cast<std::streamsize>(n));
     if (static_cast<std::size_t>(is_.gcount()) != n) {
-      throw Error("load tube: file truncated at byte " + std::to_string(offset_ + is_.gcount()) + " while reading " +
+      throw Error(where_ + "file truncated at byte " + std::to_string(offset_ + is_.gcount()) + " while reading " +
                   what);
     }
     offset_ += n;
@@ -88,7 +93,7 @@ class Reader {
     const double lb = f64(what), ub = f64(what);
     if (lb == rounding::kInf && ub == -rounding::kInf) return Interval::empty();
     if (std::isnan(lb) || std::isnan(ub) || lb > ub || lb == rounding::kInf || ub == -rounding::kInf) {
-      throw Error(std::string("load tube: invalid bounds for ") + what + " at byte " + std::to_string(at));
+      throw Error(where_ + "invalid bounds for " + what + " at byte " + std::to_string(at));
     }
     return Interval(lb, ub);
   }
@@ -96,6 +101,7 @@ class Reader {
 
  private:
   std::istream& is_;
+  std::string where_;
   std::size_t offset_ = 0;
 };
 
@@ -105,38 +111,39 @@ struct Loaded {
   std::size_t end = 0;  // bytes read
 };
 
-Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<TDomain> td) {
-  Reader r(is);
+Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<TDomain> td,
+                const std::string& path = "") {
+  Reader r(is, path.empty() ? "load tube: " : "load tube: '" + path + "': ");
   char magic[8];
   r.bytes(magic, 8, "the magic number");
-  if (std::memcmp(magic, kMagic, 8) != 0) throw Error("load tube: not a sillage tube file (bad magic number at byte 0)");
+  if (std::memcmp(magic, kMagic, 8) != 0) throw Error(r.where() + "not a sillage tube file (bad magic number at byte 0)");
   const std::uint32_t version = r.u32("the format version");
   if (version != kTubeFileVersion) {
-    throw Error("load tube: unsupported format version " + std::to_string(version) + " (this library reads version " +
+    throw Error(r.where() + "unsupported format version " + std::to_string(version) + " (this library reads version " +
                 std::to_string(kTubeFileVersion) + ")");
   }
   const std::uint32_t kind = r.u32("the kind");
   if (kind != expected_kind) {
-    throw Error("load tube: the file holds a " + std::string(kind == kKindTube ? "Tube" : kind == kKindTubeVector ? "TubeVector" : "unknown object") +
+    throw Error(r.where() + "the file holds a " + std::string(kind == kKindTube ? "Tube" : kind == kKindTubeVector ? "TubeVector" : "unknown object") +
                 ", a " + (expected_kind == kKindTube ? "Tube" : "TubeVector") + " was expected");
   }
   const std::uint64_t nt = r.u64("the number of time points");
   if (nt < 2 || nt > (std::uint64_t{1} << 31)) {
-    throw Error("load tube: invalid number of time points " + std::to_string(nt) + " at byte " +
+    throw Error(r.where() + "invalid number of time points " + std::to_string(nt) + " at byte " +
                 std::to_string(r.offset() - 8));
   }
   std::vector<double> times;
   for (std::uint64_t k = 0; k < nt; ++k) times.push_back(r.f64("the time points"));
   if (td) {
     if (std::vector<double>(td->times().begin(), td->times().end()) != times) {
-      throw DimensionError("load tube: the stored time points differ from those of the given TDomain");
+      throw DimensionError(r.where() + "the stored time points differ from those of the given TDomain");
     }
   } else {
     td = TDomain::create(std::move(times));  // validates the time points
   }
   const std::uint64_t n = r.u64("the number of components");
   if (n == 0 || (kind == kKindTube && n != 1) || n > (std::uint64_t{1} << 20)) {
-    throw Error("load tube: invalid number of components " + std::to_string(n));
+    throw Error(r.where() + "invalid number of components " + std::to_string(n));
   }
   Loaded out{td, {}};
   const std::size_t ns = td->nb_slices();
@@ -148,7 +155,7 @@ Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<T
     try {
       out.tubes.emplace_back(td, slices, gates);
     } catch (const Error& e) {  // a gate disjoint from its slices
-      throw Error("load tube: component " + std::to_string(i) + " (from byte " + std::to_string(at) + "): " + e.what());
+      throw Error(r.where() + "component " + std::to_string(i) + " (from byte " + std::to_string(at) + "): " + e.what());
     }
   }
   out.end = r.offset();
@@ -171,7 +178,7 @@ std::ifstream open_in(const std::string& path) {
 // A file holds one object: bytes after it are an error (a stream may go on).
 Loaded read_file(const std::string& path, std::uint32_t kind, std::shared_ptr<TDomain> td) {
   auto is = open_in(path);
-  Loaded out = read_all(is, kind, std::move(td));
+  Loaded out = read_all(is, kind, std::move(td), path);
   if (is.peek() != std::ifstream::traits_type::eof()) {
     throw Error("load tube: '" + path + "' has trailing bytes after the " +
                 (kind == kKindTube ? "Tube" : "TubeVector") + ", from byte " + std::to_string(out.end));

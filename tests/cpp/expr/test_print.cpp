@@ -29,6 +29,20 @@ TEST(Print, TreesPrintAsBefore) {
   EXPECT_EQ((sin(x) * sin(x) + sin(x)).str(), "sin(x) * sin(x) + sin(x)");
 }
 
+// A sign right after an operator is parenthesised ("x - -17.66" reads as a
+// typo), and the text still parses back into the same DAG.
+TEST(Print, SignsAfterOperatorsAreParenthesised) {
+  ExprVar x("x"), y("y");
+  const std::vector<std::pair<Expr, std::string>> cases = {
+      {x - (-17.5), "x - (-17.5)"}, {x + (-2), "x + (-2)"},     {x * (-2), "x * (-2)"},
+      {x / (-y), "x / (-y)"},       {-(-x), "-(-x)"},            {x - -y * 2, "x - (-y * 2)"},
+      {-2 - x, "-2 - x"},           {-x * y, "-x * y"},          {sqr(x - (-0.5)), "(x - (-0.5))^2"}};
+  for (const auto& [e, text] : cases) {
+    EXPECT_EQ(e.str(), text);
+    EXPECT_EQ(detail::parse_expr({"x", "y"}, text), e) << text;
+  }
+}
+
 TEST(Print, SharedNodesAreNamedOnce) {
   ExprVar x("x"), y("y");
   EXPECT_EQ(tower(x, 1).str(), "x * x + 1");

@@ -19,6 +19,16 @@ TEST(Csv, ParsesHeaderAndRows) {
   EXPECT_FALSE(t.has_column("y"));
 }
 
+// Each row keeps its line in the file, comments, blank lines and the header counted.
+TEST(Csv, RowsKnowTheirLines) {
+  const CsvTable t = CsvTable::parse("# comment\nt_s, x\n1.5,2\n\n2.5,-3e-2\r\n", "mem");
+  EXPECT_EQ(t.source(), "mem");
+  EXPECT_EQ(t.line(0), 3u);
+  EXPECT_EQ(t.line(1), 5u);
+  EXPECT_EQ(t.where(1), "mem:5");
+  EXPECT_THROW(t.line(2), OutOfRangeError);
+}
+
 TEST(Csv, ErrorsSayWhere) {
   try {
     CsvTable::parse("a,b\n1,2\n3,x\n", "f.csv");

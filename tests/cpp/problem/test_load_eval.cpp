@@ -106,3 +106,23 @@ TEST(LoadEval, CellsEncloseTheirDecimal) {
   EXPECT_TRUE(decimal.is_subset(a)) << a;
   EXPECT_LT(a.diam(), 1e-16);
 }
+
+// A row whose time lies outside [t0, tf] is an error naming the file and the
+// row, unless outside = "skip": then it is skipped and counted.
+TEST(LoadEval, RowsOutsideTheTimeDomain) {
+  auto within_10 = [](std::string text) { return text.replace(text.find("[0, 20]"), 7, "[0, 10]"); };
+  expect_error(within_10(eval("y = \"x\"\ntime = \"t\"\n")),
+               "test.toml:16:1: found row 5 of 'ranges' (");
+  expect_error(within_10(eval("y = \"x\"\ntime = \"t\"\nwhere = { b = 2 }\n")), "found row 6 of 'ranges' (");
+  expect_error(within_10(eval("y = \"x\"\ntime = \"t\"\nwhere = { b = 2 }\n")), "beacon_ranges.csv:9) at t = 13.3, outside");
+  expect_error(within_10(eval("y = \"x\"\ntime = \"t\"\n")),
+               "data/beacon_ranges.csv:8) at t = 11.4, outside the time domain [0, 10], expected rows within [t0, tf] "
+               "(outside = \"skip\" skips the others, counted by sillage check)");
+  expect_error(eval("y = \"x\"\ntime = \"t\"\noutside = \"drop\"\n"), "test.toml:21:11: found \"drop\", expected \"error\" or \"skip\"");
+  const Problem p = parse(within_10(eval("y = \"x\"\ntime = \"t\"\noutside = \"skip\"\n")));
+  EXPECT_EQ(p.constraints[1].nb_outside, 4u);  // t = 11.4, 13.3, 15.2, 17.1
+  EXPECT_EQ(build_network(p, 0.05).cn->nb_ctc(), 1u + 5 * 2);
+  EXPECT_EQ(parse(eval("y = \"x\"\ntime = \"t\"\n")).constraints[1].nb_outside, 0u);
+  // Within the time error of the domain: kept (its time is the part inside).
+  EXPECT_EQ(parse(within_10(eval("y = \"x\"\ntime = \"t\"\ntime_error = 1.5\nwhere = { b = 2 }\noutside = \"skip\"\n"))).constraints[1].nb_outside, 2u);
+}

@@ -76,7 +76,7 @@ TEST(ProblemFuzz, CorpusLoadsAndHoldsEveryKeyFamily) {
   }
   for (const char* key : {"points = {", "slices = {", "gates = {", "at = [", "\"p_implies_z\"", "\"heading\"",
                           "\"heading_window\"", "\"second_deriv\"", "\"increment\"", "\"eval\"", "where =", "join =",
-                          "gates = true", "time_error", "scheduling =", "order =", "ratio =", "loops = {", "landmarks =",
+                          "gates = true", "outside =", "time_error", "scheduling =", "order =", "ratio =", "loops = {", "landmarks =",
                           "truth = {", "maps =", "plots =", "\"interval\"", "\"box\"", "stride =", "turn_accel ="})
     EXPECT_NE(all.find(key), std::string::npos) << key;
 }

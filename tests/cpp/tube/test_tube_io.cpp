@@ -120,8 +120,25 @@ TEST(TubeIo, RejectsTrailingBytesDirectoriesAndDisjointGates) {
   const double five = 5.0;
   std::memcpy(&disjoint[gate1], &five, 8);
   std::memcpy(&disjoint[gate1 + 8], &five, 8);
-  const std::string msg = load_error(temp_file("sillage_disjoint.tube", disjoint));
-  EXPECT_EQ(msg, "load tube: component 0 (from byte " + std::to_string(gate1 - 3 * 16 - 16) +
+  const std::string disjoint_file = temp_file("sillage_disjoint.tube", disjoint);
+  const std::string msg = load_error(disjoint_file);
+  EXPECT_EQ(msg, "load tube: '" + disjoint_file + "': component 0 (from byte " + std::to_string(gate1 - 3 * 16 - 16) +
                      "): Tube(td, slices, gates): gate 1 = [5, 5] does not meet slice 0 = [0, 1] "
                      "(a gate must meet its neighbouring slices)");
+}
+
+// A file that is not a tube file (a problem file given to `sillage show`) is named in the message.
+TEST(TubeIo, ErrorsOfAFileNameIt) {
+  const std::string toml = temp_file("sillage_robot.toml", "[time]\ndomain = [0, 1]\n");
+  EXPECT_EQ(load_error(toml), "load tube: '" + toml + "': not a sillage tube file (bad magic number at byte 0)");
+  const std::string s = bytes_of(sample_tube());
+  const std::string cut = temp_file("sillage_cut.tube", s.substr(0, 20));
+  EXPECT_EQ(load_error(cut), "load tube: '" + cut + "': file truncated at byte 20 while reading the number of time points");
+  std::istringstream is("not a tube");  // a stream has no name
+  try {
+    load_tube(is);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "load tube: not a sillage tube file (bad magic number at byte 0)");
+  }
 }
