@@ -121,9 +121,11 @@
 
 #include "sillage/figures/figure.h"
 #include "sillage/figures/html.h"
+#include "sillage/figures/legend.h"
 #include "sillage/figures/loop_style.h"
 #include "sillage/figures/loops_map_figure.h"
 #include "sillage/figures/style.h"
+#include "sillage/figures/text_width.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tplane_figure.h"
 #include "sillage/figures/tube_figure.h"
