@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "example_args.h"
+#include "example_bound.h"
 #include "example_check.h"
 #include "sillage/figures/figure.h"
 #include "sillage/cn/contractor_network.h"
@@ -23,21 +25,24 @@ int example_main(int argc, char** argv) {
     Interval rho;
   };
   const std::vector<Beacon> beacons = {
-      {-0.5, 4.0, {3.63, 4.43}}, {-2.5, -2.5, {3.13, 3.93}}, {2.5, -0.5, {2.15, 2.95}}};
+      {-0.5, 4.0, example::bound(Interval(3.63, 4.43))},
+      {-2.5, -2.5, example::bound(Interval(3.13, 3.93))},
+      {2.5, -0.5, example::bound(Interval(2.15, 2.95))}};
 
   ContractorNetwork cn;
-  auto x = cn.create_dom(IntervalVector(2));  // unknown position
+  auto x = cn.create_dom(IntervalVector(2), "x");  // unknown position; named for the emptiness explanation
   std::vector<std::shared_ptr<Interval>> rho;
   for (const auto& b : beacons) {
     std::ostringstream g;  // (2.35): rho = sqrt((x1 - x1k)^2 + (x2 - x2k)^2)
     g.precision(17);
     g << "sqrt((x1 - " << b.x1 << ")^2 + (x2 - " << b.x2 << ")^2) - rho";
-    rho.push_back(cn.create_dom(b.rho));
+    rho.push_back(cn.create_dom(b.rho, "rho" + std::to_string(rho.size() + 1)));
     cn.add(std::make_shared<CtcFunction>(Function({"x1", "x2", "rho"}, g.str())), {x, rho.back()});
   }
 
   const ContractStats stats = cn.contract();
-  const bool ok = example::check_stats(stats) && example::enclosure_ok(*x) && x->contains({0.0, 0.0});
+  if (stats.empty) return example::empty_exit("beacons_static", stats);
+  const bool ok = example::enclosure_ok(*x) && x->contains({0.0, 0.0});
   std::printf("Static range-only localization, thesis Table 2.1 (robot at (0, 0))\n");
   std::printf("  final box:   %s\n", x->str().c_str());
   std::printf("  contains (0, 0): %s\n", ok ? "yes" : "NO");

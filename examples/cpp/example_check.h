@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "example_args.h"
 #include "sillage/cn/contractor_network.h"
 
 namespace example {
@@ -23,6 +24,15 @@ inline bool check_stats(const sillage::ContractStats& s, const std::string& labe
   if (!s.empty) return true;
   std::printf("  %s%s\n", label.empty() ? "" : (label + ": ").c_str(), empty_text(s).c_str());
   return false;
+}
+
+// The end of an example whose network is empty: the explanation (check_stats)
+// and a failed RESULT line, without the truth or box figures that the empty
+// domains would give; the example returns this status, 1.
+inline int empty_exit(const std::string& name, const sillage::ContractStats& s, const std::string& label = "") {
+  check_stats(s, label);
+  print_result(name, (label.empty() ? "" : label + ": ") + empty_text(s), false);
+  return 1;
 }
 
 inline bool enclosure_ok(const sillage::IntervalVector& x) { return !x.is_empty() && !x.is_unbounded(); }

@@ -6,7 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from example_args import bound, check_stats, enclosure_ok, out_dir, print_result, run  # noqa: E402
+from example_args import bound, empty_exit, enclosure_ok, out_dir, print_result, run  # noqa: E402
 from sillage import ContractorNetwork, CtcFunction, Function, Interval, IntervalVector  # noqa: E402
 from sillage import plot  # noqa: E402
 
@@ -24,8 +24,11 @@ def main():
         g = Function(["x1", "x2", "rho"], f"sqrt((x1 - {bx!r})^2 + (x2 - {by!r})^2) - rho")
         rhos.append(Interval(rho.lb(), rho.ub()))
         cn.add(CtcFunction(g), [x, rhos[-1]])
+    cn.set_name(x, "x")  # named: an empty network says which domain emptied
     stats = cn.contract()
-    ok = check_stats(stats) and enclosure_ok(x) and x.contains([0.0, 0.0])
+    if stats.empty:
+        return empty_exit("beacons_static", stats)
+    ok = enclosure_ok(x) and x.contains([0.0, 0.0])
 
     print("Static range-only localization, thesis Table 2.1 (robot at (0, 0))")
     print(f"  final box:   {x}")

@@ -139,6 +139,14 @@ def check_stats(stats, label=""):
     return False
 
 
+def empty_exit(name, stats, label=""):
+    """The end of an example whose network is empty: the explanation (check_stats) and a failed
+    RESULT line, without the truth or box figures that the empty domains would give; exits 1
+    (print_result)."""
+    check_stats(stats, label)
+    print_result(name, f"{label + ': ' if label else ''}{empty_text(stats)}", False)
+
+
 def _flat(xs):
     for x in xs:
         yield from (_flat(x) if isinstance(x, (list, tuple)) else [x])

@@ -45,7 +45,7 @@ def test_a_failed_check_exits_non_zero(name, tmp_path):
 def test_empty_network_is_explained(tmp_path):
     proc = run("beacons_static.py", tmp_path, tighten=0.001)
     assert proc.returncode == 1
-    assert "EMPTY: CtcFunction(sqrt((x1 - 2.5)^2 + (x2 - (-0.5))^2) - rho) emptied domain 0 (IntervalVector(2))" \
+    assert "EMPTY: CtcFunction(sqrt((x1 - 2.5)^2 + (x2 - (-0.5))^2) - rho) emptied box 'x'" \
         in proc.stdout
 
 
