@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "example_args.h"
+#include "example_bound.h"
 #include "example_check.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
@@ -62,9 +63,13 @@ Run solve_decomposition(const std::shared_ptr<TDomain>& td) {
   Run r;
   r.x = std::make_shared<Tube>(td);
   auto a = std::make_shared<Tube>(td), b = std::make_shared<Tube>(td);
-  b->set_gate(0, Interval(0));  // b(0) = ∫_0^0 a = 0
+  b->set_gate(0, example::bound(Interval(0)));  // b(0) = ∫_0^0 a = 0
   ContractorNetwork cn;
   cn.set_ratio(0);
+  // Named, so that an empty network says which tube emptied.
+  cn.set_name(r.x, "x");
+  cn.set_name(a, "a");
+  cn.set_name(b, "b");
   cn.add(std::make_shared<CtcFunction>(Function({"a", "x"}, "a - sin(x)")), {a, r.x});
   cn.add(std::make_shared<CtcDeriv>(), {b, a});
   cn.add(std::make_shared<CtcFunction>(Function({"x", "b"}, "x - 1 + b")), {r.x, b});
@@ -79,9 +84,11 @@ Run solve_direct(const std::shared_ptr<TDomain>& td) {
   Run r;
   r.x = std::make_shared<Tube>(td);
   auto v = std::make_shared<Tube>(td);
-  r.x->set_gate(0, Interval(1));
+  r.x->set_gate(0, example::bound(Interval(1)));
   ContractorNetwork cn;
   cn.set_ratio(0);
+  cn.set_name(r.x, "x");
+  cn.set_name(v, "v");
   cn.add(std::make_shared<CtcFunction>(Function({"v", "x"}, "v + sin(x)")), {v, r.x});
   cn.add(std::make_shared<CtcDeriv>(), {r.x, v});
   r.stats = cn.contract();
@@ -153,14 +160,20 @@ int example_main(int argc, char** argv) {
     const std::size_t N = td->nb_slices();
     const Run dec = solve_decomposition(td), dir = solve_direct(td);
     for (const Run* r : {&dec, &dir}) {
+      const char* model = r == &dec ? "(4.23)" : "x'=v, v=-sin x";
+      if (r->stats.empty) {
+        char label[64];
+        std::snprintf(label, sizeof label, "delta = %g %s", dt, model);
+        return example::empty_exit("sin_ivp", r->stats, label);
+      }
       const Interval xf = r->x->gate(N);
       const double excess = truth_excess(*r->x, truth);
-      const bool inside = example::check_stats(r->stats) && example::enclosure_ok(*r->x) && excess <= 1e-9;
+      const bool inside = example::enclosure_ok(*r->x) && excess <= 1e-9;
       ok = ok && inside;
       std::printf("delta = %-6g %-15s x(10) in %-26s width %.3g (%.2g x the reference width), contains it: %s; "
                   "thicker than 0.1 from t = %.2f; %zu iterations, %zu calls, %.3f s CPU; "
                   "truth inside: %s (max excess %.1e)\n",
-                  dt, r == &dec ? "(4.23):" : "x'=v, v=-sin x:", interval_str(xf).c_str(), xf.diam(),
+                  dt, (std::string(model) + ":").c_str(), interval_str(xf).c_str(), xf.diam(),
                   xf.diam() / kReference.diam(), xf.is_superset(kReference) ? "yes" : "NO",
                   onset(*r->x, 0.1), r->stats.iterations, r->stats.contractor_calls, r->cpu,
                   inside ? "yes" : "NO", excess);

@@ -21,6 +21,8 @@ BUILD = Path(sillage.__file__).resolve().parents[2]  # <build>/python/sillage/__
 CASES = {
     "beacons_static": ("EMPTY: CtcFunction(sqrt((x1 - 2.5)^2 + (x2 - (-0.5))^2) - rho) emptied box 'x' at component 0",
                        ["final box", "contains (0, 0)", "iterations, box"]),
+    "sin_ivp": ("delta = 0.1 (4.23): EMPTY: tube 'b' was empty on input at gate 0 (t = 0)",
+                ["contains it", "truth inside", "Fig. 4.7", "CtcIvp ("]),
 }
 
 
