@@ -23,6 +23,7 @@
 
 #include "causal_chain_network.h"
 #include "example_args.h"
+#include "example_bound.h"
 #include "example_check.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/figures/thickness_figure.h"
@@ -83,9 +84,15 @@ struct Run {
   double cpu = 0;
 };
 
+// The stated final box, tightened by SILLAGE_EXAMPLE_TIGHTEN as in causal_chain.py.
+IntervalVector stated_final_box() {
+  return {example::bound(kFinalBox[0]), example::bound(kFinalBox[1]), example::bound(kFinalBox[2])};
+}
+
 Run solve(const std::shared_ptr<TDomain>& td, bool with_final_box) {
   const double start = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
   const Problem p = build(td, with_final_box);
+  if (with_final_box) p.x->set_gate(td->nb_slices(), stated_final_box());
   Run r;
   r.x = p.x;
   r.stats = p.cn->contract();
@@ -103,10 +110,11 @@ Run solve_ivp(const std::shared_ptr<TDomain>& td, bool with_final_box) {
   const IntervalVector b = initial_box();
   x.set_gate(0, IntervalVector{b[0], b[1], b[2], Interval(0.0)});
   if (with_final_box) {
-    x.set_gate(td->nb_slices(), IntervalVector{kFinalBox[0], kFinalBox[1], kFinalBox[2], Interval(kTf)});
+    const IntervalVector b = stated_final_box();
+    x.set_gate(td->nb_slices(), IntervalVector{b[0], b[1], b[2], Interval(kTf)});
   }
   Run r;
-  r.stats.empty = !ctc.contract(x, TubeVector(td, 1, Interval(-0.02, 0.02)));
+  r.stats.empty = !ctc.contract(x, TubeVector(td, 1, example::bound(Interval(-0.02, 0.02))));
   if (r.stats.empty) r.stats.emptiness = "CtcIvp: no trajectory from x0 with the inputs reaches the final box";
   r.x = std::make_shared<TubeVector>(x.subvector(0, 2));
   r.cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
@@ -142,6 +150,8 @@ int example_main(int argc, char** argv) {
   for (const bool final_box : {false, true}) {
     const char* label = final_box ? "with the final box" : "from x0 only";
     const Run r = solve(td, final_box), ri = solve_ivp(td, final_box);
+    if (r.stats.empty) return example::empty_exit("causal_chain", r.stats, label);
+    if (ri.stats.empty) return example::empty_exit("causal_chain", ri.stats, std::string("CtcIvp ") + label);
     const IntervalVector xf = r.x->gate(N), xi = ri.x->gate(N);
     std::printf("%s: %zu iterations, %zu contractor calls, %.3f s CPU, empty = %d\n", label, r.stats.iterations,
                 r.stats.contractor_calls, r.cpu, r.stats.empty);
@@ -162,7 +172,7 @@ int example_main(int argc, char** argv) {
     IntervalVector hull(3, Interval::empty());
     for (const auto& [name, path] : paths) {
       const State& end = path.back();
-      const bool feasible = !final_box || kFinalBox.contains({end[0], end[1], end[2]});
+      const bool feasible = !final_box || stated_final_box().contains({end[0], end[1], end[2]});
       if (!feasible) continue;
       for (std::size_t i = 0; i < 3; ++i) hull[i] |= Interval(end[i]);
       for (const Run* run : {&r, &ri}) {
@@ -176,8 +186,7 @@ int example_main(int argc, char** argv) {
     std::printf("  hull of the feasible sampled x(14): %s\n", hull[0].is_empty() ? "none" : box_str(hull).c_str());
     std::printf("  truth inside: %s\n",
                 excess(*r.x, paths[0].second) <= 1e-9 && excess(*ri.x, paths[0].second) <= 1e-9 ? "yes" : "NO");
-    ok = example::check_stats(r.stats, label) && example::enclosure_ok(*r.x) &&
-         example::check_stats(ri.stats, std::string("CtcIvp ") + label) && example::enclosure_ok(*ri.x) && ok;
+    ok = example::enclosure_ok(*r.x) && example::enclosure_ok(*ri.x) && ok;
     const std::string tag = final_box ? "final" : "x0";
     const Trajectory t1 = component(*td, paths[0].second, 0), t2 = component(*td, paths[0].second, 1);
     tube_vector_figure(*r.x, 0, 1,

@@ -40,6 +40,8 @@ inline Problem build(const std::shared_ptr<TDomain>& td, bool with_final_box) {
   cn.add(std::make_shared<CtcFunction>(Function({"v2", "x3"}, "v2 - 10*sin(x3)")),
          {DomainRef::component(p.v, 1), DomainRef::component(p.x, 2)});
   cn.add(std::make_shared<CtcDeriv>(), {p.x, p.v});
+  cn.set_name(p.x, "x");  // named, so that an empty network says which tube emptied
+  cn.set_name(p.v, "v");
   return p;
 }
 

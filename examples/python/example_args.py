@@ -13,6 +13,7 @@ import json
 import math
 import os
 import sys
+import types
 from pathlib import Path
 
 import sillage
@@ -137,6 +138,12 @@ def check_stats(stats, label=""):
         return True
     print(f"  {label + ': ' if label else ''}{empty_text(stats)}")
     return False
+
+
+def ivp_stats(ok, why):
+    """The fields of a ContractStats that check_stats and empty_exit read, for a contractor run
+    outside a network (CtcIvp returns only a flag): empty when ok is False, explained by why."""
+    return types.SimpleNamespace(empty=not ok, emptiness="" if ok else why, empty_domain=None)
 
 
 def empty_exit(name, stats, label=""):
