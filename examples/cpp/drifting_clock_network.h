@@ -3,6 +3,7 @@
 // shared by examples/cpp/drifting_clock.cpp and bench/bench_examples_ch5.cpp.
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sillage/cn/contractor_network.h"
@@ -63,7 +64,18 @@ inline Problem build(const std::shared_ptr<TDomain>& td, double ratio) {
     p.tau.push_back(std::make_shared<Interval>(cents(Interval(kTau[i]))));
     cn.add(std::make_shared<CtcEval>(), {p.t.back(), p.tau.back(), p.h, p.phi});  // τ_i = h(t_i)
     cn.add(std::make_shared<CtcEval>(), {p.t.back(), p.z.back(), p.y, p.w});      // z_i = y(t_i)
+    const std::string i1 = std::to_string(i + 1);
+    cn.set_name(p.t.back(), "t" + i1);
+    cn.set_name(p.z.back(), "z" + i1);
+    cn.set_name(p.tau.back(), "tau" + i1);
   }
+  // Named as in drifting_clock.py, so that an empty network says which domain emptied.
+  cn.set_name(p.x, "x");
+  cn.set_name(p.v, "v");
+  cn.set_name(p.y, "y");
+  cn.set_name(p.w, "w");
+  cn.set_name(p.h, "h");
+  cn.set_name(p.phi, "phi");
   return p;
 }
 

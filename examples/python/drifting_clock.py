@@ -11,7 +11,7 @@ import math
 import time
 
 import sillage
-from example_args import bound, check_stats, enclosure_ok, out_dir_and_step, print_result, run
+from example_args import bound, empty_exit, enclosure_ok, out_dir_and_step, print_result, run
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Function, Interval,
                      IntervalVector, Style, TDomain, Trajectory, Tube, TubeStyle, TubeVector)
 
@@ -35,7 +35,7 @@ def build(td, ratio=0.0):
     """CN (5.27); returns the network and its domains (contracted in place)."""
     x, v = TubeVector(td, X), TubeVector(td, V)
     y, w, h, phi = Tube(td), Tube(td), Tube(td), Tube(td, PHI)
-    h.set_gate(0, Interval(0.0))  # h(0) = 0
+    h.set_gate(0, bound(Interval(0.0)))  # h(0) = 0
     cn = ContractorNetwork()
     cn.set_ratio(ratio)
     x1, x2 = DomainRef.component(x, 0), DomainRef.component(x, 1)
@@ -53,6 +53,10 @@ def build(td, ratio=0.0):
         tau.append(cents(TAU[i], TAU[i]))
         cn.add(CtcEval(), [t[i], tau[i], h, phi])  # tau_i = h(t_i)
         cn.add(CtcEval(), [t[i], z[i], y, w])  # z_i = y(t_i)
+        for d, name in ((t[i], "t"), (z[i], "z"), (tau[i], "tau")):
+            cn.set_name(d, f"{name}{i + 1}")
+    for d, name in ((x, "x"), (v, "v"), (y, "y"), (w, "w"), (h, "h"), (phi, "phi")):
+        cn.set_name(d, name)  # named, so that an empty network says which domain emptied
     return dict(cn=cn, x=x, v=v, y=y, w=w, h=h, phi=phi, t=t, z=z)
 
 
@@ -85,6 +89,8 @@ def main():
     print(f"  {s.iterations} iterations, {s.contractor_calls} contractor calls, {s.time:.4f} s wall, "
           f"{cpu:.4f} s CPU (build + contract), empty = {s.empty}")
     print("  thesis: 5 steps in less than 2 s; reference library: 0.8 s")
+    if s.empty:
+        return empty_exit("drifting_clock", s)
 
     # Fixed point: one more contract() runs every contractor once and must change nothing.
     h_fp = p["h"].copy()
@@ -98,7 +104,7 @@ def main():
     y_true = Trajectory("sqrt((90 + 100*cos(t))^2 + (20 + 100*sin(t))^2 + 100)", dom)
     h_in = p["h"].contains(h_true)
     boat_in = p["x"].contains([b1, b2]) and p["y"].contains(y_true)
-    ok = check_stats(s) and enclosure_ok(p["h"]) and (fixed or args.ratio > 0) and h_in and boat_in  # a ratio > 0 stops earlier
+    ok = enclosure_ok(p["h"]) and (fixed or args.ratio > 0) and h_in and boat_in  # a ratio > 0 stops earlier
     print("  i  tau_i  a priori [h]^-1(tau_i)  contracted [t_i]       true t_i  contracted [z_i]")
     w0 = w1 = 0.0
     for i, tau in enumerate(TAU):

@@ -24,6 +24,8 @@ CASES = {
                        ["final box", "contains (0, 0)", "iterations, box"]),
     "sin_ivp": ("delta = 0.1 (4.23): EMPTY: tube 'b' was empty on input at gate 0 (t = 0)",
                 ["contains it", "truth inside", "Fig. 4.7", r"CtcIvp \("]),
+    "drifting_clock": ("EMPTY: tube 'h' was empty on input at gate 0 (t = 0)",
+                       ["fixed point verified", r"contracted \[t_i\]", "mean width", "truth h"]),
     # The run from x0 alone is not empty and prints its results; the run with the final box is.
     "causal_chain": ("CtcIvp with the final box: EMPTY: CtcIvp: no trajectory from x0 with the inputs reaches the final "
                      "box", [r"with the final box: \d", r"\[ ?empty ?\]"]),
