@@ -102,6 +102,15 @@ inline Problem build(const std::shared_ptr<TDomain>& td, double ratio,
     p.t.push_back(std::make_shared<Interval>(cents(m.t)));
     p.z.push_back(std::make_shared<Interval>(cents(m.z)));
     cn.add(std::make_shared<CtcEval>(), {p.t.back(), p.z.back(), p.y[m.k], p.w[m.k]});
+    cn.set_name(p.t.back(), "t" + std::to_string(p.t.size()));
+    cn.set_name(p.z.back(), "z" + std::to_string(p.z.size()));
+  }
+  // Named as in lowcost_beacons.py, so that an empty network says which domain emptied.
+  cn.set_name(p.x, "x");
+  cn.set_name(p.v, "v");
+  for (std::size_t k = 0; k < kBeacons.size(); ++k) {
+    cn.set_name(p.y[k], std::string("y_") + kBeacons[k].name);
+    cn.set_name(p.w[k], std::string("w_") + kBeacons[k].name);
   }
   if (observer) cn.add(observer, {x(0), x(1)});
   return p;

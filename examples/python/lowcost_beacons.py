@@ -13,7 +13,7 @@ import numpy as np
 
 import sillage
 from dead_reckoning import IVP_F, NOISE
-from example_args import bound, check_stats, deriv_vs_ivp_figure, enclosure_ok, out_dir_and_step, print_result, rk4, run
+from example_args import bound, deriv_vs_ivp_figure, empty_exit, enclosure_ok, out_dir_and_step, print_result, rk4, run
 from sillage import (ContractorNetwork, CtcDeriv, CtcEval, CtcFunction, DomainRef, Figure, Function, Interval,
                      IntervalVector, Style, TDomain, ThicknessMeasure, Tube, TubeStyle, TubeVector)
 
@@ -86,9 +86,15 @@ def build(td, ratio=0.0, split=False):
         ws.append(w)
     ts, zs = [], []
     for k, t, z in MEASUREMENTS:
-        ts.append(cents(*t))
+        ts.append(bound(cents(*t)))
         zs.append(bound(cents(*z)))
         cn.add(CtcEval(), [ts[-1], zs[-1], ys[k], ws[k]])
+        cn.set_name(ts[-1], f"t{len(ts)}")
+        cn.set_name(zs[-1], f"z{len(zs)}")
+    # Named, so that an empty network says which domain emptied.
+    for d, name in ((x, "x"), (v, "v"), *((y, f"y_{b[0]}") for y, b in zip(ys, BEACONS)),
+                    *((w, f"w_{b[0]}") for w, b in zip(ws, BEACONS))):
+        cn.set_name(d, name)
     return dict(cn=cn, x=x, v=v, y=ys, w=ws, t=ts, z=zs)
 
 
@@ -183,6 +189,8 @@ def main():
           f"{cpu:.3f} s CPU (build + contract), empty = {s.empty}")
     print("  thesis: fixed point after 52 iterations in 2 min; reference library: 4 iterations in 3.4 s, "
           "not at the fixed point")
+    if s.empty:
+        return empty_exit("lowcost_beacons", s)
 
     # Fixed point: one more contract() runs every contractor once and must change nothing.
     x_fp = p["x"].copy()
@@ -193,7 +201,7 @@ def main():
     h = args.dt / 10  # RK4 step of the truth
     path = truth(h, round(TF / h))
     e = excess(p["x"], path, h)
-    ok = check_stats(s) and enclosure_ok(p["x"]) and (fixed or args.ratio > 0) and e <= 1e-7  # ratio > 0: stops earlier
+    ok = enclosure_ok(p["x"]) and (fixed or args.ratio > 0) and e <= 1e-7  # ratio > 0: stops earlier
     print("  measurements: [t_i] (Table 5.2) -> contracted [t_i] ; [z_i] -> contracted [z_i] ; truth times")
     for i, (k, t, z) in enumerate(MEASUREMENTS):
         tt = truth_times(path, h, k, t, z)
