@@ -19,6 +19,8 @@ inline void add_constraints(ContractorNetwork& cn, const std::shared_ptr<TubeVec
   cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v"}, "x4*sin(x3) - v")),
          {DomainRef::component(x, 2), DomainRef::component(x, 3), DomainRef::component(v, 1)});
   cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.set_name(x, "x");  // named, so that an empty network says which tube emptied
+  cn.set_name(v, "v");
 }
 
 }  // namespace dead_reckoning

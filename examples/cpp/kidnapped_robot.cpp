@@ -90,11 +90,16 @@ Run solve(const std::shared_ptr<TDomain>& td, bool use_eval = false, bool headin
   cn.add(std::make_shared<CtcFunction>(Function({"x3", "x4", "v2"}, "x4*sin(x3) - v2")),
          {DomainRef::component(r.x, 2), DomainRef::component(r.x, 3), DomainRef::component(v, 1)});
   cn.add(std::make_shared<CtcDeriv>(), {r.x, v});
+  cn.set_name(r.x, "x");  // named, so that an empty network says which tube emptied
+  cn.set_name(v, "v");
   if (use_eval) {
     auto t = std::make_shared<Interval>(kTm);
     auto z1 = std::make_shared<Interval>(kM1), z2 = std::make_shared<Interval>(kM2);
     cn.add(std::make_shared<CtcEval>(), {t, z1, DomainRef::component(r.x, 0), DomainRef::component(v, 0)});
     cn.add(std::make_shared<CtcEval>(), {t, z2, DomainRef::component(r.x, 1), DomainRef::component(v, 1)});
+    cn.set_name(t, "t37");
+    cn.set_name(z1, "z1");
+    cn.set_name(z2, "z2");
   } else {
     (*r.x)[0].set_gate(r.k37, kM1);
     (*r.x)[1].set_gate(r.k37, kM2);

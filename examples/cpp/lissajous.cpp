@@ -64,6 +64,9 @@ Run solve(double dt) {
          {DomainRef::component(r.ddx, 1), DomainRef::component(r.dx, 0), DomainRef::component(r.ddx, 0)});
   cn.add(std::make_shared<CtcDeriv>(), {r.dx, r.ddx});
   cn.add(std::make_shared<CtcDeriv>(), {r.x, r.dx});
+  cn.set_name(r.x, "x");  // named, so that an empty network says which tube emptied
+  cn.set_name(r.dx, "dx");
+  cn.set_name(r.ddx, "ddx");
   r.stats = cn.contract();
   r.cpu = cpu_seconds() - start;
   return r;
