@@ -3,15 +3,25 @@
 // Python: SILLAGE_EXAMPLE_TIGHTEN=f (default 1) tightens them, so that the
 // tests can make a network empty (f = 0.001: too tight for the truth) and
 // check that the example says EMPTY and why, with no truth figures, exit 1.
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "sillage/interval/interval.h"
 
 namespace example {
 
+// A value that is not a number >= 0 is bad input (exit 2), never a silent 0.
 inline double tighten_factor() {
   const char* f = std::getenv("SILLAGE_EXAMPLE_TIGHTEN");
-  return f ? std::atof(f) : 1.0;
+  if (!f) return 1.0;
+  char* end = nullptr;
+  const double v = std::strtod(f, &end);
+  if (end == f || *end != '\0' || !std::isfinite(v) || v < 0) {
+    std::fprintf(stderr, "SILLAGE_EXAMPLE_TIGHTEN: expected a number >= 0, got '%s'\n", f);
+    std::exit(2);
+  }
+  return v;
 }
 
 // A radius or an error magnitude times f.

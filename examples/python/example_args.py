@@ -106,7 +106,15 @@ def print_result(name, result, check, figures=(), skipped=False):
 
 def tighten_factor():
     """SILLAGE_EXAMPLE_TIGHTEN (default 1): the factor bound() applies."""
-    return float(os.environ.get("SILLAGE_EXAMPLE_TIGHTEN", "1"))
+    text = os.environ.get("SILLAGE_EXAMPLE_TIGHTEN", "1")
+    try:
+        f = float(text)
+    except ValueError:
+        f = math.nan
+    if not (math.isfinite(f) and f >= 0):  # bad input (exit 2), never a silent factor
+        print(f"SILLAGE_EXAMPLE_TIGHTEN: expected a number >= 0, got {text!r}", file=sys.stderr)
+        sys.exit(2)
+    return f
 
 
 def bound(x):

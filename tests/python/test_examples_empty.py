@@ -56,3 +56,13 @@ def test_empty_network_says_why_and_exits_1(name, language, tmp_path):
     for pattern in results:
         assert not re.search(pattern, proc.stdout), pattern
     assert "%" not in proc.stdout  # no truth percentage
+
+
+@pytest.mark.parametrize("language", ["cpp", "python"])
+@pytest.mark.parametrize("value", ["abc", "-1", "nan", "0.5x"])
+def test_a_bad_tighten_factor_is_bad_input(value, language, tmp_path):
+    env = dict(os.environ, MPLBACKEND="Agg", SILLAGE_EXAMPLE_TIGHTEN=value)
+    proc = subprocess.run([*command(language, "beacons_static"), "--out", str(tmp_path)], capture_output=True,
+                          text=True, env=env, timeout=300)
+    assert proc.returncode == 2, proc.stdout[-2000:] + proc.stderr[-2000:]
+    assert f"SILLAGE_EXAMPLE_TIGHTEN: expected a number >= 0, got '{value}'" in proc.stderr
