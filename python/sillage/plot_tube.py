@@ -19,7 +19,7 @@ __all__ = ["TUBE_COLOURS", "plot_tube", "plot_tube_vector_2d", "plot_thickness"]
 
 #: The colours of the SVG tube figures (TubeStyle defaults).
 TUBE_COLOURS = {"slice": ("#a9cdf2", "#2a6aa8"), "gate": "#1f3f66", "truth": "#d62728",
-                "initial": ("#f4a6a6", "#c62828"), "final": ("#a5d6a7", "#2e7d32")}
+                "initial": ("#e1bee7", "#7b1fa2"), "final": ("#a5d6a7", "#2e7d32")}
 
 
 def _arrays(tube):

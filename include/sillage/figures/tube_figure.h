@@ -32,7 +32,7 @@ struct TubeStyle {
   Style gates{"#1f3f66", "none", 0.0, 1.0, "gate", ""};
   // Style of the true trajectory: a thin line, drawn over the tube.
   Style truth{"none", "#d62728", 1.0, 1.0, "truth", "truth"};
-  Style initial{"#f4a6a6", "#c62828", 1.5, 0.3, "initial", "initial box"};  // gate 0 (2-D figures)
+  Style initial{"#e1bee7", "#7b1fa2", 1.5, 0.3, "initial", "initial box"};  // gate 0 (2-D figures): purple, not the truth's red
   Style final{"#a5d6a7", "#2e7d32", 1.5, 0.3, "final", "final box"};       // gate N (2-D figures)
   // Style of the landmarks of a map: dots, distinct from the truth's line.
   Style landmarks{"#ffd54f", "#000000", 1.2, 1.0, "landmark", "landmarks"};
