@@ -8,7 +8,9 @@
 
 #include "sillage/cn/tube_pair_node.h"
 #include "sillage/interval/rounding_policies.h"
+#include "sillage/dynamics/polygon_hull_x4.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/error.h"
 
@@ -97,16 +99,33 @@ void check_range(std::size_t n, std::size_t first, std::size_t last, const char*
   }
 }
 
+// The hulls of slices first .. first+count-1 of a FWD_BWD sweep, their gates
+// final: 8 at a time with hardware rounding (AVX-512F), 4 at a time on the
+// portable path with AVX2, the rest by slice_hull. Nonzero if one changed.
+template <class R>
+std::uint64_t hulls(const Arrays& d, std::size_t first, std::size_t count) {
 #if SILLAGE_HARD_ROUNDING
-// The backward sweep of FWD_BWD with hardware rounding, by blocks of slices
-// from the end: the gates of the block by the scalar rule (a sequential
-// chain), then the polygon hulls of the block 8 at a time (independent).
-// Bit for bit the result of backward_sweep<HardRounding, true>: in FWD_BWD
-// the gates already lie in their slices, so a slice's hull may come after
-// the next gate is computed.
+  if constexpr (std::is_same_v<R, detail::HardRounding>) return detail::polygon_hulls_x8(d.t, d.s, d.g, d.v, first, count);
+#endif
+  const std::size_t wide = count - count % 4;
+  std::uint64_t ch = detail::polygon_hulls_x4(d.t, d.s, d.g, d.v, first, wide);
+  for (std::size_t k = first + wide; k < first + count; ++k) {
+    double slo = d.s[k].lb(), shi = d.s[k].ub();
+    detail::slice_hull<R>(d.t[k], d.t[k + 1], d.g[k].lb(), d.g[k].ub(), d.g[k + 1].lb(), d.g[k + 1].ub(), d.v[k].lb(),
+                          d.v[k].ub(), slo, shi);
+    ch |= store(d.s[k], slo, shi);
+  }
+  return ch;
+}
+
+// The backward sweep of FWD_BWD by blocks of slices from the end: the gates
+// of the block by the scalar rule (a sequential chain), then the polygon
+// hulls of the block several at a time (independent). Bit for bit the result
+// of backward_sweep<R, true>: in FWD_BWD the gates already lie in their
+// slices, so a slice's hull may come after the next gate is computed.
+template <class R>
 bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
   constexpr std::size_t kBlock = 64;  // the block stays in L1 between the two passes
-  using R = detail::HardRounding;
   double blo = d.g[last + 1].lb(), bhi = d.g[last + 1].ub();
   double t1 = d.t[last + 1];
   bool ok = true;
@@ -125,13 +144,21 @@ bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last
       t1 = t0;
     }
     ch |= store(d.g[begin], blo, bhi);
-    ch |= detail::polygon_hulls_x8(d.t, d.s, d.g, d.v, begin, end - begin);
+    ch |= hulls<R>(d, begin, end - begin);
     end = begin;
   }
   changed |= ch != 0;
   return ok;
 }
+
+// Whether the hulls of R's FWD_BWD sweep go several slices at a time here.
+template <class R>
+bool blocked_hulls() {
+#if SILLAGE_HARD_ROUNDING
+  if constexpr (std::is_same_v<R, detail::HardRounding>) return true;
 #endif
+  return detail::avx2_rows();
+}
 
 template <class R>
 bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
@@ -143,11 +170,8 @@ bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, 
     case TimePropag::FWD_BWD:
       break;
   }
-#if SILLAGE_HARD_ROUNDING
-  if constexpr (std::is_same_v<R, detail::HardRounding>) {
-    return forward_sweep<R, false>(d, first, last, changed) && backward_sweep_blocked(d, first, last, changed);
-  }
-#endif
+  if (blocked_hulls<R>())
+    return forward_sweep<R, false>(d, first, last, changed) && backward_sweep_blocked<R>(d, first, last, changed);
   return forward_sweep<R, false>(d, first, last, changed) && backward_sweep<R, true>(d, first, last, changed);
 }
 

@@ -1,13 +1,17 @@
 #include "sillage/dynamics/ctc_eval.h"
 
+#include <algorithm>
 #include <cstdint>
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/polygon_hull_x4.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
@@ -181,14 +185,32 @@ bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& cha
   const auto ts = y.tdomain()->times();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
+  // On the portable path with AVX2 the hulls of a block are computed 4 at a
+  // time first (the same bits), the tail of the block one at a time.
+  constexpr std::size_t kBlock = 64;
+  double block_lo[kBlock], block_up[kBlock];
+  std::size_t block = a, wide = 0;  // slices block .. block+wide-1 are in block_lo, block_up
   for (std::size_t k = a; k <= b; ++k) {
+    if constexpr (std::is_same_v<R, detail::SoftRounding>) {
+      if (k == block + kBlock || k == a) {
+        block = k;
+        wide = detail::avx2_rows() ? std::min(kBlock, b + 1 - k) / 4 * 4 : 0;
+        detail::polygon_hull_bounds_x4(ts.data(), d.gates.data(), ws.data(), block, wide, block_lo, block_up);
+      }
+    }
     const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
     Interval& s = d.slices[k];
     if (ga.is_empty() || gb.is_empty() || v.is_empty() || s.is_empty()) return false;
-    double plo, phi, lo, up;
-    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
-    detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
-                                  detail::straddles(v.lb(), v.ub()), lo, up);
+    double lo, up;
+    if (k - block < wide) {
+      lo = block_lo[k - block];
+      up = block_up[k - block];
+    } else {
+      double plo, phi;
+      detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
+      detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
+                                    detail::straddles(v.lb(), v.ub()), lo, up);
+    }
     lo = std::max(lo, s.lb());
     up = std::min(up, s.ub());
     if (!(lo <= up)) return false;

@@ -25,8 +25,16 @@ struct RowArg {
   bool constant = false;
 };
 
-// True if this CPU runs the AVX2 rows (checked once).
+// True if the AVX2 rows (and the other AVX2 kernels of the portable path,
+// such as polygon_hull_x4.h) run: the CPU has AVX2 and FMA (checked once)
+// and they are not turned off.
 bool avx2_rows();
+// Whether the CPU has them.
+bool avx2_rows_available();
+// Turns them off (or back on, where available): for tests comparing them
+// with the one-interval-at-a-time path. Not thread-safe: set it while no
+// other thread computes.
+void set_avx2_rows(bool on);
 
 // Whether a row of `count` intervals should take the AVX2 rows: not a short
 // one (a box at a time, as the pointwise contractor with constants goes),

@@ -98,6 +98,20 @@ inline void polygon_hull(double alo, double ahi, double blo, double bhi, double 
   lo = std::max(ml, detail::select(straddle, cl, -kInf));
 }
 
+// [s] ∩= the polygon hull (widened to hold the gates when kWiden, see below).
+template <class R, bool kConsistent, bool kWiden>
+inline void hull_into(double alo, double ahi, double blo, double bhi, double vlo, double vhi, double plo, double phi,
+                      double& slo, double& shi) {
+  double lo, up;
+  polygon_hull<R, kConsistent>(alo, ahi, blo, bhi, vlo, vhi, plo, phi, straddles(vlo, vhi), lo, up);
+  if constexpr (kWiden) {
+    up = std::max(up, std::max(ahi, bhi));
+    lo = std::min(lo, std::min(alo, blo));
+  }
+  shi = std::min(shi, up);
+  slo = std::max(slo, lo);
+}
+
 // One slice, in place: [a] ∩= [s], [b] ∩= [s], then (kFwd) [b] ∩= [a] + δ[v],
 // (kBwd) [a] ∩= [b] - δ[v], then (kEnv) [s] ∩= the hull of the polygon.
 // kWiden: both gates are consistent ([b] ⊆ [a] + δ[v] and back, as after a
@@ -127,17 +141,20 @@ inline bool contract_slice(double& alo, double& ahi, double& blo, double& bhi, d
     ahi = std::min(ahi, R::sub_up(bhi, plo));
   }
   const bool ok = inputs_ok & (alo <= ahi) & (blo <= bhi);
-  if constexpr (kEnv) {
-    double lo, up;
-    polygon_hull<R, kBwd>(alo, ahi, blo, bhi, vlo, vhi, plo, phi, straddles(vlo, vhi), lo, up);
-    if constexpr (kWiden) {
-      up = std::max(up, std::max(ahi, bhi));
-      lo = std::min(lo, std::min(alo, blo));
-    }
-    shi = std::min(shi, up);
-    slo = std::max(slo, lo);
-  }
+  if constexpr (kEnv) hull_into<R, kBwd, kWiden>(alo, ahi, blo, bhi, vlo, vhi, plo, phi, slo, shi);
   return ok;
+}
+
+// The hull step of a FWD_BWD sweep on slice [t0, t1] alone, its gates final
+// (the chain of the backward sweep has settled them): [s] ∩= the widened
+// hull, as contract_slice<R, false, true, true, true> would give. The
+// reference of the hulls computed 4 or 8 slices at a time.
+template <class R>
+inline void slice_hull(double t0, double t1, double alo, double ahi, double blo, double bhi, double vlo, double vhi,
+                       double& slo, double& shi) {
+  double plo, phi;
+  scale<R>(vlo, vhi, width<R>(t0, t1), plo, phi);
+  hull_into<R, true, true>(alo, ahi, blo, bhi, vlo, vhi, plo, phi, slo, shi);
 }
 
 // An upper bound of  max over τ in T of min(A + τ·P, B + σ·(-Q)),  σ = δ - τ,

@@ -12,6 +12,7 @@
 
 #include "deriv_test_util.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/interval/arith_rows.h"
 
 using namespace sillage;
 using sillage::test::BothRoundings;
@@ -150,12 +151,15 @@ TEST_P(CtcDerivProperty, RestrictedRangeEqualsWholeOnThatRange) {
   }
 }
 
-TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
-  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
-  const bool saved = detail::hardware_rounding();
-  std::mt19937_64 rng(5);
-  // Up to 300 slices: the hardware FWD_BWD works by blocks of 64 slices and
-  // 8 lanes, with partial blocks and lanes at the ends; ranges too.
+namespace {
+
+// CtcDeriv in every mode on random problems, on path 0 and on path 1 (use(p)
+// selects path p): the same results, bit for bit, zero signs included. Up
+// to 300 slices: the FWD_BWD hulls go by blocks of 64 slices and lanes of 4
+// or 8, with partial blocks and lanes at the ends; ranges too.
+template <class Use>
+void check_paths_agree(unsigned seed, Use use) {
+  std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 300; ++trial) {
     const int n = std::uniform_int_distribution<int>(1, trial % 3 ? 50 : 300)(rng);
     Problem p = make_problem(rng, n, trial % 2 ? 0.0 : 1e-3);
@@ -163,23 +167,43 @@ TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
     std::size_t first = k(rng), last = k(rng);
     if (first > last) std::swap(first, last);
     for (TimePropag mode : {TimePropag::FORWARD, TimePropag::BACKWARD, TimePropag::FWD_BWD}) {
-      Tube hard = p.x, soft = p.x, hard_r = p.x, soft_r = p.x;
-      detail::set_hardware_rounding(true);
-      const bool ok_hard = CtcDeriv(mode).contract(hard, p.v);
-      CtcDeriv(mode).contract(hard_r, p.v, first, last);
-      detail::set_hardware_rounding(false);
-      const bool ok_soft = CtcDeriv(mode).contract(soft, p.v);
-      CtcDeriv(mode).contract(soft_r, p.v, first, last);
-      ASSERT_EQ(ok_hard, ok_soft) << trial;
-      ASSERT_EQ(hard, soft) << trial;
-      ASSERT_EQ(hard_r, soft_r) << trial;
-      // Bit for bit, zero signs included.
-      for (std::size_t j = 0; j < hard.nb_slices(); ++j) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(hard.slice(j).lb()), std::bit_cast<std::uint64_t>(soft.slice(j).lb()));
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(hard.slice(j).ub()), std::bit_cast<std::uint64_t>(soft.slice(j).ub()));
+      Tube x[2] = {p.x, p.x}, xr[2] = {p.x, p.x};
+      bool ok[2];
+      for (int path = 0; path < 2; ++path) {
+        use(path);
+        ok[path] = CtcDeriv(mode).contract(x[path], p.v);
+        CtcDeriv(mode).contract(xr[path], p.v, first, last);
+      }
+      ASSERT_EQ(ok[0], ok[1]) << trial;
+      ASSERT_EQ(x[0], x[1]) << trial;
+      ASSERT_EQ(xr[0], xr[1]) << trial;
+      for (std::size_t j = 0; j < x[0].nb_slices(); ++j) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(x[0].slice(j).lb()), std::bit_cast<std::uint64_t>(x[1].slice(j).lb()))
+            << trial << " slice " << j;
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(x[0].slice(j).ub()), std::bit_cast<std::uint64_t>(x[1].slice(j).ub()))
+            << trial << " slice " << j;
       }
     }
   }
+}
+
+}  // namespace
+
+TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
+  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
+  const bool saved = detail::hardware_rounding();
+  check_paths_agree(5, [](int path) { detail::set_hardware_rounding(path == 1); });
+  detail::set_hardware_rounding(saved);
+}
+
+// The portable path with AVX2 (the FWD_BWD hulls 4 slices at a time,
+// polygon_hull_x4.h) against one slice at a time.
+TEST(CtcDerivRounding, Avx2HullsAndScalarAgree) {
+  if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
+  const bool saved = detail::hardware_rounding();
+  detail::set_hardware_rounding(false);
+  check_paths_agree(11, [](int path) { detail::set_avx2_rows(path == 1); });
+  detail::set_avx2_rows(true);
   detail::set_hardware_rounding(saved);
 }
 

@@ -1,7 +1,8 @@
 // Tube::eval(t, v) and Tube::inverse(y, v[, t]) run on the rounding policy
 // of the process (hardware when the CPU has it, else the portable one): both
 // give the same bounds bit for bit, zero signs included, on random tubes
-// around a true trajectory and random times and values; so does CtcEval.
+// around a true trajectory and random times and values; so does CtcEval, and
+// so do the portable path with AVX2 and without.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -10,6 +11,7 @@
 #include <random>
 
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/hardware_rounding.h"
 #include "sillage/tube/tube.h"
 
@@ -50,11 +52,10 @@ Case make_case(std::mt19937_64& rng, int n) {
   return {td, x, v};
 }
 
-}  // namespace
-
-TEST(EvalDerivRounding, HardwareAndSoftwareAgree) {
-  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
-  const bool saved = detail::hardware_rounding();
+// Tube::eval, Tube::inverse and CtcEval on random cases, run on path 0 and
+// path 1 (`use(p)` selects path p): the same bits.
+template <class Use>
+void check_paths_agree(Use use) {
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 400; ++trial) {
@@ -68,11 +69,11 @@ TEST(EvalDerivRounding, HardwareAndSoftwareAgree) {
     const double y0 = -1.5 + 3 * u(rng);
     const Interval y(y0, y0 + 0.5 * u(rng));
     Interval r[2][3];
-    for (int hard = 0; hard < 2; ++hard) {
-      detail::set_hardware_rounding(hard == 1);
-      r[hard][0] = c.x.eval(t, c.v);
-      r[hard][1] = c.x.inverse(y, c.v);
-      r[hard][2] = c.x.inverse(y, c.v, Interval(a, b));
+    for (int path = 0; path < 2; ++path) {
+      use(path);
+      r[path][0] = c.x.eval(t, c.v);
+      r[path][1] = c.x.inverse(y, c.v);
+      r[path][2] = c.x.inverse(y, c.v, Interval(a, b));
     }
     for (int i = 0; i < 3; ++i) expect_same_bits(r[0][i], r[1][i], trial);
     // CtcEval on the same inputs, without sampling the TDomain (shared by both runs).
@@ -81,9 +82,9 @@ TEST(EvalDerivRounding, HardwareAndSoftwareAgree) {
     bool ok[2];
     CtcEval ctc;
     ctc.enable_time_sampling(false);
-    for (int hard = 0; hard < 2; ++hard) {
-      detail::set_hardware_rounding(hard == 1);
-      ok[hard] = ctc.contract(ts[hard], zs[hard], xs[hard], c.v);
+    for (int path = 0; path < 2; ++path) {
+      use(path);
+      ok[path] = ctc.contract(ts[path], zs[path], xs[path], c.v);
     }
     ASSERT_EQ(ok[0], ok[1]) << trial;
     expect_same_bits(ts[0], ts[1], trial);
@@ -93,5 +94,23 @@ TEST(EvalDerivRounding, HardwareAndSoftwareAgree) {
       expect_same_bits(xs[0].gate(k), xs[1].gate(k), trial);
     }
   }
+}
+
+}  // namespace
+
+TEST(EvalDerivRounding, HardwareAndSoftwareAgree) {
+  if (!detail::hardware_rounding_available()) GTEST_SKIP() << "no hardware static rounding";
+  const bool saved = detail::hardware_rounding();
+  check_paths_agree([](int path) { detail::set_hardware_rounding(path == 1); });
+  detail::set_hardware_rounding(saved);
+}
+
+// The portable path with and without AVX2 (CtcEval's slice hulls 4 at a time).
+TEST(EvalDerivRounding, Avx2AndOneAtATimeAgree) {
+  if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
+  const bool saved = detail::hardware_rounding();
+  detail::set_hardware_rounding(false);
+  check_paths_agree([](int path) { detail::set_avx2_rows(path == 1); });
+  detail::set_avx2_rows(true);
   detail::set_hardware_rounding(saved);
 }

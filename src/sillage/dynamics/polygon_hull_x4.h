@@ -1,0 +1,35 @@
+#pragma once
+// The polygon hull of CtcDeriv's slice rule (slice_deriv.h) on 4 slices at
+// a time, on the SoftRounding policy with AVX2 and FMA (internal header of
+// the dynamics layer): the portable path's counterpart of polygon_hull_x8.h,
+// and the hulls of CtcEval's slices next to the gates it changed.
+//
+// Used by the FWD_BWD sweep on the portable rounding path where the CPU has
+// AVX2 (avx2_rows()): the backward pass first contracts the gates of a block
+// of slices (a sequential chain), then this computes the hulls of the block,
+// independent of each other. Each lane runs the scalar code's error-free
+// transformations with the same instructions and operand order, so the
+// results are slice_hull<SoftRounding>'s bit for bit (tested).
+#include <cstddef>
+#include <cstdint>
+
+#include "sillage/interval/interval.h"
+
+namespace sillage::detail {
+
+// For k = first .. first+count-1 with count a multiple of 4: s[k] ∩= hull
+// of the polygon of slice k, from the gates g[k], g[k+1] (final: consistent
+// both ways and inside their slices), v[k] and the times t[k], t[k+1]. Only
+// call where avx2_rows() is true. Returns nonzero if a slice changed.
+std::uint64_t polygon_hulls_x4(const double* t, Interval* s, const Interval* g, const Interval* v, std::size_t first,
+                               std::size_t count);
+
+// The bounds polygon_hull<SoftRounding, false> gives for slices k = first ..
+// first+count-1 (count a multiple of 4), from the gates g[k], g[k+1], v[k]
+// and the times (CtcEval's hulls, which then meet them with the slices):
+// lo[k - first], up[k - first]. Lanes with an empty gate or v get
+// meaningless values. Only call where avx2_rows() is true.
+void polygon_hull_bounds_x4(const double* t, const Interval* g, const Interval* v, std::size_t first,
+                            std::size_t count, double* lo, double* up);
+
+}  // namespace sillage::detail
