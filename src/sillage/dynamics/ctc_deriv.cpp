@@ -8,7 +8,7 @@
 
 #include "sillage/cn/tube_pair_node.h"
 #include "sillage/interval/rounding_policies.h"
-#include "sillage/dynamics/polygon_hull_x4.h"
+#include "sillage/dynamics/slice_rule_x4.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
 #include "sillage/interval/arith_rows.h"
 #include "sillage/tube/slice_deriv.h"
@@ -99,6 +99,22 @@ void check_range(std::size_t n, std::size_t first, std::size_t last, const char*
   }
 }
 
+constexpr std::size_t kBlock = 64;  // slices of a blocked sweep: they stay in L1 between its passes
+
+// [plo[k - first], phi[k - first]] ⊇ δ[v] of slices first .. first+count-1
+// (count <= kBlock), scale<R> of slice_deriv.h: 4 at a time with AVX2 on the
+// portable path (the same bits), one at a time otherwise.
+template <class R>
+void scale_block(const Arrays& d, std::size_t first, std::size_t count, double* plo, double* phi) {
+  std::size_t wide = 0;
+  if constexpr (std::is_same_v<R, detail::SoftRounding>) {
+    wide = count - count % 4;
+    detail::scaled_derivatives_x4(d.t, d.v, first, wide, plo, phi);
+  }
+  for (std::size_t k = first + wide; k < first + count; ++k)
+    detail::scale<R>(d.v[k].lb(), d.v[k].ub(), detail::width<R>(d.t[k], d.t[k + 1]), plo[k - first], phi[k - first]);
+}
+
 // The hulls of slices first .. first+count-1 of a FWD_BWD sweep, their gates
 // final: 8 at a time with hardware rounding (AVX-512F), 4 at a time on the
 // portable path with AVX2, the rest by slice_hull. Nonzero if one changed.
@@ -118,30 +134,55 @@ std::uint64_t hulls(const Arrays& d, std::size_t first, std::size_t count) {
   return ch;
 }
 
-// The backward sweep of FWD_BWD by blocks of slices from the end: the gates
-// of the block by the scalar rule (a sequential chain), then the polygon
-// hulls of the block several at a time (independent). Bit for bit the result
-// of backward_sweep<R, true>: in FWD_BWD the gates already lie in their
-// slices, so a slice's hull may come after the next gate is computed.
+// The forward sweep of FWD_BWD (no hulls) by blocks: δ[v] of the block
+// first, then the chain of its gates. Bit for bit forward_sweep<R, false>.
+template <class R>
+bool forward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  double alo = d.g[first].lb(), ahi = d.g[first].ub();
+  double plo[kBlock], phi[kBlock];
+  bool ok = true;
+  std::uint64_t ch = 0;
+  for (std::size_t begin = first; begin <= last; begin += kBlock) {
+    const std::size_t end = std::min(begin + kBlock, last + 1);
+    scale_block<R>(d, begin, end - begin, plo, phi);
+    for (std::size_t k = begin; k < end; ++k) {
+      double slo = d.s[k].lb(), shi = d.s[k].ub();
+      double blo = d.g[k + 1].lb(), bhi = d.g[k + 1].ub();
+      ok &= detail::contract_slice_scaled<R, true, false, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(),
+                                                                 d.v[k].ub(), plo[k - begin], phi[k - begin]);
+      ch |= store(d.g[k], alo, ahi);
+      alo = blo;
+      ahi = bhi;
+    }
+  }
+  ch |= store(d.g[last + 1], alo, ahi);
+  changed |= ch != 0;
+  return ok;
+}
+
+// The backward sweep of FWD_BWD by blocks of slices from the end: δ[v] of
+// the block, the gates of the block by the scalar rule (a sequential chain),
+// then the polygon hulls of the block several at a time (independent). Bit
+// for bit the result of backward_sweep<R, true>: in FWD_BWD the gates
+// already lie in their slices, so a slice's hull may come after the next
+// gate is computed.
 template <class R>
 bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
-  constexpr std::size_t kBlock = 64;  // the block stays in L1 between the two passes
   double blo = d.g[last + 1].lb(), bhi = d.g[last + 1].ub();
-  double t1 = d.t[last + 1];
+  double plo[kBlock], phi[kBlock];
   bool ok = true;
   std::uint64_t ch = 0;
   for (std::size_t end = last + 1; end > first;) {
     const std::size_t begin = end - first > kBlock ? end - kBlock : first;
+    scale_block<R>(d, begin, end - begin, plo, phi);
     for (std::size_t k = end; k-- > begin;) {
-      const double t0 = d.t[k];
       double slo = d.s[k].lb(), shi = d.s[k].ub();
       double alo = d.g[k].lb(), ahi = d.g[k].ub();
-      ok &= detail::contract_slice<R, false, true, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(), d.v[k].ub(),
-                                                         detail::width<R>(t0, t1));
+      ok &= detail::contract_slice_scaled<R, false, true, false>(alo, ahi, blo, bhi, slo, shi, d.v[k].lb(),
+                                                                 d.v[k].ub(), plo[k - begin], phi[k - begin]);
       ch |= store(d.g[k + 1], blo, bhi);
       blo = alo;
       bhi = ahi;
-      t1 = t0;
     }
     ch |= store(d.g[begin], blo, bhi);
     ch |= hulls<R>(d, begin, end - begin);
@@ -151,9 +192,9 @@ bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last
   return ok;
 }
 
-// Whether the hulls of R's FWD_BWD sweep go several slices at a time here.
+// Whether R's FWD_BWD sweep goes by blocks here (its hulls several slices at a time).
 template <class R>
-bool blocked_hulls() {
+bool blocked_sweeps() {
 #if SILLAGE_HARD_ROUNDING
   if constexpr (std::is_same_v<R, detail::HardRounding>) return true;
 #endif
@@ -170,8 +211,8 @@ bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, 
     case TimePropag::FWD_BWD:
       break;
   }
-  if (blocked_hulls<R>())
-    return forward_sweep<R, false>(d, first, last, changed) && backward_sweep_blocked<R>(d, first, last, changed);
+  if (blocked_sweeps<R>())
+    return forward_sweep_blocked<R>(d, first, last, changed) && backward_sweep_blocked<R>(d, first, last, changed);
   return forward_sweep<R, false>(d, first, last, changed) && backward_sweep<R, true>(d, first, last, changed);
 }
 

@@ -10,7 +10,7 @@
 #include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/dynamics/polygon_hull_x4.h"
+#include "sillage/dynamics/slice_rule_x4.h"
 #include "sillage/interval/arith_rows.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"

@@ -26,7 +26,7 @@ struct RowArg {
 };
 
 // True if the AVX2 rows (and the other AVX2 kernels of the portable path,
-// such as polygon_hull_x4.h) run: the CPU has AVX2 and FMA (checked once)
+// such as slice_rule_x4.h) run: the CPU has AVX2 and FMA (checked once)
 // and they are not turned off.
 bool avx2_rows();
 // Whether the CPU has them.

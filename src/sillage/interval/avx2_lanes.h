@@ -1,7 +1,7 @@
 #pragma once
 // The vocabulary of arith_kernels.h and branchless_rounding.h four lanes wide,
 // with AVX2 and FMA (internal header of the files compiled for AVX2 in their
-// own functions: arith_rows_avx2.cpp, dynamics/polygon_hull_x4.cpp). Each
+// own functions: arith_rows_avx2.cpp, dynamics/slice_rule_x4.cpp). Each
 // step is the scalar one's instruction on a wider register (vminpd for
 // minsd, vblendvpd for blendvpd, ...), so each lane gives the scalar bits.
 //

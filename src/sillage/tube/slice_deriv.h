@@ -121,17 +121,18 @@ inline void hull_into(double alo, double ahi, double blo, double bhi, double vlo
 // direction only, a gate may stick out of the polygon: no widening then.)
 // Returns false if something is (now) empty; the values are then meaningless
 // (computed on empty sets: possibly NaN, never undefined behaviour).
+//
+// contract_slice_scaled is contract_slice with [plo, phi] ⊇ δ[v] given
+// (scale<R>, computed ahead for a block of slices); contract_slice below.
 template <class R, bool kFwd, bool kBwd, bool kEnv, bool kWiden = false>
-inline bool contract_slice(double& alo, double& ahi, double& blo, double& bhi, double& slo, double& shi, double vlo,
-                           double vhi, Width w) {
+inline bool contract_slice_scaled(double& alo, double& ahi, double& blo, double& bhi, double& slo, double& shi,
+                                  double vlo, double vhi, double plo, double phi) {
   // An empty slice empties [a] below; an empty [v] must be caught here.
   const bool inputs_ok = vlo <= vhi;
   alo = std::max(alo, slo);
   ahi = std::min(ahi, shi);
   blo = std::max(blo, slo);
   bhi = std::min(bhi, shi);
-  double plo, phi;
-  scale<R>(vlo, vhi, w, plo, phi);
   if constexpr (kFwd) {
     blo = std::max(blo, R::add_down(alo, plo));
     bhi = std::min(bhi, R::add_up(ahi, phi));
@@ -143,6 +144,14 @@ inline bool contract_slice(double& alo, double& ahi, double& blo, double& bhi, d
   const bool ok = inputs_ok & (alo <= ahi) & (blo <= bhi);
   if constexpr (kEnv) hull_into<R, kBwd, kWiden>(alo, ahi, blo, bhi, vlo, vhi, plo, phi, slo, shi);
   return ok;
+}
+
+template <class R, bool kFwd, bool kBwd, bool kEnv, bool kWiden = false>
+inline bool contract_slice(double& alo, double& ahi, double& blo, double& bhi, double& slo, double& shi, double vlo,
+                           double vhi, Width w) {
+  double plo, phi;
+  scale<R>(vlo, vhi, w, plo, phi);
+  return contract_slice_scaled<R, kFwd, kBwd, kEnv, kWiden>(alo, ahi, blo, bhi, slo, shi, vlo, vhi, plo, phi);
 }
 
 // The hull step of a FWD_BWD sweep on slice [t0, t1] alone, its gates final

@@ -197,7 +197,7 @@ TEST(CtcDerivRounding, HardwareAndSoftwareAgree) {
 }
 
 // The portable path with AVX2 (the FWD_BWD hulls 4 slices at a time,
-// polygon_hull_x4.h) against one slice at a time.
+// slice_rule_x4.h) against one slice at a time.
 TEST(CtcDerivRounding, Avx2HullsAndScalarAgree) {
   if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
   const bool saved = detail::hardware_rounding();

@@ -1,7 +1,7 @@
-// polygon_hull_x4.h: slice_hull<SoftRounding> (slice_deriv.h) on four lanes.
+// slice_rule_x4.h: slice_hull<SoftRounding> (slice_deriv.h) on four lanes.
 // The + and − of the policy are avx2_lanes.h's; × and ÷ are those of
 // branchless_rounding.h's second family (mul_up, div_up_pos), written here.
-#include "sillage/dynamics/polygon_hull_x4.h"
+#include "sillage/dynamics/slice_rule_x4.h"
 
 #include "sillage/interval/avx2_lanes.h"
 
@@ -40,15 +40,21 @@ SILLAGE_AVX2_INLINE V smax(V x, V y) { return _mm256_max_pd(y, x); }
 // Four doubles t[k .. k+3] in the lanes order of Quad (0 2 1 3).
 SILLAGE_AVX2_INLINE V load_times(const double* t) { return _mm256_permute4x64_pd(_mm256_loadu_pd(t), 0xD8); }
 
+// width and scale (slice_deriv.h): [plo, phi] ⊇ (t1 - t0)·[vv].
+SILLAGE_AVX2_INLINE void scale4(V t0, V t1, Quad vv, V& plo, V& phi) {
+  const V zero = set(0.0);
+  const V wlo = sub_down(t1, t0), whi = sub_up(t1, t0);
+  plo = soft_mul_down(vv.lo, select(ge(vv.lo, zero), wlo, whi));
+  phi = soft_mul_up(vv.hi, select(ge(vv.hi, zero), whi, wlo));
+}
+
 // polygon_hull<SoftRounding, kConsistent> (slice_deriv.h) of four slices
 // from their times, gates [a] and [b] and derivative bounds [vv].
 template <bool kConsistent>
 SILLAGE_AVX2_INLINE void hull4(V t0, V t1, Quad a, Quad b, Quad vv, V& lo, V& up) {
   const V zero = set(0.0), inf = set(rounding::kInf), ninf = set(-rounding::kInf);
-  // width and scale
-  const V wlo = sub_down(t1, t0), whi = sub_up(t1, t0);
-  const V plo = soft_mul_down(vv.lo, select(ge(vv.lo, zero), wlo, whi));
-  const V phi = soft_mul_up(vv.hi, select(ge(vv.hi, zero), whi, wlo));
+  V plo, phi;
+  scale4(t0, t1, vv, plo, phi);
   const M st = lt(vv.lo, zero) & gt(vv.hi, zero) & gt(vv.lo, ninf) & lt(vv.hi, inf);  // straddles
   const V inv = soft_div_up(set(1.0), sub_down(vv.hi, vv.lo));
   const V f1d = add_up(a.hi, phi);
@@ -68,6 +74,17 @@ SILLAGE_AVX2_INLINE void hull4(V t0, V t1, Quad a, Quad b, Quad vv, V& lo, V& up
 }
 
 }  // namespace
+
+SILLAGE_AVX2 void scaled_derivatives_x4(const double* t, const Interval* v, std::size_t first, std::size_t count,
+                                        double* plo, double* phi) {
+  for (std::size_t k = first; k + 4 <= first + count; k += 4) {
+    V lo, hi;
+    scale4(load_times(t + k), load_times(t + k + 1), load(v + k), lo, hi);
+    // lanes 0 2 1 3 back to 0 1 2 3
+    _mm256_storeu_pd(plo + (k - first), _mm256_permute4x64_pd(lo, 0xD8));
+    _mm256_storeu_pd(phi + (k - first), _mm256_permute4x64_pd(hi, 0xD8));
+  }
+}
 
 SILLAGE_AVX2 std::uint64_t polygon_hulls_x4(const double* t, Interval* s, const Interval* g, const Interval* v,
                                             std::size_t first, std::size_t count) {
@@ -101,6 +118,7 @@ SILLAGE_AVX2 void polygon_hull_bounds_x4(const double* t, const Interval* g, con
 
 #else
 
+void scaled_derivatives_x4(const double*, const Interval*, std::size_t, std::size_t, double*, double*) {}
 std::uint64_t polygon_hulls_x4(const double*, Interval*, const Interval*, const Interval*, std::size_t, std::size_t) {
   return 0;
 }

@@ -1,8 +1,9 @@
-// The hulls of CtcDeriv's FWD_BWD sweep 4 slices at a time with AVX2
-// (polygon_hull_x4.h) against slice_hull<SoftRounding> (slice_deriv.h) slice
-// by slice, bit for bit, on adversarial bounds: infinities, zeros of both
+// CtcDeriv's slice rule 4 slices at a time with AVX2 (slice_rule_x4.h):
+// δ[v], the hulls of a FWD_BWD sweep and CtcEval's hull bounds against
+// scale, slice_hull and polygon_hull on SoftRounding (slice_deriv.h) slice by
+// slice, bit for bit, on adversarial bounds: infinities, zeros of both
 // signs, straddling and one-signed derivatives, degenerate gates, tiny
-// (subnormal) and huge magnitudes, widths from 2^-40 to 2^20.
+// (subnormal) and huge magnitudes, times whose differences round.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -11,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "sillage/dynamics/polygon_hull_x4.h"
+#include "sillage/dynamics/slice_rule_x4.h"
 #include "sillage/interval/arith_rows.h"
 #include "sillage/tube/slice_deriv.h"
 
@@ -40,29 +41,50 @@ Interval random_interval(std::mt19937_64& rng) {
   return Interval(a, b);
 }
 
+// Times from a start near 0 by steps of mixed magnitudes: t[k+1] - t[k] is
+// often inexact (not so between close times), so the two roundings of the
+// width differ.
+std::vector<double> random_times(std::mt19937_64& rng, std::size_t n) {
+  std::uniform_int_distribution<int> e(-60, 20);
+  std::vector<double> t{std::ldexp(std::uniform_real_distribution<double>(-2, 2)(rng), e(rng))};
+  for (std::size_t k = 0; k < n; ++k) {
+    const double next = t.back() + std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng), e(rng));
+    t.push_back(next > t.back() ? next : std::nextafter(t.back(), kInf));
+  }
+  return t;
+}
+
+bool same_bits(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
+
 bool same_bits(const Interval& x, const Interval& y) {
   return std::bit_cast<std::uint64_t>(x.lb()) == std::bit_cast<std::uint64_t>(y.lb()) &&
          std::bit_cast<std::uint64_t>(x.ub()) == std::bit_cast<std::uint64_t>(y.ub());
 }
 
+// Slices first .. first+n-1 (n a multiple of 4) of random arrays: times,
+// slices, gates and derivative bounds.
+struct Block {
+  std::size_t first, n;
+  std::vector<double> t;
+  std::vector<Interval> s, g, v;
+};
+
+Block random_block(std::mt19937_64& rng, int trial) {
+  const std::size_t n = 4 * std::uniform_int_distribution<std::size_t>(1, 4)(rng), first = trial % 3;
+  Block b{first, n, random_times(rng, first + n), std::vector<Interval>(first + n), std::vector<Interval>(first + n + 1),
+          std::vector<Interval>(first + n)};
+  for (auto* arr : {&b.s, &b.g, &b.v})
+    for (Interval& x : *arr) x = random_interval(rng);
+  return b;
+}
+
 }  // namespace
 
-TEST(PolygonHullX4, SameBitsAsSliceHull) {
+TEST(SliceRuleX4, SameBitsAsSliceHull) {
   if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
   std::mt19937_64 rng(3);
   for (int trial = 0; trial < 20000; ++trial) {
-    const std::size_t n = 4 * std::uniform_int_distribution<std::size_t>(1, 4)(rng), first = trial % 3;
-    // Steps of mixed magnitudes from a start near 0: t1 - t0 is often inexact
-    // (not so between close times), so the two roundings of the width differ.
-    std::uniform_int_distribution<int> e(-60, 20);
-    std::vector<double> t{std::ldexp(std::uniform_real_distribution<double>(-2, 2)(rng), e(rng))};
-    for (std::size_t k = 0; k < first + n; ++k) {
-      const double next = t.back() + std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng), e(rng));
-      t.push_back(next > t.back() ? next : std::nextafter(t.back(), kInf));
-    }
-    std::vector<Interval> s(first + n), g(first + n + 1), v(first + n);
-    for (auto* arr : {&s, &g, &v})
-      for (Interval& x : *arr) x = random_interval(rng);
+    auto [first, n, t, s, g, v] = random_block(rng, trial);
     if (trial % 2) {  // unknown slices, where the hull alone gives the bounds
       for (Interval& x : s) x = Interval();
     }
@@ -87,20 +109,11 @@ TEST(PolygonHullX4, SameBitsAsSliceHull) {
 
 // CtcEval's hull bounds (polygon_hull<SoftRounding, false>, gates not
 // consistent) against the scalar rule, on the same adversarial bounds.
-TEST(PolygonHullX4, BoundsSameBitsAsPolygonHull) {
+TEST(SliceRuleX4, BoundsSameBitsAsPolygonHull) {
   if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
   std::mt19937_64 rng(4);
-  std::uniform_int_distribution<int> e(-60, 20);
   for (int trial = 0; trial < 20000; ++trial) {
-    const std::size_t n = 4 * std::uniform_int_distribution<std::size_t>(1, 4)(rng), first = trial % 3;
-    std::vector<double> t{std::ldexp(std::uniform_real_distribution<double>(-2, 2)(rng), e(rng))};
-    for (std::size_t k = 0; k < first + n; ++k) {
-      const double next = t.back() + std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng), e(rng));
-      t.push_back(next > t.back() ? next : std::nextafter(t.back(), kInf));
-    }
-    std::vector<Interval> g(first + n + 1), v(first + n);
-    for (auto* arr : {&g, &v})
-      for (Interval& x : *arr) x = random_interval(rng);
+    const auto [first, n, t, s, g, v] = random_block(rng, trial);
     std::vector<double> lo(n), up(n);
     detail::polygon_hull_bounds_x4(t.data(), g.data(), v.data(), first, n, lo.data(), up.data());
     for (std::size_t k = first; k < first + n; ++k) {
@@ -110,8 +123,23 @@ TEST(PolygonHullX4, BoundsSameBitsAsPolygonHull) {
       detail::polygon_hull<detail::SoftRounding, false>(g[k].lb(), g[k].ub(), g[k + 1].lb(), g[k + 1].ub(),
                                                         v[k].lb(), v[k].ub(), plo, phi,
                                                         detail::straddles(v[k].lb(), v[k].ub()), l, u);
-      ASSERT_EQ(std::bit_cast<std::uint64_t>(lo[k - first]), std::bit_cast<std::uint64_t>(l)) << trial << " " << k;
-      ASSERT_EQ(std::bit_cast<std::uint64_t>(up[k - first]), std::bit_cast<std::uint64_t>(u)) << trial << " " << k;
+      ASSERT_TRUE(same_bits(lo[k - first], l) && same_bits(up[k - first], u)) << trial << " " << k;
+    }
+  }
+}
+
+TEST(SliceRuleX4, ScaledDerivativesSameBitsAsScale) {
+  if (!detail::avx2_rows_available()) GTEST_SKIP() << "no AVX2";
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const auto [first, n, t, s, g, v] = random_block(rng, trial);
+    std::vector<double> plo(n), phi(n);
+    detail::scaled_derivatives_x4(t.data(), v.data(), first, n, plo.data(), phi.data());
+    for (std::size_t k = first; k < first + n; ++k) {
+      double l, u;
+      detail::scale<detail::SoftRounding>(v[k].lb(), v[k].ub(), detail::width<detail::SoftRounding>(t[k], t[k + 1]), l,
+                                          u);
+      ASSERT_TRUE(same_bits(plo[k - first], l) && same_bits(phi[k - first], u)) << trial << " " << k;
     }
   }
 }

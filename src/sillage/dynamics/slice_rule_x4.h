@@ -1,8 +1,9 @@
 #pragma once
-// The polygon hull of CtcDeriv's slice rule (slice_deriv.h) on 4 slices at
-// a time, on the SoftRounding policy with AVX2 and FMA (internal header of
-// the dynamics layer): the portable path's counterpart of polygon_hull_x8.h,
-// and the hulls of CtcEval's slices next to the gates it changed.
+// CtcDeriv's slice rule (slice_deriv.h) on 4 slices at a time, on the
+// SoftRounding policy with AVX2 and FMA (internal header of the dynamics
+// layer): δ[v] of a block of slices ahead of the sweeps' chains, the polygon
+// hulls of a FWD_BWD sweep (the portable path's counterpart of
+// polygon_hull_x8.h) and those of CtcEval's slices next to the gates it changed.
 //
 // Used by the FWD_BWD sweep on the portable rounding path where the CPU has
 // AVX2 (avx2_rows()): the backward pass first contracts the gates of a block
@@ -16,6 +17,14 @@
 #include "sillage/interval/interval.h"
 
 namespace sillage::detail {
+
+// [plo[k - first], phi[k - first]] ⊇ δ_k [v](k), δ_k = t[k+1] - t[k], for
+// k = first .. first+count-1, count a multiple of 4: scale<SoftRounding>(v[k],
+// width<SoftRounding>(t[k], t[k+1])) of slice_deriv.h, bit for bit. v[k] not
+// empty (an empty one gives meaningless values). Only call where
+// avx2_rows() is true.
+void scaled_derivatives_x4(const double* t, const Interval* v, std::size_t first, std::size_t count, double* plo,
+                           double* phi);
 
 // For k = first .. first+count-1 with count a multiple of 4: s[k] ∩= hull
 // of the polygon of slice k, from the gates g[k], g[k+1] (final: consistent
