@@ -101,20 +101,6 @@ void check_range(std::size_t n, std::size_t first, std::size_t last, const char*
 
 constexpr std::size_t kBlock = 64;  // slices of a blocked sweep: they stay in L1 between its passes
 
-// [plo[k - first], phi[k - first]] ⊇ δ[v] of slices first .. first+count-1
-// (count <= kBlock), scale<R> of slice_deriv.h: 4 at a time with AVX2 on the
-// portable path (the same bits), one at a time otherwise.
-template <class R>
-void scale_block(const Arrays& d, std::size_t first, std::size_t count, double* plo, double* phi) {
-  std::size_t wide = 0;
-  if constexpr (std::is_same_v<R, detail::SoftRounding>) {
-    wide = count - count % 4;
-    detail::scaled_derivatives_x4(d.t, d.v, first, wide, plo, phi);
-  }
-  for (std::size_t k = first + wide; k < first + count; ++k)
-    detail::scale<R>(d.v[k].lb(), d.v[k].ub(), detail::width<R>(d.t[k], d.t[k + 1]), plo[k - first], phi[k - first]);
-}
-
 // The hulls of slices first .. first+count-1 of a FWD_BWD sweep, their gates
 // final: 8 at a time with hardware rounding (AVX-512F), 4 at a time on the
 // portable path with AVX2, the rest by slice_hull. Nonzero if one changed.
@@ -144,7 +130,7 @@ bool forward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last,
   std::uint64_t ch = 0;
   for (std::size_t begin = first; begin <= last; begin += kBlock) {
     const std::size_t end = std::min(begin + kBlock, last + 1);
-    scale_block<R>(d, begin, end - begin, plo, phi);
+    detail::scale_slices<R>(d.t, d.v, begin, end - begin, plo, phi);
     for (std::size_t k = begin; k < end; ++k) {
       double slo = d.s[k].lb(), shi = d.s[k].ub();
       double blo = d.g[k + 1].lb(), bhi = d.g[k + 1].ub();
@@ -174,7 +160,7 @@ bool backward_sweep_blocked(const Arrays& d, std::size_t first, std::size_t last
   std::uint64_t ch = 0;
   for (std::size_t end = last + 1; end > first;) {
     const std::size_t begin = end - first > kBlock ? end - kBlock : first;
-    scale_block<R>(d, begin, end - begin, plo, phi);
+    detail::scale_slices<R>(d.t, d.v, begin, end - begin, plo, phi);
     for (std::size_t k = end; k-- > begin;) {
       double slo = d.s[k].lb(), shi = d.s[k].ub();
       double alo = d.g[k].lb(), ahi = d.g[k].ub();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -142,6 +143,32 @@ struct Reached {
   std::size_t lo = 0, hi = 0;
 };
 
+// δ[v] of the slices a front crosses, computed ahead by blocks (scale_slices:
+// 4 at a time with AVX2 on the portable path, the same bits as one at a time).
+template <class R>
+class FrontScale {
+ public:
+  FrontScale(std::span<const double> ts, const std::vector<Interval>& ws) : ts_(ts), ws_(ws) {}
+  // δ[v] of slice k; `forward`: the front goes on to k + 1 next, else to k - 1.
+  void get(std::size_t k, bool forward, double& plo, double& phi) {
+    if (k < first_ || k >= first_ + count_) {
+      const std::size_t n = ws_.size();
+      first_ = forward ? k : (k + 1 >= kAhead ? k + 1 - kAhead : 0);
+      count_ = std::min(kAhead, n - first_);
+      detail::scale_slices<R>(ts_.data(), ws_.data(), first_, count_, lo_, hi_);
+    }
+    plo = lo_[k - first_];
+    phi = hi_[k - first_];
+  }
+
+ private:
+  static constexpr std::size_t kAhead = 8;  // most fronts stop within a few slices
+  std::span<const double> ts_;
+  const std::vector<Interval>& ws_;
+  std::size_t first_ = 0, count_ = 0;
+  double lo_[kAhead], hi_[kAhead];
+};
+
 // Outside the region the fronts only move: F forward from the last gate of
 // the region, B backward from its first gate. On raw bounds with the
 // rounding policy of CtcDeriv. False if a gate or a slice of [w] is empty.
@@ -153,11 +180,12 @@ bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed, Reached& out
   const auto& ws = w.data().slices;
   const std::size_t n = ts.size() - 1;
   out = {r.first, r.last + 1};
+  FrontScale<R> scaled(ts, ws);
   for (std::size_t k = r.last + 1; k < n; ++k) {
     const Interval &a = d.gates[k], &v = ws[k];
     if (v.is_empty()) return false;
     double plo, phi;
-    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
+    scaled.get(k, true, plo, phi);
     bool moved = false;
     if (!narrow_raw(d, k + 1, R::add_down(a.lb(), plo), R::add_up(a.ub(), phi), moved, log)) return false;
     if (moved) out.hi = k + 1, changed = true;
@@ -167,7 +195,7 @@ bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed, Reached& out
     const Interval &b = d.gates[i], &v = ws[i - 1];
     if (v.is_empty()) return false;
     double plo, phi;
-    detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[i - 1], ts[i]), plo, phi);
+    scaled.get(i - 1, false, plo, phi);
     bool moved = false;
     if (!narrow_raw(d, i - 1, R::sub_down(b.lb(), phi), R::sub_up(b.ub(), plo), moved, log)) return false;
     if (moved) out.lo = i - 1, changed = true;

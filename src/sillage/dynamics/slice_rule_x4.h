@@ -13,8 +13,11 @@
 // results are slice_hull<SoftRounding>'s bit for bit (tested).
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/interval.h"
+#include "sillage/tube/slice_deriv.h"
 
 namespace sillage::detail {
 
@@ -40,5 +43,22 @@ std::uint64_t polygon_hulls_x4(const double* t, Interval* s, const Interval* g, 
 // meaningless values. Only call where avx2_rows() is true.
 void polygon_hull_bounds_x4(const double* t, const Interval* g, const Interval* v, std::size_t first,
                             std::size_t count, double* lo, double* up);
+
+// [plo[k - first], phi[k - first]] ⊇ δ_k [v](k) for k = first ..
+// first+count-1: scale<R> of slice_deriv.h, 4 at a time where the policy is
+// SoftRounding and the CPU has AVX2 (the same bits), one at a time otherwise.
+template <class R>
+void scale_slices(const double* t, const Interval* v, std::size_t first, std::size_t count, double* plo,
+                  double* phi) {
+  std::size_t wide = 0;
+  if constexpr (std::is_same_v<R, SoftRounding>) {
+    if (avx2_rows()) {
+      wide = count - count % 4;
+      scaled_derivatives_x4(t, v, first, wide, plo, phi);
+    }
+  }
+  for (std::size_t k = first + wide; k < first + count; ++k)
+    scale<R>(v[k].lb(), v[k].ub(), width<R>(t[k], t[k + 1]), plo[k - first], phi[k - first]);
+}
 
 }  // namespace sillage::detail
