@@ -23,6 +23,7 @@ class IntervalMatrix;
 
 namespace detail {
 struct FunctionImpl;
+class Hc4Rows;
 }
 
 class Function {
@@ -86,6 +87,7 @@ class Function {
   std::string expr_str() const;
 
  private:
+  friend class detail::Hc4Rows;  // the HC4 on rows the caller fills (internal)
   explicit Function(std::shared_ptr<const detail::FunctionImpl> impl) : impl_(std::move(impl)) {}
   std::shared_ptr<const detail::FunctionImpl> impl_;
 };

@@ -10,20 +10,12 @@
 #include "sillage/error.h"
 #include "sillage/expr/diff.h"
 #include "sillage/expr/parser.h"
+#include "sillage/expr/function_impl.h"
+#include "sillage/expr/hc4_rows.h"
 #include "sillage/expr/tape.h"
 
 namespace sillage {
 namespace detail {
-
-struct FunctionImpl {
-  std::vector<std::string> vars;
-  std::vector<ExprVar> var_exprs;
-  std::vector<Expr> exprs;
-  Tape tape;
-  // The derivative, built on first use (call_once: thread-safe).
-  mutable std::once_flag diff_once;
-  mutable std::shared_ptr<const FunctionImpl> diff;
-};
 
 namespace {
 
@@ -137,33 +129,17 @@ void Function::hc4_revise_batch(std::span<Interval* const> xs, std::size_t count
   if (y.size() != image_dim())
     throw DimensionError("Function::hc4_revise_batch: expected an image of size " + std::to_string(image_dim()) +
                          ", got " + std::to_string(y.size()));
-  const detail::Tape& t = impl_->tape;
+  const detail::Hc4Rows hc(*this);
   const std::size_t n = nb_vars();
-  constexpr std::size_t kChunk = 128;  // rows stay in cache
-  // One row of the chunk per slot, the variables' rows included (the backward
-  // pass contracts them in place).
-  thread_local std::vector<Interval> rows;
-  thread_local std::vector<std::uint8_t> ok;
-  rows.resize(std::max(rows.size(), t.size() * std::min(kChunk, count)));
-  ok.resize(std::min(kChunk, count));
-  thread_local std::vector<const Interval*> cols;
-  cols.resize(n);
-  for (std::size_t start = 0; start < count; start += kChunk) {
-    const std::size_t cnt = std::min(kChunk, count - start);
-    std::fill(ok.begin(), ok.begin() + static_cast<std::ptrdiff_t>(cnt), y.is_empty() ? 0 : 1);
+  std::uint8_t ok[detail::Hc4Rows::kMaxBoxes];
+  for (std::size_t start = 0; start < count; start += detail::Hc4Rows::kMaxBoxes) {
+    const std::size_t cnt = std::min(detail::Hc4Rows::kMaxBoxes, count - start);
+    for (std::size_t i = 0; i < n; ++i) std::copy(xs[i] + start, xs[i] + start + cnt, hc.var_row(i, cnt));
+    hc.contract(cnt, y, ok);
     for (std::size_t i = 0; i < n; ++i) {
-      Interval* const r = rows.data() + i * cnt;
-      for (std::size_t j = 0; j < cnt; ++j) {
-        r[j] = xs[i][start + j];
-        if (r[j].is_empty()) ok[j] = 0;
-      }
-      cols[i] = r;
+      const Interval* const r = hc.var_row(i, cnt);
+      for (std::size_t j = 0; j < cnt; ++j) xs[i][start + j] = ok[j] ? xs[i][start + j] & r[j] : Interval::empty();
     }
-    t.forward_batch(cols.data(), cnt, rows.data(), nullptr);
-    t.backward_batch(rows.data(), cnt, y.components().data(), ok.data());
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < cnt; ++j)
-        xs[i][start + j] = ok[j] ? xs[i][start + j] & rows[i * cnt + j] : Interval::empty();
   }
 }
 

@@ -1,33 +1,55 @@
 #include "sillage/tube/time_box_ctc.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "sillage/ctc/ctc_function.h"
+#include "sillage/expr/hc4_rows.h"
 
 namespace sillage::detail {
 
 namespace {
 
-// Boxes contracted together (one HC4 batch); their rows stay in cache.
-constexpr std::size_t kChunk = 256;
+// The boxes of a chunk, variable by variable: the rows of the HC4 where the
+// contractor is a CtcFunction (filled in place, no copy), else a buffer
+// contracted box by box. ok[j] = 0 where box j is proven empty.
+class ChunkBoxes {
+ public:
+  // Boxes per chunk: one HC4 batch (its rows stay in cache); one at a time
+  // when some variable is a constant (a parameter narrowed box after box).
+  static std::size_t chunk(bool constants) { return constants ? 1 : detail::Hc4Rows::kMaxBoxes; }
 
-// Contracts the boxes j < count stored by columns: variable v of box j at
-// box[v * count + j] (empty in a variable if proven inconsistent).
-void contract_boxes(const Ctc& ctc, const CtcFunction* f, std::vector<Interval>& box, std::size_t count) {
-  const std::size_t n = ctc.nb_vars();
-  if (f) {
-    std::vector<Interval*> cols(n);
-    for (std::size_t v = 0; v < n; ++v) cols[v] = box.data() + v * count;
-    f->function().hc4_revise_batch(cols, count, f->image());
-    return;
+  ChunkBoxes(const Ctc& ctc, std::size_t chunk) : ctc_(ctc), f_(dynamic_cast<const CtcFunction*>(&ctc)) {
+    if (f_) hc_.emplace(f_->function());
+    else box_.resize(ctc.nb_vars() * chunk);
   }
-  IntervalVector b(n);
-  for (std::size_t j = 0; j < count; ++j) {
-    for (std::size_t v = 0; v < n; ++v) b[v] = box[v * count + j];
-    ctc.contract(b);
-    for (std::size_t v = 0; v < n; ++v) box[v * count + j] = b[v];
+  // Variable v of boxes 0 .. count-1 (the same count until contract).
+  Interval* column(std::size_t v, std::size_t count) {
+    return hc_ ? hc_->var_row(v, count) : box_.data() + v * count;
   }
-}
+  const std::uint8_t* contract(std::size_t count) {
+    if (hc_) {
+      hc_->contract(count, f_->image(), ok_);
+      return ok_;
+    }
+    const std::size_t n = ctc_.nb_vars();
+    IntervalVector b(n);
+    for (std::size_t j = 0; j < count; ++j) {
+      for (std::size_t v = 0; v < n; ++v) b[v] = box_[v * count + j];
+      ctc_.contract(b);
+      for (std::size_t v = 0; v < n; ++v) box_[v * count + j] = b[v];
+      ok_[j] = b.is_empty() ? 0 : 1;
+    }
+    return ok_;
+  }
+
+ private:
+  const Ctc& ctc_;
+  const CtcFunction* f_;
+  std::optional<detail::Hc4Rows> hc_;
+  std::vector<Interval> box_;
+  std::uint8_t ok_[detail::Hc4Rows::kMaxBoxes];
+};
 
 [[gnu::noinline]] void tell(const TimeChange& changed, std::size_t v, std::size_t i, Interval was, Interval now) {
   changed(v, i, was, now);
@@ -39,7 +61,6 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
                                    std::span<const std::size_t> atoms, IntervalVector& params,
                                    const TimeChange& changed) {
   const std::size_t n = vars.size();
-  const auto* f = dynamic_cast<const CtcFunction*>(&ctc);
   // Each tube's slices and gates (null for a constant), read in place: the
   // storage does not move during the contraction.
   std::vector<Interval*> slices(n, nullptr), gates(n, nullptr);
@@ -55,8 +76,8 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
     gates[v] = d.gates.data();
     nb_slices = d.slices.size();
   }
-  const std::size_t chunk = constants ? 1 : kChunk;
-  std::vector<Interval> box(n * chunk);  // the tubes keep the values before contraction
+  const std::size_t chunk = ChunkBoxes::chunk(constants);
+  ChunkBoxes boxes(ctc, chunk);  // the tubes keep the values before contraction
   std::vector<std::size_t> ids;  // the time atoms of the chunk
   std::vector<char> touched(n, 0);
   const auto touch = [&] {
@@ -82,7 +103,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
       if (ids.empty()) break;
       const std::size_t c = ids.size();
       for (std::size_t v = 0; v < n; ++v) {
-        Interval* const col = box.data() + v * c;
+        Interval* const col = boxes.column(v, c);
         if (!slices[v]) {
           std::fill(col, col + c, params[vars[v].param]);
           continue;
@@ -102,14 +123,12 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
           col[j] = h;
         }
       }
-      contract_boxes(ctc, f, box, c);
+      const std::uint8_t* const ok = boxes.contract(c);
       // The boxes before the first one proven empty are written back; that one stops there.
-      std::size_t stop = c;
-      for (std::size_t v = 0; v < n; ++v)
-        for (std::size_t j = 0; j < stop; ++j)
-          if (box[v * c + j].is_empty()) stop = j;
+      std::size_t stop = 0;
+      while (stop < c && ok[stop]) ++stop;
       for (std::size_t v = 0; v < n; ++v) {
-        const Interval* const col = box.data() + v * c;
+        const Interval* const col = boxes.column(v, c);
         if (!slices[v]) {
           for (std::size_t j = 0; j < stop; ++j) params[vars[v].param] &= col[j];
           continue;
