@@ -107,17 +107,21 @@ constexpr std::size_t kBlock = 64;  // slices of a blocked sweep: they stay in L
 template <class R>
 std::uint64_t hulls(const Arrays& d, std::size_t first, std::size_t count) {
 #if SILLAGE_HARD_ROUNDING
-  if constexpr (std::is_same_v<R, detail::HardRounding>) return detail::polygon_hulls_x8(d.t, d.s, d.g, d.v, first, count);
+  if constexpr (std::is_same_v<R, detail::HardRounding>) {
+    return detail::polygon_hulls_x8(d.t, d.s, d.g, d.v, first, count);
+  } else
 #endif
-  const std::size_t wide = count - count % 4;
-  std::uint64_t ch = detail::polygon_hulls_x4(d.t, d.s, d.g, d.v, first, wide);
-  for (std::size_t k = first + wide; k < first + count; ++k) {
-    double slo = d.s[k].lb(), shi = d.s[k].ub();
-    detail::slice_hull<R>(d.t[k], d.t[k + 1], d.g[k].lb(), d.g[k].ub(), d.g[k + 1].lb(), d.g[k + 1].ub(), d.v[k].lb(),
-                          d.v[k].ub(), slo, shi);
-    ch |= store(d.s[k], slo, shi);
+  {
+    const std::size_t wide = count - count % 4;
+    std::uint64_t ch = detail::polygon_hulls_x4(d.t, d.s, d.g, d.v, first, wide);
+    for (std::size_t k = first + wide; k < first + count; ++k) {
+      double slo = d.s[k].lb(), shi = d.s[k].ub();
+      detail::slice_hull<R>(d.t[k], d.t[k + 1], d.g[k].lb(), d.g[k].ub(), d.g[k + 1].lb(), d.g[k + 1].ub(),
+                            d.v[k].lb(), d.v[k].ub(), slo, shi);
+      ch |= store(d.s[k], slo, shi);
+    }
+    return ch;
   }
-  return ch;
 }
 
 // The forward sweep of FWD_BWD (no hulls) by blocks: δ[v] of the block

@@ -11,8 +11,6 @@ namespace sillage::detail {
 
 namespace {
 
-using namespace avx2;
-
 // branchless_rounding.h's mul_up: an upper bound of a·b, 0·inf = 0.
 SILLAGE_AVX2_INLINE V soft_mul_up(V a, V b) {
   const V z = set(0.0);

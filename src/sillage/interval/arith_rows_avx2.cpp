@@ -11,8 +11,6 @@ namespace sillage::detail {
 
 namespace {
 
-using namespace avx2;
-
 // ---- the kernels: x = [a, b], y = [c, d]; `rare` receives the lanes to redo ----
 struct Add {
   SILLAGE_AVX2_INLINE static Quad apply(Quad x, Quad y, M&) {

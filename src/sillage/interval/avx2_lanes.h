@@ -8,7 +8,7 @@
 // Only the functions marked SILLAGE_AVX2 are compiled for AVX2, and all of
 // them here are always inlined into such functions: no inline function of a
 // shared header is, so none can leak AVX2 code into callers on other CPUs.
-// Include only where SILLAGE_AVX2_LANES is 1.
+// Its declarations exist only where SILLAGE_AVX2_LANES is 1.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SILLAGE_AVX2_LANES 1
 #include <immintrin.h>
@@ -26,7 +26,7 @@
 #define SILLAGE_AVX2 __attribute__((target("avx2,fma")))
 #define SILLAGE_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
 
-namespace sillage::detail::avx2 {
+namespace sillage::detail {
 
 static_assert(sizeof(Interval) == 2 * sizeof(double) && std::is_standard_layout_v<Interval>,
               "Interval must be two contiguous doubles (lb, ub)");
@@ -141,6 +141,6 @@ SILLAGE_AVX2_INLINE Quad bounds_or_empty(M empty, V lo, V hi) {
           select(empty, set(-rounding::kInf), _mm256_add_pd(hi, z))};
 }
 
-}  // namespace sillage::detail::avx2
+}  // namespace sillage::detail
 
 #endif  // SILLAGE_AVX2_LANES
