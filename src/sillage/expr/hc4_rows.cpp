@@ -10,16 +10,30 @@ namespace sillage::detail {
 
 namespace {
 
-// One row of kMaxBoxes intervals per slot of the largest tape met, per thread.
-Interval* thread_rows(std::size_t slots) {
-  thread_local std::vector<Interval> rows;
-  if (rows.size() < slots * Hc4Rows::kMaxBoxes) rows.resize(slots * Hc4Rows::kMaxBoxes);
-  return rows.data();
+// The thread's rows, and whether an Hc4Rows holds them.
+struct ThreadRows {
+  std::vector<Interval> rows;
+  bool held = false;
+};
+
+ThreadRows& thread_rows() {
+  thread_local ThreadRows r;
+  return r;
 }
 
 }  // namespace
 
-Hc4Rows::Hc4Rows(const Function& f) : tape_(f.impl_->tape), rows_(thread_rows(f.impl_->tape.size())) {}
+Hc4Rows::Hc4Rows(const Function& f) : tape_(f.impl_->tape), shared_(!thread_rows().held) {
+  const std::size_t size = tape_.size() * kMaxBoxes;
+  std::vector<Interval>& rows = shared_ ? thread_rows().rows : own_;
+  if (rows.size() < size) rows.resize(size);
+  rows_ = rows.data();
+  if (shared_) thread_rows().held = true;
+}
+
+Hc4Rows::~Hc4Rows() {
+  if (shared_) thread_rows().held = false;
+}
 
 Interval* Hc4Rows::var_row(std::size_t i, std::size_t count) const { return rows_ + i * count; }
 

@@ -7,6 +7,7 @@
 // gates this way; hc4_revise_batch is written on it (the same results).
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "sillage/expr/function.h"
 
@@ -18,10 +19,14 @@ class Hc4Rows {
  public:
   static constexpr std::size_t kMaxBoxes = 128;  // a chunk's rows stay in cache
 
-  // The rows of f's tape for up to kMaxBoxes boxes (per thread: an
-  // Hc4Rows is used by one thread at a time, and not nested in another one
-  // of the same thread).
+  // The rows of f's tape for up to kMaxBoxes boxes: a buffer of the thread,
+  // reused from call to call, or one of its own while another Hc4Rows of
+  // the thread holds that one (a contractor calling another inside). Used
+  // by one thread.
   explicit Hc4Rows(const Function& f);
+  ~Hc4Rows();
+  Hc4Rows(const Hc4Rows&) = delete;
+  Hc4Rows& operator=(const Hc4Rows&) = delete;
 
   // Where the caller writes variable i of boxes 0 .. count-1 (count <=
   // kMaxBoxes, the same count for every variable of one contraction).
@@ -35,6 +40,8 @@ class Hc4Rows {
 
  private:
   const Tape& tape_;
+  bool shared_;                // rows_ is the thread's buffer
+  std::vector<Interval> own_;  // the rows when it is not
   Interval* rows_;
 };
 
