@@ -213,40 +213,42 @@ bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& cha
   const auto ts = y.tdomain()->times();
   TubeData& d = y.data();
   const auto& ws = w.data().slices;
-  // On the portable path with AVX2 the hulls of a block are computed 4 at a
-  // time first (the same bits), the tail of the block one at a time.
+  // By blocks: on the portable path with AVX2 the hulls of a block are
+  // computed 4 at a time first (the same bits), its tail one at a time.
   constexpr std::size_t kBlock = 64;
   double block_lo[kBlock], block_up[kBlock];
-  std::size_t block = a, wide = 0;  // slices block .. block+wide-1 are in block_lo, block_up
-  for (std::size_t k = a; k <= b; ++k) {
+  for (std::size_t first = a; first <= b; first += kBlock) {
+    const std::size_t end = std::min(b + 1, first + kBlock);
+    std::size_t wide = 0;  // slices first .. first+wide-1 are in block_lo, block_up
     if constexpr (std::is_same_v<R, detail::SoftRounding>) {
-      if (k == block + kBlock || k == a) {
-        block = k;
-        wide = detail::avx2_rows() ? std::min(kBlock, b + 1 - k) / 4 * 4 : 0;
-        detail::polygon_hull_bounds_x4(ts.data(), d.gates.data(), ws.data(), block, wide, block_lo, block_up);
+      if (detail::avx2_rows()) {
+        wide = (end - first) / 4 * 4;
+        detail::polygon_hull_bounds_x4(ts.data(), d.gates.data(), ws.data(), first, wide, block_lo, block_up);
       }
     }
-    const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
-    Interval& s = d.slices[k];
-    if (ga.is_empty() || gb.is_empty() || v.is_empty() || s.is_empty()) return false;
-    double lo, up;
-    if (k - block < wide) {
-      lo = block_lo[k - block];
-      up = block_up[k - block];
-    } else {
-      double plo, phi;
-      detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
-      detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
-                                    detail::straddles(v.lb(), v.ub()), lo, up);
-    }
-    lo = std::max(lo, s.lb());
-    up = std::min(up, s.ub());
-    if (!(lo <= up)) return false;
-    if (lo != s.lb() || up != s.ub()) {
-      const Interval h = Interval::from_bounds_unchecked(lo, up);
-      log.slice(k, s, h);
-      s = h;
-      changed = true;
+    for (std::size_t k = first; k < end; ++k) {
+      const Interval &ga = d.gates[k], &gb = d.gates[k + 1], &v = ws[k];
+      Interval& s = d.slices[k];
+      if (ga.is_empty() || gb.is_empty() || v.is_empty() || s.is_empty()) return false;
+      double lo, up;
+      if (k - first < wide) {
+        lo = block_lo[k - first];
+        up = block_up[k - first];
+      } else {
+        double plo, phi;
+        detail::scale<R>(v.lb(), v.ub(), detail::width<R>(ts[k], ts[k + 1]), plo, phi);
+        detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
+                                      detail::straddles(v.lb(), v.ub()), lo, up);
+      }
+      lo = std::max(lo, s.lb());
+      up = std::min(up, s.ub());
+      if (!(lo <= up)) return false;
+      if (lo != s.lb() || up != s.ub()) {
+        const Interval h = Interval::from_bounds_unchecked(lo, up);
+        log.slice(k, s, h);
+        s = h;
+        changed = true;
+      }
     }
   }
   return true;

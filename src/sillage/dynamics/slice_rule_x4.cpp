@@ -1,4 +1,5 @@
-// slice_rule_x4.h: slice_hull<SoftRounding> (slice_deriv.h) on four lanes.
+// slice_rule_x4.h: scale, slice_hull and polygon_hull of slice_deriv.h on
+// the SoftRounding policy, four lanes at a time.
 // The + and − of the policy are avx2_lanes.h's; × and ÷ are those of
 // branchless_rounding.h's second family (mul_up, div_up_pos), written here.
 #include "sillage/dynamics/slice_rule_x4.h"

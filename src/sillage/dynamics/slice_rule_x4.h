@@ -5,12 +5,12 @@
 // hulls of a FWD_BWD sweep (the portable path's counterpart of
 // polygon_hull_x8.h) and those of CtcEval's slices next to the gates it changed.
 //
-// Used by the FWD_BWD sweep on the portable rounding path where the CPU has
-// AVX2 (avx2_rows()): the backward pass first contracts the gates of a block
-// of slices (a sequential chain), then this computes the hulls of the block,
-// independent of each other. Each lane runs the scalar code's error-free
-// transformations with the same instructions and operand order, so the
-// results are slice_hull<SoftRounding>'s bit for bit (tested).
+// Used on the portable rounding path where the CPU has AVX2 (avx2_rows()):
+// the FWD_BWD sweep takes δ[v] of a block ahead of its chains of gates, then
+// the hulls of the block, independent of each other. Each lane runs the
+// scalar code's error-free transformations with the same instructions and
+// operand order, so the results are those of scale, slice_hull and
+// polygon_hull<SoftRounding> bit for bit (tested).
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>

@@ -17,7 +17,7 @@ class ChunkBoxes {
  public:
   // Boxes per chunk: one HC4 batch (its rows stay in cache); one at a time
   // when some variable is a constant (a parameter narrowed box after box).
-  static std::size_t chunk(bool constants) { return constants ? 1 : detail::Hc4Rows::kMaxBoxes; }
+  static std::size_t chunk(bool constants) { return constants ? 1 : Hc4Rows::kMaxBoxes; }
 
   ChunkBoxes(const Ctc& ctc, std::size_t chunk) : ctc_(ctc), f_(dynamic_cast<const CtcFunction*>(&ctc)) {
     if (f_) hc_.emplace(f_->function());
@@ -46,9 +46,9 @@ class ChunkBoxes {
  private:
   const Ctc& ctc_;
   const CtcFunction* f_;
-  std::optional<detail::Hc4Rows> hc_;
+  std::optional<Hc4Rows> hc_;
   std::vector<Interval> box_;
-  std::uint8_t ok_[detail::Hc4Rows::kMaxBoxes];
+  std::uint8_t ok_[Hc4Rows::kMaxBoxes];
 };
 
 [[gnu::noinline]] void tell(const TimeChange& changed, std::size_t v, std::size_t i, Interval was, Interval now) {

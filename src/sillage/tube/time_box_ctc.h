@@ -10,9 +10,10 @@
 // box sees it as narrowed by the previous ones, and it is intersected with
 // all of them.
 //
-// Speed: the boxes go by chunks in column layout; the HC4 of a CtcFunction
-// walks its tape once per chunk (Function::hc4_revise_batch), any other
-// contractor is called per box. With constants a chunk is one box.
+// Speed: the boxes go by chunks in column layout; for a CtcFunction they are
+// gathered straight into the rows of its HC4 (expr/hc4_rows.h), which walks
+// its tape once per chunk; any other contractor is called per box. With
+// constants a chunk is one box.
 #include <cstddef>
 #include <functional>
 #include <span>

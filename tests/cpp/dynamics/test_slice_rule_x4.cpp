@@ -54,6 +54,13 @@ std::vector<double> random_times(std::mt19937_64& rng, std::size_t n) {
   return t;
 }
 
+// δ[v] of slice k by the scalar rule (scale and width of slice_deriv.h).
+void scalar_scale(const std::vector<double>& t, const std::vector<Interval>& v, std::size_t k, double& plo,
+                  double& phi) {
+  detail::scale<detail::SoftRounding>(v[k].lb(), v[k].ub(), detail::width<detail::SoftRounding>(t[k], t[k + 1]), plo,
+                                      phi);
+}
+
 bool same_bits(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
 
 bool same_bits(const Interval& x, const Interval& y) {
@@ -118,8 +125,7 @@ TEST(SliceRuleX4, BoundsSameBitsAsPolygonHull) {
     detail::polygon_hull_bounds_x4(t.data(), g.data(), v.data(), first, n, lo.data(), up.data());
     for (std::size_t k = first; k < first + n; ++k) {
       double plo, phi, l, u;
-      detail::scale<detail::SoftRounding>(v[k].lb(), v[k].ub(), detail::width<detail::SoftRounding>(t[k], t[k + 1]),
-                                          plo, phi);
+      scalar_scale(t, v, k, plo, phi);
       detail::polygon_hull<detail::SoftRounding, false>(g[k].lb(), g[k].ub(), g[k + 1].lb(), g[k + 1].ub(),
                                                         v[k].lb(), v[k].ub(), plo, phi,
                                                         detail::straddles(v[k].lb(), v[k].ub()), l, u);
@@ -137,8 +143,7 @@ TEST(SliceRuleX4, ScaledDerivativesSameBitsAsScale) {
     detail::scaled_derivatives_x4(t.data(), v.data(), first, n, plo.data(), phi.data());
     for (std::size_t k = first; k < first + n; ++k) {
       double l, u;
-      detail::scale<detail::SoftRounding>(v[k].lb(), v[k].ub(), detail::width<detail::SoftRounding>(t[k], t[k + 1]), l,
-                                          u);
+      scalar_scale(t, v, k, l, u);
       ASSERT_TRUE(same_bits(plo[k - first], l) && same_bits(phi[k - first], u)) << trial << " " << k;
     }
   }
