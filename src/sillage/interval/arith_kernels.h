@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #if defined(__SSE4_1__)
 #include <smmintrin.h>
 #elif defined(__SSE2__)
@@ -27,6 +28,7 @@
 
 #include "sillage/interval/branchless_rounding.h"
 #include "sillage/interval/hardware_rounding.h"
+#include "sillage/interval/pair_lanes.h"
 #include "sillage/interval/rounding.h"
 
 namespace sillage::detail {
@@ -180,13 +182,42 @@ inline double corner(double p) {
 #endif
 }
 
+// The portable path computes +, -, ×, ÷ on both bounds at once (pair_lanes.h):
+// the kernels below then hold a second, packed body under `if constexpr`.
+template <class R>
+inline constexpr bool kPairLanes = SILLAGE_PAIR_LANES && std::is_same_v<R, BranchFreeRounding>;
+
+#if SILLAGE_PAIR_LANES
+// x = [a, b] or y = [c, d] not a set, in both lanes.
+inline pair::P pair_no_set(double a, double b, double c, double d) {
+  return pair::either(_mm_cmpnle_pd(pair::make(a, c), pair::make(b, d)));
+}
+
+// bounds_or_empty for r = [-lo, hi].
+inline BoundPair pair_bounds_or_empty(pair::P empty, pair::P r) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const pair::P v = pair::select(empty, pair::make(inf, -inf), _mm_add_pd(pair::neg0(r), pair::both(0.0)));
+  return {pair::lane0(v), pair::lane1(v)};
+}
+#endif
+
 template <class R>
 [[gnu::always_inline]] inline BoundPair add_bounds(double a, double b, double c, double d) {
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {  // [-lo, hi] = [-a, b] + [-c, d], upward
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), pair::add_up(pair::make(-a, b), pair::make(-c, d)));
+  }
+#endif
   return bounds_or_empty(no_set(a, b) | no_set(c, d), R::add_down(a, c), R::add_up(b, d));
 }
 
 template <class R>
 [[gnu::always_inline]] inline BoundPair sub_bounds(double a, double b, double c, double d) {
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {  // [-lo, hi] = [-a, b] + [d, -c], upward
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), pair::add_up(pair::make(-a, b), pair::make(d, -c)));
+  }
+#endif
   return bounds_or_empty(no_set(a, b) | no_set(c, d), R::sub_down(a, d), R::sub_up(b, c));
 }
 
@@ -196,6 +227,17 @@ template <class R>
 // products per bound instead of four. A zero u gives 0 whichever v.
 template <class R>
 [[gnu::always_inline]] inline BoundPair mul_bounds(double a, double b, double c, double d) {
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {
+    // [-a·a_lo, a·a_hi] and [-b·b_lo, b·b_hi] upward, then the larger of each lane.
+    using namespace pair;
+    const P cd = make(c, d), dc = swap(cd);
+    const P xa = make(-a, a), ya = select(le(both(0.0), both(a)), cd, dc);
+    const P xb = make(-b, b), yb = select(le(both(0.0), both(b)), cd, dc);
+    if (mul_rare(xa, ya) | mul_rare(xb, yb)) [[unlikely]] return mul_bounds_scalar(a, b, c, d);
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), _mm_max_pd(mul_up(xa, ya), mul_up(xb, yb)));
+  }
+#endif
   const Mask a_nn = ge(a, 0.0), b_nn = ge(b, 0.0);
   const double a_lo = select(a_nn, c, d), a_hi = select(a_nn, d, c);
   const double b_lo = select(b_nn, c, d), b_hi = select(b_nn, d, c);
@@ -220,6 +262,25 @@ template <class R>
   constexpr double inf = std::numeric_limits<double>::infinity();
   c += 0.0;                                   // the limit from above 0: +0
   const double dn = select(eq(d, 0.0), -0.0, d);  // the limit from below 0: -0
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {
+    // Lane 0 the lower bound, lane 1 the upper one: the numerators [a, b]
+    // (swapped for y <= 0) and s = [lo_num >= 0, hi_num > 0] (tested as
+    // >= the smallest subnormal) choose the denominators of the scalar body.
+    using namespace pair;
+    constexpr double tiny = std::numeric_limits<double>::denorm_min();
+    const P pos = le(both(0.0), both(c));
+    const P num = select(pos, make(a, b), make(b, a));
+    const P s = le(select(pos, make(0.0, tiny), make(tiny, 0.0)), num);
+    const P den = select(s, make(dn, c), make(c, dn));  // with c >= 0, d = 0 is the empty case
+    if (div_rare(num, den)) [[unlikely]] return div_bounds_scalar(a, b, c, d);
+    const P straddles = _mm_and_pd(lt(both(c), both(0.0)), lt(both(0.0), both(d)));
+    const P x_zero = _mm_and_pd(_mm_cmpeq_pd(both(a), both(0.0)), _mm_cmpeq_pd(both(b), both(0.0)));
+    const P r = select(straddles, select(x_zero, both(0.0), both(inf)), div_up(neg0(num), den));
+    const P y_zero = _mm_and_pd(_mm_cmpeq_pd(both(c), both(0.0)), _mm_cmpeq_pd(both(d), both(0.0)));
+    return pair_bounds_or_empty(_mm_or_pd(pair_no_set(a, b, c, d), y_zero), r);
+  }
+#endif
   const Mask pos = ge(c, 0.0), a_nn = ge(a, 0.0), b_pos = gt(b, 0.0);
   const double lo_num = select(pos, a, b), hi_num = select(pos, b, a);
   const double lo_den = select(pos, select(a_nn, d, c), select(b_pos, dn, c));
@@ -240,6 +301,13 @@ template <class R>
 template <class R>
 [[gnu::always_inline]] inline BoundPair sqr_bounds(double a, double b) {
   const double mig = max_nb(max_nb(a, -b), 0.0), mag = max_nb(-a, b);
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {  // [-mig·mig, mag·mag] upward
+    const pair::P x = pair::make(-mig, mag), y = pair::make(mig, mag);
+    if (pair::mul_rare(x, y)) [[unlikely]] return sqr_bounds_scalar(a, b);
+    return pair_bounds_or_empty(_mm_cmpnle_pd(pair::both(a), pair::both(b)), pair::mul_up(x, y));
+  }
+#endif
   if constexpr (R::kHasRareCases) {
     if (R::mul_rare(mig, mig) | R::mul_rare(mag, mag)) [[unlikely]] return sqr_bounds_scalar(a, b);
   }
@@ -250,6 +318,15 @@ template <class R>
 template <class R>
 [[gnu::always_inline]] inline BoundPair sqrt_bounds(double a, double b) {
   const double a0 = max_nb(a, 0.0);
+#if SILLAGE_PAIR_LANES
+  if constexpr (kPairLanes<R>) {  // √[a0, b], lane 0 stepped down, lane 1 up
+    using namespace pair;
+    const P x = make(a0, b), s = _mm_sqrt_pd(x), r = _mm_fnmadd_pd(s, s, x);  // x - s², exact
+    if (any(_mm_and_pd(lt(both(0.0), x), lt(x, both(0x1p-968))))) [[unlikely]] return sqrt_bounds_scalar(a, b);
+    const P empty = _mm_or_pd(_mm_cmpnle_pd(both(a), both(b)), lt(both(b), both(0.0)));
+    return pair_bounds_or_empty(empty, step_up(neg0(s), lt(both(0.0), neg0(r))));
+  }
+#endif
   if constexpr (R::kHasRareCases) {
     if (R::sqrt_rare(a0) | R::sqrt_rare(b)) [[unlikely]] return sqrt_bounds_scalar(a, b);
   }
