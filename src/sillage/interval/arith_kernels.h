@@ -189,15 +189,16 @@ inline constexpr bool kPairLanes = SILLAGE_PAIR_LANES && std::is_same_v<R, Branc
 
 #if SILLAGE_PAIR_LANES
 // x = [a, b] or y = [c, d] not a set, in both lanes.
-inline pair::P pair_no_set(double a, double b, double c, double d) {
-  return pair::either(_mm_cmpnle_pd(pair::make(a, c), pair::make(b, d)));
+inline PairLanes::P pair_no_set(double a, double b, double c, double d) {
+  return PairLanes::either(_mm_cmpnle_pd(PairLanes::make(a, c), PairLanes::make(b, d)));
 }
 
 // bounds_or_empty for r = [-lo, hi].
-inline BoundPair pair_bounds_or_empty(pair::P empty, pair::P r) {
+inline BoundPair pair_bounds_or_empty(PairLanes::P empty, PairLanes::P r) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  const pair::P v = pair::select(empty, pair::make(inf, -inf), _mm_add_pd(pair::neg0(r), pair::both(0.0)));
-  return {pair::lane0(v), pair::lane1(v)};
+  using L = PairLanes;
+  const L::P v = L::select(empty, L::make(inf, -inf), _mm_add_pd(L::neg0(r), L::both(0.0)));
+  return {L::lane0(v), L::lane1(v)};
 }
 #endif
 
@@ -205,7 +206,8 @@ template <class R>
 [[gnu::always_inline]] inline BoundPair add_bounds(double a, double b, double c, double d) {
 #if SILLAGE_PAIR_LANES
   if constexpr (kPairLanes<R>) {  // [-lo, hi] = [-a, b] + [-c, d], upward
-    return pair_bounds_or_empty(pair_no_set(a, b, c, d), pair::add_up(pair::make(-a, b), pair::make(-c, d)));
+    using L = PairLanes;
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), L::add_up(L::make(-a, b), L::make(-c, d)));
   }
 #endif
   return bounds_or_empty(no_set(a, b) | no_set(c, d), R::add_down(a, c), R::add_up(b, d));
@@ -215,7 +217,8 @@ template <class R>
 [[gnu::always_inline]] inline BoundPair sub_bounds(double a, double b, double c, double d) {
 #if SILLAGE_PAIR_LANES
   if constexpr (kPairLanes<R>) {  // [-lo, hi] = [-a, b] + [d, -c], upward
-    return pair_bounds_or_empty(pair_no_set(a, b, c, d), pair::add_up(pair::make(-a, b), pair::make(d, -c)));
+    using L = PairLanes;
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), L::add_up(L::make(-a, b), L::make(d, -c)));
   }
 #endif
   return bounds_or_empty(no_set(a, b) | no_set(c, d), R::sub_down(a, d), R::sub_up(b, c));
@@ -230,12 +233,13 @@ template <class R>
 #if SILLAGE_PAIR_LANES
   if constexpr (kPairLanes<R>) {
     // [-a·a_lo, a·a_hi] and [-b·b_lo, b·b_hi] upward, then the larger of each lane.
-    using namespace pair;
-    const P cd = make(c, d), dc = swap(cd);
-    const P xa = make(-a, a), ya = select(le(both(0.0), both(a)), cd, dc);
-    const P xb = make(-b, b), yb = select(le(both(0.0), both(b)), cd, dc);
-    if (mul_rare(xa, ya) | mul_rare(xb, yb)) [[unlikely]] return mul_bounds_scalar(a, b, c, d);
-    return pair_bounds_or_empty(pair_no_set(a, b, c, d), _mm_max_pd(mul_up(xa, ya), mul_up(xb, yb)));
+    using L = PairLanes;
+    using P = L::P;
+    const P cd = L::make(c, d), dc = L::swap(cd);
+    const P xa = L::make(-a, a), ya = L::select(L::le(L::both(0.0), L::both(a)), cd, dc);
+    const P xb = L::make(-b, b), yb = L::select(L::le(L::both(0.0), L::both(b)), cd, dc);
+    if (L::mul_rare(xa, ya) | L::mul_rare(xb, yb)) [[unlikely]] return mul_bounds_scalar(a, b, c, d);
+    return pair_bounds_or_empty(pair_no_set(a, b, c, d), _mm_max_pd(L::mul_up(xa, ya), L::mul_up(xb, yb)));
   }
 #endif
   const Mask a_nn = ge(a, 0.0), b_nn = ge(b, 0.0);
@@ -267,17 +271,19 @@ template <class R>
     // Lane 0 the lower bound, lane 1 the upper one: the numerators [a, b]
     // (swapped for y <= 0) and s = [lo_num >= 0, hi_num > 0] (tested as
     // >= the smallest subnormal) choose the denominators of the scalar body.
-    using namespace pair;
+    using L = PairLanes;
+    using P = L::P;
     constexpr double tiny = std::numeric_limits<double>::denorm_min();
-    const P pos = le(both(0.0), both(c));
-    const P num = select(pos, make(a, b), make(b, a));
-    const P s = le(select(pos, make(0.0, tiny), make(tiny, 0.0)), num);
-    const P den = select(s, make(dn, c), make(c, dn));  // with c >= 0, d = 0 is the empty case
-    if (div_rare(num, den)) [[unlikely]] return div_bounds_scalar(a, b, c, d);
-    const P straddles = _mm_and_pd(lt(both(c), both(0.0)), lt(both(0.0), both(d)));
-    const P x_zero = _mm_and_pd(_mm_cmpeq_pd(both(a), both(0.0)), _mm_cmpeq_pd(both(b), both(0.0)));
-    const P r = select(straddles, select(x_zero, both(0.0), both(inf)), div_up(neg0(num), den));
-    const P y_zero = _mm_and_pd(_mm_cmpeq_pd(both(c), both(0.0)), _mm_cmpeq_pd(both(d), both(0.0)));
+    const P pos = L::le(L::both(0.0), L::both(c));
+    const P num = L::select(pos, L::make(a, b), L::make(b, a));
+    const P s = L::le(L::select(pos, L::make(0.0, tiny), L::make(tiny, 0.0)), num);
+    const P den = L::select(s, L::make(dn, c), L::make(c, dn));  // with c >= 0, d = 0 is the empty case
+    if (L::div_rare(num, den)) [[unlikely]] return div_bounds_scalar(a, b, c, d);
+    const P straddles = _mm_and_pd(L::lt(L::both(c), L::both(0.0)), L::lt(L::both(0.0), L::both(d)));
+    const P x_zero = _mm_and_pd(_mm_cmpeq_pd(L::both(a), L::both(0.0)), _mm_cmpeq_pd(L::both(b), L::both(0.0)));
+    const P q = L::div_up(L::neg0(num), den);
+    const P r = L::select(straddles, L::select(x_zero, L::both(0.0), L::both(inf)), q);
+    const P y_zero = _mm_and_pd(_mm_cmpeq_pd(L::both(c), L::both(0.0)), _mm_cmpeq_pd(L::both(d), L::both(0.0)));
     return pair_bounds_or_empty(_mm_or_pd(pair_no_set(a, b, c, d), y_zero), r);
   }
 #endif
@@ -303,9 +309,10 @@ template <class R>
   const double mig = max_nb(max_nb(a, -b), 0.0), mag = max_nb(-a, b);
 #if SILLAGE_PAIR_LANES
   if constexpr (kPairLanes<R>) {  // [-mig·mig, mag·mag] upward
-    const pair::P x = pair::make(-mig, mag), y = pair::make(mig, mag);
-    if (pair::mul_rare(x, y)) [[unlikely]] return sqr_bounds_scalar(a, b);
-    return pair_bounds_or_empty(_mm_cmpnle_pd(pair::both(a), pair::both(b)), pair::mul_up(x, y));
+    using L = PairLanes;
+    const L::P x = L::make(-mig, mag), y = L::make(mig, mag);
+    if (L::mul_rare(x, y)) [[unlikely]] return sqr_bounds_scalar(a, b);
+    return pair_bounds_or_empty(_mm_cmpnle_pd(L::both(a), L::both(b)), L::mul_up(x, y));
   }
 #endif
   if constexpr (R::kHasRareCases) {
@@ -320,11 +327,13 @@ template <class R>
   const double a0 = max_nb(a, 0.0);
 #if SILLAGE_PAIR_LANES
   if constexpr (kPairLanes<R>) {  // √[a0, b], lane 0 stepped down, lane 1 up
-    using namespace pair;
-    const P x = make(a0, b), s = _mm_sqrt_pd(x), r = _mm_fnmadd_pd(s, s, x);  // x - s², exact
-    if (any(_mm_and_pd(lt(both(0.0), x), lt(x, both(0x1p-968))))) [[unlikely]] return sqrt_bounds_scalar(a, b);
-    const P empty = _mm_or_pd(_mm_cmpnle_pd(both(a), both(b)), lt(both(b), both(0.0)));
-    return pair_bounds_or_empty(empty, step_up(neg0(s), lt(both(0.0), neg0(r))));
+    using L = PairLanes;
+    using P = L::P;
+    const P x = L::make(a0, b), s = _mm_sqrt_pd(x), r = _mm_fnmadd_pd(s, s, x);  // x - s², exact
+    const P tiny = _mm_and_pd(L::lt(L::both(0.0), x), L::lt(x, L::both(0x1p-968)));  // sqrt_rare
+    if (L::any(tiny)) [[unlikely]] return sqrt_bounds_scalar(a, b);
+    const P empty = _mm_or_pd(_mm_cmpnle_pd(L::both(a), L::both(b)), L::lt(L::both(b), L::both(0.0)));
+    return pair_bounds_or_empty(empty, L::step_up(L::neg0(s), L::lt(L::both(0.0), L::neg0(r))));
   }
 #endif
   if constexpr (R::kHasRareCases) {
