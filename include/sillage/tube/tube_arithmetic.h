@@ -53,9 +53,10 @@ Tube pow(const Tube& x, const Interval& p);
 Tube pow(const Tube& x, const Tube& p);
 // root of a tube, slice- and gate-wise (rigorous).
 Tube root(const Tube& x, int n);
-// sin of a tube, slice- and gate-wise (rigorous).
+// sin of a tube, slice- and gate-wise (rigorous; by rows: within a few ulps
+// of the scalar sin, not its bits).
 Tube sin(const Tube& x);
-// cos of a tube, slice- and gate-wise (rigorous).
+// cos of a tube, slice- and gate-wise (rigorous; by rows, as sin).
 Tube cos(const Tube& x);
 // tan of a tube, slice- and gate-wise (rigorous).
 Tube tan(const Tube& x);

@@ -30,12 +30,13 @@ constexpr std::array<double, 7> kCos = {0x1.5555555555555p-5,   -0x1.6c16c16c16c
                                         -0x1.27e4fb7789f5cp-22, 0x1.1eed8eff8d898p-29,  -0x1.93974a8c07c9dp-37,
                                         0x1.ae7f3e733b81fp-45};
 
-// c[0] + c[1] z + ... + c[N-1] z^(N-1) by Horner's rule (a multiplication
-// and an addition per step, as the error analysis counts them).
+// c[0] + c[1] z + ... + c[N-1] z^(N-1) by Horner's rule, one fma per step:
+// one rounding where the error analysis counts two (a multiplication and an
+// addition), so its bounds hold, in half the instructions.
 template <std::size_t N>
 [[gnu::always_inline]] inline double horner(double z, const std::array<double, N>& c) {
   double s = c[N - 1];
-  for (std::size_t i = N - 1; i-- > 0;) s = s * z + c[i];
+  for (std::size_t i = N - 1; i-- > 0;) s = std::fma(s, z, c[i]);
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "sillage/tube/time_box_ctc.h"
 
 #include <algorithm>
+#include <cstring>
 #include <optional>
 
 #include "sillage/ctc/ctc_function.h"
@@ -27,6 +28,9 @@ class ChunkBoxes {
   Interval* column(std::size_t v, std::size_t count) {
     return hc_ ? hc_->var_row(v, count) : box_.data() + v * count;
   }
+  // The contracted boxes are subsets of the boxes written (Hc4Rows says so):
+  // no intersection with the tubes' values is needed on the way back.
+  bool subsets() const { return hc_.has_value(); }
   const std::uint8_t* contract(std::size_t count) {
     if (hc_) {
       hc_->contract(count, f_->image(), ok_);
@@ -36,7 +40,7 @@ class ChunkBoxes {
     IntervalVector b(n);
     for (std::size_t j = 0; j < count; ++j) {
       for (std::size_t v = 0; v < n; ++v) b[v] = box_[v * count + j];
-      ctc_.contract(b);
+      if (!b.is_empty()) ctc_.contract(b);  // an empty element on input is an answer already
       for (std::size_t v = 0; v < n; ++v) box_[v * count + j] = b[v];
       ok_[j] = b.is_empty() ? 0 : 1;
     }
@@ -95,13 +99,26 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
   // Slices first, then gates (which are intersected with their slices).
   // Within a chunk the boxes are read and written variable by variable (one
   // column at a time); each variable still sees its atoms in order.
+  // Every atom (the usual case): the chunks' ids follow without a scan.
+  const bool every_atom = atoms.size() == 2 * nb_slices + 1 && atoms.back() == 2 * nb_slices;  // sorted, distinct
   for (const int parity : {1, 0}) {
-    for (auto next = atoms.begin(); next != atoms.end();) {
+    std::size_t next_k = 0;  // every_atom: the first time element of the next chunk
+    for (auto next = atoms.begin();;) {
       ids.clear();
-      for (; next != atoms.end() && ids.size() < chunk; ++next)
-        if (static_cast<int>(*next & 1) == parity) ids.push_back(*next);
+      if (every_atom) {
+        ids.resize(std::min(chunk, nb_slices + 1 - parity - next_k));
+        for (std::size_t j = 0; j < ids.size(); ++j) ids[j] = 2 * (next_k + j) + parity;
+        next_k += ids.size();
+      } else {
+        for (; next != atoms.end() && ids.size() < chunk; ++next)
+          if (static_cast<int>(*next & 1) == parity) ids.push_back(*next);
+      }
       if (ids.empty()) break;
       const std::size_t c = ids.size();
+      // Consecutive time elements k0, k0 + 1, ... (the usual case: every
+      // atom) are read and written as blocks.
+      const std::size_t k0 = ids[0] / 2;
+      const bool run = ids[c - 1] / 2 - k0 == c - 1;
       for (std::size_t v = 0; v < n; ++v) {
         Interval* const col = boxes.column(v, c);
         if (!slices[v]) {
@@ -109,6 +126,23 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
           continue;
         }
         Interval* const elems = parity == 1 ? slices[v] : gates[v];
+        if (parity == 1 && run) {
+          std::copy_n(elems + k0, c, col);
+          continue;
+        }
+        if (run && !changed) {  // gates k0 .. k0 + c - 1, nobody to tell: no branch per gate
+          bool moved = false;
+          for (std::size_t j = 0; j < c; ++j) {
+            const std::size_t k = k0 + j;
+            Interval& x = elems[k];
+            const Interval h = (x & slices[v][k > 0 ? k - 1 : k]) & (k < nb_slices ? slices[v][k] : x);
+            moved |= (h.lb() != x.lb()) | (h.ub() != x.ub());
+            x = h;
+            col[j] = h;
+          }
+          touched[v] |= moved;
+          continue;
+        }
         for (std::size_t j = 0; j < c; ++j) {
           const std::size_t k = ids[j] / 2;
           Interval& x = elems[k];
@@ -125,8 +159,8 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
       }
       const std::uint8_t* const ok = boxes.contract(c);
       // The boxes before the first one proven empty are written back; that one stops there.
-      std::size_t stop = 0;
-      while (stop < c && ok[stop]) ++stop;
+      const auto* const first_empty = static_cast<const std::uint8_t*>(std::memchr(ok, 0, c));
+      const std::size_t stop = first_empty ? static_cast<std::size_t>(first_empty - ok) : c;
       for (std::size_t v = 0; v < n; ++v) {
         const Interval* const col = boxes.column(v, c);
         if (!slices[v]) {
@@ -134,10 +168,23 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
           continue;
         }
         Interval* const elems = parity == 1 ? slices[v] : gates[v];
-        for (std::size_t j = 0; j < stop; ++j) {
-          Interval& x = elems[ids[j] / 2];
-          const Interval now = x & col[j];
-          if (now != x) narrow(v, ids[j], x, now);
+        if (boxes.subsets() && run) {  // col[j] ⊆ x: a change is a moved bound
+          Interval* const x = elems + k0;
+          if (!changed) {  // nobody to tell: one pass without a branch, one copy
+            bool moved = false;
+            for (std::size_t j = 0; j < stop; ++j) moved |= (col[j].lb() != x[j].lb()) | (col[j].ub() != x[j].ub());
+            std::copy_n(col, stop, x);
+            touched[v] |= moved;
+          } else {
+            for (std::size_t j = 0; j < stop; ++j)
+              if ((col[j].lb() != x[j].lb()) | (col[j].ub() != x[j].ub())) narrow(v, ids[j], x[j], col[j]);
+          }
+        } else {
+          for (std::size_t j = 0; j < stop; ++j) {
+            Interval& x = elems[ids[j] / 2];
+            const Interval now = x & col[j];
+            if (now != x) narrow(v, ids[j], x, now);
+          }
         }
         if (stop < c) {
           Interval& x = elems[ids[stop] / 2];

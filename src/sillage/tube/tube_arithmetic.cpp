@@ -4,6 +4,7 @@
 
 #include "sillage/error.h"
 #include "sillage/expr/batch_kernels.h"
+#include "sillage/interval/trig_batch.h"
 
 namespace sillage {
 
@@ -23,6 +24,17 @@ template <class F>
 Tube unary(const Tube& x, F f) {
   Tube z(x);
   unary_inplace(z, f);
+  return z;
+}
+
+// f over the slices and the gates as rows (interval/trig_batch.h: in place,
+// end point values by a vectorised kernel).
+Tube unary_rows(const Tube& x, void (*f)(const Interval*, Interval*, std::size_t)) {
+  Tube z(x);
+  TubeData& d = z.data();
+  f(d.slices.data(), d.slices.data(), d.slices.size());
+  f(d.gates.data(), d.gates.data(), d.gates.size());
+  z.touch();
   return z;
 }
 
@@ -110,8 +122,6 @@ SILLAGE_TUBE_UNARY(abs)
 SILLAGE_TUBE_UNARY(sign)
 SILLAGE_TUBE_UNARY(exp)
 SILLAGE_TUBE_UNARY(log)
-SILLAGE_TUBE_UNARY(sin)
-SILLAGE_TUBE_UNARY(cos)
 SILLAGE_TUBE_UNARY(tan)
 SILLAGE_TUBE_UNARY(asin)
 SILLAGE_TUBE_UNARY(acos)
@@ -120,6 +130,8 @@ SILLAGE_TUBE_UNARY(sinh)
 SILLAGE_TUBE_UNARY(cosh)
 SILLAGE_TUBE_UNARY(tanh)
 #undef SILLAGE_TUBE_UNARY
+Tube sin(const Tube& x) { return unary_rows(x, detail::sin_rows); }
+Tube cos(const Tube& x) { return unary_rows(x, detail::cos_rows); }
 
 Tube pow(const Tube& x, int n) { return unary(x, [n](const Interval& a) { return pow(a, n); }); }
 Tube pow(const Tube& x, double p) { return unary(x, [p](const Interval& a) { return pow(a, p); }); }

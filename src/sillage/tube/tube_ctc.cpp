@@ -32,19 +32,16 @@ void check_tubes(const Ctc& ctc, const std::vector<Tube*>& x) {
 }
 
 // The box contractor at every slice and gate (time_box_ctc.h); on
-// emptiness (on input or proven) every tube is set empty.
+// emptiness (on input or proven) every tube is set empty. An empty element
+// on input needs no scan of its own: the box holding it is proven empty.
 bool contract_tubes(const Ctc& ctc, const std::vector<Tube*>& x) {
   if (x.empty()) return true;  // no variable: nothing to contract
-  bool ok = true;
-  for (const Tube* xi : x) ok = ok && !xi->is_empty();
-  if (ok) {
-    std::vector<detail::TimeVar> vars;
-    for (Tube* xi : x) vars.push_back({xi, 0});
-    std::vector<std::size_t> atoms(2 * x[0]->nb_slices() + 1);
-    for (std::size_t i = 0; i < atoms.size(); ++i) atoms[i] = i;
-    IntervalVector no_params(1);
-    ok = detail::contract_time_elements(ctc, vars, atoms, no_params, {}) == detail::kNoTimeAtom;
-  }
+  std::vector<detail::TimeVar> vars;
+  for (Tube* xi : x) vars.push_back({xi, 0});
+  std::vector<std::size_t> atoms(2 * x[0]->nb_slices() + 1);
+  for (std::size_t i = 0; i < atoms.size(); ++i) atoms[i] = i;
+  IntervalVector no_params(1);
+  const bool ok = detail::contract_time_elements(ctc, vars, atoms, no_params, {}) == detail::kNoTimeAtom;
   if (!ok) {
     const auto empty = [](const Interval& v) { return v.is_empty(); };
     for (Tube* xi : x) {  // touched only if not already the empty tube

@@ -89,6 +89,16 @@ TEST(TubeCtc, AnyBoxContractor) {
   Tube z(td, Interval(5, 6));
   EXPECT_FALSE(contract(c, {&x, &z}));
   EXPECT_TRUE(x.is_empty());
+  // An empty slice on input, with a contractor that would "fill" it if called: no trajectory.
+  class Fill : public Ctc {
+   public:
+    Fill() : Ctc(2) {}
+    void contract(IntervalVector& b) const override { b = IntervalVector(2, Interval(0, 1)); }
+  };
+  Tube p(td, Interval(0, 1)), q(td, Interval(0, 1));
+  q.set(Interval::empty(), 1);
+  EXPECT_FALSE(contract(Fill(), {&p, &q}));
+  EXPECT_TRUE(p.slice(0).is_empty() && q.gate(0).is_empty());
 }
 
 TEST(TubeCtc, VersionOnlyWhenChanged) {
