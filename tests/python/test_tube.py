@@ -118,7 +118,9 @@ def test_arithmetic_and_functions():
     assert (x ** 2).slice(1) == Interval(0, 9)
     assert abs(x).slice(1) == Interval(0, 3)
     assert sillage.sqr(x).slice(1) == Interval(0, 9)
-    assert sillage.sin(x).slice(0) == sillage.sin(Interval(1, 2))
+    # sin and cos of tubes go by rows: enclosures within a few ulps of the scalar functions
+    row, scalar = sillage.sin(x).slice(0), sillage.sin(Interval(1, 2))
+    assert scalar.is_subset(row) and row.diam() - scalar.diam() <= 2 ** -48
     assert sillage.exp(x).gate(0) == sillage.exp(Interval(1, 2))
     assert sillage.atan2(x, y).slice(0) == sillage.atan2(Interval(1, 2), Interval(2, 4))
     assert sillage.atan2(x, 1.0).slice(0) == sillage.atan2(Interval(1, 2), Interval(1))

@@ -2,7 +2,7 @@
 // for bit (signs of zero and the empty set's bounds included), on every
 // rounding path: rows of adversarial pairs and of random ones mixing empty,
 // unbounded, zero-straddling, degenerate, tiny (< 2^-968) and huge
-// intervals, a constant on either side, lengths that leave a tail, results
+// intervals, a constant on either side (constant points among them), lengths that leave a tail, results
 // written over an operand.
 #include <gtest/gtest.h>
 
@@ -90,6 +90,14 @@ void check_all() {
         check(op, {adv[k]}, y, failures);
         check(op, x, {adv[k]}, failures);
       }
+      // Constant points (× and ÷ by a finite nonzero point have kernels of their own), tiny,
+      // huge, negative, and the ones that keep the generic kernels (0, infinite bounds).
+      for (const double c : {5.0, 0.2, 1.0 / 3, -3.0, -0.1, 0x1p-968, 1e-300, -0x1p-1074, 0x1p1000, 3e300,
+                             -rounding::kMax, 0.0}) {
+        check(op, {Interval(c)}, y, failures);
+        check(op, x, {Interval(c)}, failures);
+      }
+      check(op, x, {Interval(1.0, rounding::kInf)}, failures);
     }
   }
   EXPECT_EQ(failures, 0);
