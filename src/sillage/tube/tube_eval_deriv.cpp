@@ -34,9 +34,9 @@ struct LocalSlice {
 
   // Hull of the polygon ∩ [x](k) over t ∈ [c1, c2] ⊆ [t0, t1] (ok required).
   Interval hull(double c1, double c2) const {
-    using namespace rounding;
-    const double tau_lo = sub_down(c1, t0), tau_hi = sub_up(c2, t0);
-    const double sig_lo = sub_down(t1, c2), sig_hi = sub_up(t1, c1);
+    // R's differences: exact and without a branch on the data (rounding.h's branch on the error).
+    const double tau_lo = R::sub_down(c1, t0), tau_hi = R::sub_up(c2, t0);
+    const double sig_lo = R::sub_down(t1, c2), sig_hi = R::sub_up(t1, c1);
     const double up = detail::upper_envelope<R>(ahi, bhi, vhi, vlo, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
     const double lo = -detail::upper_envelope<R>(-alo, -blo, -vlo, -vhi, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
     const double h_lo = std::max(lo, slo), h_hi = std::min(up, shi);
