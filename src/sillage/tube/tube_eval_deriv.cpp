@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <span>
 #include <string>
+#include <type_traits>
 
 #include "sillage/error.h"
 #include "sillage/interval/rounding_policies.h"
+#include "sillage/tube/envelope_pair.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/tube/tube.h"
 
@@ -37,8 +39,20 @@ struct LocalSlice {
     // R's differences: exact and without a branch on the data (rounding.h's branch on the error).
     const double tau_lo = R::sub_down(c1, t0), tau_hi = R::sub_up(c2, t0);
     const double sig_lo = R::sub_down(t1, c2), sig_hi = R::sub_up(t1, c1);
-    const double up = detail::upper_envelope<R>(ahi, bhi, vhi, vlo, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
-    const double lo = -detail::upper_envelope<R>(-alo, -blo, -vlo, -vhi, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+    double up, lo;
+#if SILLAGE_PAIR_LANES
+    if constexpr (std::is_same_v<R, detail::SoftRounding>) {  // both envelopes at once, the same bits
+      using L = detail::PairLanes;
+      const L::P e = detail::EnvelopePair::upper(L::make(ahi, -alo), L::make(bhi, -blo), L::make(vhi, -vlo),
+                                                 L::make(vlo, -vhi), tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+      up = L::lane0(e);
+      lo = -L::lane1(e);
+    } else
+#endif
+    {
+      up = detail::upper_envelope<R>(ahi, bhi, vhi, vlo, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+      lo = -detail::upper_envelope<R>(-alo, -blo, -vlo, -vhi, tau_lo, tau_hi, sig_lo, sig_hi, w.hi);
+    }
     const double h_lo = std::max(lo, slo), h_hi = std::min(up, shi);
     return h_lo <= h_hi ? Interval::from_bounds_unchecked(h_lo, h_hi) : Interval::empty();
   }
