@@ -118,19 +118,24 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   return true;
 }
 
-// Gate i ∩= [lo, hi] on raw bounds, logged; false if it is now empty.
-bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed, const TubeChanges& log) {
-  Interval& g = d.gates[i];
-  lo = std::max(lo, g.lb());
-  hi = std::min(hi, g.ub());
+// x ∩= [lo, hi] on raw bounds; tell(before, after) logs a change. False if x is now empty.
+template <class Tell>
+bool narrow_bounds(Interval& x, double lo, double hi, bool& changed, Tell tell) {
+  lo = std::max(lo, x.lb());
+  hi = std::min(hi, x.ub());
   if (!(lo <= hi)) return false;
-  if (lo != g.lb() || hi != g.ub()) {
+  if (lo != x.lb() || hi != x.ub()) {
     const Interval h = Interval::from_bounds_unchecked(lo, hi);
-    log.gate(i, g, h);
-    g = h;
+    tell(x, h);
+    x = h;
     changed = true;
   }
   return true;
+}
+
+// Gate i ∩= [lo, hi] on raw bounds, logged; false if it is now empty.
+bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed, const TubeChanges& log) {
+  return narrow_bounds(d.gates[i], lo, hi, changed, [&](const Interval& x, const Interval& h) { log.gate(i, x, h); });
 }
 
 // Beyond the region the fronts go on while they shrink gates. Past the first
@@ -240,15 +245,8 @@ bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& cha
         detail::polygon_hull<R, false>(ga.lb(), ga.ub(), gb.lb(), gb.ub(), v.lb(), v.ub(), plo, phi,
                                       detail::straddles(v.lb(), v.ub()), lo, up);
       }
-      lo = std::max(lo, s.lb());
-      up = std::min(up, s.ub());
-      if (!(lo <= up)) return false;
-      if (lo != s.lb() || up != s.ub()) {
-        const Interval h = Interval::from_bounds_unchecked(lo, up);
-        log.slice(k, s, h);
-        s = h;
-        changed = true;
-      }
+      if (!narrow_bounds(s, lo, up, changed, [&](const Interval& x, const Interval& h) { log.slice(k, x, h); }))
+        return false;
     }
   }
   return true;
