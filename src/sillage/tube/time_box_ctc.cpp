@@ -55,6 +55,15 @@ class ChunkBoxes {
   std::uint8_t ok_[Hc4Rows::kMaxBoxes];
 };
 
+// Gate k of a tube ∩ its neighbouring slices (x(t_k) lies in both; x itself
+// stands for a missing one: x & x is x); one expression keeps it in registers.
+inline Interval gate_in_slices(const Interval& x, const Interval* slices, std::size_t k, std::size_t nb_slices) {
+  return (x & slices[k > 0 ? k - 1 : k]) & (k < nb_slices ? slices[k] : x);
+}
+
+// A bound moved from x to y (y ⊆ x, so that this is a change of value).
+inline bool moved(const Interval& x, const Interval& y) { return (x.lb() != y.lb()) | (x.ub() != y.ub()); }
+
 [[gnu::noinline]] void tell(const TimeChange& changed, std::size_t v, std::size_t i, Interval was, Interval now) {
   changed(v, i, was, now);
 }
@@ -131,16 +140,15 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
           continue;
         }
         if (run && !changed) {  // gates k0 .. k0 + c - 1, nobody to tell: no branch per gate
-          bool moved = false;
+          bool any = false;
           for (std::size_t j = 0; j < c; ++j) {
-            const std::size_t k = k0 + j;
-            Interval& x = elems[k];
-            const Interval h = (x & slices[v][k > 0 ? k - 1 : k]) & (k < nb_slices ? slices[v][k] : x);
-            moved |= (h.lb() != x.lb()) | (h.ub() != x.ub());
+            Interval& x = elems[k0 + j];
+            const Interval h = gate_in_slices(x, slices[v], k0 + j, nb_slices);
+            any |= moved(x, h);
             x = h;
             col[j] = h;
           }
-          touched[v] |= moved;
+          touched[v] |= any;
           continue;
         }
         for (std::size_t j = 0; j < c; ++j) {
@@ -150,9 +158,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
             col[j] = x;
             continue;
           }
-          // x(t_k) lies in both neighbouring slices (x itself stands for a
-          // missing one: x & x is x); one expression keeps h in registers.
-          const Interval h = (x & slices[v][k > 0 ? k - 1 : k]) & (k < nb_slices ? slices[v][k] : x);
+          const Interval h = gate_in_slices(x, slices[v], k, nb_slices);
           if (h != x) narrow(v, ids[j], x, h);
           col[j] = h;
         }
@@ -171,13 +177,13 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
         if (boxes.subsets() && run) {  // col[j] ⊆ x: a change is a moved bound
           Interval* const x = elems + k0;
           if (!changed) {  // nobody to tell: one pass without a branch, one copy
-            bool moved = false;
-            for (std::size_t j = 0; j < stop; ++j) moved |= (col[j].lb() != x[j].lb()) | (col[j].ub() != x[j].ub());
+            bool any = false;
+            for (std::size_t j = 0; j < stop; ++j) any |= moved(x[j], col[j]);
             std::copy_n(col, stop, x);
-            touched[v] |= moved;
+            touched[v] |= any;
           } else {
             for (std::size_t j = 0; j < stop; ++j)
-              if ((col[j].lb() != x[j].lb()) | (col[j].ub() != x[j].ub())) narrow(v, ids[j], x[j], col[j]);
+              if (moved(x[j], col[j])) narrow(v, ids[j], x[j], col[j]);
           }
         } else {
           for (std::size_t j = 0; j < stop; ++j) {
