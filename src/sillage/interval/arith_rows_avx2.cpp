@@ -61,29 +61,38 @@ struct Div {
   static Interval scalar(const Interval& x, const Interval& y) { return x / y; }
 };
 
-// x · c and x / c for a constant point c, finite and nonzero: Mul's and
-// Div's kernels with every sign choice made (both bounds of y are c), so
-// the same bits at half the work; kNeg: c < 0, the bounds of x swap.
-struct MulPoint {
+// x · y and x / y for a constant y = [c, d] of one sign, finite, without 0
+// (a point among them): Mul's and Div's kernels with the sign choices of y
+// made, so the same bits (the two products or quotients they would keep) at
+// half the work. kNeg: y < 0, the bounds of x swap; then each bound of x
+// meets the bound of y its own sign selects, the other one for ÷.
+struct MulConstant {
+  static constexpr bool kInverse = false;
   SILLAGE_AVX2_INLINE static V down(V a, V c) { return mul_down_nz(a, c); }  // c finite, nonzero: no 0·inf
   SILLAGE_AVX2_INLINE static V up(V a, V c) { return mul_up_nz(a, c); }
   SILLAGE_AVX2_INLINE static M rare(V a, V c) { return mul_rare(a, c); }
   static Interval scalar(const Interval& x, const Interval& y) { return x * y; }
 };
 
-struct DivPoint {
+struct DivConstant {
+  static constexpr bool kInverse = true;
   SILLAGE_AVX2_INLINE static V down(V a, V c) { return div_down(a, c); }
   SILLAGE_AVX2_INLINE static V up(V a, V c) { return div_up(a, c); }
   SILLAGE_AVX2_INLINE static M rare(V a, V c) { return div_rare(a, c); }
   static Interval scalar(const Interval& x, const Interval& y) { return x / y; }
 };
 
-template <class Op, bool kNeg>
-struct ByPoint {
+template <class Op, bool kNeg, bool kPoint>
+struct ByConstant {
   SILLAGE_AVX2_INLINE static Quad apply(Quad x, Quad y, M& rare) {
-    const V lo = kNeg ? x.hi : x.lo, hi = kNeg ? x.lo : x.hi, c = y.lo;
-    rare = Op::rare(lo, c) | Op::rare(hi, c);
-    return bounds_or_empty(no_set(x.lo, x.hi), Op::down(lo, c), Op::up(hi, c));
+    const V lo = kNeg ? x.hi : x.lo, hi = kNeg ? x.lo : x.hi, z = set(0.0);
+    // For ×, a bound of x ≥ 0 takes c for the lower bound and d for the upper one; ÷ the
+    // reverse; a point has nothing to choose.
+    const V small = Op::kInverse ? y.hi : y.lo, large = Op::kInverse ? y.lo : y.hi;
+    const V c_lo = kPoint ? small : select(ge(lo, z), small, large);
+    const V c_hi = kPoint ? small : select(ge(hi, z), large, small);
+    rare = Op::rare(lo, c_lo) | Op::rare(hi, c_hi);
+    return bounds_or_empty(no_set(x.lo, x.hi), Op::down(lo, c_lo), Op::up(hi, c_hi));
   }
   static Interval scalar(const Interval& x, const Interval& y) { return Op::scalar(x, y); }
 };
@@ -159,17 +168,18 @@ void set_avx2_rows(bool on) { avx2_rows_on() = on && avx2_rows_available(); }
 
 namespace {
 
-// A constant finite nonzero point (ByPoint's operand).
-bool point(const Operand& o) {
-  const double c = o.p->lb();
-  return o.constant && c == o.p->ub() && c != 0 && std::abs(c) <= rounding::kMax;
+// A constant of one sign, finite, without 0 (ByConstant's operand).
+bool one_sign(const Operand& o) {
+  const double c = o.p->lb(), d = o.p->ub();
+  return o.constant && c <= d && ((c > 0 && d <= rounding::kMax) || (d < 0 && c >= -rounding::kMax));  // not empty
 }
 
-// Rows x op c by ByPoint, c a point.
+// Rows x op y by ByConstant, y a constant of one sign.
 template <class Op>
-void by_point(Interval* r, Operand x, Operand c, std::size_t count) {
-  if (c.p->lb() < 0) return rows<ByPoint<Op, true>>(r, x, c, count);
-  rows<ByPoint<Op, false>>(r, x, c, count);
+void by_constant(Interval* r, Operand x, Operand y, std::size_t count) {
+  const bool neg = y.p->ub() < 0, point = y.p->lb() == y.p->ub();
+  if (point) return neg ? rows<ByConstant<Op, true, true>>(r, x, y, count) : rows<ByConstant<Op, false, true>>(r, x, y, count);
+  neg ? rows<ByConstant<Op, true, false>>(r, x, y, count) : rows<ByConstant<Op, false, false>>(r, x, y, count);
 }
 
 }  // namespace
@@ -180,11 +190,11 @@ void arith_rows_avx2(RowOp op, Interval* r, RowArg a, RowArg b, std::size_t coun
     case RowOp::Add: return rows<Add>(r, x, y, count);
     case RowOp::Sub: return rows<Sub>(r, x, y, count);
     case RowOp::Mul:
-      if (point(y)) return by_point<MulPoint>(r, x, y, count);
-      if (point(x)) return by_point<MulPoint>(r, y, x, count);  // c·x = x·c, the optimal bounds either way
+      if (one_sign(y)) return by_constant<MulConstant>(r, x, y, count);
+      if (one_sign(x)) return by_constant<MulConstant>(r, y, x, count);  // c·x = x·c, the optimal bounds either way
       return rows<Mul>(r, x, y, count);
     case RowOp::Div:
-      if (point(y)) return by_point<DivPoint>(r, x, y, count);
+      if (one_sign(y)) return by_constant<DivConstant>(r, x, y, count);
       return rows<Div>(r, x, y, count);
     case RowOp::Sqr: return rows<Sqr>(r, x, y, count);
     case RowOp::Sqrt: return rows<Sqrt>(r, x, y, count);

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "sillage/interval/elementary.h"
 
@@ -112,6 +114,15 @@ template <bool kCos>
   }
 }
 
+// Whether every flag of the kernel is 1.0 (0.0 is the other value): an AND of
+// the bit patterns, which vectorises where a scalar test per lane costs as much
+// as the kernel's combination (the scalar fallback is rare).
+inline bool all_fast(const double* fast, std::size_t n) {
+  std::uint64_t all = ~std::uint64_t{0};
+  for (std::size_t i = 0; i < n; ++i) all &= std::bit_cast<std::uint64_t>(fast[i]);
+  return all == std::bit_cast<std::uint64_t>(1.0);
+}
+
 // Rows of sin (kCos false) or cos; the lanes the kernel does not cover by the scalar functions.
 template <bool kCos>
 void rows(const Interval* x, Interval* r, std::size_t n) {
@@ -128,6 +139,7 @@ void rows(const Interval* x, Interval* r, std::size_t n) {
     values(ends, 2 * m, kCos ? 1.0 : 0.0, lo, hi, quad, fast);
     combine<kCos>(ends, lo, hi, quad, m, rl, rh);
     for (std::size_t j = 0; j < m; ++j) rb[j] = Interval::from_bounds_unchecked(rl[j], rh[j]);
+    if (all_fast(fast, 2 * m)) continue;
     for (std::size_t j = 0; j < m; ++j) {
       if (fast[j] + fast[m + j] == 2.0) continue;
       const Interval xj = Interval::from_bounds_unchecked(ends[j], ends[m + j]);  // rb may be xb

@@ -90,12 +90,21 @@ void check_all() {
         check(op, {adv[k]}, y, failures);
         check(op, x, {adv[k]}, failures);
       }
-      // Constant points (× and ÷ by a finite nonzero point have kernels of their own), tiny,
+      // Constant points (× and ÷ by a finite nonzero constant have kernels of their own), tiny,
       // huge, negative, and the ones that keep the generic kernels (0, infinite bounds).
       for (const double c : {5.0, 0.2, 1.0 / 3, -3.0, -0.1, 0x1p-968, 1e-300, -0x1p-1074, 0x1p1000, 3e300,
                              -rounding::kMax, 0.0}) {
         check(op, {Interval(c)}, y, failures);
         check(op, x, {Interval(c)}, failures);
+      }
+      // Constants of one sign (× and ÷ by them share those kernels): thin, wide, tiny, huge, and
+      // the ones that keep the generic kernels (a zero bound, an infinite bound, 0 inside).
+      for (const Interval& c : {Interval(-9.0) / 20, Interval(1.0) / 10, Interval(0.5, 3.0), Interval(-3.0, -1e-300),
+                                Interval(0x1p-1074, 0x1p-1000), Interval(1.0, rounding::kMax),
+                                Interval(-rounding::kMax, -1.0), Interval(-0x1p-1074), Interval(0.0, 1.0),
+                                Interval(-1.0, 0.0), Interval(-1.0, 1.0), Interval(-rounding::kInf, -1.0)}) {
+        check(op, {c}, y, failures);
+        check(op, x, {c}, failures);
       }
       check(op, x, {Interval(1.0, rounding::kInf)}, failures);
     }
