@@ -23,6 +23,14 @@ namespace sillage {
 class Function;
 class SynthesisTree;
 class Trajectory;
+class Tube;
+
+namespace detail {
+// The tubes of the outputs of f (one variable t): slice k = f([t_k, t_k+1]),
+// gate k = f(t_k), by one batch evaluation written once into their storage,
+// with unknown_where_undefined applied (the constructors from a function).
+std::vector<Tube> tubes_of_function(const std::shared_ptr<TDomain>& td, const Function& f);
+}  // namespace detail
 
 class Tube {
  public:
@@ -142,6 +150,9 @@ class Tube {
   void touch() { data_->touch(); }
 
  private:
+  friend std::vector<Tube> detail::tubes_of_function(const std::shared_ptr<TDomain>& td, const Function& f);
+  Tube(std::shared_ptr<TDomain> td, std::shared_ptr<TubeData> data);  // attaches data, of the right sizes
+
   void check_same_tdomain(const Tube& y, const char* where) const;
 
   std::shared_ptr<TDomain> td_;
@@ -154,9 +165,6 @@ namespace detail {
 // The enclosure of a function where it is defined nowhere: the whole line
 // (nothing is known there), not the empty set.
 inline Interval unknown_where_undefined(const Interval& y) { return y.is_empty() ? Interval() : y; }
-// f (one variable t, m outputs) over the N slices then the N+1 gates of td,
-// one batch evaluation; with unknown_where_undefined applied.
-std::vector<std::vector<Interval>> eval_over_tdomain(const TDomain& td, const Function& f);
 }  // namespace detail
 
 }  // namespace sillage

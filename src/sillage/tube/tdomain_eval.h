@@ -1,7 +1,7 @@
 #pragma once
 // A function of t evaluated over the time elements of a TDomain, written
-// straight into the slices and gates of tubes (internal header): the tube
-// constructors from an expression.
+// straight into the storage of tubes (internal header): the tube
+// constructors from a function.
 #include <span>
 
 #include "sillage/expr/function.h"
@@ -9,11 +9,11 @@
 
 namespace sillage::detail {
 
-// For each output i of f (one variable t): slices[i][k] = f([t_k, t_k+1])
-// for k < N, gates[i][k] = f(t_k) for k <= N, with unknown_where_undefined
-// (tube.h). Batches of the time elements go through Function::eval_batch
-// with no intermediate copy of the whole domain.
-void eval_into_tubes(const TDomain& td, const Function& f, std::span<Interval* const> slices,
-                     std::span<Interval* const> gates);
+// For each output i of f (one variable t): out[i]->slices[k] = f([t_k, t_k+1])
+// for k < N, out[i]->gates[k] = f(t_k) for k <= N, with
+// unknown_where_undefined (tube.h); the storage is replaced. Batches of the
+// time elements go through Function::eval_batch into a buffer that stays in
+// cache, then are appended: each element of the tubes is written once.
+void eval_into_tubes(const TDomain& td, const Function& f, std::span<TubeData* const> out);
 
 }  // namespace sillage::detail

@@ -95,36 +95,40 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::string& expr_of_t)
 
 namespace detail {
 
-std::vector<std::vector<Interval>> eval_over_tdomain(const TDomain& td, const Function& f) {
-  // The N slice domains then the N+1 gate times.
-  const std::size_t n = td.nb_slices(), m = f.image_dim();
-  std::vector<std::vector<Interval>> out(m, std::vector<Interval>(2 * n + 1));
-  std::vector<Interval*> slices(m), gates(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    slices[i] = out[i].data();
-    gates[i] = out[i].data() + n;
-  }
-  eval_into_tubes(td, f, slices, gates);
-  return out;
+std::vector<Tube> tubes_of_function(const std::shared_ptr<TDomain>& td, const Function& f) {
+  const std::size_t m = f.image_dim();
+  std::vector<std::shared_ptr<TubeData>> data(m);
+  std::vector<TubeData*> out(m);
+  for (std::size_t i = 0; i < m; ++i) out[i] = (data[i] = std::make_shared<TubeData>()).get();
+  eval_into_tubes(*td, f, out);
+  std::vector<Tube> r;
+  r.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) r.push_back(Tube(td, std::move(data[i])));
+  return r;
 }
 
 }  // namespace detail
 
-Tube::Tube(std::shared_ptr<TDomain> td, const Function& f) : td_(std::move(td)) {
-  const std::size_t n = checked(td_, "Tube(td, f)")->nb_slices();
+Tube::Tube(std::shared_ptr<TDomain> td, std::shared_ptr<TubeData> data) : td_(std::move(td)), data_(std::move(data)) {
+  td_->attach(data_);
+}
+
+namespace {
+
+// f checked to be a scalar function of t.
+const Function& scalar_of_t(const Function& f) {
   if (f.nb_vars() != 1 || f.image_dim() != 1) {
     throw DimensionError("Tube(td, f): f must be a scalar function of one variable t, got " +
                          std::to_string(f.nb_vars()) + " variable(s) and " + std::to_string(f.image_dim()) +
                          " output(s)");
   }
-  data_ = std::make_shared<TubeData>();
-  data_->slices.resize(n);
-  data_->gates.resize(n + 1);
-  Interval* const slices[1] = {data_->slices.data()};
-  Interval* const gates[1] = {data_->gates.data()};
-  detail::eval_into_tubes(*td_, f, slices, gates);
-  td_->attach(data_);
+  return f;
 }
+
+}  // namespace
+
+Tube::Tube(std::shared_ptr<TDomain> td, const Function& f)
+    : Tube(std::move(detail::tubes_of_function(checked(td, "Tube(td, f)"), scalar_of_t(f)).front())) {}
 
 Tube::Tube(const Tube& x) : td_(x.td_), data_(std::make_shared<TubeData>(*x.data_)) {
   td_->attach(data_);

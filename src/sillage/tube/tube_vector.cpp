@@ -25,15 +25,7 @@ std::vector<Tube> function_tubes(const std::shared_ptr<TDomain>& td, const Funct
     throw DimensionError("TubeVector(td, f): f must be a function of one variable t, got " +
                          std::to_string(f.nb_vars()));
   }
-  const std::size_t n = td->nb_slices(), m = f.image_dim();
-  const auto out = detail::eval_over_tdomain(*td, f);
-  std::vector<Tube> r;
-  r.reserve(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    const auto mid = out[i].begin() + static_cast<std::ptrdiff_t>(n);
-    r.emplace_back(td, std::vector<Interval>(out[i].begin(), mid), std::vector<Interval>(mid, out[i].end()));
-  }
-  return r;
+  return detail::tubes_of_function(td, f);
 }
 
 }  // namespace
