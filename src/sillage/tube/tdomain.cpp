@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sillage/error.h"
+#include "sillage/tube/time_search.h"
 
 namespace sillage {
 
@@ -86,15 +87,14 @@ std::size_t TDomain::slice_index(double t) const {
     throw Error("TDomain::slice_index(t): t = " + number_text(t) + " is outside the domain [" + number_text(times_.front()) +
                 ", " + number_text(times_.back()) + "]");
   }
-  const auto it = std::upper_bound(times_.begin(), times_.end(), t);  // first t_k > t
-  const auto k = static_cast<std::size_t>(it - times_.begin()) - 1;
+  const std::size_t k = detail::first_time_after(times_, t) - 1;  // t_k <= t < t_k+1
   return std::min(k, nb_slices() - 1);
 }
 
 std::ptrdiff_t TDomain::time_index(double t) const {
-  const auto it = std::lower_bound(times_.begin(), times_.end(), t);
-  if (it == times_.end() || *it != t) return -1;
-  return it - times_.begin();
+  const std::size_t k = detail::first_time_from(times_, t);
+  if (k == times_.size() || times_[k] != t) return -1;
+  return static_cast<std::ptrdiff_t>(k);
 }
 
 Interval TDomain::slice_domain(std::size_t k) const {
@@ -179,8 +179,8 @@ void slice_range(const TDomain& td, const Interval& t, std::size_t& first, std::
     return;
   }
   // Slices with t_k < t⁺ and t_{k+1} > t⁻.
-  first = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t.lb()) - ts.begin()) - 1;
-  last = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), t.ub()) - ts.begin()) - 1;
+  first = detail::first_time_after(ts, t.lb()) - 1;
+  last = detail::first_time_from(ts, t.ub()) - 1;
 }
 
 }  // namespace sillage

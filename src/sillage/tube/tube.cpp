@@ -1,6 +1,7 @@
 #include "sillage/tube/tube.h"
 #include "sillage/tube/synthesis_tree.h"
 #include "sillage/tube/tdomain_eval.h"
+#include "sillage/tube/time_search.h"
 
 #include <algorithm>
 #include <cmath>
@@ -189,8 +190,7 @@ Interval Tube::operator()(const Interval& t) const {
   const auto ts = td_->times();
   const double a = t.lb(), b = t.ub();
   // Slices k with t_k < b and t_{k+1} > a meet the interior (a, b).
-  const auto k_lo = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), a) - ts.begin()) - 1;
-  const auto k_end = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), b) - ts.begin());
+  const std::size_t k_lo = detail::first_time_after(ts, a) - 1, k_end = detail::first_time_from(ts, b);
   // Building the tree costs about 20 ns per slice of the whole tube, a scan
   // about 1 ns per slice of the range: build only when the range is a large
   // share of the tube (later queries then reuse the tree).
@@ -198,8 +198,7 @@ Interval Tube::operator()(const Interval& t) const {
   Interval r = Interval::empty();
   for (std::size_t k = k_lo; k < k_end; ++k) r |= data_->slices[k];
   // Gates with a <= t_k <= b.
-  const auto g_lo = static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), a) - ts.begin());
-  const auto g_end = static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), b) - ts.begin());
+  const std::size_t g_lo = detail::first_time_from(ts, a), g_end = detail::first_time_after(ts, b);
   for (std::size_t k = g_lo; k < g_end; ++k) r |= data_->gates[k];
   return r;
 }
