@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "sillage/interval/elementary.h"
+#include "sillage/interval/trig_batch.h"
 
 namespace sillage::detail {
 
@@ -70,22 +71,29 @@ bool WindowInputs::update(const TDomain& td, const TubeData& d, const TubeData& 
 const WindowSum& WindowInputs::sum(std::size_t a, std::size_t b, std::size_t c) {
   Entry& e = sums_[a];
   if (e.valid && e.b == b && e.c == c) return e.s;
-  Interval vx(0.0), vy(0.0), cone = Interval::empty();
-  const auto add = [&](std::size_t j, const Interval& rel) {
-    const Interval dir = rel + spread_[j];
-    vx += dist_[j] * cos(dir), vy += dist_[j] * sin(dir);
-    cone |= dir;
-  };
+  // The directions of the slices a..b−1, their cosines and sines by the batch rows, then the sums.
+  thread_local std::vector<Interval> dir, co, si;
+  const std::size_t m = b - a;
+  dir.resize(m), co.resize(m), si.resize(m);
   Interval rel(0.0);  // ψ(t_j) − ψ(t_c)
   for (std::size_t j = c; j < b; ++j) {
-    add(j, rel);
+    dir[j - a] = rel + spread_[j];
     rel += dpsi_[j];
   }
   rel = Interval(0.0);
   for (std::size_t j = c; j-- > a;) {
     rel -= dpsi_[j];
-    add(j, rel);
+    dir[j - a] = rel + spread_[j];
   }
+  cos_rows(dir.data(), co.data(), m);
+  sin_rows(dir.data(), si.data(), m);
+  Interval vx(0.0), vy(0.0), cone = Interval::empty();
+  const auto add = [&](std::size_t j) {
+    vx += dist_[j] * co[j - a], vy += dist_[j] * si[j - a];
+    cone |= dir[j - a];
+  };
+  for (std::size_t j = c; j < b; ++j) add(j);
+  for (std::size_t j = c; j-- > a;) add(j);
   e = {b, c, true, {vx, vy, cone}};
   return e.s;
 }
