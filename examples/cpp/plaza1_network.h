@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -129,14 +130,19 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   if (with_ranges) {
     const auto eval = std::make_shared<CtcEval>();
     std::vector<TubeObservation> obs;
+    std::map<int, Function> dist_to;  // per beacon, parsed once: ranges to one beacon share it
     for (std::size_t j = 0; j < d.rt.size(); ++j) {
       const Interval tj = Interval(d.rt[j] - b.time_err, d.rt[j] + b.time_err) & td->t0_tf();
       if (tj.is_empty()) continue;
-      const auto [bx, by] = d.beacons.at(static_cast<int>(d.rid[j]));
+      const int id = static_cast<int>(d.rid[j]);
+      const auto [bx, by] = d.beacons.at(id);
       const Interval range = Interval(d.r[j] - b.range_long, d.r[j] + b.range_short) & Interval(0, INFINITY);
-      const Function dist_to_beacon({"q1", "q2"}, "sqrt((q1 - " + number_text(bx) + ")^2 + (q2 - " +
-                                                      number_text(by) + ")^2)");
-      const auto ring = std::make_shared<CtcFunction>(dist_to_beacon, range);
+      auto f = dist_to.find(id);
+      if (f == dist_to.end()) {
+        f = dist_to.emplace(id, Function({"q1", "q2"}, "sqrt((q1 - " + number_text(bx) + ")^2 + (q2 - " +
+                                                            number_text(by) + ")^2)")).first;
+      }
+      const auto ring = std::make_shared<CtcFunction>(f->second, range);
       if (q >= 0) {
         obs.push_back({tj, IntervalVector(2), ring});
       } else {

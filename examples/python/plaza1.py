@@ -86,11 +86,14 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
     keep, obs = [], []  # the measurement domains (the network holds them too); the q-relaxed observations
     if with_ranges:
         ev = CtcEval()
+        dist_to = {}  # per beacon, parsed once: the ranges to one beacon share it
         for tj, bid, r in zip(d["rt"], d["rid"], d["r"]):
             t = Interval(tj - b.time_err, tj + b.time_err) & td.t0_tf()
             bx, by = d["beacons"][int(bid)]
             rng = Interval(r - b.range_long, r + b.range_short) & Interval(0, math.inf)
-            ring = CtcFunction(Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)"), rng)
+            if int(bid) not in dist_to:
+                dist_to[int(bid)] = Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)")
+            ring = CtcFunction(dist_to[int(bid)], rng)
             if q >= 0:
                 obs.append(TubeObservation(t, IntervalVector(2), ring))
                 keep.append(t)

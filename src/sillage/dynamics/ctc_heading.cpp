@@ -7,7 +7,7 @@
 #include "sillage/ctc/shrink.h"
 #include "sillage/dynamics/heading_common.h"
 #include "sillage/error.h"
-#include "sillage/interval/elementary.h"
+#include "sillage/interval/trig_batch.h"
 
 namespace sillage {
 
@@ -50,13 +50,16 @@ bool contract_heading(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, cons
   TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
   const Interval tr = Interval(-1, 1) * Interval(track);
   const Interval pi = Interval::pi();
-  std::vector<Interval> ix(n), iy(n);
+  std::vector<Interval> ix(n), iy(n), dir(n);
   for (int pass = 0; pass < 5 && ok; ++pass) {
+    // The directions of travel, their cosines and sines by the batch rows, then the steps.
+    for (std::size_t k = 0; k < n; ++k) dir[k] = psi.slices[k] + tr;
+    detail::cos_rows(dir.data(), ix.data(), n);
+    detail::sin_rows(dir.data(), iy.data(), n);
     for (std::size_t k = 0; k < n && ok; ++k) {
       const Interval dk = d_t.data().slices[k] & Interval::pos_reals();
       if (dk.is_empty()) ok = false;  // d was given empty: the network names its first empty atom
-      const Interval dir = psi.slices[k] + tr;
-      ix[k] = dk * cos(dir), iy[k] = dk * sin(dir);
+      ix[k] = dk * ix[k], iy[k] = dk * iy[k];
     }
     ok = ok && sweep_positions(px, py, ix, iy, at);
     bool again = false;
