@@ -4,11 +4,11 @@
 #include <cmath>
 #include <initializer_list>
 #include <mutex>
+#include <vector>
 
 #include "sillage/dynamics/heading_common.h"
 #include "sillage/dynamics/heading_window_inputs.h"
 #include "sillage/error.h"
-#include "sillage/interval/elementary.h"
 #include "sillage/interval/trig_batch.h"
 
 namespace sillage {
@@ -76,15 +76,15 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     if (th.is_unbounded()) continue;
     Interval kept = Interval::empty(), hx = Interval::empty(), hy = Interval::empty();
     const int cells = static_cast<int>(std::clamp(std::ceil(th.diam() / kCell), 1.0, static_cast<double>(kMaxCells)));
-    Interval cell[kMaxCells], cos_cell[kMaxCells], sin_cell[kMaxCells];
+    thread_local std::vector<Interval> cell(kMaxCells), cos_cell(kMaxCells), sin_cell(kMaxCells);
     for (int i = 0; i < cells; ++i) {
       // The cells cover [th] exactly: the ends are th's, neighbours share their bound.
       const double lo = i == 0 ? th.lb() : th.lb() + th.diam() * i / cells;
       const double hi = i + 1 == cells ? th.ub() : th.lb() + th.diam() * (i + 1) / cells;
       cell[i] = Interval(lo, hi);
     }
-    detail::cos_rows(cell, cos_cell, static_cast<std::size_t>(cells));
-    detail::sin_rows(cell, sin_cell, static_cast<std::size_t>(cells));
+    detail::cos_rows(cell.data(), cos_cell.data(), static_cast<std::size_t>(cells));
+    detail::sin_rows(cell.data(), sin_cell.data(), static_cast<std::size_t>(cells));
     for (int i = 0; i < cells; ++i) {
       const Interval &co = cos_cell[i], &si = sin_cell[i];
       const Interval rx = (co * vx - si * vy) & dx, ry = (si * vx + co * vy) & dy;
