@@ -91,7 +91,9 @@ def interrupt_after(seconds):
 @pytest.mark.parametrize("parallel", [True, False])
 def test_ctrl_c_stops_sivia(parallel):
     f, x0 = sphere(10)
-    o = sl.SiviaOptions(parallel=parallel, budget=sl.Budget(max_boxes=0, max_bytes=0))  # unbounded but for Ctrl-C
+    # No box limit, so that only Ctrl-C stops it; 2 GB of boxes as a guard (Ctrl-C comes at about
+    # 0.1 GB): a missed interrupt fails the test instead of exhausting the machine's memory.
+    o = sl.SiviaOptions(parallel=parallel, budget=sl.Budget(max_boxes=0, max_bytes=2 << 30))
     interrupt_after(0.3)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
