@@ -71,7 +71,7 @@ def test_tplane_budget_exceeded():
 def test_cancel_token_from_another_thread():
     f, x0 = sphere(10)
     token = sl.CancelToken()
-    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=0, cancel=token))
+    o = sl.SiviaOptions(budget=sl.Budget(max_boxes=0, max_bytes=2 << 30, cancel=token))  # 2 GB: a guard, as below
     threading.Timer(0.2, token.cancel).start()
     start = time.monotonic()
     with pytest.raises(sl.Cancelled, match="^sivia: cancelled$"):
