@@ -89,7 +89,7 @@ def interrupt_after(seconds):
 
 
 @pytest.mark.parametrize("parallel", [True, False])
-def test_ctrl_c_stops_sivia(parallel):
+def test_ctrl_c_stops_sivia(parallel, sigint_raises):
     f, x0 = sphere(10)
     # No box limit, so that only Ctrl-C stops it; 2 GB of boxes as a guard (Ctrl-C comes at about
     # 0.1 GB): a missed interrupt fails the test instead of exhausting the machine's memory.
@@ -103,13 +103,13 @@ def test_ctrl_c_stops_sivia(parallel):
     assert sl.sivia(sl.IntervalVector([[-2, 2]] * 2), sphere(2)[0], sl.Interval(0, 1), 0.5).nb_leaves() > 0
 
 
-def test_ctrl_c_stops_tplane_detections():
+def test_ctrl_c_stops_tplane_detections(sigint_raises):
     td = sl.TDomain(0.3, 2 * math.pi - 0.3, 0.001)
     v = sl.TubeVector(td, "(-sin(t) - 2*sin(2*t) + [-0.01,0.01], cos(t) + 2*cos(2*t) + [-0.01,0.01])")
     tp = sl.TPlane(td)
     interrupt_after(0.3)
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0, max_bytes=0))
+        tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0, max_bytes=2 << 30))  # 2 GB: a guard, as above
     assert time.monotonic() - start < 2
     assert tp.nb_detections() == 0

@@ -50,7 +50,7 @@ class Slow(s.TubeCtc):
         return True
 
 
-def test_ctrl_c_interrupts_contract():
+def test_ctrl_c_interrupts_contract(sigint_raises):
     td = s.TDomain(0.0, 1.0, 0.5)
     x = s.Tube(td, s.Interval(0, 1))
     cn = s.ContractorNetwork()
