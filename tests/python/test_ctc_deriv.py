@@ -24,6 +24,9 @@ def test_time_propag_flags():
     assert CtcDeriv().time_propag() == TimePropag.FWD_BWD
     assert CtcDeriv(TimePropag.FORWARD).time_propag() == TimePropag.FORWARD
     assert "FORWARD" in repr(CtcDeriv(TimePropag.FORWARD))
+    # Only both sweeps reach x' = v's fixed point (a network's CtcEval then leaves its fronts to it).
+    assert CtcDeriv().enforces_derivative()
+    assert not CtcDeriv(TimePropag.FORWARD).enforces_derivative()
 
 
 def test_diamond_slice():

@@ -28,6 +28,12 @@ struct AtomRange {
   std::size_t count;
 };
 
+// Tube ranges x and v on which a node enforces x' = v over the whole tube
+// (CtcDeriv's node): other nodes may leave that propagation to it.
+struct DerivativePair {
+  AtomRange x, v;
+};
+
 // "No atom" (NodeRun::empty_at).
 inline constexpr std::size_t kNoAtom = static_cast<std::size_t>(-1);
 
@@ -48,6 +54,11 @@ struct NodeRun {
   // empty atom of the node), and the time it concerns (CtcEval's [t]).
   std::size_t empty_at = kNoAtom;
   Interval empty_time = Interval::empty();
+  // The pairs of the network's nodes (CnNode::derivative_pairs), so that a
+  // node can leave to them what they do anyway (CtcEval: its fronts beyond [t]).
+  std::span<const DerivativePair> derivatives = {};
+  // Whether a node of the network enforces x' = v over the whole tubes x, v.
+  bool has_derivative(const AtomRange& x, const AtomRange& v) const;
 };
 
 class CnNode {
@@ -68,6 +79,9 @@ class CnNode {
   const std::vector<AtomRange>& watched() const { return watched_; }
   // Contracts the domains. Returns false as soon as a domain became empty.
   virtual bool run(NodeRun& r) const = 0;
+  // Appends the tube ranges (x, v) on which run() enforces x' = v over the
+  // whole tube, to fixed point (CtcDeriv's node); none by default.
+  virtual void derivative_pairs(std::vector<DerivativePair>& /*out*/) const {}
 
  protected:
   // Wakes this node only for atoms [first, first + count) of range r (a node

@@ -7,6 +7,9 @@
 //   return make_tube_pair_node(*this, args);
 // Each run contracts every x[i] with v[i] as a whole, reports the slices and
 // gates that shrank and, on emptiness, where x stopped being consistent.
+// A C with `bool enforces_derivative() const` returning true (CtcDeriv with
+// both sweeps) tells the network that its node enforces x' = v
+// (derivative_pairs).
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +36,12 @@ class TubePairNode : public TubeNode {
       if (!contract_tube(r, i, [&](Tube& x) { return ctc_.contract(x, v); })) return false;
     }
     return true;
+  }
+  void derivative_pairs(std::vector<DerivativePair>& out) const override {
+    if constexpr (requires(const C& c) { c.enforces_derivative(); }) {
+      if (!ctc_.enforces_derivative()) return;
+      for (std::size_t i = 0; i < x_.size(); ++i) out.push_back({ranges()[i], ranges()[x_.size() + i]});
+    }
   }
 
  private:

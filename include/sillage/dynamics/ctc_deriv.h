@@ -64,6 +64,9 @@ class CtcDeriv : public NetworkCtc {
 
   // The direction of the sweeps.
   TimePropag time_propag() const { return propag_; }
+  // Whether contract(x, v) reaches the fixed point of x' = v (both sweeps):
+  // in a network, other nodes then leave that propagation to this one.
+  bool enforces_derivative() const { return propag_ == TimePropag::FWD_BWD; }
 
   // Contracts x in place with x' ∈ v (touch()es x if it changed). Returns
   // false if x is now empty. DimensionError if x and v are not on the same

@@ -22,7 +22,8 @@
 // the slices next to those gates are hulled. A standalone call then runs
 // CtcDeriv over the whole tube, so that CtcEval is monotone whatever its
 // input; the overloads with `changes` (network nodes, CtcT1T2, CtcQEval)
-// leave that to the network's CtcDeriv.
+// leave that to the network's CtcDeriv. A network node leaves it the fronts
+// too when the network has CtcDeriv (both sweeps) on every (y, w) it evaluates.
 //
 // A degenerate [t] = {t} that is not a time point samples the TDomain there
 // (a new gate, in every tube on it) when sampling is allowed (the default);
@@ -79,11 +80,13 @@ class CtcEval : public NetworkCtc {
   bool contract(Interval& t, IntervalVector& z, TubeVector& y, const TubeVector& w) const;
   bool contract(Interval& t, IntervalVector& z, TubeVector& y) const;
   // For network nodes: the vector case on component tubes (w empty: no
-  // derivative), the fronts beyond the region of [t] while they shrink gates;
-  // changes[i] (one per y[i]) receives the slices and gates of y[i] that
-  // shrank (TubeNode::changes()).
+  // derivative), and, when `beyond`, the fronts beyond the region of [t]
+  // while they shrink gates (a node whose network runs CtcDeriv on every
+  // (y[i], w[i]) leaves them to it: it would redo them, once per
+  // observation instead of once for all); changes[i] (one per y[i]) receives
+  // the slices and gates of y[i] that shrank (TubeNode::changes()).
   bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                const std::vector<TubeChanges>& changes) const;
+                const std::vector<TubeChanges>& changes, bool beyond = true) const;
   // Deprecated (the atom encoding leaks): changed[i] receives the atoms of
   // y[i] (2k: gate k, 2k+1: slice k) that shrank by more than `ratio`. Use
   // the TubeChanges overload.

@@ -29,6 +29,7 @@ void init_dynamics(py::module_& m) {
       .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD,
            DOC(CtcDeriv, CtcDeriv))
       .def("time_propag", &C::time_propag, DOC(CtcDeriv, time_propag))
+      .def("enforces_derivative", &C::enforces_derivative, DOC(CtcDeriv, enforces_derivative))
       .def(
           "contract",
           [](const C& c, Tube& x, const Tube& v) {

@@ -17,6 +17,19 @@ CnNode::CnNode(std::vector<AtomRange> ranges) : ranges_(std::move(ranges)), watc
   }
 }
 
+namespace {
+bool same(const AtomRange& a, const AtomRange& b) {
+  return a.domain == b.domain && a.first == b.first && a.count == b.count;
+}
+}  // namespace
+
+bool NodeRun::has_derivative(const AtomRange& x, const AtomRange& v) const {
+  for (const DerivativePair& p : derivatives) {
+    if (same(p.x, x) && same(p.v, v)) return true;
+  }
+  return false;
+}
+
 std::size_t CnNode::range_of(std::size_t pos) const {
   std::size_t g = ranges_.size() - 1;
   while (offsets_[g] > pos) --g;

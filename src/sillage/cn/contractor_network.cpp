@@ -300,6 +300,8 @@ ContractStats ContractorNetwork::contract() {
                     "contractor calls");
   for (auto& w : watchers_) w.index();
   dirty_->reset();
+  std::vector<DerivativePair> derivatives;
+  for (const auto& node : nodes_) node->derivative_pairs(derivatives);
   // Buffers reused by every run: the round, the next one, what a node shrank, what woke it.
   std::vector<std::size_t> round(nodes_.size()), next, changed, dirty;
   for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
@@ -314,6 +316,7 @@ ContractStats ContractorNetwork::contract() {
       const CnNode& node = *nodes_[i];
       dirty_->take(i, dirty);
       NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
+      run.derivatives = derivatives;
       fresh[i] = 0;
       meter.add();
       ++stats.contractor_calls;

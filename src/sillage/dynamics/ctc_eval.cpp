@@ -319,7 +319,8 @@ constexpr int kMaxPasses = 200;
 // one is). Other callers (network nodes, CtcT1T2, CtcQEval) leave that to
 // their network; their logs[i] receive what shrank in y[i].
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                  bool sampling, bool whole_tube, const char* where, const std::vector<TubeChanges>* logs) {
+                  bool sampling, bool whole_tube, const char* where, const std::vector<TubeChanges>* logs,
+                  bool beyond = true) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -380,8 +381,9 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     }
     if (!moved_any) break;
   }
-  // Other callers: the fronts beyond the region as long as they shrink gates.
-  for (std::size_t i = 0; ok && !whole_tube && !w.empty() && i < y.size(); ++i) {
+  // Other callers: the fronts beyond the region as long as they shrink gates
+  // (unless the caller's network runs CtcDeriv on y and w, which does it).
+  for (std::size_t i = 0; ok && beyond && !whole_tube && !w.empty() && i < y.size(); ++i) {
     bool moved = false;
     ok = outward(*y[i], *w[i], r, moved, logs ? (*logs)[i] : TubeChanges());
     if (moved) y[i]->touch();
@@ -444,8 +446,8 @@ bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                       const std::vector<TubeChanges>& changes) const {
-  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes);
+                       const std::vector<TubeChanges>& changes, bool beyond) const {
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes, beyond);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,

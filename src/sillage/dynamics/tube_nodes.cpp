@@ -61,7 +61,12 @@ class EvalNode : public TubeNode {
     z0 = z;
     logs.clear();
     for (std::size_t i = 0; i < y_.size(); ++i) logs.push_back(changes(r, 1 + z_args_ + i));
-    const bool ok = ctc_.contract(t, z, ys_, ws_, logs);
+    // The fronts beyond [t] are CtcDeriv's when the network runs it on every (y, w).
+    bool beyond = false;
+    for (std::size_t i = 0; i < w_.size(); ++i) {
+      beyond = beyond || !r.has_derivative(ranges()[1 + z_args_ + i], ranges()[1 + z_args_ + nb_z_ + i]);
+    }
+    const bool ok = ctc_.contract(t, z, ys_, ws_, logs, beyond);
     // Write back t and z (intersected), report what shrank.
     const auto put = [&](std::size_t range, std::size_t j, std::size_t pos, const Interval& was, const Interval& now) {
       Domain& d = *r.domains[ranges()[range].domain];

@@ -1,9 +1,13 @@
 // CtcDeriv and CtcEval as ContractorNetwork contractors: same result as the
 // direct calls, propagation through pointwise contractors, an observation
-// at an uncertain time propagated both ways, argument errors.
+// at an uncertain time propagated both ways, the fronts beyond [t] left to
+// the network's CtcDeriv, argument errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sillage/cn/contractor_network.h"
+#include "sillage/cn/tube_domain.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
@@ -106,4 +110,90 @@ TEST(TubeNodes, IncrementsContractTheGatesOnly) {
   y.set_gate(4, Interval(10.0));
   EXPECT_FALSE(CtcIncrement().contract(y, i));
   EXPECT_TRUE(y.is_empty());
+}
+
+// A CtcEval node leaves its fronts beyond [t] to the network's CtcDeriv on
+// the same (y, w) (both sweeps): the fixed point of the network is the one of
+// the standalone call (which runs CtcDeriv itself). Without such a CtcDeriv,
+// or with a one-way one, the node sweeps its fronts both ways itself.
+TEST(TubeNodes, EvalLeavesItsFrontsToTheNetworksDeriv) {
+  auto td = TDomain::create(0.0, 6.0, 0.05);
+  const Tube v(td, "cos(t) + [-0.05, 0.05]");
+  const Interval t0(2.95, 3.05), z0(std::sin(3.0) - 1e-3, std::sin(3.0) + 1e-3);
+  Tube direct(td);
+  Interval td_t = t0, td_z = z0;
+  ASSERT_TRUE(CtcEval().contract(td_t, td_z, direct, v));
+  const auto solve = [&](std::shared_ptr<const CtcDeriv> deriv, Interval& t, Interval& z) {
+    auto x = std::make_shared<Tube>(td);
+    auto nv = std::make_shared<Tube>(v);
+    auto nt = std::make_shared<Interval>(t0), nz = std::make_shared<Interval>(z0);
+    ContractorNetwork cn;
+    cn.set_ratio(0.0);
+    if (deriv) cn.add(deriv, {x, nv});
+    cn.add(std::make_shared<CtcEval>(), {nt, nz, x, nv});
+    EXPECT_FALSE(cn.contract().empty);
+    t = *nt;
+    z = *nz;
+    return *x;
+  };
+  Interval t, z;
+  const Tube with_deriv = solve(std::make_shared<CtcDeriv>(), t, z);
+  EXPECT_EQ(with_deriv, direct);
+  EXPECT_EQ(t, td_t);
+  EXPECT_EQ(z, td_z);
+  for (const auto& deriv : {std::shared_ptr<const CtcDeriv>(), std::make_shared<const CtcDeriv>(TimePropag::FORWARD)}) {
+    const Tube x = solve(deriv, t, z);
+    EXPECT_TRUE(x.contains(Trajectory("sin(t)", td->t0_tf())));
+    EXPECT_LT(x.gate(0).diam(), 1.0);  // the backward front reached t0
+    EXPECT_LT(x.gate(td->nb_slices()).diam(), 1.0);
+    EXPECT_TRUE(direct.is_subset(x));
+  }
+}
+
+// The node itself: told that the network runs CtcDeriv on (x, v), one run
+// changes only the slices around [t]; not told, its fronts go on beyond.
+TEST(TubeNodes, EvalNodeSweepsBeyondOnlyWithoutTheNetworksDeriv) {
+  auto td = TDomain::create(0.0, 6.0, 0.05);  // 120 slices, 241 atoms
+  const auto run_once = [&](bool told) {
+    auto x = std::make_shared<Tube>(td, Interval(-10, 10));
+    x->set_gate(0, Interval(0.0));
+    auto nt = std::make_shared<IntervalDomain>(std::make_shared<Interval>(2.95, 3.05));
+    auto nz = std::make_shared<IntervalDomain>(std::make_shared<Interval>(std::sin(3.0) - 1e-3, std::sin(3.0) + 1e-3));
+    auto nx = std::make_shared<TubeDomain>(x);
+    auto nv = std::make_shared<TubeDomain>(std::make_shared<Tube>(td, "cos(t) + [-0.05, 0.05]"));
+    const std::vector<BoundDomain> args{{nt, {0, 0, 1}}, {nz, {1, 0, 1}}, {nx, {2, 0, 241}}, {nv, {3, 0, 241}}};
+    const auto node = CtcEval().make_node(args);
+    const std::vector<std::shared_ptr<Domain>> domains{nt, nz, nx, nv};
+    const std::vector<DerivativePair> pairs{{args[2].range, args[3].range}};
+    std::vector<std::size_t> changed;
+    NodeRun run{domains, 0.01, true, {}, changed};
+    if (told) run.derivatives = pairs;
+    EXPECT_TRUE(run.has_derivative(args[2].range, args[3].range) == told);
+    EXPECT_TRUE(node->run(run));
+    return *x;
+  };
+  const Tube left = run_once(true), swept = run_once(false);
+  EXPECT_EQ(left.gate(100), Interval(-10, 10));  // t = 5: beyond [t], untouched
+  EXPECT_LT(swept.gate(100).diam(), 1.0);         // the forward front reached it
+  EXPECT_TRUE(swept.is_subset(left));
+  EXPECT_EQ(left.gate(60), swept.gate(60));  // t = 3: the region is the same
+}
+
+// Which nodes say they enforce x' = v: CtcDeriv with both sweeps, per component pair.
+TEST(TubeNodes, DerivativePairsOfTheNodes) {
+  auto td = TDomain::create(0.0, 1.0, 0.1);  // 21 atoms per tube
+  std::vector<BoundDomain> args;
+  for (std::size_t i = 0; i < 4; ++i) args.push_back({std::make_shared<TubeDomain>(std::make_shared<Tube>(td)), {i, 0, 21}});
+  std::vector<DerivativePair> pairs;
+  CtcDeriv().make_node(args)->derivative_pairs(pairs);  // x = (args 0, 1), v = (args 2, 3)
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].x.domain, 0u);
+  EXPECT_EQ(pairs[0].v.domain, 2u);
+  EXPECT_EQ(pairs[1].x.domain, 1u);
+  EXPECT_EQ(pairs[1].v.domain, 3u);
+  pairs.clear();
+  CtcDeriv(TimePropag::FORWARD).make_node(args)->derivative_pairs(pairs);
+  CtcDeriv(TimePropag::BACKWARD).make_node(args)->derivative_pairs(pairs);
+  CtcIncrement().make_node({args[0], args[2]})->derivative_pairs(pairs);
+  EXPECT_TRUE(pairs.empty());
 }

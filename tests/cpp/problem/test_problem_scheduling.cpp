@@ -72,12 +72,19 @@ TEST(ProblemScheduling, SameFixedPointAsFifo) {
 // overridden by SolveOptions::scheduling (`sillage solve --scheduling`), and
 // reported in results.json and report.html; the same fixed point as FIFO.
 TEST(ProblemScheduling, FileKeyReachesTheNetworkAndTheReports) {
-  const std::string text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
-  const Problem fifo = problem_test::parse(text + "[network]\nratio = 0\n");
-  const Problem prio = problem_test::parse(text + "[network]\nratio = 0\nscheduling = \"priority\"\n");
+  // The drifting clock (its [network] has ratio = 0): there the two orders take different runs.
+  const std::string text = problem_test::read_file(problem_test::problems_dir() + "/drifting_clock.toml");
+  const auto with = [&](const std::string& key) {
+    const std::string section = "[network]\n";
+    std::string t = text;
+    return t.insert(t.find(section) + section.size(), key);
+  };
+  const Problem fifo = problem_test::parse(text);
+  const Problem prio = problem_test::parse(with("scheduling = \"priority\"\n"));
+  EXPECT_EQ(fifo.network.ratio, 0.0);
   EXPECT_EQ(fifo.network.scheduling, Scheduling::Fifo);
   EXPECT_EQ(prio.network.scheduling, Scheduling::Priority);
-  EXPECT_EQ(problem_test::parse(text + "[network]\nscheduling = \"fifo\"\n").network.scheduling, Scheduling::Fifo);
+  EXPECT_EQ(problem_test::parse(with("scheduling = \"fifo\"\n")).network.scheduling, Scheduling::Fifo);
   EXPECT_EQ(build_network(prio, *prio.time.delta).cn->scheduling(), Scheduling::Priority);
   const SolveResult a = solve_problem(fifo), b = solve_problem(prio);
   ASSERT_FALSE(a.empty || b.empty);
@@ -87,8 +94,10 @@ TEST(ProblemScheduling, FileKeyReachesTheNetworkAndTheReports) {
     const VarDomain &x = a.built.vars[v], &y = b.built.vars[v];
     for (std::size_t i = 0; x.tubes && i < x.tubes->size(); ++i)
       for (std::size_t k = 0; k <= (*x.tubes)[i].nb_slices(); ++k) {
-        ASSERT_EQ((*x.tubes)[i].gate(k), (*y.tubes)[i].gate(k)) << x.spec->name << " gate " << k;
-        if (k < (*x.tubes)[i].nb_slices()) { ASSERT_EQ((*x.tubes)[i].slice(k), (*y.tubes)[i].slice(k)) << x.spec->name; }
+        ASSERT_LE(ulps_between((*x.tubes)[i].gate(k), (*y.tubes)[i].gate(k)), kUlps) << x.spec->name << " gate " << k;
+        if (k < (*x.tubes)[i].nb_slices()) {
+          ASSERT_LE(ulps_between((*x.tubes)[i].slice(k), (*y.tubes)[i].slice(k)), kUlps) << x.spec->name;
+        }
       }
     if (x.interval) { EXPECT_EQ(*x.interval, *y.interval) << x.spec->name; }
     if (x.box) { EXPECT_EQ(*x.box, *y.box) << x.spec->name; }
@@ -103,7 +112,7 @@ TEST(ProblemScheduling, FileKeyReachesTheNetworkAndTheReports) {
   const SolveResult c = solve_problem(prio, o);
   EXPECT_EQ(c.scheduling, Scheduling::Fifo);
   EXPECT_EQ(c.schedule.back().stats.contractor_calls, a.schedule.back().stats.contractor_calls);
-  EXPECT_NE(b.schedule.back().stats.contractor_calls, a.schedule.back().stats.contractor_calls);  // 49 against 50
+  EXPECT_NE(b.schedule.back().stats.contractor_calls, a.schedule.back().stats.contractor_calls);  // 340 against 321
 }
 
 TEST(ProblemScheduling, FileKeyErrorsAtTheirPlace) {
