@@ -9,6 +9,7 @@
 #include "sillage/cn/tube_node.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
+#include "sillage/interval/rounding.h"
 
 namespace sillage {
 
@@ -69,43 +70,46 @@ struct Prefix {
 
 // [b0] from every pair of gates i < j: b0 (t_j − t_i) ∈ S_ij − ([x](t_j) − [x](t_i)), S_ij the sum of
 // the increments (widened by the drift) over i..j. For each j only the pairs picked by the hulls
-// (least upper bound, greatest lower bound) are evaluated.
+// (least upper bound, greatest lower bound) are evaluated. Each bound is the one end of the
+// interval expression that it needs, with the same directed roundings as the Interval
+// operations (the same bits), t_j − t_i > 0 enclosed in [tl, tu].
 Interval bias_from_spans(const TDomain& td, const std::vector<Interval>& gates, const Prefix& sum) {
-  Interval b = Interval::all_reals();
+  using namespace rounding;
+  double blo = -kInf, bhi = kInf;
   UpperHull up, down;  // up: upper bounds of b0; down: lower bounds, on negated points
-  const auto tau = [&](std::size_t i, std::size_t j) { return Interval(td.t(j)) - Interval(td.t(i)); };
+  const auto ts = td.times();
   const auto upper = [&](std::size_t i, std::size_t j) {  // b0 τ <= S_ij.ub − (l_j − u_i)
     if (i == kNone) return;
-    const Interval v = ((sum.hi[j] - sum.hi[i]) - (Interval(gates[j].lb()) - Interval(gates[i].ub()))) / tau(i, j);
-    b &= Interval(-INFINITY, v.ub());
+    const double n = sub_up(sub_up(sum.hi[j].ub(), sum.hi[i].lb()), sub_down(gates[j].lb(), gates[i].ub()));
+    bhi = std::min(bhi, div_up(n, n >= 0 ? sub_down(ts[j], ts[i]) : sub_up(ts[j], ts[i])));
   };
   const auto lower = [&](std::size_t i, std::size_t j) {  // b0 τ >= S_ij.lb − (u_j − l_i)
     if (i == kNone) return;
-    const Interval v = ((sum.lo[j] - sum.lo[i]) - (Interval(gates[j].ub()) - Interval(gates[i].lb()))) / tau(i, j);
-    b &= Interval(v.lb(), INFINITY);
+    const double n = sub_down(sub_down(sum.lo[j].lb(), sum.lo[i].ub()), sub_up(gates[j].ub(), gates[i].lb()));
+    blo = std::max(blo, div_down(n, n >= 0 ? sub_up(ts[j], ts[i]) : sub_down(ts[j], ts[i])));
   };
   for (std::size_t j = 0; j < gates.size(); ++j) {
-    const double t = td.t(j), ph = sum.hi[j].mid(), pl = sum.lo[j].mid(), l = gates[j].lb(), u = gates[j].ub();
+    const double t = ts[j], ph = sum.hi[j].mid(), pl = sum.lo[j].mid(), l = gates[j].lb(), u = gates[j].ub();
     const bool fh = std::isfinite(ph), fl = std::isfinite(pl);
     if (fh && std::isfinite(l)) upper(up.tangent(t, ph - l), j);
     if (fl && std::isfinite(u)) lower(down.tangent(t, u - pl), j);
-    if (b.is_empty()) return b;
+    if (!(blo <= bhi)) return Interval::empty();
     if (fh && std::isfinite(u)) up.add(t, ph - u, j);
     if (fl && std::isfinite(l)) down.add(t, l - pl, j);
   }
-  return b;
+  return Interval(blo, bhi);
 }
 
-// x(t_{k+1}) − x(t_k) ∈ inc_k − [b0] δ_k, forward then backward (CtcIncrement's rule). False: empty.
-bool sweep(std::vector<Interval>& g, const std::vector<Interval>& inc, const std::vector<Interval>& width,
-           const Interval& b) {
-  const std::size_t n = inc.size();
+// x(t_{k+1}) − x(t_k) ∈ step_k = inc_k − [b0] δ_k, forward then backward (CtcIncrement's rule).
+// False: empty.
+bool sweep(std::vector<Interval>& g, const std::vector<Interval>& step) {
+  const std::size_t n = step.size();
   for (std::size_t k = 0; k < n; ++k) {
-    g[k + 1] &= g[k] + (inc[k] - b * width[k]);
+    g[k + 1] &= g[k] + step[k];
     if (g[k + 1].is_empty()) return false;
   }
   for (std::size_t k = n; k-- > 0;) {
-    g[k] &= g[k + 1] - (inc[k] - b * width[k]);
+    g[k] &= g[k + 1] - step[k];
     if (g[k].is_empty()) return false;
   }
   return true;
@@ -188,7 +192,7 @@ bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i) const {
   if (x.is_empty() || no_increment || b0.is_empty()) return fail(x, b0);
   const TDomain& td = *x.tdomain();
   const std::size_t n = x.nb_slices();
-  std::vector<Interval> width(n), inc(n);
+  std::vector<Interval> width(n), inc(n), step(n);
   for (std::size_t k = 0; k < n; ++k) {
     width[k] = td.slice_width(k);
     inc[k] = slices[k] + Interval(-drift_, drift_) * width[k];
@@ -202,7 +206,8 @@ bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i) const {
     const bool moved = b != b0;
     b0 = b;
     if (round > 0 && !moved) break;  // the gates are already swept with this bias
-    if (!sweep(d.gates, inc, width, b0)) return fail(x, b0);
+    for (std::size_t k = 0; k < n; ++k) step[k] = inc[k] - b0 * width[k];
+    if (!sweep(d.gates, step)) return fail(x, b0);
   }
   if (d.gates != before) x.touch();
   return true;

@@ -67,7 +67,7 @@ bool narrow_gate(TubeData& d, std::size_t i, const Interval& h, bool& changed) {
 // before to B, one inside to F ∪ B. False if a gate became empty.
 // The buffers of sweep_region, reused from call to call.
 struct SweepBuffers {
-  std::vector<Interval> part, hull, front;
+  std::vector<Interval> part, hull, front, step;
 };
 
 bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed,
@@ -83,10 +83,13 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
   auto& part = buf.part;
   auto& hull = buf.hull;
   auto& front = buf.front;
+  auto& step = buf.step;  // δ[w](k), read by both fronts
   part.assign(m, Interval::empty());
   hull.assign(m, Interval::empty());
+  step.resize(m);
   for (std::size_t j = 0; j < m; ++j) {
     const std::size_t k = r.first + j;
+    step[j] = td.slice_width(k) * ws[k];
     if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
     part[j] = t & Interval(ts[k], ts[k + 1]);
     const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
@@ -100,7 +103,7 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
     F &= d.gates[k];
     front[j] = F;
     if (j == m) break;
-    F = F + td.slice_width(k) * ws[k];
+    F = F + step[j];
     if (!hull[j].is_empty()) F |= hull[j] + (Interval(ts[k + 1]) - part[j]) * ws[k];
   }
   Interval B = Interval::empty();
@@ -112,7 +115,7 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
     if (!narrow_gate(d, i, d.gates[i] & h, changed)) return false;
     if (j == 0) break;
     const std::size_t k = i - 1;
-    B = B - td.slice_width(k) * ws[k];
+    B = B - step[j - 1];
     if (!hull[j - 1].is_empty()) B |= hull[j - 1] - (part[j - 1] - Interval(ts[k])) * ws[k];
   }
   return true;
@@ -264,9 +267,9 @@ bool outward(Tube& y, const Tube& w, Region r, bool& changed, const TubeChanges&
   });
 }
 
-// [t] ∩= [y]⁻¹([z]), [z] ∩= [y]([t]) (with the derivative when given).
-bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w) {
-  t &= w ? y.inverse(z, *w, t) : y.inverse(z);
+// [t] ∩= [y]⁻¹([z]) (when `invert`), [z] ∩= [y]([t]) (with the derivative when given).
+bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w, bool invert) {
+  if (invert) t &= w ? y.inverse(z, *w, t) : y.inverse(z);
   if (t.is_empty()) return false;
   z &= w ? y.eval(t, *w) : y(t);
   return !z.is_empty();
@@ -344,13 +347,20 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     z0 = z;
     bool changed = false;
     // [t] from every component first, then [z] and the tubes with the common [t].
+    // `last`: the component whose inverse gave [t] as it is (its inverse would
+    // give it again: same [t], z, y and w).
+    std::size_t last = y.size();
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
+      const Interval before = t;
       t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
       ok = !t.is_empty();
+      if (t != before || last == y.size()) last = i;
     }
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
       bool moved = false;
-      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i]);
+      const Interval before = t;
+      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i], i != last);
+      if (t != before) last = i;
       if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
       if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved, scratch.sweep);
       if (ok && !w.empty()) {
