@@ -26,7 +26,7 @@ CASES = {
                 ["contains it", "truth inside", "Fig. 4.7", r"CtcIvp \("]),
     "drifting_clock": ("EMPTY: tube 'h' was empty on input at gate 0 (t = 0)",
                        ["fixed point verified", r"contracted \[t_i\]", "mean width", "truth h"]),
-    "lowcost_beacons": ("EMPTY: CtcDeriv emptied tube 'x[0]' at gate 413 (t = 20.65",
+    "lowcost_beacons": ("EMPTY: CtcDeriv emptied tube 'x[0]' at gate 416 (t = 20.79",
                         ["fixed point verified", r"contracted \[t_i\]", "truth times", r"x\(0\) in"]),
     # The run from x0 alone is not empty and prints its results; the run with the final box is.
     "causal_chain": ("CtcIvp with the final box: EMPTY: CtcIvp: no trajectory from x0 with the inputs reaches the final "

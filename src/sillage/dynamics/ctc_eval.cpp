@@ -307,6 +307,7 @@ struct EvalScratch {
   std::vector<RegionSnapshot> before;
   IntervalVector z0 = IntervalVector(1);
   SweepBuffers sweep;
+  std::vector<Interval> given;
 };
 
 // Passes over [t], [z] and the region until none changes anything, so that
@@ -347,20 +348,19 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     z0 = z;
     bool changed = false;
     // [t] from every component first, then [z] and the tubes with the common [t].
-    // `last`: the component whose inverse gave [t] as it is (its inverse would
-    // give it again: same [t], z, y and w).
-    std::size_t last = y.size();
+    // given[i]: [t] as component i's inverse left it. The inverse is idempotent
+    // (it hulls, within [t], the times of each slice whose polygon meets z), so
+    // while [t] is still that, the second inverse would give it again.
+    auto& given = scratch.given;
+    given.resize(y.size());
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
-      const Interval before = t;
       t &= w.empty() ? y[i]->inverse(z[i]) : y[i]->inverse(z[i], *w[i], t);
       ok = !t.is_empty();
-      if (t != before || last == y.size()) last = i;
+      given[i] = t;
     }
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
       bool moved = false;
-      const Interval before = t;
-      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i], i != last);
-      if (t != before) last = i;
+      ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i], t != given[i]);
       if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
       if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved, scratch.sweep);
       if (ok && !w.empty()) {
