@@ -54,6 +54,11 @@ struct NodeRun {
   // empty atom of the node), and the time it concerns (CtcEval's [t]).
   std::size_t empty_at = kNoAtom;
   Interval empty_time = Interval::empty();
+  // Out: run this node again in the next round even if nothing else wakes it
+  // (a node that stopped short of its own fixed point: CtcEval after one pass
+  // that shrank something, so that its confirming pass merges with the next
+  // wake-up by its neighbours).
+  bool again = false;
   // The pairs of the network's nodes (CnNode::derivative_pairs), so that a
   // node can leave to them what they do anyway (CtcEval: its fronts beyond [t]).
   std::span<const DerivativePair> derivatives = {};

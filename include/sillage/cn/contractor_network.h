@@ -29,8 +29,9 @@
 // contractor shrank by more than ratio() (shrink.h; default 0.01) wakes the
 // other contractors acting on it, which run in the next round (each contractor
 // at most once per round; one already waiting in the current round is not
-// queued again; set_scheduling: the order within a round, as woken or by
-// expected contraction). The propagation stops when a round wakes nobody, or at once
+// queued again; a node may ask to run in the next round, NodeRun::again;
+// set_scheduling: the order within a round, as woken or by expected
+// contraction). The propagation stops when a round wakes nobody, or at once
 // when a domain becomes empty (that domain is set empty, the others keep their
 // last values, which remain valid enclosures; ContractStats::empty tells).
 //

@@ -85,8 +85,11 @@ class CtcEval : public NetworkCtc {
   // (y[i], w[i]) leaves them to it: it would redo them, once per
   // observation instead of once for all); changes[i] (one per y[i]) receives
   // the slices and gates of y[i] that shrank (TubeNode::changes()).
+  // With `one_pass`, one pass over [t], [z] and the region instead of passes
+  // to the fixed point: for a node that its network runs again when the pass
+  // shrank something (NodeRun::again).
   bool contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                const std::vector<TubeChanges>& changes, bool beyond = true) const;
+                const std::vector<TubeChanges>& changes, bool beyond = true, bool one_pass = false) const;
   // Deprecated (the atom encoding leaks): changed[i] receives the atoms of
   // y[i] (2k: gate k, 2k+1: slice k) that shrank by more than `ratio`. Use
   // the TubeChanges overload.

@@ -340,6 +340,10 @@ ContractStats ContractorNetwork::contract() {
           }
         });
       }
+      if (run.again && !queued[i]) {
+        queued[i] = 1;
+        next.push_back(i);
+      }
     }
     round.swap(next);
     next.clear();

@@ -324,7 +324,7 @@ constexpr int kMaxPasses = 200;
 // their network; their logs[i] receive what shrank in y[i].
 bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
                   bool sampling, bool whole_tube, const char* where, const std::vector<TubeChanges>* logs,
-                  bool beyond = true) {
+                  bool beyond = true, bool one_pass = false) {
   if (y.empty() || z.size() != y.size() || (!w.empty() && w.size() != y.size()) || (logs && logs->size() != y.size())) {
     throw DimensionError(std::string(where) + ": z has " + std::to_string(z.size()) + " components, y " +
                          std::to_string(y.size()) + (w.empty() ? std::string() : ", w " + std::to_string(w.size())));
@@ -371,6 +371,7 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     }
     if (changed || t != t0 || z != z0) {
       deriv_fresh = false;
+      if (one_pass) break;
       continue;
     }
     // The region is at its fixed point: the fronts beyond it and CtcDeriv
@@ -456,8 +457,9 @@ bool CtcEval::contract(Interval& t, IntervalVector& z, TubeVector& y) const {
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,
-                       const std::vector<TubeChanges>& changes, bool beyond) const {
-  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes, beyond);
+                       const std::vector<TubeChanges>& changes, bool beyond, bool one_pass) const {
+  return contract_all(t, z, y, w, sampling_, false, "CtcEval::contract(t, z, y, w, changes)", &changes, beyond,
+                      one_pass);
 }
 
 bool CtcEval::contract(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, const std::vector<const Tube*>& w,

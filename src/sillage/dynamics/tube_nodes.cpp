@@ -66,7 +66,9 @@ class EvalNode : public TubeNode {
     for (std::size_t i = 0; i < w_.size(); ++i) {
       beyond = beyond || !r.has_derivative(ranges()[1 + z_args_ + i], ranges()[1 + z_args_ + nb_z_ + i]);
     }
-    const bool ok = ctc_.contract(t, z, ys_, ws_, logs, beyond);
+    // One pass: when it shrank something the network runs the node again next
+    // round (r.again below), where its neighbours' changes usually wake it anyway.
+    const bool ok = ctc_.contract(t, z, ys_, ws_, logs, beyond, true);
     // Write back t and z (intersected), report what shrank.
     const auto put = [&](std::size_t range, std::size_t j, std::size_t pos, const Interval& was, const Interval& now) {
       Domain& d = *r.domains[ranges()[range].domain];
@@ -81,6 +83,7 @@ class EvalNode : public TubeNode {
       for (std::size_t j = 0; j < ranges()[a].count; ++j, ++c) put(a, j, offset(a) + j, z0[c], z[c]);
     }
     if (!ok) locate_empty(r, t0);
+    r.again = ok && !r.changed.empty();
     return ok;
   }
 

@@ -185,3 +185,41 @@ TEST(ContractorNetwork, NodeIsToldItsWatchedAtomsThatShrankSortedOnce) {
   EXPECT_EQ(rec->seen[0], (std::vector<std::size_t>{5, 6, 10, 14}));
   EXPECT_EQ(s.contractor_calls, 3u);
 }
+
+namespace {
+
+// Asks to run again (NodeRun::again) for its first `times` runs; counts its runs.
+class Again : public CnNode {
+ public:
+  Again(std::vector<AtomRange> ranges, std::size_t times) : CnNode(std::move(ranges)), times_(times) {}
+  std::string name() const override { return "Again"; }
+  bool run(NodeRun& r) const override {
+    ++runs;
+    r.again = runs <= times_;
+    return true;
+  }
+  mutable std::size_t runs = 0;
+
+ private:
+  std::size_t times_;
+};
+
+}  // namespace
+
+// A node that asks to run again is queued for the next round, once, even when nothing wakes it
+// (CtcEval's node after one pass that shrank something); the network stops when it stops asking.
+TEST(ContractorNetwork, NodeAskingToRunAgainRunsInTheNextRound) {
+  ContractorNetwork cn;
+  auto x = cn.create_dom(IntervalVector(4, Interval(0, 1)), "x");
+  const std::size_t dx = cn.add_domain(std::make_shared<BoxDomain>(x));
+  const auto again = std::make_shared<Again>(std::vector<AtomRange>{{dx, 0, 4}}, 3);
+  const auto idle = std::make_shared<Again>(std::vector<AtomRange>{{dx, 0, 4}}, 0);
+  cn.add_node(again);
+  cn.add_node(idle);
+  const ContractStats s = cn.contract();
+  EXPECT_FALSE(s.empty);
+  EXPECT_EQ(again->runs, 4u);  // asked after runs 1, 2, 3
+  EXPECT_EQ(idle->runs, 1u);   // nothing woke it
+  EXPECT_EQ(s.iterations, 4u);
+  EXPECT_EQ(s.contractor_calls, 5u);
+}

@@ -170,6 +170,9 @@ TEST(TubeNodes, EvalNodeSweepsBeyondOnlyWithoutTheNetworksDeriv) {
     if (told) run.derivatives = pairs;
     EXPECT_TRUE(run.has_derivative(args[2].range, args[3].range) == told);
     EXPECT_TRUE(node->run(run));
+    // One pass; it shrank the region, so the node asks the network to run it again.
+    EXPECT_FALSE(run.changed.empty());
+    EXPECT_TRUE(run.again);
     return *x;
   };
   const Tube left = run_once(true), swept = run_once(false);
