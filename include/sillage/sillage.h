@@ -39,6 +39,7 @@
 #include "sillage/paving/sivia.h"
 #include "sillage/paving/sivia_function.h"
 
+#include "sillage/tube/large_array.h"
 #include "sillage/tube/synthesis_tree.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/trajectory.h"

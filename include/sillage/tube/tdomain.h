@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sillage/interval/interval.h"
+#include "sillage/tube/large_array.h"
 
 namespace sillage {
 
@@ -40,9 +41,12 @@ struct TreeCache {
   std::uint64_t version = 0;  // the data version the tree was built from
 };
 
+// The array of a tube's slices or gates (large ones on huge pages: large_array.h).
+using TubeArray = std::vector<Interval, detail::LargeArrayAllocator<Interval>>;
+
 struct TubeData {
-  std::vector<Interval> slices;  // [x](k) over [t_k, t_{k+1}], size N
-  std::vector<Interval> gates;   // [x](t_k), size N+1
+  TubeArray slices;  // [x](k) over [t_k, t_{k+1}], size N
+  TubeArray gates;   // [x](t_k), size N+1
   std::uint64_t version = 0;
   TreeCache tree_cache;
 

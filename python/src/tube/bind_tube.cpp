@@ -102,10 +102,10 @@ std::vector<std::vector<Interval>> components_from_array(const py::handle& h, st
 
 // A tube with exactly these slices and gates (no consistency check: used to
 // restore a pickled tube bit for bit).
-Tube tube_with(const TD& td, std::vector<Interval> slices, std::vector<Interval> gates) {
+Tube tube_with(const TD& td, const std::vector<Interval>& slices, const std::vector<Interval>& gates) {
   Tube x(td);
-  x.data().slices = std::move(slices);
-  x.data().gates = std::move(gates);
+  x.data().slices.assign(slices.begin(), slices.end());
+  x.data().gates.assign(gates.begin(), gates.end());
   x.touch();
   return x;
 }

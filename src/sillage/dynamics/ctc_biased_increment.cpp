@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "sillage/cn/tube_node.h"
@@ -73,7 +74,7 @@ struct Prefix {
 // (least upper bound, greatest lower bound) are evaluated. Each bound is the one end of the
 // interval expression that it needs, with the same directed roundings as the Interval
 // operations (the same bits), t_j − t_i > 0 enclosed in [tl, tu].
-Interval bias_from_spans(const TDomain& td, const std::vector<Interval>& gates, const Prefix& sum) {
+Interval bias_from_spans(const TDomain& td, std::span<const Interval> gates, const Prefix& sum) {
   using namespace rounding;
   double blo = -kInf, bhi = kInf;
   UpperHull up, down;  // up: upper bounds of b0; down: lower bounds, on negated points
@@ -102,7 +103,7 @@ Interval bias_from_spans(const TDomain& td, const std::vector<Interval>& gates, 
 
 // x(t_{k+1}) − x(t_k) ∈ step_k = inc_k − [b0] δ_k, forward then backward (CtcIncrement's rule).
 // False: empty.
-bool sweep(std::vector<Interval>& g, const std::vector<Interval>& step) {
+bool sweep(std::span<Interval> g, const std::vector<Interval>& step) {
   const std::size_t n = step.size();
   for (std::size_t k = 0; k < n; ++k) {
     g[k + 1] &= g[k] + step[k];
@@ -199,7 +200,7 @@ bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i) const {
   }
   const Prefix prefix(inc);
   TubeData& d = x.data();
-  const std::vector<Interval> before = d.gates;
+  const TubeArray before = d.gates;
   for (int round = 0; round < kMaxRounds; ++round) {
     const Interval b = b0 & bias_from_spans(td, d.gates, prefix);
     if (b.is_empty()) return fail(x, b0);

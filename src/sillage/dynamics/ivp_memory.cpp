@@ -31,8 +31,8 @@ void IvpMemory::remember(const TubeVector& x, const TubeVector* u) {
   times.clear();
   for (std::size_t k = 0; k <= x.nb_slices(); ++k) times.push_back(x.tdomain()->t(k));
   for (const Tube* c : components(x, u)) {
-    gates.push_back(c->data().gates);
-    slices.push_back(c->data().slices);
+    gates.emplace_back(c->data().gates.begin(), c->data().gates.end());
+    slices.emplace_back(c->data().slices.begin(), c->data().slices.end());
   }
 }
 

@@ -86,7 +86,7 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const std::vector<double>& pts = p.time.points;
   const TDomain& td = *x.tdomain();
   IntervalVector args(names.size());
-  std::vector<Interval>& slices = x.data().slices;
+  TubeArray& slices = x.data().slices;
   std::size_t row = 0, evaluated = table.nb_rows();
   Interval value;
   for (std::size_t k = 0; k < slices.size(); ++k) {
@@ -100,7 +100,7 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
     }
     slices[k] &= value;
   }
-  std::vector<Interval>& gates = x.data().gates;
+  TubeArray& gates = x.data().gates;
   const std::size_t n = slices.size();
   for (std::size_t k = 0; k <= n; ++k) gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < n ? slices[k] : slices[k - 1]);
   x.touch();

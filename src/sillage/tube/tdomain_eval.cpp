@@ -15,7 +15,7 @@ constexpr std::size_t kChunk = 256;  // the batch evaluator's chunk: its rows st
 // replaced), by chunks of kChunk appended from a buffer in cache.
 template <class Domain>
 void eval_elements(const Function& f, std::size_t count, Domain domain, std::span<TubeData* const> out,
-                   std::vector<Interval> TubeData::*column) {
+                   TubeArray TubeData::*column) {
   Interval in[kChunk];
   const Interval* xs[1] = {in};
   std::vector<Interval> buffer(out.size() * kChunk);
@@ -32,7 +32,7 @@ void eval_elements(const Function& f, std::size_t count, Domain domain, std::spa
     for (std::size_t i = 0; i < out.size(); ++i) {
       Interval* y = ys[i];
       for (std::size_t j = 0; j < c; ++j) y[j] = unknown_where_undefined(y[j]);
-      std::vector<Interval>& v = out[i]->*column;
+      TubeArray& v = out[i]->*column;
       v.insert(v.end(), y, y + c);
     }
   }

@@ -68,7 +68,7 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices) : t
                          std::to_string(n));
   }
   data_ = std::make_shared<TubeData>();
-  data_->slices = slices;
+  data_->slices.assign(slices.begin(), slices.end());
   data_->gates.resize(n + 1);
   data_->gates[0] = slices[0];
   data_->gates[n] = slices[n - 1];
@@ -86,8 +86,8 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices, con
   }
   check_gates(slices, gates, "Tube(td, slices, gates)");
   data_ = std::make_shared<TubeData>();
-  data_->slices = slices;
-  data_->gates = gates;
+  data_->slices.assign(slices.begin(), slices.end());
+  data_->gates.assign(gates.begin(), gates.end());
   td_->attach(data_);
 }
 

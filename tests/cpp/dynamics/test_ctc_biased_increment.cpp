@@ -134,7 +134,7 @@ TEST(CtcBiasedIncrement, AgainstBruteForceOverEveryPair) {
     const Biased m(rng, drift, 12, 0.01);
     Tube x = kit::tube_around(m.td, kit::position(m.f), rng, 0.5, 0.3);
     Interval b = kit::around(Interval(m.b), rng, 1.0, 0.3);
-    std::vector<Interval> g = x.data().gates;
+    std::vector<Interval> g(x.data().gates.begin(), x.data().gates.end());
     Interval bb = b;
     brute_force(*m.td, g, bb, m.inc, drift);
     ASSERT_TRUE(CtcBiasedIncrement(drift).contract(x, b, m.inc));

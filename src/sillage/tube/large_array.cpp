@@ -1,0 +1,51 @@
+#include "sillage/tube/large_array.h"
+
+#include <cstdint>
+
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#include <sys/mman.h>
+#define SILLAGE_LARGE_ARRAYS_MAPPED 1
+#else
+#define SILLAGE_LARGE_ARRAYS_MAPPED 0
+#endif
+
+namespace sillage::detail {
+
+namespace {
+
+constexpr std::size_t kPiece = std::size_t{2} << 20;  // one huge page
+
+std::size_t pieces(std::size_t bytes) { return (bytes + kPiece - 1) / kPiece * kPiece; }
+
+}  // namespace
+
+bool large_arrays_mapped() { return SILLAGE_LARGE_ARRAYS_MAPPED; }
+
+#if SILLAGE_LARGE_ARRAYS_MAPPED
+
+void* allocate_large(std::size_t bytes) {
+  const std::size_t len = pieces(bytes);
+  // Map one piece more, then unmap what is before the first 2 MiB boundary and after the array:
+  // a huge page needs a 2 MiB-aligned range.
+  void* raw = mmap(nullptr, len + kPiece, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  const auto base = reinterpret_cast<std::uintptr_t>(raw);
+  const std::uintptr_t aligned = (base + kPiece - 1) / kPiece * kPiece;
+  if (aligned > base) munmap(raw, aligned - base);
+  const std::uintptr_t end = base + len + kPiece;
+  if (end > aligned + len) munmap(reinterpret_cast<void*>(aligned + len), end - (aligned + len));
+  void* p = reinterpret_cast<void*>(aligned);
+  madvise(p, len, MADV_HUGEPAGE);  // advice only: without huge pages the memory works the same
+  return p;
+}
+
+void deallocate_large(void* p, std::size_t bytes) noexcept { munmap(p, pieces(bytes)); }
+
+#else
+
+void* allocate_large(std::size_t) { return nullptr; }
+void deallocate_large(void*, std::size_t) noexcept {}
+
+#endif
+
+}  // namespace sillage::detail

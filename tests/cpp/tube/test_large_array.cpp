@@ -1,0 +1,73 @@
+// The allocator of a tube's slices and gates: arrays of 1 MiB and more are
+// mapped in 2 MiB pieces (huge pages advised) where that is available, and
+// behave as any vector's storage: written, grown, copied, freed.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <new>
+#include <vector>
+
+#include "sillage/tube/tdomain.h"
+#include "sillage/tube/tube.h"
+
+using namespace sillage;
+
+namespace {
+
+constexpr std::size_t kLarge = detail::kLargeArrayBytes / sizeof(Interval);  // intervals in 1 MiB
+
+}  // namespace
+
+TEST(LargeArray, LargeArraysAreMappedOnTwoMegabyteBoundaries) {
+  detail::LargeArrayAllocator<Interval> alloc;
+  for (const std::size_t n : {kLarge, kLarge + 1, 3 * kLarge + 17}) {
+    Interval* p = alloc.allocate(n);
+    if (detail::large_arrays_mapped()) {
+      EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % (std::uintptr_t{2} << 20), 0u);
+    }
+    for (std::size_t i = 0; i < n; ++i) new (p + i) Interval(static_cast<double>(i));
+    for (std::size_t i = 0; i < n; i += 4099) EXPECT_EQ(p[i], Interval(static_cast<double>(i)));
+    EXPECT_EQ(p[n - 1], Interval(static_cast<double>(n - 1)));
+    alloc.deallocate(p, n);
+  }
+}
+
+TEST(LargeArray, SmallArraysComeFromTheHeap) {
+  detail::LargeArrayAllocator<Interval> alloc;
+  Interval* p = alloc.allocate(kLarge - 1);
+  p[0] = Interval(1, 2), p[kLarge - 2] = Interval(3, 4);
+  EXPECT_EQ(p[0], Interval(1, 2));
+  EXPECT_EQ(p[kLarge - 2], Interval(3, 4));
+  alloc.deallocate(p, kLarge - 1);
+}
+
+TEST(LargeArray, AVectorGrowsAcrossTheThresholdAndKeepsItsValues) {
+  TubeArray a;
+  for (std::size_t i = 0; i < 3 * kLarge; ++i) a.push_back(Interval(static_cast<double>(i), static_cast<double>(i) + 1));
+  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i].lb(), static_cast<double>(i)) << i;
+  TubeArray b = a;  // a copy, then shrunk below the threshold
+  EXPECT_EQ(a, b);
+  b.resize(10);
+  b.shrink_to_fit();
+  EXPECT_EQ(b[9], a[9]);
+  a.clear();
+  a.shrink_to_fit();
+  EXPECT_EQ(a.capacity(), 0u);
+}
+
+TEST(LargeArray, ALargeTubeIsTheSameAsItsSlicesSay) {
+  // 200 000 slices: 3.2 MB of slices and of gates, on the mapped path.
+  auto td = TDomain::create(0.0, 200.0, 0.001);
+  ASSERT_GE(td->nb_slices() * sizeof(Interval), detail::kLargeArrayBytes);
+  const Tube x(td, "t");
+  for (std::size_t k = 0; k < td->nb_slices(); k += 997) {
+    EXPECT_EQ(x.data().slices[k], Interval(td->t(k), td->t(k + 1))) << k;
+    EXPECT_EQ(x.data().gates[k], Interval(td->t(k))) << k;
+  }
+  Tube y = x;  // copied on fresh mapped memory
+  EXPECT_EQ(y.data().slices, x.data().slices);
+  EXPECT_EQ(y.data().gates, x.data().gates);
+  td->sample(100.00005);  // splits a slice in both tubes: the arrays grow by one
+  EXPECT_EQ(x.nb_slices(), y.nb_slices());
+  EXPECT_EQ(x.data().slices, y.data().slices);
+}
