@@ -9,6 +9,7 @@
 #include "sillage/dynamics/heading_common.h"
 #include "sillage/dynamics/heading_window_inputs.h"
 #include "sillage/error.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/trig_batch.h"
 
 namespace sillage {
@@ -30,6 +31,23 @@ Interval travel_direction(const Interval& vx, const Interval& vy, const Interval
     return box ? detail::box_direction(vx, vy) : Interval::all_reals();
   }
   return box ? detail::periodic_meet(cone, detail::box_direction(vx, vy)) : cone;
+}
+
+// rx = co vx − si vy and ry = si vx + co vy for rows of m cells (tmp: scratch), the bits of
+// Interval's operators: with the AVX2 rows where they run, else one at a time.
+void turn_rows(const Interval* co, const Interval* si, const Interval& vx, const Interval& vy, Interval* rx,
+               Interval* ry, Interval* tmp, std::size_t m) {
+  using detail::RowArg, detail::RowOp;
+  if (!detail::avx2_rows_for(m)) {
+    for (std::size_t i = 0; i < m; ++i) rx[i] = co[i] * vx - si[i] * vy, ry[i] = si[i] * vx + co[i] * vy;
+    return;
+  }
+  detail::arith_rows_avx2(RowOp::Mul, rx, RowArg{co}, RowArg{&vx, true}, m);
+  detail::arith_rows_avx2(RowOp::Mul, tmp, RowArg{si}, RowArg{&vy, true}, m);
+  detail::arith_rows_avx2(RowOp::Sub, rx, RowArg{rx}, RowArg{tmp}, m);
+  detail::arith_rows_avx2(RowOp::Mul, ry, RowArg{si}, RowArg{&vx, true}, m);
+  detail::arith_rows_avx2(RowOp::Mul, tmp, RowArg{co}, RowArg{&vy, true}, m);
+  detail::arith_rows_avx2(RowOp::Add, ry, RowArg{ry}, RowArg{tmp}, m);
 }
 
 // `dirty` (null: every window): prefix counts of the time atoms that changed
@@ -76,20 +94,24 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
     if (th.is_unbounded()) continue;
     Interval kept = Interval::empty(), hx = Interval::empty(), hy = Interval::empty();
     const int cells = static_cast<int>(std::clamp(std::ceil(th.diam() / kCell), 1.0, static_cast<double>(kMaxCells)));
-    thread_local std::vector<Interval> cell(kMaxCells), cos_cell(kMaxCells), sin_cell(kMaxCells);
+    const auto m = static_cast<std::size_t>(cells);
+    thread_local std::vector<Interval> cell(kMaxCells), co(kMaxCells), si(kMaxCells), rx(kMaxCells), ry(kMaxCells),
+        tmp(kMaxCells);
+    const double lo0 = th.lb(), width = th.diam();
     for (int i = 0; i < cells; ++i) {
       // The cells cover [th] exactly: the ends are th's, neighbours share their bound.
-      const double lo = i == 0 ? th.lb() : th.lb() + th.diam() * i / cells;
-      const double hi = i + 1 == cells ? th.ub() : th.lb() + th.diam() * (i + 1) / cells;
+      const double lo = i == 0 ? lo0 : lo0 + width * i / cells;
+      const double hi = i + 1 == cells ? th.ub() : lo0 + width * (i + 1) / cells;
       cell[i] = Interval(lo, hi);
     }
-    detail::cos_rows(cell.data(), cos_cell.data(), static_cast<std::size_t>(cells));
-    detail::sin_rows(cell.data(), sin_cell.data(), static_cast<std::size_t>(cells));
-    for (int i = 0; i < cells; ++i) {
-      const Interval &co = cos_cell[i], &si = sin_cell[i];
-      const Interval rx = (co * vx - si * vy) & dx, ry = (si * vx + co * vy) & dy;
-      if (rx.is_empty() || ry.is_empty()) continue;
-      kept |= cell[i], hx |= rx, hy |= ry;
+    detail::cos_rows(cell.data(), co.data(), m);
+    detail::sin_rows(cell.data(), si.data(), m);
+    // V turned by each cell: rx = co vx − si vy, ry = si vx + co vy (rows: the operators' bits).
+    turn_rows(co.data(), si.data(), vx, vy, rx.data(), ry.data(), tmp.data(), m);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Interval ex = rx[i] & dx, ey = ry[i] & dy;
+      if (ex.is_empty() || ey.is_empty()) continue;
+      kept |= cell[i], hx |= ex, hy |= ey;
     }
     if (!detail::narrow(th, kept)) at = {2, 2 * c}, ok = false;
     else if (!detail::narrow(px.gates[b], px.gates[a] + hx)) at = {0, 2 * b}, ok = false;

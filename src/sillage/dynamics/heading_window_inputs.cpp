@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/trig_batch.h"
 
@@ -20,14 +21,19 @@ bool same_bits(const Interval& a, const Interval& b) {
 
 }  // namespace
 
-void WindowInputs::compute_slice(const TDomain& td, std::size_t j) {
-  dist_[j] = d_[j] & Interval::pos_reals();
+void WindowInputs::compute_turn(const TDomain& td, std::size_t j) {
   const Interval delta = td.slice_width(j);
+  turn_[j] = w_[j].is_unbounded() ? Interval::all_reals() : Interval(-1, 1) * Interval(w_[j].mag()) * delta;
+  bend_[j] = std::isfinite(accel_) ? Interval(-1, 1) * Interval(accel_) * sqr(delta) / Interval(8.0) : Interval::all_reals();
+}
+
+void WindowInputs::compute_slice(std::size_t j) {
+  dist_[j] = d_[j] & Interval::pos_reals();
   Interval r = Interval::all_reals();
   // |ψ'| <= ω: ψ − ψ(t_j) <= min(ω τ, inc + ω (δ − τ)) <= (inc + ω δ) / 2, and below likewise.
-  if (!w_[j].is_unbounded()) r &= (dpsi_[j] + Interval(-1, 1) * Interval(w_[j].mag()) * delta) / Interval(2.0);
+  if (!w_[j].is_unbounded()) r &= (dpsi_[j] + turn_[j]) / Interval(2.0);
   // |ψ''| <= α: ψ within α τ (δ − τ) / 2 <= α δ² / 8 of the chord ψ(t_j) + λ inc, λ in [0, 1].
-  if (std::isfinite(accel_)) r &= (Interval(0.0) | dpsi_[j]) + Interval(-1, 1) * Interval(accel_) * sqr(delta) / Interval(8.0);
+  if (std::isfinite(accel_)) r &= (Interval(0.0) | dpsi_[j]) + bend_[j];
   spread_[j] = r + Interval(-1, 1) * Interval(track_);
 }
 
@@ -46,17 +52,19 @@ bool WindowInputs::update(const TDomain& td, const TubeData& d, const TubeData& 
     d_.assign(d.slices.begin(), d.slices.end());
     dpsi_.assign(dpsi.slices.begin(), dpsi.slices.end());
     w_.assign(w.slices.begin(), w.slices.end());
-    dist_.resize(n), spread_.resize(n);
+    dist_.resize(n), spread_.resize(n), turn_.resize(n), bend_.resize(n);
     sums_.assign(n + 1, Entry{});
-    for (std::size_t j = 0; j < n; ++j) compute_slice(td, j);
+    for (std::size_t j = 0; j < n; ++j) compute_turn(td, j), compute_slice(j);
   } else {
     // The windows over a changed slice lose their sums: the first changed slice after each start.
     std::vector<std::size_t> next_change(n + 1, n);
     for (std::size_t j = n; j-- > 0;) {
       next_change[j] = next_change[j + 1];
-      if (same_bits(d_[j], d.slices[j]) && same_bits(dpsi_[j], dpsi.slices[j]) && same_bits(w_[j], w.slices[j])) continue;
+      const bool same_w = same_bits(w_[j], w.slices[j]);
+      if (same_bits(d_[j], d.slices[j]) && same_bits(dpsi_[j], dpsi.slices[j]) && same_w) continue;
       d_[j] = d.slices[j], dpsi_[j] = dpsi.slices[j], w_[j] = w.slices[j];
-      compute_slice(td, j);
+      if (!same_w) compute_turn(td, j);
+      compute_slice(j);
       next_change[j] = j;
     }
     for (std::size_t a = 0; a < n; ++a) {
@@ -87,9 +95,16 @@ const WindowSum& WindowInputs::sum(std::size_t a, std::size_t b, std::size_t c) 
   }
   cos_rows(dir.data(), co.data(), m);
   sin_rows(dir.data(), si.data(), m);
+  // The terms [d](j) (cos, sin)(dir_j), by the AVX2 rows where they run (the operators' bits).
+  if (avx2_rows_for(m)) {
+    arith_rows_avx2(RowOp::Mul, co.data(), RowArg{dist_.data() + a}, RowArg{co.data()}, m);
+    arith_rows_avx2(RowOp::Mul, si.data(), RowArg{dist_.data() + a}, RowArg{si.data()}, m);
+  } else {
+    for (std::size_t i = 0; i < m; ++i) co[i] = dist_[a + i] * co[i], si[i] = dist_[a + i] * si[i];
+  }
   Interval vx(0.0), vy(0.0), cone = Interval::empty();
   const auto add = [&](std::size_t j) {
-    vx += dist_[j] * co[j - a], vy += dist_[j] * si[j - a];
+    vx += co[j - a], vy += si[j - a];
     cone |= dir[j - a];
   };
   for (std::size_t j = c; j < b; ++j) add(j);

@@ -33,7 +33,10 @@ class WindowInputs {
   const WindowSum& sum(std::size_t a, std::size_t b, std::size_t c);
 
  private:
-  void compute_slice(const TDomain& td, std::size_t j);
+  // The terms of slice j's spread that depend on its width and w only (not on Δψ, which changes
+  // with the bias of the gyro), then the spread and distance of slice j.
+  void compute_turn(const TDomain& td, std::size_t j);
+  void compute_slice(std::size_t j);
 
   std::vector<double> times_;
   double accel_ = 0, track_ = -1;
@@ -41,6 +44,8 @@ class WindowInputs {
   // window reads from them: [d](j) ∩ [0, ∞) and the spread of the direction
   // of travel about ψ(t_j) (the turn inside the slice plus the track error).
   std::vector<Interval> d_, dpsi_, w_, dist_, spread_;
+  // Per slice j: [−1, 1] ω δ_j (the turn at the rate bound) and [−1, 1] α δ_j² / 8 (the bend).
+  std::vector<Interval> turn_, bend_;
   // Per window start a: its sum, valid while none of its slices changed.
   struct Entry {
     std::size_t b = 0, c = 0;

@@ -17,6 +17,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/error.h"
 #include "sillage/interval/elementary.h"
+#include "sillage/interval/arith_rows.h"
 #include "turning_vehicle.h"
 
 using namespace sillage;
@@ -215,6 +216,26 @@ TEST(CtcHeadingWindow, RandomCasesContractTheHeading) {
     narrowed += !before.is_subset(std::get<Tube>(c.domains[1]));
   }
   EXPECT_GT(narrowed, 0);
+}
+
+TEST(CtcHeadingWindow, RowsAndOneAtATimeGiveTheSameBits) {
+  // The cells' turns of V and the window sums go through the AVX2 rows where they run: the
+  // operators' bits, so the same tubes as one interval at a time.
+  std::mt19937_64 rng(17);
+  for (int i = 0; i < 20; ++i) {
+    const kit::Case c = window_case(rng);
+    kit::Domains rows = c.domains, single = c.domains;
+    window_contract(rows);
+    detail::set_avx2_rows(false);
+    window_contract(single);
+    detail::set_avx2_rows(true);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const Tube &a = k == 0 ? std::get<Tube>(rows[1]) : std::get<TubeVector>(rows[0])[0];
+      const Tube &b = k == 0 ? std::get<Tube>(single[1]) : std::get<TubeVector>(single[0])[0];
+      ASSERT_EQ(a.data().gates, b.data().gates) << i;
+      ASSERT_EQ(a.data().slices, b.data().slices) << i;
+    }
+  }
 }
 
 TEST(CtcHeadingWindow, ArgumentErrors) {
