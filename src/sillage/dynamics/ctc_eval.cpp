@@ -13,6 +13,7 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/slice_rule_x4.h"
 #include "sillage/interval/arith_rows.h"
+#include "sillage/tube/eval_in_slice.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/dynamics/tube_nodes.h"
 #include "sillage/error.h"
@@ -91,9 +92,11 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
     const std::size_t k = r.first + j;
     step[j] = td.slice_width(k) * ws[k];
     if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
-    part[j] = t & Interval(ts[k], ts[k + 1]);
+    part[j] = Interval::from_bounds_unchecked(std::max(ta, ts[k]), std::min(tb, ts[k + 1]));  // [t] ∩ slice k
     const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
-    hull[j] = (whole ? d.slices[k] : y.eval(part[j], w) & d.slices[k]) & z;
+    hull[j] = (whole ? d.slices[k]
+                     : detail::eval_in_slice(d, w.data(), ts, k, part[j].lb(), part[j].ub()) & d.slices[k]) &
+              z;
   }
   front.assign(m + 1, Interval::empty());
   Interval F = Interval::empty();
@@ -156,7 +159,7 @@ struct Reached {
 template <class R>
 class FrontScale {
  public:
-  FrontScale(std::span<const double> ts, const std::vector<Interval>& ws) : ts_(ts), ws_(ws) {}
+  FrontScale(std::span<const double> ts, std::span<const Interval> ws) : ts_(ts), ws_(ws) {}
   // δ[v] of slice k; `forward`: the front goes on to k + 1 next, else to k - 1.
   void get(std::size_t k, bool forward, double& plo, double& phi) {
     if (k < first_ || k >= first_ + count_) {
@@ -172,7 +175,7 @@ class FrontScale {
  private:
   static constexpr std::size_t kAhead = 8;  // most fronts stop within a few slices
   std::span<const double> ts_;
-  const std::vector<Interval>& ws_;
+  std::span<const Interval> ws_;
   std::size_t first_ = 0, count_ = 0;
   double lo_[kAhead], hi_[kAhead];
 };

@@ -10,6 +10,7 @@
 #include "sillage/error.h"
 #include "sillage/interval/rounding_policies.h"
 #include "sillage/tube/envelope_pair.h"
+#include "sillage/tube/eval_in_slice.h"
 #include "sillage/tube/slice_deriv.h"
 #include "sillage/tube/tube.h"
 
@@ -93,6 +94,14 @@ void check_v(const Tube& x, const Tube& v, const char* where) {
 constexpr std::size_t kPolygonScanLimit = 256;
 
 }  // namespace
+
+Interval detail::eval_in_slice(const TubeData& x, const TubeData& v, std::span<const double> ts, std::size_t k,
+                               double c1, double c2) {
+  return detail::with_policy([&]<class R>() -> Interval {
+    const LocalSlice<R> s(x, v, ts, k);
+    return s.ok ? s.hull(c1, c2) : Interval::empty();
+  });
+}
 
 Interval Tube::eval(const Interval& t, const Tube& v) const {
   const char* where = "Tube::eval(t, v)";
