@@ -116,6 +116,21 @@ class Interval {
   double lo_, hi_;
 };
 
+namespace detail {
+// The errors of the constructors below (out of line: the checks inline, the messages cold).
+[[noreturn]] void throw_bad_point(double x);
+[[noreturn]] void throw_bad_bounds(double lb, double ub);
+}  // namespace detail
+
+inline Interval::Interval(double x) : lo_(x + 0.0), hi_(x + 0.0) {  // + 0.0: no -0 bound
+  if (!std::isfinite(x)) [[unlikely]] detail::throw_bad_point(x);
+}
+
+inline Interval::Interval(double lb, double ub) : lo_(lb == 0 ? 0.0 : lb), hi_(ub == 0 ? 0.0 : ub) {
+  // One zero ([-0, x] and [+0, x] are the same set); NaN, inverted and [±inf, ±inf] rejected.
+  if (!(lb <= ub) || lb == rounding::kInf || ub == -rounding::kInf) [[unlikely]] detail::throw_bad_bounds(lb, ub);
+}
+
 template <std::integral T>
 Interval::Interval(T n) : Interval(static_cast<double>(n)) {
   if constexpr (std::numeric_limits<T>::digits > 53) {

@@ -9,13 +9,11 @@ namespace sillage {
 using rounding::kInf;
 using rounding::kMax;
 
-Interval::Interval(double x) : lo_(x + 0.0), hi_(x + 0.0) {  // + 0.0: no -0 bound
-  if (!std::isfinite(x)) {
-    throw Error("Interval(x): x must be a finite number, got " + number_text(x));
-  }
+void detail::throw_bad_point(double x) {
+  throw Error("Interval(x): x must be a finite number, got " + number_text(x));
 }
 
-Interval::Interval(double lb, double ub) : lo_(lb), hi_(ub) {
+void detail::throw_bad_bounds(double lb, double ub) {
   if (lb != lb || ub != ub) {
     throw Error("Interval(lb, ub): NaN bound in [" + number_text(lb) + ", " + number_text(ub) + "]");
   }
@@ -23,12 +21,8 @@ Interval::Interval(double lb, double ub) : lo_(lb), hi_(ub) {
     throw Error("Interval(lb, ub): inverted bounds, lb = " + number_text(lb) + " > ub = " + number_text(ub) +
                 " (use Interval::empty() for the empty set)");
   }
-  if (lb == kInf || ub == -kInf) {
-    throw Error("Interval(lb, ub): [" + number_text(lb) + ", " + number_text(ub) +
-                "] contains no real number; infinite bounds are limits, not members");
-  }
-  if (lb == 0) lo_ = 0.0;  // one zero: [-0, x] and [+0, x] are the same set
-  if (ub == 0) hi_ = 0.0;
+  throw Error("Interval(lb, ub): [" + number_text(lb) + ", " + number_text(ub) +
+              "] contains no real number; infinite bounds are limits, not members");
 }
 
 // pi = 3.14159265358979323846..., between two consecutive doubles.
