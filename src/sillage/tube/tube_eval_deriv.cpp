@@ -95,12 +95,21 @@ constexpr std::size_t kPolygonScanLimit = 256;
 
 }  // namespace
 
+namespace {
+
+// Slice k's polygon ∩ [x](k) over [c1, c2] ⊆ [t_k, t_{k+1}]; empty if the slice holds no trajectory.
+template <class R>
+Interval slice_part(const TubeData& x, const TubeData& v, std::span<const double> ts, std::size_t k, double c1,
+                    double c2) {
+  const LocalSlice<R> s(x, v, ts, k);
+  return s.ok ? s.hull(c1, c2) : Interval::empty();
+}
+
+}  // namespace
+
 Interval detail::eval_in_slice(const TubeData& x, const TubeData& v, std::span<const double> ts, std::size_t k,
                                double c1, double c2) {
-  return detail::with_policy([&]<class R>() -> Interval {
-    const LocalSlice<R> s(x, v, ts, k);
-    return s.ok ? s.hull(c1, c2) : Interval::empty();
-  });
+  return detail::with_policy([&]<class R>() { return slice_part<R>(x, v, ts, k, c1, c2); });
 }
 
 Interval Tube::eval(const Interval& t, const Tube& v) const {
@@ -117,10 +126,7 @@ Interval Tube::eval(const Interval& t, const Tube& v) const {
     if (t.is_degenerate()) {
       const double c = t.lb();
       const std::ptrdiff_t g = td_->time_index(c);
-      if (g < 0) {
-        const LocalSlice<R> s(dx, dv, ts, first);
-        return s.ok ? s.hull(c, c) : Interval::empty();
-      }
+      if (g < 0) return slice_part<R>(dx, dv, ts, first, c, c);
       // A time point: the gate, seen from both neighbouring slices.
       const auto k = static_cast<std::size_t>(g);
       double lo = dx.gates[k].lb(), hi = dx.gates[k].ub();
@@ -142,9 +148,7 @@ Interval Tube::eval(const Interval& t, const Tube& v) const {
     // The two end slices over their part of [t], the slices between in full.
     Interval r = Interval::empty();
     auto add_slice = [&](std::size_t k) {
-      const LocalSlice<R> s(dx, dv, ts, k);
-      if (!s.ok) return false;
-      const Interval h = s.hull(std::max(t.lb(), ts[k]), std::min(t.ub(), ts[k + 1]));
+      const Interval h = slice_part<R>(dx, dv, ts, k, std::max(t.lb(), ts[k]), std::min(t.ub(), ts[k + 1]));
       if (h.is_empty()) return false;
       r |= h;
       return true;
