@@ -2,27 +2,30 @@
 // The allocator of a tube's slices and gates. A new array is written once
 // over its whole length, and on Linux each fresh 4 KB page costs a fault
 // that clears it (about 3 µs on a VM: 23 ns for each 32-byte slice of a
-// tube, as much as computing it from an expression). Arrays of 1 MiB and
-// more are mapped in 2 MiB pieces given to the kernel's transparent huge
-// pages (madvise), one fault for 512 pages: 5 to 6 times less per byte.
-// The price: an array of 1 to 2 MiB takes 2 MiB (at most twice its size,
-// and less and less above). Smaller arrays, other systems and the
-// AddressSanitizer builds (which watch heap arrays) use the heap.
+// tube, as much as computing it from an expression). Arrays of 2 MiB and
+// more are mapped from a 2 MiB boundary, and their whole 2 MiB pieces are
+// given to the kernel's transparent huge pages (madvise): one fault for 512
+// pages, 5 to 6 times less per byte. The tail below 2 MiB keeps 4 KB pages,
+// so an array occupies its size rounded to 4 KB, as on the heap. Smaller
+// arrays, other systems and the AddressSanitizer builds (which watch heap
+// arrays) use the heap.
 #include <cstddef>
 #include <memory>
 #include <new>
 
 namespace sillage::detail {
 
-// Large pages from this size on.
-inline constexpr std::size_t kLargeArrayBytes = std::size_t{1} << 20;
-// Bytes of memory (2 MiB pieces, huge pages advised) or nullptr if not
+// Large pages from this size on (one huge page).
+inline constexpr std::size_t kLargeArrayBytes = std::size_t{2} << 20;
+// Bytes of memory (from a 2 MiB boundary, huge pages advised) or nullptr if not
 // available here (then the caller uses the heap); throws std::bad_alloc
 // when mapping fails.
 void* allocate_large(std::size_t bytes);
 void deallocate_large(void* p, std::size_t bytes) noexcept;
 // Whether allocate_large maps memory here (Linux, not under AddressSanitizer).
 bool large_arrays_mapped();
+// The memory an array of `bytes` (its capacity) occupies: whole 4 KB pages when mapped.
+std::size_t large_array_footprint(std::size_t bytes);
 
 template <class T>
 struct LargeArrayAllocator {

@@ -14,17 +14,22 @@ namespace sillage::detail {
 namespace {
 
 constexpr std::size_t kPiece = std::size_t{2} << 20;  // one huge page
+constexpr std::size_t kPage = 4096;
 
-std::size_t pieces(std::size_t bytes) { return (bytes + kPiece - 1) / kPiece * kPiece; }
+std::size_t pages(std::size_t bytes) { return (bytes + kPage - 1) / kPage * kPage; }
 
 }  // namespace
 
 bool large_arrays_mapped() { return SILLAGE_LARGE_ARRAYS_MAPPED; }
 
+std::size_t large_array_footprint(std::size_t bytes) {
+  return bytes >= kLargeArrayBytes && large_arrays_mapped() ? pages(bytes) : bytes;
+}
+
 #if SILLAGE_LARGE_ARRAYS_MAPPED
 
 void* allocate_large(std::size_t bytes) {
-  const std::size_t len = pieces(bytes);
+  const std::size_t len = pages(bytes);
   // Map one piece more, then unmap what is before the first 2 MiB boundary and after the array:
   // a huge page needs a 2 MiB-aligned range.
   void* raw = mmap(nullptr, len + kPiece, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -35,11 +40,13 @@ void* allocate_large(std::size_t bytes) {
   const std::uintptr_t end = base + len + kPiece;
   if (end > aligned + len) munmap(reinterpret_cast<void*>(aligned + len), end - (aligned + len));
   void* p = reinterpret_cast<void*>(aligned);
-  madvise(p, len, MADV_HUGEPAGE);  // advice only: without huge pages the memory works the same
+  // Advice only (without huge pages the memory works the same), on the whole pieces: a huge page
+  // over the tail would occupy memory the array does not use.
+  madvise(p, len / kPiece * kPiece, MADV_HUGEPAGE);
   return p;
 }
 
-void deallocate_large(void* p, std::size_t bytes) noexcept { munmap(p, pieces(bytes)); }
+void deallocate_large(void* p, std::size_t bytes) noexcept { munmap(p, pages(bytes)); }
 
 #else
 

@@ -215,7 +215,8 @@ std::shared_ptr<const SynthesisTree> Tube::synthesis_tree() const {
 }
 
 std::size_t Tube::memory_bytes() const {
-  std::size_t bytes = sizeof(TubeData) + (data_->slices.capacity() + data_->gates.capacity()) * sizeof(Interval);
+  std::size_t bytes = sizeof(TubeData) + detail::large_array_footprint(data_->slices.capacity() * sizeof(Interval)) +
+                      detail::large_array_footprint(data_->gates.capacity() * sizeof(Interval));
   TreeCache& c = data_->tree_cache;
   std::lock_guard<std::mutex> lock(c.mutex);
   if (c.tree) bytes += c.tree->memory_bytes();

@@ -1,5 +1,5 @@
-// The allocator of a tube's slices and gates: arrays of 1 MiB and more are
-// mapped in 2 MiB pieces (huge pages advised) where that is available, and
+// The allocator of a tube's slices and gates: arrays of 2 MiB and more are
+// mapped from a 2 MiB boundary (huge pages advised) where that is available, and
 // behave as any vector's storage: written, grown, copied, freed.
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@ using namespace sillage;
 
 namespace {
 
-constexpr std::size_t kLarge = detail::kLargeArrayBytes / sizeof(Interval);  // intervals in 1 MiB
+constexpr std::size_t kLarge = detail::kLargeArrayBytes / sizeof(Interval);  // intervals in 2 MiB
 
 }  // namespace
 
@@ -70,4 +70,18 @@ TEST(LargeArray, ALargeTubeIsTheSameAsItsSlicesSay) {
   td->sample(100.00005);  // splits a slice in both tubes: the arrays grow by one
   EXPECT_EQ(x.nb_slices(), y.nb_slices());
   EXPECT_EQ(x.data().slices, y.data().slices);
+}
+
+TEST(LargeArray, MemoryBytesCountsTheWholePages) {
+  // 200 000 slices: 3.2 MB per array, its size rounded to 4 KB pages when mapped.
+  auto td = TDomain::create(0.0, 200.0, 0.001);
+  const Tube x(td, Interval(0, 1));
+  const std::size_t slices = x.data().slices.capacity() * sizeof(Interval);
+  const std::size_t gates = x.data().gates.capacity() * sizeof(Interval);
+  const std::size_t page = 4096;
+  const std::size_t expected = detail::large_arrays_mapped()
+                                   ? (slices + page - 1) / page * page + (gates + page - 1) / page * page
+                                   : slices + gates;
+  EXPECT_EQ(x.memory_bytes(), sizeof(TubeData) + expected);
+  EXPECT_LE(x.memory_bytes(), 33 * td->nb_slices());  // 32 bytes per slice, as on the heap
 }
