@@ -10,8 +10,12 @@
 // arrays, other systems and the AddressSanitizer builds (which watch heap
 // arrays) use the heap.
 #include <cstddef>
+#include <iterator>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace sillage::detail {
 
@@ -26,6 +30,12 @@ void deallocate_large(void* p, std::size_t bytes) noexcept;
 bool large_arrays_mapped();
 // The memory an array of `bytes` (its capacity) occupies: whole 4 KB pages when mapped.
 std::size_t large_array_footprint(std::size_t bytes);
+
+// What an element is constructed from to be left unwritten (see
+// unwritten_array): the array's new elements are then written by several
+// threads at once, each touching its own pages first, instead of written
+// twice (once here, once with their values) with all the page faults on one thread.
+struct Unwritten {};
 
 template <class T>
 struct LargeArrayAllocator {
@@ -48,10 +58,48 @@ struct LargeArrayAllocator {
       std::allocator<T>().deallocate(p, n);
     }
   }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  // Left for the caller to write (T is trivially copyable and destructible:
+  // its objects begin with the storage).
+  template <class U>
+  void construct(U*, Unwritten) noexcept {}
   template <class U>
   bool operator==(const LargeArrayAllocator<U>&) const noexcept {
     return true;
   }
 };
+
+// Tags Unwritten, counted: the range a vector is constructed from.
+class UnwrittenIterator {
+ public:
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = Unwritten;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const Unwritten*;
+  using reference = Unwritten;
+  UnwrittenIterator() = default;
+  explicit UnwrittenIterator(std::size_t i) : i_(i) {}
+  Unwritten operator*() const { return {}; }
+  UnwrittenIterator& operator++() {
+    ++i_;
+    return *this;
+  }
+  UnwrittenIterator operator++(int) { return UnwrittenIterator(i_++); }
+  bool operator==(const UnwrittenIterator&) const = default;
+
+ private:
+  std::size_t i_ = 0;
+};
+
+// An array of n elements not written: the caller writes every one of them
+// before anything reads them.
+template <class T>
+std::vector<T, LargeArrayAllocator<T>> unwritten_array(std::size_t n) {
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+  return std::vector<T, LargeArrayAllocator<T>>(UnwrittenIterator(0), UnwrittenIterator(n));
+}
 
 }  // namespace sillage::detail

@@ -3,38 +3,39 @@
 #include <algorithm>
 #include <vector>
 
+#include "sillage/tube/chunks.h"
 #include "sillage/tube/tube.h"
 
 namespace sillage::detail {
 
 namespace {
 
-constexpr std::size_t kChunk = 256;  // the batch evaluator's chunk: its rows stay in cache
-
-// (out[i]->*column)[k] = f(domain(k)) for k < count and each output i (the column is
-// replaced), by chunks of kChunk appended from a buffer in cache.
+// (out[i]->*column)[k] = f(domain(k)) for k < count and each output i (the
+// column is replaced). Each chunk is evaluated straight into the columns; the
+// chunks are independent, so the values do not depend on how many threads
+// share them.
 template <class Domain>
 void eval_elements(const Function& f, std::size_t count, Domain domain, std::span<TubeData* const> out,
                    TubeArray TubeData::*column) {
-  Interval in[kChunk];
-  const Interval* xs[1] = {in};
-  std::vector<Interval> buffer(out.size() * kChunk);
-  std::vector<Interval*> ys(out.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    ys[i] = buffer.data() + i * kChunk;
-    (out[i]->*column).clear();
-    (out[i]->*column).reserve(count);
-  }
-  for (std::size_t start = 0; start < count; start += kChunk) {
-    const std::size_t c = std::min(kChunk, count - start);
-    for (std::size_t j = 0; j < c; ++j) in[j] = domain(start + j);
-    f.eval_batch(std::span<const Interval* const>(xs, 1), c, std::span<Interval* const>(ys));
-    for (std::size_t i = 0; i < out.size(); ++i) {
-      Interval* y = ys[i];
-      for (std::size_t j = 0; j < c; ++j) y[j] = unknown_where_undefined(y[j]);
-      TubeArray& v = out[i]->*column;
-      v.insert(v.end(), y, y + c);
+  for (TubeData* d : out) d->*column = unwritten_array<Interval>(count);
+  const auto run = [&](std::size_t begin, std::size_t end) {
+    Interval in[kChunk];
+    const Interval* xs[1] = {in};
+    std::vector<Interval*> ys(out.size());
+    for (std::size_t start = begin; start < end; start += kChunk) {
+      const std::size_t c = std::min(kChunk, end - start);
+      for (std::size_t j = 0; j < c; ++j) in[j] = domain(start + j);
+      for (std::size_t i = 0; i < out.size(); ++i) ys[i] = (out[i]->*column).data() + start;
+      f.eval_batch(std::span<const Interval* const>(xs, 1), c, std::span<Interval* const>(ys));
+      for (Interval* y : ys)
+        for (std::size_t j = 0; j < c; ++j) y[j] = unknown_where_undefined(y[j]);
     }
+  };
+  try {
+    for_chunks(count, run);
+  } catch (...) {
+    for (TubeData* d : out) (d->*column).clear();  // no element left unwritten
+    throw;
   }
 }
 

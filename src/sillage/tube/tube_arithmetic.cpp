@@ -5,6 +5,7 @@
 #include "sillage/error.h"
 #include "sillage/expr/batch_kernels.h"
 #include "sillage/interval/trig_batch.h"
+#include "sillage/tube/chunks.h"
 
 namespace sillage {
 
@@ -28,12 +29,14 @@ Tube unary(const Tube& x, F f) {
 }
 
 // f over the slices and the gates as rows (interval/trig_batch.h: in place,
-// end point values by a vectorised kernel).
+// end point values by a vectorised kernel), by chunks (tube/chunks.h).
 Tube unary_rows(const Tube& x, void (*f)(const Interval*, Interval*, std::size_t)) {
   Tube z(x);
   TubeData& d = z.data();
-  f(d.slices.data(), d.slices.data(), d.slices.size());
-  f(d.gates.data(), d.gates.data(), d.gates.size());
+  for (TubeArray* v : {&d.slices, &d.gates}) {
+    Interval* y = v->data();
+    detail::for_chunks(v->size(), [&](std::size_t begin, std::size_t end) { f(y + begin, y + begin, end - begin); });
+  }
   z.touch();
   return z;
 }
