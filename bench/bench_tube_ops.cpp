@@ -1,11 +1,15 @@
 // Per-slice cost of building and combining tubes, for N = 1e4, 1e5, 1e6:
 // construction from an expression of t (one batch evaluation), arithmetic
 // (+, *, cos), the pointwise contractor v - x4 cos x3 = 0 on every slice and
-// gate, and the same in a ContractorNetwork. Counter ns_per_slice.
+// gate, and the same in a ContractorNetwork. Counter ns_per_slice. The
+// construction shares its chunks among threads: its figures are wall time,
+// with all the threads of the machine and with one thread.
 #include <benchmark/benchmark.h>
 
 #include <functional>
 #include <memory>
+
+#include <tbb/global_control.h>
 
 #include "sillage/cn/contractor_network.h"
 #include "sillage/interval/elementary.h"
@@ -27,8 +31,17 @@ void per_slice(benchmark::State& state) {
       static_cast<double>(state.range(0)), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// range(1): the number of threads allowed (0: the machine's).
+tbb::global_control thread_limit(const benchmark::State& state) {
+  const std::size_t threads = state.range(1) > 0 ? static_cast<std::size_t>(state.range(1))
+                                                 : tbb::global_control::active_value(
+                                                       tbb::global_control::max_allowed_parallelism);
+  return tbb::global_control(tbb::global_control::max_allowed_parallelism, threads);
+}
+
 void BM_TubeFromExpression(benchmark::State& state) {
   const auto td = domain(state);
+  const tbb::global_control limit = thread_limit(state);
   for (auto _ : state) {
     Tube x(td, "-9/20*cos(t/5) + [-0.001,0.001]");
     benchmark::DoNotOptimize(x);
@@ -49,6 +62,7 @@ void BM_TubeBinary(benchmark::State& state, Op op) {
 
 void BM_TubeCos(benchmark::State& state) {
   const auto td = domain(state);
+  const tbb::global_control limit = thread_limit(state);
   const Tube a(td, "t/5 + [-0.01, 0.01]");
   for (auto _ : state) {
     Tube c = cos(a);
@@ -90,12 +104,18 @@ void BM_TubeNetworkPointwise(benchmark::State& state) {
   per_slice(state);
 }
 
-BENCHMARK(BM_TubeFromExpression)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeFromExpression)
+    ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TubeBinary, add, std::plus<>())
     ->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TubeBinary, mul, std::multiplies<>())
     ->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TubeCos)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeCos)
+    ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TubePointwiseContractor)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TubeNetworkPointwise)->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
 
