@@ -5,6 +5,7 @@
 
 #include "sillage/budget.h"
 #include "sillage/error.h"
+#include "sillage/threads.h"
 
 #include "sillage/interval/backward.h"
 #include "sillage/interval/elementary.h"

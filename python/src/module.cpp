@@ -8,6 +8,7 @@ PYBIND11_MODULE(_sillage, m) {
   m.attr("__version__") = SILLAGE_VERSION;  // project(sillage VERSION ...) in CMakeLists.txt
   sillage::python::init_errors(m);
   sillage::python::init_budget(m);
+  sillage::python::init_threads(m);
   sillage::python::init_interval(m);
   sillage::python::init_expr(m);
   sillage::python::init_ctc(m);

@@ -15,7 +15,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <tbb/global_control.h>
 
 #include "sillage/problem/check_summary.h"
 #include "sillage/figures/tube_figure.h"
@@ -23,6 +22,7 @@
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/write_results.h"
+#include "sillage/threads.h"
 #include "sillage/tube/tube_io.h"
 
 using namespace sillage;
@@ -59,8 +59,8 @@ void save_tubes(const SolveResult& r, const std::string& out) {
 
 int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions,
           const std::string& scheduling, int threads, bool quiet, bool tubes) {
-  std::optional<tbb::global_control> control;
-  if (threads > 0) control.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  std::optional<ThreadLimit> limit;
+  if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
   SolveOptions o;
   o.delta = parse_delta(delta_text, o.auto_delta);
   if (regions) o.refinement = DeltaRefinement::Regions;
