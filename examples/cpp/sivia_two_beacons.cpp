@@ -3,6 +3,8 @@
 // the line of the beacons; SIVIA (Alg. 1) characterizes both parts. Three
 // variants, as in Fig. 2.13: plain SIVIA, SIVIA contracting each undetermined
 // box before bisecting it (the thesis' coupling), and SIVIA with separators.
+// SIVIA uses every thread of the machine; on one thread (ThreadLimit) the
+// paving is the same.
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include "sillage/ctc/sep_function.h"
 #include "sillage/figures/figure.h"
 #include "sillage/paving/sivia_function.h"
+#include "sillage/threads.h"
 
 using namespace sillage;
 
@@ -82,6 +85,15 @@ int example_main(int argc, char** argv) {
   }
   std::printf("  (0, 0) and its mirror image (%.3f, %.3f) lie in the outer approximation: %s\n", mirror[0],
               mirror[1], ok ? "yes" : "NO");
+  const std::size_t threads = ThreadLimit::current();
+  const Run alone = [&] {
+    const ThreadLimit one(1);
+    return timed("plain SIVIA, one thread", [&] { return sivia(x0, g, y, eps); });
+  }();
+  const bool same = alone.paving == runs[0].paving;
+  std::printf("  plain SIVIA on 1 thread (ThreadLimit) against %zu: the same paving: %s (%.1f ms against %.1f ms)\n",
+              threads, same ? "yes" : "NO", alone.seconds * 1e3, runs[0].seconds * 1e3);
+  ok = ok && same;
   example::print_result("sivia_two_beacons", result.str(), ok, figures);
   return ok ? 0 : 1;
 }
