@@ -30,7 +30,8 @@ void init_threads(py::module_& m) {
              }
              return ScopedThreadLimit{static_cast<std::size_t>(threads), nullptr};
            }),
-           py::arg("threads"))
+           py::arg("threads"),
+           "A limit of `threads` threads (at least 1), in force inside a `with` block: `with sillage.ThreadLimit(1): ...`.")
       .def_property_readonly("threads", [](const ScopedThreadLimit& s) { return s.threads; }, DOC(ThreadLimit, threads))
       .def(
           "__enter__",
