@@ -1,4 +1,5 @@
 #include "sillage/tube/tube.h"
+#include "sillage/tube/chunks.h"
 #include "sillage/tube/synthesis_tree.h"
 #include "sillage/tube/tdomain_eval.h"
 #include "sillage/tube/time_search.h"
@@ -32,10 +33,36 @@ std::shared_ptr<const SynthesisTree> current_tree(TubeData& d) {
   return nullptr;
 }
 
+// n copies of x, or a copy of a: large arrays by chunks on several threads
+// (tube/chunks.h), each thread faulting in its own pages.
+TubeArray filled(std::size_t n, const Interval& x) {
+  TubeArray v = detail::unwritten_array<Interval>(n);
+  detail::for_chunks(
+      n, [&](std::size_t b, std::size_t e) { std::fill(v.data() + b, v.data() + e, x); }, detail::kParallelCopyFrom);
+  return v;
+}
+
+TubeArray copied(const TubeArray& a) {
+  TubeArray v = detail::unwritten_array<Interval>(a.size());
+  detail::for_chunks(
+      a.size(), [&](std::size_t b, std::size_t e) { std::copy(a.data() + b, a.data() + e, v.data() + b); },
+      detail::kParallelCopyFrom);
+  return v;
+}
+
 std::shared_ptr<TubeData> make_data(std::size_t n, const Interval& x) {
   auto d = std::make_shared<TubeData>();
-  d->slices.assign(n, x);
-  d->gates.assign(n + 1, x);
+  d->slices = filled(n, x);
+  d->gates = filled(n + 1, x);
+  return d;
+}
+
+// A copy of x's values and version (not of its cached tree).
+std::shared_ptr<TubeData> copy_data(const TubeData& x) {
+  auto d = std::make_shared<TubeData>();
+  d->slices = copied(x.slices);
+  d->gates = copied(x.gates);
+  d->version = x.version;
   return d;
 }
 
@@ -131,7 +158,7 @@ const Function& scalar_of_t(const Function& f) {
 Tube::Tube(std::shared_ptr<TDomain> td, const Function& f)
     : Tube(std::move(detail::tubes_of_function(checked(td, "Tube(td, f)"), scalar_of_t(f)).front())) {}
 
-Tube::Tube(const Tube& x) : td_(x.td_), data_(std::make_shared<TubeData>(*x.data_)) {
+Tube::Tube(const Tube& x) : td_(x.td_), data_(copy_data(*x.data_)) {
   td_->attach(data_);
 }
 
@@ -144,7 +171,7 @@ Tube& Tube::operator=(const Tube& x) {
     return *this;
   }
   td_ = x.td_;
-  data_ = std::make_shared<TubeData>(*x.data_);
+  data_ = copy_data(*x.data_);
   td_->attach(data_);
   return *this;
 }

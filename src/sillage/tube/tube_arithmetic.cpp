@@ -11,20 +11,29 @@ namespace sillage {
 
 namespace {
 
-// x := f(x) slice- and gate-wise.
+// x := f(x) slice- and gate-wise, by chunks (tube/chunks.h): on several
+// threads from parallel_from elements on (f of one element alone: the same
+// bits for any number of threads).
 template <class F>
-Tube& unary_inplace(Tube& x, F f) {
+Tube& unary_inplace(Tube& x, F f, std::size_t parallel_from = detail::kParallelCopyFrom) {
   TubeData& d = x.data();
-  for (auto& y : d.slices) y = f(y);
-  for (auto& y : d.gates) y = f(y);
+  for (TubeArray* v : {&d.slices, &d.gates}) {
+    Interval* y = v->data();
+    detail::for_chunks(
+        v->size(),
+        [&](std::size_t b, std::size_t e) {
+          for (std::size_t i = b; i < e; ++i) y[i] = f(y[i]);
+        },
+        parallel_from);
+  }
   x.touch();
   return x;
 }
 
 template <class F>
-Tube unary(const Tube& x, F f) {
+Tube unary(const Tube& x, F f, std::size_t parallel_from = detail::kParallelCopyFrom) {
   Tube z(x);
-  unary_inplace(z, f);
+  unary_inplace(z, f, parallel_from);
   return z;
 }
 
@@ -118,7 +127,7 @@ Tube operator&(const Tube& x, const Tube& y) { Tube z(x); z &= y; return z; }
 Tube operator|(const Tube& x, const Tube& y) { Tube z(x); z |= y; return z; }
 
 #define SILLAGE_TUBE_UNARY(name) \
-  Tube name(const Tube& x) { return unary(x, [](const Interval& a) { return name(a); }); }
+  Tube name(const Tube& x) { return unary(x, [](const Interval& a) { return name(a); }, detail::kParallelFrom); }
 SILLAGE_TUBE_UNARY(sqr)
 SILLAGE_TUBE_UNARY(sqrt)
 SILLAGE_TUBE_UNARY(abs)

@@ -1,14 +1,38 @@
-// ThreadLimit: the smallest limit alive holds, and a tube built under a
-// limit of one thread is the tube built with all of them.
+// ThreadLimit: the smallest limit alive holds, and what sillage computes on
+// several threads (tubes from expressions, copies and whole-line tubes of
+// 65536 elements and more, sin, cos, exp... of tubes) is the same under a
+// limit of one thread.
 #include <gtest/gtest.h>
 
 #include "sillage/error.h"
+#include "sillage/interval/elementary.h"
 #include "sillage/threads.h"
 #include "sillage/tube/tube.h"
+#include "sillage/tube/tube_arithmetic.h"
 
 #include "kit/same_bits.h"
 
 using namespace sillage;
+
+namespace {
+
+void expect_same_bits(const Tube& a, const Tube& b) {
+  ASSERT_EQ(a.nb_slices(), b.nb_slices());
+  for (std::size_t k = 0; k < a.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(a.slice(k), b.slice(k))) << k;
+  for (std::size_t k = 0; k <= a.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(a.gate(k), b.gate(k))) << k;
+}
+
+// The tubes f computes, with all threads and with one.
+template <class F>
+void expect_same_under_one_thread(F f) {
+  const auto all = f();
+  const ThreadLimit one(1);
+  const auto alone = f();
+  ASSERT_EQ(all.size(), alone.size());
+  for (std::size_t i = 0; i < all.size(); ++i) expect_same_bits(all[i], alone[i]);
+}
+
+}  // namespace
 
 TEST(ThreadLimit, TheSmallestLimitAliveHolds) {
   const std::size_t all = ThreadLimit::current();
@@ -24,11 +48,15 @@ TEST(ThreadLimit, TheSmallestLimitAliveHolds) {
   EXPECT_THROW(ThreadLimit(0), Error);
 }
 
-TEST(ThreadLimit, ATubeIsTheSameUnderAnyLimit) {
-  const auto td = TDomain::create(0.0, 50.0, 0.001);
-  const Tube all(td, "exp(-t/20)*sin(3*t) + [-0.01, 0.01]");
-  const ThreadLimit one(1);
-  const Tube alone(td, "exp(-t/20)*sin(3*t) + [-0.01, 0.01]");
-  for (std::size_t k = 0; k < all.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(all.slice(k), alone.slice(k))) << k;
-  for (std::size_t k = 0; k <= all.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(all.gate(k), alone.gate(k))) << k;
+TEST(ThreadLimit, TubesAreTheSameUnderAnyLimit) {
+  const auto td = TDomain::create(0.0, 100.0, 0.001);  // 10^5 slices: every parallel path
+  const Tube x(td, "exp(-t/20)*sin(3*t) + [-0.01, 0.01]");
+  expect_same_under_one_thread([&] {
+    const Tube copy(x);
+    Tube assigned(TDomain::create(0.0, 1.0, 0.5), Interval(0.0));
+    assigned = x;
+    return std::vector<Tube>{Tube(td, "exp(-t/20)*sin(3*t) + [-0.01, 0.01]"), copy, assigned,
+                             Tube(td, Interval(-1.0, 2.0)), exp(x), atan(x), sqrt(x), sin(x), cos(x), x + Interval(1.0, 2.0)};
+  });
+  expect_same_bits(Tube(x), x);
 }
