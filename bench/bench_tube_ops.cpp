@@ -60,15 +60,27 @@ void BM_TubeBinary(benchmark::State& state, Op op) {
   per_slice(state);
 }
 
-void BM_TubeCos(benchmark::State& state) {
+// op(a) for the tube a of the expression `a_of_t`, in wall time, with range(1) threads.
+template <class Op>
+void unary_bench(benchmark::State& state, const char* a_of_t, Op op) {
   const auto td = domain(state);
   const tbb::global_control limit = thread_limit(state);
-  const Tube a(td, "t/5 + [-0.01, 0.01]");
+  const Tube a(td, a_of_t);
   for (auto _ : state) {
-    Tube c = cos(a);
+    Tube c = op(a);
     benchmark::DoNotOptimize(c);
   }
   per_slice(state);
+}
+
+void BM_TubeCos(benchmark::State& state) {
+  unary_bench(state, "t/5 + [-0.01, 0.01]", [](const Tube& a) { return cos(a); });
+}
+void BM_TubeExp(benchmark::State& state) {
+  unary_bench(state, "cos(t)/2 + [-0.01, 0.01]", [](const Tube& a) { return exp(a); });
+}
+void BM_TubeCopy(benchmark::State& state) {
+  unary_bench(state, "cos(t)/2 + [-0.01, 0.01]", [](const Tube& a) { return Tube(a); });
 }
 
 const sillage::CtcFunction& v_ctc() {
@@ -113,6 +125,14 @@ BENCHMARK_CAPTURE(BM_TubeBinary, add, std::plus<>())
 BENCHMARK_CAPTURE(BM_TubeBinary, mul, std::multiplies<>())
     ->RangeMultiplier(10)->Range(10000, 1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TubeCos)
+    ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeExp)
+    ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TubeCopy)
     ->ArgsProduct({{10000, 100000, 1000000}, {0, 1}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
