@@ -10,17 +10,13 @@
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_arithmetic.h"
 
-#include "kit/same_bits.h"
+#include "kit/same_tube.h"
 
 using namespace sillage;
 
 namespace {
 
-void expect_same_bits(const Tube& a, const Tube& b) {
-  ASSERT_EQ(a.nb_slices(), b.nb_slices());
-  for (std::size_t k = 0; k < a.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(a.slice(k), b.slice(k))) << k;
-  for (std::size_t k = 0; k <= a.nb_slices(); ++k) ASSERT_TRUE(test::same_bits(a.gate(k), b.gate(k))) << k;
-}
+using test::expect_same_bits;
 
 // The tubes f computes, with all threads and with one.
 template <class F>

@@ -15,7 +15,7 @@
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/tube/tube_ctc.h"
 
-#include "kit/same_bits.h"
+#include "kit/same_tube.h"
 
 using namespace sillage;
 
@@ -31,12 +31,7 @@ class PerBox : public Ctc {
   CtcFunction f_;
 };
 
-using test::same_bits;
-
-void expect_same(const Tube& a, const Tube& b) {
-  for (std::size_t k = 0; k < a.nb_slices(); ++k) ASSERT_TRUE(same_bits(a.slice(k), b.slice(k))) << "slice " << k;
-  for (std::size_t k = 0; k <= a.nb_slices(); ++k) ASSERT_TRUE(same_bits(a.gate(k), b.gate(k))) << "gate " << k;
-}
+using test::expect_same_bits;
 
 // A tube around a random walk from c, with random thickness, its gates narrowed at random.
 Tube random_tube(const std::shared_ptr<TDomain>& td, std::mt19937_64& rng, double c, double spread) {
@@ -71,7 +66,7 @@ void check(const CtcFunction& f, const std::vector<std::pair<double, double>>& a
   const bool ok_batch = contract(f, pa);
   const bool ok_box = contract(PerBox(f), pb);
   EXPECT_EQ(ok_batch, ok_box);
-  for (std::size_t i = 0; i < a.size(); ++i) expect_same(a[i], b[i]);
+  for (std::size_t i = 0; i < a.size(); ++i) expect_same_bits(a[i], b[i]);
 
   std::vector<std::shared_ptr<Tube>> na, nb;
   ContractorNetwork cna, cnb;
@@ -85,7 +80,7 @@ void check(const CtcFunction& f, const std::vector<std::pair<double, double>>& a
   cna.add(std::make_shared<CtcFunction>(f), da);
   cnb.add(std::make_shared<PerBox>(f), db);
   EXPECT_EQ(cna.contract().empty, cnb.contract().empty);
-  for (std::size_t i = 0; i < na.size(); ++i) expect_same(*na[i], *nb[i]);
+  for (std::size_t i = 0; i < na.size(); ++i) expect_same_bits(*na[i], *nb[i]);
 }
 
 // Tubes v, a, b contracted by v - b cos a in `band`, directly or in a network.

@@ -6,20 +6,20 @@
 
 #include <vector>
 
-#include <tbb/global_control.h>
-
 #include "sillage/expr/function.h"
+#include "sillage/threads.h"
 #include "sillage/tube/large_array.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_arithmetic.h"
 #include "sillage/tube/tube_vector.h"
 
-#include "kit/same_bits.h"
+#include "kit/same_tube.h"
 
 using namespace sillage;
 
 namespace {
 
+using test::expect_same_bits;
 using test::same_bits;
 
 // f over one time element, through the same batch evaluator.
@@ -39,12 +39,6 @@ void expect_elementwise(const Tube& x, const Function& f) {
   for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
     ASSERT_TRUE(same_bits(x.gate(k), one_element(f, Interval(td.t(k))))) << "gate " << k;
   }
-}
-
-void expect_same_bits(const Tube& a, const Tube& b) {
-  ASSERT_EQ(a.nb_slices(), b.nb_slices());
-  for (std::size_t k = 0; k < a.nb_slices(); ++k) ASSERT_TRUE(same_bits(a.slice(k), b.slice(k))) << "slice " << k;
-  for (std::size_t k = 0; k <= a.nb_slices(); ++k) ASSERT_TRUE(same_bits(a.gate(k), b.gate(k))) << "gate " << k;
 }
 
 }  // namespace
@@ -74,7 +68,7 @@ TEST(TubeFromFunction, TheSameBitsForAnyNumberOfThreads) {
   for (const std::size_t n : {3000u, 40000u, 140001u}) {  // the last one on large pages
     const auto td = TDomain::create(0.0, 100.0, 100.0 / static_cast<double>(n));
     const Tube several(td, f);
-    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const ThreadLimit one(1);
     const Tube alone(td, f);
     expect_same_bits(several, alone);
   }
@@ -84,7 +78,7 @@ TEST(TubeFromFunction, SinAndCosOfATubeTheSameForAnyNumberOfThreads) {
   const auto td = TDomain::create(0.0, 1000.0, 0.01);  // 10^5 slices
   const Tube x(td, "t/3 + [-0.02, 0.01]*sin(t)");
   const Tube s = sin(x), c = cos(x);
-  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  const ThreadLimit one(1);
   expect_same_bits(s, sin(x));
   expect_same_bits(c, cos(x));
 }
