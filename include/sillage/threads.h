@@ -1,8 +1,10 @@
 #pragma once
 // The threads of sillage's parallel work: SIVIA and its variants, the
-// t-plane's components and proofs, the temporal SLAM's loops, tubes built
-// from expressions and sin / cos of tubes (from 2048 slices on). All of the
-// machine's by default (oneTBB); the results never depend on their number.
+// t-plane's components and proofs, the temporal SLAM's loops, and the
+// pointwise work on large tubes (built from expressions, sin, exp... of a
+// tube from 2048 slices; copies, constant tubes, operations with an interval
+// from 65536). All of the machine's by default (oneTBB); the results never
+// depend on their number.
 #include <cstddef>
 #include <memory>
 

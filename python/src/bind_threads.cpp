@@ -22,7 +22,7 @@ struct ScopedThreadLimit {
 void init_threads(py::module_& m) {
   py::class_<ScopedThreadLimit>(m, "ThreadLimit",
                                 "At most `threads` threads for sillage's parallel work inside the `with` block "
-                                "(SIVIA, the t-plane, the SLAM's loops, tubes from expressions, sin/cos of tubes); "
+                                "(SIVIA, the t-plane, the SLAM's loops, the pointwise work on large tubes); "
                                 "the results never depend on it. Error if threads < 1.")
       .def(py::init([](long long threads) {
              if (threads < 1) {

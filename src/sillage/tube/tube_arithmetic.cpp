@@ -11,22 +11,26 @@ namespace sillage {
 
 namespace {
 
-// x := f(x) slice- and gate-wise, by chunks (tube/chunks.h): on several
-// threads from parallel_from elements on (f of one element alone: the same
-// bits for any number of threads).
-template <class F>
-Tube& unary_inplace(Tube& x, F f, std::size_t parallel_from = detail::kParallelCopyFrom) {
+// run(y, begin, end) over the pieces [begin, end) of x's slices and of its
+// gates (y their array), by chunks (tube/chunks.h): on several threads from
+// parallel_from elements on. Each element computed from itself alone: the
+// same bits for any number of threads.
+template <class Run>
+void each_chunk(Tube& x, std::size_t parallel_from, const Run& run) {
   TubeData& d = x.data();
   for (TubeArray* v : {&d.slices, &d.gates}) {
     Interval* y = v->data();
-    detail::for_chunks(
-        v->size(),
-        [&](std::size_t b, std::size_t e) {
-          for (std::size_t i = b; i < e; ++i) y[i] = f(y[i]);
-        },
-        parallel_from);
+    detail::for_chunks(v->size(), [&](std::size_t b, std::size_t e) { run(y, b, e); }, parallel_from);
   }
   x.touch();
+}
+
+// x := f(x) slice- and gate-wise.
+template <class F>
+Tube& unary_inplace(Tube& x, F f, std::size_t parallel_from = detail::kParallelCopyFrom) {
+  each_chunk(x, parallel_from, [&](Interval* y, std::size_t b, std::size_t e) {
+    for (std::size_t i = b; i < e; ++i) y[i] = f(y[i]);
+  });
   return x;
 }
 
@@ -38,15 +42,10 @@ Tube unary(const Tube& x, F f, std::size_t parallel_from = detail::kParallelCopy
 }
 
 // f over the slices and the gates as rows (interval/trig_batch.h: in place,
-// end point values by a vectorised kernel), by chunks (tube/chunks.h).
+// end point values by a vectorised kernel).
 Tube unary_rows(const Tube& x, void (*f)(const Interval*, Interval*, std::size_t)) {
   Tube z(x);
-  TubeData& d = z.data();
-  for (TubeArray* v : {&d.slices, &d.gates}) {
-    Interval* y = v->data();
-    detail::for_chunks(v->size(), [&](std::size_t begin, std::size_t end) { f(y + begin, y + begin, end - begin); });
-  }
-  z.touch();
+  each_chunk(z, detail::kParallelFrom, [&](Interval* y, std::size_t b, std::size_t e) { f(y + b, y + b, e - b); });
   return z;
 }
 
