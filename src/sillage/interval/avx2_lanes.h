@@ -72,7 +72,8 @@ SILLAGE_AVX2_INLINE V step_down(V p, M m) {
 SILLAGE_AVX2_INLINE V add_up(V a, V b) {
   const V s = _mm256_add_pd(a, b), bv = _mm256_sub_pd(s, a);
   const V e = _mm256_add_pd(_mm256_sub_pd(a, _mm256_sub_pd(s, bv)), _mm256_sub_pd(b, bv));
-  return max_nb(step_up(s, gt(e, set(0.0))), set(-rounding::kMax));
+  const M bv_overflowed = lt(bv, set(-rounding::kMax)) & ge(s, set(-rounding::kMax));  // as the scalar add_up
+  return max_nb(step_up(s, gt(e, set(0.0)) | bv_overflowed), set(-rounding::kMax));
 }
 SILLAGE_AVX2_INLINE V add_down(V a, V b) { return neg(add_up(neg(a), neg(b))); }
 SILLAGE_AVX2_INLINE V sub_up(V a, V b) { return add_up(a, neg(b)); }

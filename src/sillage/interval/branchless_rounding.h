@@ -80,8 +80,11 @@ inline double add_up(double a, double b) {
   const double bv = s - a;
   const double e = (a - (s - bv)) + (b - bv);
   // e > 0 implies s finite and nonzero. A finite sum overflowing to -inf
-  // (e is then NaN) rounds up to -max.
-  return max_nb(next_up_if(s, e > 0), -rounding::kMax);
+  // (e is then NaN) rounds up to -max. The one other overflow of 2Sum: s
+  // finite but bv = s - a = b + (s - (a + b)) past -max (b = -max, s rounded
+  // down by half an ulp of 2^1023): e is NaN, s < a + b, so s steps up.
+  const bool bv_overflowed = (bv < -rounding::kMax) & (s >= -rounding::kMax);
+  return max_nb(next_up_if(s, (e > 0) | bv_overflowed), -rounding::kMax);
 }
 
 inline double add_down(double a, double b) { return -add_up(-a, -b); }  // a, b < +inf

@@ -48,11 +48,12 @@ struct PairLanes {
     return _mm_blendv_pd(away, toward, p);
   }
 
-  // Upper bound of a + b per lane (a, b > -inf): 2Sum, as add_up.
+  // Upper bound of a + b per lane (a, b > -inf): 2Sum, as add_up (its overflow of bv included).
   static P add_up(P a, P b) {
     const P s = _mm_add_pd(a, b), bv = _mm_sub_pd(s, a);
     const P e = _mm_add_pd(_mm_sub_pd(a, _mm_sub_pd(s, bv)), _mm_sub_pd(b, bv));
-    return _mm_max_pd(step_up(s, lt(both(0.0), e)), both(-rounding::kMax));
+    const P bv_overflowed = _mm_and_pd(lt(bv, both(-rounding::kMax)), le(both(-rounding::kMax), s));
+    return _mm_max_pd(step_up(s, _mm_or_pd(lt(both(0.0), e), bv_overflowed)), both(-rounding::kMax));
   }
 
   // Upper bound of a·b per lane, 0·inf taken as 0; exact outside mul_rare.

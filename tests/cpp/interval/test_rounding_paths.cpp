@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -121,4 +122,25 @@ TEST(RoundingPaths, SetSemanticsEdges) {
   const Interval c = Interval(1.0) - Interval(1.0);  // exact zero: +0 bounds on both paths
   EXPECT_FALSE(std::signbit(c.lb()));
   EXPECT_FALSE(std::signbit(c.ub()));
+}
+
+// 2Sum's first difference bv = s - a overflows, the sum not: a + (-max) with
+// a = 0x1.0000000000003p+1022 is a tie at 2^1023 broken toward -max. The
+// upper bound is the double above s on every path (the exact sum lies
+// strictly between them; rounding.h's ordered Fast2Sum never overflows).
+TEST(RoundingPaths, TwoSumOverflowOfTheDifference) {
+  const double a = 0x1.0000000000003p+1022;
+  const double s = a - kMax;  // round to nearest: below a - max
+  const double up = std::nextafter(s, kInf);
+  EXPECT_EQ(rounding::add_up(a, -kMax), up);
+  EXPECT_EQ(rounding::add_down(a, -kMax), s);
+  const bool initial = detail::hardware_rounding();
+  for (const bool hardware : {false, true}) {
+    detail::set_hardware_rounding(hardware);
+    EXPECT_EQ((Interval(a) + Interval(-kMax)).ub(), up) << hardware;
+    EXPECT_EQ((Interval(a) - Interval(kMax)).ub(), up) << hardware;
+    EXPECT_EQ((Interval(-a) + Interval(kMax)).lb(), -up) << hardware;
+    EXPECT_EQ((Interval(-a) - Interval(-kMax)).lb(), -up) << hardware;
+  }
+  detail::set_hardware_rounding(initial);
 }

@@ -19,7 +19,10 @@ inline std::vector<Interval> adversarial_intervals() {
       -inf, -max, -1e308, -0x1p1000, -3.0, -1.0, -0.1, -0x1.8p-968, -0x1p-968, -0x1p-1000,
       -std::numeric_limits<double>::min(), -tiny, 0.0, tiny, 3 * tiny, std::numeric_limits<double>::min(),
       0x1p-1000, 0x1p-969, 0x1p-968, 0x1p-484, 0x1p-500, 0.1, 1.0, 1.0 + 0x1p-52, 3.0, 0x1p512, 0x1p1000,
-      1e308, max, inf};
+      1e308, max, inf,
+      // ∓max plus these rounds to nearest by half an ulp of 2^1023 toward ∓max, so that the
+      // 2Sum's s - a overflows while the sum does not.
+      0x1.0000000000003p+1022, -0x1.0000000000003p+1022};
   std::vector<Interval> r = {Interval::empty()};
   for (double a : v)
     for (double b : v)
