@@ -1,7 +1,7 @@
 #pragma once
 // Tiny shared helpers of the C++ examples: their entry (run), `--name value`
 // options, the --out folder and the RESULT line that examples/run_demo.py
-// reads. A bad command line (unknown option, missing value, text where a
+// reads. --help (or -h) prints the usage line and exits 0. A bad command line (unknown option, missing value, text where a
 // number is expected) prints the problem and a usage line and exits with
 // status 2, as the Python examples' argparse does; so does bad data (run).
 #include <cmath>
@@ -54,15 +54,21 @@ inline std::vector<std::string> accepted_options(const std::string& program) {
   return r;
 }
 
-// Prints "<program>: <message>" and the usage line, and exits with status 2.
-[[noreturn]] inline void usage_error(const std::string& program, const std::string& message) {
-  std::cerr << program << ": " << message << "\nusage: " << program;
+// "usage: <program> [--out DIR] [--name X] ...".
+inline void print_usage(std::ostream& os, const std::string& program) {
+  os << "usage: " << program;
   for (const auto& o : accepted_options(program)) {
     const auto eq = o.find('=');
     const char* value = eq != std::string::npos ? " X" : o == "--out" ? " DIR" : " VALUE";
-    std::cerr << " [" << o.substr(0, eq) << value << "]";
+    os << " [" << o.substr(0, eq) << value << "]";
   }
-  std::cerr << std::endl;
+  os << std::endl;
+}
+
+// Prints "<program>: <message>" and the usage line, and exits with status 2.
+[[noreturn]] inline void usage_error(const std::string& program, const std::string& message) {
+  std::cerr << program << ": " << message << "\n";
+  print_usage(std::cerr, program);
   std::exit(2);
 }
 
@@ -101,6 +107,10 @@ inline void check_args(int argc, char** argv) {
   const std::vector<std::string> accepted = accepted_options(program);
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {  // as the Python examples' argparse: the usage, status 0
+      print_usage(std::cout, program);
+      std::exit(0);
+    }
     std::string spec;
     for (const auto& o : accepted) {
       if (o.substr(0, o.find('=')) == arg) spec = o;

@@ -20,7 +20,7 @@ Interval int_enclosure(const py::handle& h);
 // True when h is a numpy array. numpy is optional: while it is not imported,
 // no object can be an array, and asking pybind11 would import it (and fail
 // where it is not installed).
-inline bool is_ndarray(const py::handle& h);
+bool is_ndarray(const py::handle& h);
 
 // copy(), __copy__ and __deepcopy__ of a value type: a C++ copy.
 template <class Class>
