@@ -1,7 +1,8 @@
 """A problem as a file (docs/cli.md): the robot on a line of
 examples/problems/line_ranges.toml (x' = v, v = cos(t) ± 0.01, an unknown start,
-ranges to beacons at uncertain times), solved by sillage.solve without writing
-a network; the stated bounds go through example_args.bound. The same file runs
+ranges to beacons at uncertain times), loaded and solved (sillage.load_problem,
+sillage.solve_problem) without writing a network, its [output] truth checked
+by sillage.check_truth; the stated bounds go through example_args.bound. The same file runs
 with `sillage solve examples/problems/line_ranges.toml`. Then the loops of
 examples/problems/figure_eight.toml (a path known from its velocity within
 ± 0.01), found by sillage.find_loops from the file's [output] loops."""
@@ -68,8 +69,10 @@ def main():
     out = out_dir(__doc__)
     path = out / "line_ranges.toml"
     path.write_text(problem_text())
-    r = sillage.solve(str(path))
+    p = sillage.load_problem(str(path))
+    r = sillage.solve_problem(p)
     x, v = r.domains["x"], r.domains["v"]
+    truth = sillage.check_truth(p, r)  # the file's [output] truth: x, a miss where x is unbounded
     inside = 0
     if not r.empty:  # the truth: x(t) = sin(t) + 1, v(t) = cos(t)
         inside = sum(1 for i in range(201)
@@ -79,7 +82,9 @@ def main():
         print(f"  NO SOLUTION: {r.why_empty}")
     else:
         print(f"  x(0) in {x(0.0)} (truth 1), max thickness {x.max_thickness():.3g}, 201 truth samples: {inside} inside")
-    ok = not r.empty and inside == 201 and figure_eight_loops(out)
+        print(f"  the file's truth check: {truth.inside} of {truth.samples} time points inside",
+              *truth.first_misses[:3])
+    ok = not r.empty and inside == 201 and truth.samples == 201 and truth.inside == 201 and figure_eight_loops(out)
     name = "problem_file_py.png"
     plt.close(tube_figure(None if r.empty else x, out / name))
     print_result("problem_file", f"{inside}/201 truth samples inside" if not r.empty else "no solution", ok,

@@ -91,3 +91,14 @@ def test_find_loops_and_constraint_order():
     (loop,) = [l for l in tp.detections() if l.complete()]
     assert loop.t_box()[0].contains(math.pi / 2) and loop.t_box()[1].contains(3 * math.pi / 2)
     assert sillage.constraint_order(sillage.load_problem(str(PROBLEMS / "drifting_clock.toml"))) == [0, 1, 2, 3, 4, 5]
+
+
+def test_check_truth_and_the_delta_given():
+    p = sillage.load_problem(str(PROBLEMS / "line_ranges.toml"))
+    c = sillage.check_truth(p, sillage.solve_problem(p))
+    assert c.samples == 201 and c.inside == 201 and c.first_misses == []
+    assert "201 of 201" in repr(c)
+    # A delta given beside the file meets the file's rule, the option named.
+    for bad in (-1.0, 0.0, 100.0, 1e-12):
+        with pytest.raises(sillage.Error, match=r"^delta: found .*expected"):
+            sillage.solve_problem(p, delta=bad)

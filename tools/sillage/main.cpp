@@ -7,6 +7,7 @@
 // Exit codes: 0 solved (or valid), 1 no solution (an empty domain, explained), 2 bad input.
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -67,6 +68,7 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   if (!scheduling.empty()) o.scheduling = scheduling == "priority" ? Scheduling::Priority : Scheduling::Fifo;
   const auto start = std::chrono::steady_clock::now();
   const Problem p = load_problem(file);
+  if (o.delta && p.time.points.empty()) check_delta(p, *o.delta, "--delta");
   if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(file).stem()).string();
   const bool progress = !quiet && isatty(STDERR_FILENO);
   if (progress)
@@ -86,6 +88,11 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
                 file.c_str(), r.empty ? "NO SOLUTION" : "solved", last.delta, last.slices, last.stats.contractor_calls,
                 r.build_seconds(), r.contract_seconds());
     if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
+    if (p.output.truth && !r.empty) {
+      const TruthCheck c = check_truth(p, r.built);
+      std::printf("  truth: %zu of %zu time points inside%s\n", c.inside, c.samples,
+                  c.first_misses.empty() ? "" : (", first miss: " + c.first_misses.front()).c_str());
+    }
     std::printf("  wrote %s/report.html, results.json and one CSV%s per tube\n", out.c_str(),
                 tubes ? " and one .tube file" : "");
   } else if (r.empty) {  // quiet drops the summary, never the answer's explanation
@@ -103,7 +110,7 @@ int check(const std::string& file) {
 // Tube files hold a Tube (kind 1) or a TubeVector (kind 2): read the kind word.
 bool is_tube_vector_file(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw Error("cannot read " + path);
+  if (!f) return false;  // load_tube says why
   unsigned char head[16] = {};
   const std::size_t n = std::fread(head, 1, sizeof head, f);
   std::fclose(f);
@@ -156,7 +163,16 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"halving", "regions"}));
   s->add_option("--scheduling", scheduling, "the order within a round: fifo or priority (default: the file's)")
       ->check(CLI::IsMember({"fifo", "priority"}));
-  s->add_option("--threads", threads, "worker threads (default: all)")->check(CLI::PositiveNumber);
+  s->add_option("--threads", threads, "worker threads (default: all)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            int n = 0;
+            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+            return ec == std::errc() && end == v.data() + v.size() && n >= 1
+                       ? std::string()
+                       : "found \"" + v + "\", expected a number of threads >= 1";
+          },
+          "N >= 1"));
   s->add_flag("--save-tubes", save_tube_files, "also write each tube as DIR/NAME.tube (for sillage show, load_tube)");
   s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");

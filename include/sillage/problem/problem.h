@@ -15,6 +15,9 @@
 
 namespace sillage {
 
+// The most slices a δ may give over [t0, tf] (the file's or one given beside it).
+inline constexpr double kMaxSlices = 5e7;
+
 struct TimeSpec {
   double t0 = 0, tf = 0;
   std::optional<double> delta;  // none: "auto" (or the time points of a table)

@@ -12,11 +12,14 @@ namespace sillage {
 
 // The truth check of [output.truth]: the time points (rows of the truth
 // table within [t0, tf]) and those with every component inside the tubes,
-// and the first misses.
+// and the first misses. A value in an unbounded (or empty) tube value is a
+// miss: such a domain proves nothing.
 struct TruthCheck {
   std::size_t samples = 0, inside = 0;
   std::vector<std::string> first_misses;  // up to 10, "x[1] = 3.2 at t = 4 outside [2.9, 3.1]"
 };
+// The truth check of [output.truth] on the solved domains b (zero samples when the
+// problem gives no truth); in Python check_truth(problem, result).
 TruthCheck check_truth(const Problem& p, const BuiltProblem& b);
 
 std::string report_html(const Problem& p, const SolveResult& r);

@@ -68,8 +68,13 @@ struct SolveResult {
 // slice width (default: the file's), auto_delta: refine δ from coarse until the result changes by
 // less than tolerance or the budget is spent; scheduling: the order within a round (default: the file's
 // [network] scheduling). In Python also delta="auto", refine="halving" | "regions" and
-// scheduling="fifo" | "priority", the names of the `sillage solve` options.
+// scheduling="fifo" | "priority", the names of the `sillage solve` options. A given delta is
+// checked by check_delta.
 SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
+
+// Error if delta is not in (0, tf - t0] or gives more than kMaxSlices slices (the file's rule for
+// its own delta), the message led by `name` (the option that gave it: "--delta", "delta").
+void check_delta(const Problem& p, double delta, const std::string& name);
 
 // The mean thickness (volume / duration) summed over the tube components with
 // a finite volume.

@@ -8,6 +8,7 @@
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
+#include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 
 namespace sillage::python {
@@ -121,6 +122,17 @@ void init_problem(py::module_& m) {
         return std::string("SolveResult(") + (r.empty ? "no solution" : "solved") + ", delta=" + number_text(s.delta) +
                ", slices=" + std::to_string(s.slices) + ", steps=" + std::to_string(r.schedule.size()) + ")";
       });
+
+  py::class_<TruthCheck>(m, "TruthCheck", DOC(TruthCheck))
+      .def_readonly("samples", &TruthCheck::samples, "The truth time points within [t0, tf].")
+      .def_readonly("inside", &TruthCheck::inside, "Those with every component inside a bounded tube value.")
+      .def_readonly("first_misses", &TruthCheck::first_misses, DOC(TruthCheck, first_misses))
+      .def("__repr__", [](const TruthCheck& c) {
+        return "TruthCheck(" + std::to_string(c.inside) + " of " + std::to_string(c.samples) + " inside)";
+      });
+  m.def(
+      "check_truth", [](const Problem& p, const SolveResult& r) { return check_truth(p, r.built); },
+      py::arg("problem"), py::arg("result"), DOC(check_truth));
 
   m.def("load_problem", &load_problem, py::arg("path"),
         "Reads and validates a problem file; sillage.ParseError 'file:line:column: found ..., expected ...' otherwise.");

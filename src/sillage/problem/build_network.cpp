@@ -389,6 +389,8 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           auto t = std::make_shared<Interval>(eval_row_time(c, data.table, values, terr, b.td->t0_tf()));
           if (t->is_empty()) continue;  // a measurement outside the time domain says nothing about it
           ++b.extra_domains;
+          // The row's domains are named after its line, so that an emptiness names the measurement.
+          const std::string of_row = " (" + c.data + " line " + std::to_string(data.table.line(row)) + ")";
           // One z per evaluated tube, all at the same time t.
           std::vector<std::shared_ptr<Interval>> z1(ys.size());
           std::vector<std::shared_ptr<IntervalVector>> zn(ys.size());
@@ -399,8 +401,10 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), whole(y)};
             if (!c.vs[j].empty()) eval_args.push_back(whole(b.var(c.vs[j])));
             cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
+            cn.set_name(eval_args[1], y.spec->name + "(t)" + of_row);
             ++b.extra_domains;
           }
+          cn.set_name(t, "t" + of_row);
           if (direct) continue;
           std::vector<DomainRef> args;
           for (const VarRef& ref : r.refs) {
@@ -409,6 +413,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
               args.push_back(z1[j] ? DomainRef(z1[j]) : DomainRef::component(zn[j], ref.component));
             } else if (has_column(ref.var)) {
               args.push_back(std::make_shared<Interval>(measured(values, ref.var)));
+              cn.set_name(args.back(), ref.var + of_row);
               ++b.extra_domains;
             } else {
               args.push_back(b.var(ref.var).component(ref.component));

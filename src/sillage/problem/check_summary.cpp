@@ -26,7 +26,8 @@ std::string check_summary(const Problem& p) {
   std::size_t slices = nb_slices_for(p, delta);
   for (const ConstraintSpec& c : p.constraints)  // an upper bound: two gates per row
     if (c.kind == ConstraintKind::Eval && c.gates) slices += 2 * p.table(c.data)->table.nb_rows();
-  for (const VarSpec& v : p.vars) slices += v.at.size();  // an upper bound: 'at' times may sample the domain
+  for (const VarSpec& v : p.vars)  // an upper bound: an 'at' time inside (t0, tf) may sample the domain
+    for (const GateSpec& g : v.at) slices += g.t > p.time.t0 && g.t < p.time.tf;
   std::string s = line("%s: valid (hash %s)\n", p.file.c_str(), p.hash.c_str());
   if (p.time.points.empty())
     s += line("time [%g, %g], δ = %g%s, %zu slices at most\n", p.time.t0, p.time.tf, delta,

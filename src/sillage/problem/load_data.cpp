@@ -18,6 +18,10 @@ void ProblemLoader::read_data(const std::string& name, const toml::key& key, con
   d.path = (base_ / file).lexically_normal().string();
   if (std::filesystem::is_directory(d.path))
     throw ProblemError(doc_.pos(fn), "the directory " + d.path, "a CSV file");
+  if (!std::filesystem::exists(d.path))
+    throw ProblemError(doc_.pos(fn), "\"" + file + "\", which names no file (" +
+                                         std::filesystem::absolute(d.path).lexically_normal().string() + ")",
+                       "a CSV file, its path relative to the problem file's folder");
   try {
     d.table = CsvTable::read(d.path);
   } catch (const Error& e) {
@@ -26,11 +30,8 @@ void ProblemLoader::read_data(const std::string& name, const toml::key& key, con
   if (const toml::node* cn = f.find("columns")) {
     for (const toml::node& c : f.array(*cn, "an array of column names")) {
       const std::string col = f.string(c, "a column name (string)");
-      if (!d.table.has_column(col)) {
-        std::string cols;
-        for (const auto& h : d.table.columns()) cols += (cols.empty() ? "" : ", ") + h;
-        throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from " + d.path, "one of: " + cols);
-      }
+      if (!d.table.has_column(col))
+        throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from " + d.path, "one of: " + column_list(d.table));
     }
   }
   p_.data.push_back(std::move(d));

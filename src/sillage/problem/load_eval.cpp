@@ -75,11 +75,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   c.v = c.vs[0];
   auto column = [&](const toml::node& n) {
     const std::string col = f.string(n, "a column name (string)");
-    if (!d->table.has_column(col)) {
-      std::string cols;
-      for (const auto& h : d->table.columns()) cols += (cols.empty() ? "" : ", ") + h;
-      throw ProblemError(doc_.pos(n), "the column '" + col + "' missing from table '" + c.data + "'", "one of: " + cols);
-    }
+    if (!d->table.has_column(col)) throw missing_column(doc_.pos(n), col, c.data, d->table);
     return col;
   };
   if (const toml::node* tn = f.find("time")) {
@@ -97,8 +93,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   if (const toml::node* er = f.find("errors")) {
     for (auto&& [key, node] : f.table(*er, "a table {column = error}")) {
       if (!d->table.has_column(std::string(key.str())))
-        throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
-                                                       c.data + "'", "a column of it");
+        throw missing_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
       if (f.number(node, "an error >= 0 (number)") < 0)
         throw ProblemError(doc_.pos(node), "a negative error", "an error >= 0");
       c.errors[std::string(key.str())] = f.bound_text(node);
@@ -107,8 +102,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   if (const toml::node* wn = f.find("where")) {
     for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
       if (!d->table.has_column(std::string(key.str())))
-        throw ProblemError(doc_.pos(key.source()), "the column '" + std::string(key.str()) + "' missing from table '" +
-                                                       c.data + "'", "a column of it");
+        throw missing_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
       c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
     }
   }
@@ -153,7 +147,8 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
     known += y->name + (y->kind == VarKind::TubeVector ? "[i]" : "") + " (the value " + y->name + "(t)), ";
     names += (names.empty() ? "" : ", ") + y->name;
   }
-  known += "the columns of '" + c.data + "'" + (joined ? " and '" + joined->name + "'" : "");
+  const auto columns_of = [](const DataSpec& t) { return "the columns of '" + t.name + "' (" + column_list(t.table) + ")"; };
+  known += columns_of(*d) + (joined ? " and " + columns_of(*joined) : "");
   for (const VarSpec& v : p_.vars)
     if (!v.is_tube()) known += ", " + v.name;
   read_expr(f, c, dims, vec, known);

@@ -14,6 +14,17 @@ bool valid_name(const std::string& s) {
   return s.find("__") == std::string::npos && !detail::is_reserved_name(s);
 }
 
+std::string column_list(const CsvTable& table) {
+  std::string cols;
+  for (const auto& h : table.columns()) cols += (cols.empty() ? "" : ", ") + h;
+  return cols;
+}
+
+ProblemError missing_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table) {
+  return ProblemError(pos, "the column '" + column + "' missing from table '" + name + "'",
+                      "one of its columns: " + column_list(table));
+}
+
 const DataSpec& ProblemLoader::data_table(const Fields& f, const toml::node& dn) {
   const std::string name = f.string(dn, "a data table name (string)");
   if (const DataSpec* d = p_.table(name)) return *d;

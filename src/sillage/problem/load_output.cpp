@@ -45,7 +45,7 @@ void ProblemLoader::read_output(const toml::table& t) {
     for (const toml::node& c : a) {
       const std::string col = lf.string(c, "a column name");
       if (!d.table.has_column(col))
-        throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+        throw missing_column(doc_.pos(c), col, d.name, d.table);
     }
     l.x = a.get(0)->as_string()->get();
     l.y = a.get(1)->as_string()->get();
@@ -82,7 +82,7 @@ void ProblemLoader::read_output(const toml::table& t) {
     auto col = [&](const toml::node& n) {
       const std::string c = tf.string(n, "a column name");
       if (!d->table.has_column(c))
-        throw ProblemError(doc_.pos(n), "the column '" + c + "' missing from table '" + ts.data + "'", "a column of it");
+        throw missing_column(doc_.pos(n), c, ts.data, d->table);
       return c;
     };
     ts.time_column = col(tf.require("time", "the time column"));

@@ -21,7 +21,7 @@ void ProblemLoader::read_time(const toml::table& t) {
     const double v = f.number(dl, "a slice width (number > 0) or \"auto\"");
     if (!(v > 0) || v > p_.time.tf - p_.time.t0)
       throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl), "a slice width in (0, tf - t0]");
-    if ((p_.time.tf - p_.time.t0) / v > 5e7)
+    if ((p_.time.tf - p_.time.t0) / v > kMaxSlices)
       throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl) + " (more than 5e7 slices)", "a larger delta");
     p_.time.delta = v;
   }
@@ -38,7 +38,7 @@ void ProblemLoader::read_time_points(const Fields& f, const toml::node& pn) {
   const DataSpec& d = data_table(pf, dn);
   const toml::node& cn = pf.require("column", "its time column");
   const std::string col = pf.string(cn, "a column name (string)");
-  if (!d.table.has_column(col)) throw ProblemError(doc_.pos(cn), "the column '" + col + "' missing from table '" + d.name + "'", "a column of it");
+  if (!d.table.has_column(col)) throw missing_column(doc_.pos(cn), col, d.name, d.table);
   p_.time.points = d.table.values(col);
   p_.time.points_data = d.name;
   p_.time.pos = doc_.pos(pn);

@@ -13,9 +13,9 @@ void ProblemLoader::check_bound(const BoundSpec& b, bool of_t) {
   try {
     (void)detail::parse_expr(vars, b.expr);
   } catch (const ParseError& e) {
-    throw ProblemError(b.pos, std::string("the bound \"") + b.expr + "\" (" + e.what() + ")",
-                       of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""
-                            : "a constant expression such as \"[-1, 1]\" or \"pi/2 + [-0.01, 0.01]\"");
+    throw rejected_expression(b.pos, "the bound", b.expr, b.expr, e,
+                              of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""
+                                   : "a constant expression such as \"[-1, 1]\" or \"pi/2 + [-0.01, 0.01]\"");
   }
 }
 
@@ -118,8 +118,8 @@ SliceDataSpec ProblemLoader::read_from_table(const Fields& f, const toml::node& 
   try {
     (void)detail::parse_expr(names, s.value.expr);
   } catch (const ParseError& e) {
-    throw ProblemError(s.value.pos, std::string("the value \"") + s.value.expr + "\" (" + e.what() + ")",
-                       "an expression of the columns of '" + d.name + "'" + (gates ? "" : " and dt"));
+    throw rejected_expression(s.value.pos, "the value", s.value.expr, s.value.expr, e,
+                              "an expression of the columns of '" + d.name + "'" + (gates ? "" : " and dt"));
   }
   return s;
 }

@@ -23,6 +23,11 @@ namespace sillage::detail {
 // A table, variable or column name: an identifier, no "__", not a function name.
 bool valid_name(const std::string& s);
 
+// "t, b, r": a table's columns, for messages (load_lookup.cpp).
+std::string column_list(const CsvTable& table);
+// The error for a column the table `name` does not have: its columns listed (load_lookup.cpp).
+ProblemError missing_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
+
 class ProblemLoader {
  public:
   // text: the file's content; path names it in messages and is the base of the data paths.

@@ -52,9 +52,20 @@ double mean_thickness(const BuiltProblem& b) {
   return sum;
 }
 
+void check_delta(const Problem& p, double delta, const std::string& name) {
+  const double span = p.time.tf - p.time.t0;
+  if (!(delta > 0) || !(delta <= span))
+    throw Error(name + ": found " + number_text(delta) + ", expected a slice width in (0, " + number_text(span) +
+                "] (tf - t0 of the problem's [time] domain)");
+  if (span / delta > kMaxSlices)
+    throw Error(name + ": found " + number_text(delta) + " (" + number_text(std::ceil(span / delta)) +
+                " slices), expected a larger delta (at most 5e7 slices)");
+}
+
 SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
   std::optional<double> fixed = o.delta ? o.delta : p.time.delta;
   if (o.auto_delta) fixed.reset();
+  if (o.delta && p.time.points.empty()) check_delta(p, *o.delta, "delta");
   if (!p.time.points.empty()) {
     if (o.delta || o.auto_delta)
       throw ProblemError(p.time.pos, "a delta (" + std::string(o.auto_delta ? "auto" : number_text(*o.delta)) +

@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "sillage/expr/parser.h"
+#include "sillage/text_utf8.h"
 
 namespace sillage::detail {
 
@@ -11,14 +12,36 @@ namespace {
 bool is_id_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_id_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+constexpr const char* kAtColumn = " at column ";
+
+// The parser's column (1-based, in characters) out of its message; 0 if none.
 std::size_t parse_column(const std::string& message) {
-  const std::string key = "at column ";
-  const auto p = message.find(key);
+  const auto p = message.find(kAtColumn);
   if (p == std::string::npos) return 0;
   std::size_t col = 0;
-  for (std::size_t i = p + key.size(); i < message.size() && std::isdigit(static_cast<unsigned char>(message[i])); ++i)
+  for (std::size_t i = p + std::string(kAtColumn).size();
+       i < message.size() && std::isdigit(static_cast<unsigned char>(message[i])); ++i)
     col = col * 10 + static_cast<std::size_t>(message[i] - '0');
-  return col > 0 ? col - 1 : 0;
+  return col;
+}
+
+bool continues_utf8(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+// The byte where the character `chars` (0-based) of s starts (s.size() past the end).
+std::size_t byte_of_char(const std::string& s, std::size_t chars) {
+  std::size_t b = 0;
+  for (std::size_t seen = 0; b < s.size(); ++b) {
+    if (continues_utf8(s[b])) continue;
+    if (seen++ == chars) return b;
+  }
+  return s.size();
+}
+
+// The number of characters of s before byte b.
+std::size_t chars_before(const std::string& s, std::size_t b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < b && i < s.size(); ++i) n += !continues_utf8(s[i]);
+  return n;
 }
 
 }  // namespace
@@ -27,6 +50,24 @@ SourcePos shifted(const SourcePos& pos, std::size_t offset) {
   SourcePos p = pos;
   if (p.line > 0) p.column += static_cast<int>(offset);
   return p;
+}
+
+ProblemError rejected_expression(const SourcePos& pos, const std::string& what, const std::string& written,
+                                 const std::string& parsed, const ParseError& e, const std::string& expected,
+                                 const std::vector<std::size_t>& origin) {
+  const std::string message = e.what();
+  const std::string reason = message.substr(0, message.find(kAtColumn));
+  const std::string quoted = what + " \"" + quote_text(written, 200) + "\"";
+  const std::size_t parser_col = parse_column(message);
+  if (parser_col == 0) return ProblemError(pos, quoted + " (" + reason + ")", expected);
+  const std::size_t b = byte_of_char(parsed, parser_col - 1);
+  const std::size_t w = origin.empty() ? std::min(b, written.size()) : origin[std::min(b, origin.size() - 1)];
+  const std::size_t col = chars_before(written, w);
+  const std::string at = " at its column " + std::to_string(col + 1);
+  const std::string wanted = "expected ";
+  if (reason.compare(0, wanted.size(), wanted) == 0)  // "expected ')'": say what the text needs there
+    return ProblemError(shifted(pos, col), quoted + ", which needs " + reason.substr(wanted.size()) + at, expected);
+  return ProblemError(shifted(pos, col), quoted + " with " + reason + at, expected);
 }
 
 std::vector<std::string> RewrittenExpr::ids() const {
@@ -39,6 +80,11 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
                            const std::function<std::optional<std::size_t>(const std::string&)>& dim_of,
                            const std::function<bool(const std::string&)>& vector, const std::string& known_text) {
   RewrittenExpr out;
+  std::vector<std::size_t> origin;  // byte of `text` each byte of out.text comes from
+  const auto copy = [&](std::size_t from, std::size_t to) {  // text[from, to) as written
+    out.text.append(text, from, to - from);
+    for (std::size_t k = from; k < to; ++k) origin.push_back(k);
+  };
   if (text.find_first_not_of(" \t") == std::string::npos)
     throw ProblemError(pos, "an empty expression", "an expression such as \"v[0] - 10*cos(x[2])\"");
   std::size_t i = 0;
@@ -57,12 +103,12 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
           while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
         }
       }
-      out.text.append(text, i, j - i);
+      copy(i, j);
       i = j;
       continue;
     }
     if (!is_id_start(c)) {
-      out.text += c;
+      copy(i, i + 1);
       ++i;
       continue;
     }
@@ -73,7 +119,7 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
     while (k < text.size() && text[k] == ' ') ++k;
     const bool call = k < text.size() && text[k] == '(';
     if (is_reserved_name(name) || call) {  // pi, inf, function names: the parser's business
-      out.text += name;
+      copy(i, j);
       i = j;
       continue;
     }
@@ -105,17 +151,15 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
     bool seen = false;
     for (const VarRef& r : out.refs) seen = seen || r.id == ref.id;
     if (!seen) out.refs.push_back(ref);
-    out.text += ref.id;
+    out.text += ref.id;  // x__2 for x[2]: each of its bytes from the name's first
+    origin.resize(out.text.size(), i);
     i = j;
   }
   try {
     (void)parse_exprs(out.ids(), out.text);
   } catch (const ParseError& e) {
-    // The rewritten text is longer than the written one past each x[i]: the
-    // column is the parser's, mapped back only when nothing was rewritten.
-    const std::size_t col = out.text == text ? parse_column(e.what()) : 0;
-    throw ProblemError(shifted(pos, col), std::string("an expression the parser rejects: ") + e.what(),
-                       "a valid expression (docs/cli.md)");
+    origin.push_back(text.size());  // the parser's column past the end: the end of the text
+    throw rejected_expression(pos, "the expression", text, out.text, e, "a valid expression (docs/cli.md)", origin);
   }
   return out;
 }

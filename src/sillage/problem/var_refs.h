@@ -41,4 +41,14 @@ RewrittenExpr rewrite_refs(const std::string& text, const SourcePos& pos,
 // pos moved `offset` characters to the right on its line.
 SourcePos shifted(const SourcePos& pos, std::size_t offset);
 
+// The error for an expression the parser rejects: `e` is the parser's error on
+// `parsed`, which is `written` (the user's text, starting at pos) or its
+// rewriting, origin[i] then being the byte of `written` that byte i of
+// `parsed` comes from. The position moves to the column the parser names, the
+// message quotes the user's text (never the rewritten one) and says what the
+// parser found or wanted there; `what` names the expression ("the bound").
+ProblemError rejected_expression(const SourcePos& pos, const std::string& what, const std::string& written,
+                                 const std::string& parsed, const ParseError& e, const std::string& expected,
+                                 const std::vector<std::size_t>& origin = {});
+
 }  // namespace sillage::detail

@@ -170,8 +170,9 @@ std::ofstream open_out(const std::string& path) {
 std::ifstream open_in(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw Error("load tube: '" + path + "' is a directory, not a tube file");
+  if (!std::filesystem::exists(path, ec)) throw Error("load tube: '" + path + "': no such file");
   std::ifstream is(path, std::ios::binary);
-  if (!is) throw Error("load tube: cannot open '" + path + "' for reading");
+  if (!is) throw Error("load tube: '" + path + "': cannot open it for reading (permissions?)");
   return is;
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "problem_text.h"
+#include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 
 using namespace sillage;
@@ -50,7 +51,9 @@ TEST(LoadEval, ErrorsAtTheirPlace) {
   expect_error(eval("y = [\"x\", \"v\"]\nv = \"v\"\ntime = \"t\"\n"),
                "test.toml:20:5: found 1 derivative(s), expected 2 (one per tube of y, \"\" for none)");
   expect_error(eval("y = \"x\"\ntime = \"t\"\nwhere = { beacon = 2 }\n"),
-               "test.toml:21:11: found the column 'beacon' missing from table 'ranges'");
+               "test.toml:21:11: found the column 'beacon' missing from table 'ranges', expected one of its columns: t, b, r");
+  expect_error(eval("y = \"x\"\ntime = \"t\"\nerrors = { rr = 0.1 }\n"),
+               "test.toml:21:12: found the column 'rr' missing from table 'ranges', expected one of its columns: t, b, r");
   expect_error(eval("y = \"x\"\ntime = \"t\"\ngates = 1\n"), "test.toml:21:9: found an integer 1, expected true or false");
   expect_error(eval("y = \"x\"\ntime_error = 0.1\n"), "test.toml:20:14: found a time error without a time column");
   expect_error(eval("y = [\"x\", \"x\"]\ntime = \"t\"\n"), "found 'x' twice, expected distinct tubes in y");
@@ -125,4 +128,35 @@ TEST(LoadEval, RowsOutsideTheTimeDomain) {
   EXPECT_EQ(parse(eval("y = \"x\"\ntime = \"t\"\n")).constraints[1].nb_outside, 0u);
   // Within the time error of the domain: kept (its time is the part inside).
   EXPECT_EQ(parse(within_10(eval("y = \"x\"\ntime = \"t\"\ntime_error = 1.5\nwhere = { b = 2 }\noutside = \"skip\"\n"))).constraints[1].nb_outside, 2u);
+}
+
+// An emptiness found by a row's observation names that row's domains by the
+// table and the CSV line (never "domain 3"), so that the user finds the
+// measurement.
+TEST(LoadEval, EmptinessNamesTheRow) {
+  std::string text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  text.replace(text.find("value = \"[-10, 10]\""), 19, "value = \"[-10, 10]\"\nat = [{ t = 0, value = \"[5, 6]\" }]");
+  const SolveResult r = solve_problem(parse(text));
+  ASSERT_TRUE(r.empty);
+  EXPECT_EQ(r.why_empty.find("domain "), std::string::npos) << r.why_empty;
+  EXPECT_NE(r.why_empty.find(" (ranges line "), std::string::npos) << r.why_empty;
+}
+
+// The truth check counts a value inside an unbounded tube as a miss: without
+// the ranges the line robot's position is never bounded, and "201 of 201
+// inside" would be vacuous.
+TEST(LoadEval, TruthInAnUnboundedTubeIsNoPass) {
+  std::string text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  const Problem with = parse(text);
+  const TruthCheck ok = check_truth(with, solve_problem(with).built);
+  EXPECT_EQ(ok.samples, 201u);
+  EXPECT_EQ(ok.inside, 201u);
+  text.replace(text.find("value = \"[-10, 10]\""), 19, "");
+  text.erase(text.find("[[constraint]]\nkind = \"eval\""), text.find("[output]") - text.find("[[constraint]]\nkind = \"eval\""));
+  const Problem without = parse(text);
+  const TruthCheck none = check_truth(without, solve_problem(without).built);
+  EXPECT_EQ(none.samples, 201u);
+  EXPECT_EQ(none.inside, 0u);
+  ASSERT_FALSE(none.first_misses.empty());
+  EXPECT_NE(none.first_misses[0].find("in the unbounded"), std::string::npos) << none.first_misses[0];
 }

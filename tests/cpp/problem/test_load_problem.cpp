@@ -80,8 +80,26 @@ TEST(LoadProblem, DimensionMismatchOfDeriv) {
 
 TEST(LoadProblem, BadBoundExpression) {
   const std::string msg = error_of(kHead + "[var.x]\nkind = \"tube\"\nvalue = \"sin(t\"\n" + "[var.v]\nkind = \"tube\"\n" + kDeriv);
-  EXPECT_TRUE(has(msg, "test.toml:6:10: found the bound \"sin(t\"")) << msg;
-  EXPECT_TRUE(has(msg, "expected an expression of t")) << msg;
+  // the bound starts at column 10; the parser wants ')' past its end, its column 6
+  EXPECT_TRUE(has(msg, "test.toml:6:15: found the bound \"sin(t\", which needs ')' at its column 6, expected an expression of t"))
+      << msg;
+}
+
+// The parser reads x__0 for x[0]: its complaints quote the written text and
+// point at the written column, never at the rewritten one.
+TEST(LoadProblem, RejectedExpressionQuotesTheWrittenText) {
+  const std::string vars = "[var.x]\nkind = \"tube_vector\"\ndim = 3\n";
+  std::string msg = error_of(kHead + vars + "[[constraint]]\nkind = \"expr\"\nexpr = \"x[2]*coss(x[1]) - x[0]\"\n");
+  // line 9, column 9 is the first character of the string, coss is 5 further
+  EXPECT_TRUE(has(msg, "test.toml:9:14: found the expression \"x[2]*coss(x[1]) - x[0]\" with unknown identifier 'coss' at "
+                       "its column 6, expected a valid expression")) << msg;
+  EXPECT_FALSE(has(msg, "x__")) << msg;
+  msg = error_of(kHead + vars + "[[constraint]]\nkind = \"expr\"\nexpr = \"x[2]*cos(x[1] - x[0]\"\n");
+  EXPECT_TRUE(has(msg, "test.toml:9:29: found the expression \"x[2]*cos(x[1] - x[0]\", which needs ')' at its column 21"))
+      << msg;
+  msg = error_of(kHead + vars + "[[constraint]]\nkind = \"expr\"\nexpr = \"x[2] + x[1]) - x[0]\"\n");
+  EXPECT_TRUE(has(msg, "test.toml:9:20: found the expression \"x[2] + x[1]) - x[0]\", which needs an operator or the end "
+                       "at its column 12")) << msg;
 }
 
 TEST(LoadProblem, WrongNumberOfBounds) {
@@ -96,7 +114,8 @@ TEST(LoadProblem, GateOutsideTheDomain) {
 
 TEST(LoadProblem, MissingDataFileAndColumn) {
   std::string msg = error_of(kHead + "[data.r]\nfile = \"no_such.csv\"\n" + kVars + kDeriv);
-  EXPECT_TRUE(has(msg, "test.toml:5:8: found an unreadable CSV")) << msg;
+  EXPECT_TRUE(has(msg, "test.toml:5:8: found \"no_such.csv\", which names no file (")) << msg;
+  EXPECT_TRUE(has(msg, "no_such.csv), expected a CSV file, its path relative to the problem file's folder")) << msg;
   msg = error_of(kHead + "[data.r]\nfile = \"data/beacon_ranges.csv\"\ncolumns = [\"t\", \"nope\"]\n" + kVars + kDeriv);
   EXPECT_TRUE(has(msg, "found the column 'nope' missing from")) << msg;
   EXPECT_TRUE(has(msg, "expected one of: t,")) << msg;
