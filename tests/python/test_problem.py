@@ -102,3 +102,6 @@ def test_check_truth_and_the_delta_given():
     for bad in (-1.0, 0.0, 100.0, 1e-12):
         with pytest.raises(sillage.Error, match=r"^delta: found .*expected"):
             sillage.solve_problem(p, delta=bad)
+        with pytest.raises(sillage.Error, match=r"^--delta: found "):
+            sillage.check_delta(p, bad, "--delta")
+    sillage.check_delta(p, 0.05)  # the file's own: no error

@@ -130,6 +130,8 @@ void init_problem(py::module_& m) {
       .def("__repr__", [](const TruthCheck& c) {
         return "TruthCheck(" + std::to_string(c.inside) + " of " + std::to_string(c.samples) + " inside)";
       });
+  m.def("check_delta", &check_delta, py::arg("problem"), py::arg("delta"), py::arg("name") = "delta",
+        DOC(check_delta));
   m.def(
       "check_truth", [](const Problem& p, const SolveResult& r) { return check_truth(p, r.built); },
       py::arg("problem"), py::arg("result"), DOC(check_truth));
