@@ -5,7 +5,8 @@
 // that the true point survives and few results are empty (counter
 // empty_ratio). Each iteration takes the next input from a pool of 4096
 // random boxes around the true point, so that no input is seen twice in a row.
-// Last, the whole GOMNE loop on 20 of the ranges.
+// Then the whole GOMNE loop on 20 of the ranges. Last, CtcQEval's direct call
+// on a tube: m position fixes of x(t) = (cos t, sin t), one in ten 2 m off.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/ctc/ctc_qinter.h"
 #include "sillage/ctc/gomne.h"
+#include "sillage/dynamics/ctc_qeval.h"
 
 using namespace sillage;
 
@@ -116,6 +118,37 @@ void BM_Gomne20Ranges(benchmark::State& state) {
   state.counters["leaves"] = static_cast<double>(r.leaves.size());
 }
 
+// CtcQEval(q).contract(x, v, fixes), q = m / 10, over 2000 slices on [0, 10]:
+// x unknown in [-10, 10]^2, x' = (-sin t, cos t) +- 0.01; each fix at a time
+// known to +-0.01 s, within 0.05 of the truth (noise from a pool of 8 sets).
+void BM_CtcQEvalFixes(benchmark::State& state) {
+  const auto m = static_cast<std::size_t>(state.range(0));
+  const auto td = TDomain::create(0.0, 10.0, 0.005);
+  const TubeVector x0(td, IntervalVector(2, Interval(-10, 10)));
+  TubeVector v(td, "(-sin(t), cos(t))");
+  for (std::size_t j = 0; j < 2; ++j) v[j] += Interval(-0.01, 0.01);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> noise(-0.04, 0.04);
+  std::vector<std::vector<TubeObservation>> sets(8);
+  for (auto& obs : sets) {
+    for (std::size_t i = 0; i < m; ++i) {
+      const double t = 10.0 * (static_cast<double>(i) + 0.5) / static_cast<double>(m);
+      const double off = is_wrong(i) ? 2.0 : 0.0;
+      obs.push_back({Interval(t).inflate(0.01), IntervalVector{Interval(std::cos(t) + off + noise(rng)).inflate(0.05),
+                                                               Interval(std::sin(t) + noise(rng)).inflate(0.05)}});
+    }
+  }
+  const CtcQEval ctc(static_cast<int>(m / 10));
+  std::size_t k = 0, wrong = 0;
+  for (auto _ : state) {
+    TubeVector x = x0;
+    wrong = ctc.contract(x, v, sets[k++ % sets.size()]).size();
+    benchmark::DoNotOptimize(x);
+  }
+  state.counters["violated"] = static_cast<double>(wrong);
+  state.SetItemsProcessed(static_cast<int64_t>(k * m));
+}
+
 }  // namespace
 
 BENCHMARK(BM_QInterIntervals)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
@@ -123,5 +156,6 @@ BENCHMARK(BM_CtcQInterBoxes)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
 BENCHMARK(BM_CtcQInterRings)->ArgName("m")->Arg(10)->Arg(100)->Arg(1000);
 
 BENCHMARK(BM_Gomne20Ranges)->ArgName("eps_index")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CtcQEvalFixes)->ArgName("m")->Arg(20)->Arg(200)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

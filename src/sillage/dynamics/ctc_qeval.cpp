@@ -1,10 +1,10 @@
 #include "sillage/dynamics/ctc_qeval.h"
 
-#include <algorithm>
 #include <string>
 
 #include "sillage/cn/tube_node.h"
 #include "sillage/ctc/q_inter.h"
+#include "sillage/ctc/q_inter_columns.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/dynamics/ctc_eval.h"
 
@@ -59,16 +59,9 @@ bool contract_alone(const TubeObservation& o, const Interval& domain, Eval eval)
   }
 }
 
-// The q-relaxed intersection of the atoms (gate or slice k of component j)
-// read by `atom` on the copies; empty copies count as violated constraints.
-template <class Atom>
-Interval relaxed_atom(const std::vector<TubeVector>& copies, const std::vector<bool>& live, int q, Atom atom) {
-  std::vector<Interval> column(copies.size(), Interval::empty());
-  for (std::size_t i = 0; i < copies.size(); ++i) {
-    if (live[i]) column[i] = atom(copies[i]);
-  }
-  return q_inter(column, q);
-}
+// Atom a of a tube: gate a / 2 when a is even, slice a / 2 when odd.
+Interval& atom_of(TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
+const Interval& atom_of(const TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
 
 }  // namespace
 
@@ -85,43 +78,43 @@ std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
   std::vector<std::size_t> violated;
   if (x.is_empty()) return violated;
   CtcEval eval;
-  eval.enable_time_sampling(false);  // the copies and x share the TDomain
-  std::vector<TubeVector> copies(obs.size(), x);
-  std::vector<bool> live(obs.size());
+  eval.enable_time_sampling(false);  // the copy and x share the TDomain
+  // One copy y of x, contracted by each observation in turn; each atom's
+  // values go to its column (component j, atom a: j * atoms + a).
+  const std::size_t n = x.size(), atoms = 2 * x[0].nb_slices() + 1;
+  detail::QInterColumns columns(n * atoms, q_);
+  TubeVector y = x;
   for (std::size_t i = 0; i < obs.size(); ++i) {
-    TubeVector& y = copies[i];
-    live[i] = contract_alone(obs[i], x.tdomain()->t0_tf(), [&](Interval& t, IntervalVector& z) {
+    if (i > 0) y = x;
+    const bool live = contract_alone(obs[i], x.tdomain()->t0_tf(), [&](Interval& t, IntervalVector& z) {
       return eval.contract(t, z, y, v) && !y.is_empty();
     });
-    if (!live[i]) violated.push_back(i);
+    if (!live) {
+      violated.push_back(i);
+      continue;
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      for (std::size_t a = 0; a < atoms; ++a) columns.add(j * atoms + a, atom_of(y[j].data(), a));
+    }
   }
   if (static_cast<std::size_t>(q_) >= obs.size()) return violated;
-  for (std::size_t j = 0; j < x.size(); ++j) {
+  // A value must lie in m - q of the copies, the violated ones holding none.
+  if (violated.size() > static_cast<std::size_t>(q_)) {
+    x.set(IntervalVector::empty(n));
+    return violated;
+  }
+  const int allowed = q_ - static_cast<int>(violated.size());
+  for (std::size_t j = 0; j < n; ++j) {
     TubeData& d = x[j].data();  // intersected in place, as Tube::operator&= does
-    for (std::size_t k = 0; k < d.gates.size(); ++k) {
-      d.gates[k] &= relaxed_atom(copies, live, q_, [&](const TubeVector& c) { return c[j].gate(k); });
-    }
-    for (std::size_t k = 0; k < d.slices.size(); ++k) {
-      d.slices[k] &= relaxed_atom(copies, live, q_, [&](const TubeVector& c) { return c[j].slice(k); });
-    }
+    for (std::size_t a = 0; a < atoms; ++a) atom_of(d, a) &= columns.hull(j * atoms + a, allowed);
     x[j].touch();
   }
-  if (x.is_empty()) x.set(IntervalVector::empty(x.size()));  // no trajectory left anywhere
+  if (x.is_empty()) x.set(IntervalVector::empty(n));  // no trajectory left anywhere
   return violated;
 }
 
 // The network form.
 namespace {
-
-// One atom of one observation's contraction: component, atom (2k gate k,
-// 2k+1 slice k) and its value after the contraction.
-struct AtomValue {
-  std::size_t comp, atom;
-  Interval value;
-};
-
-Interval& atom_of(TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
-const Interval& atom_of(const TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
 
 // cn.add(CtcQEval(q, obs), {x, v}): x and v tubes of one size n.
 class QEvalNode : public TubeNode {
@@ -150,7 +143,13 @@ class QEvalNode : public TubeNode {
     std::vector<std::vector<std::size_t>> changed(n);
     std::vector<TubeChanges> logs;
     for (auto& c : changed) logs.emplace_back(c, 0, 0.0);  // ratio 0: every change
-    std::vector<AtomValue> values;
+    // One column per atom (component j, atom a: j * atoms + a) of the values
+    // the observations that changed it left.
+    const std::size_t atoms = 2 * work[0].nb_slices() + 1;
+    thread_local detail::QInterColumns columns;  // scratch, per thread (a run never enters another): no page faults per run
+    thread_local std::vector<std::size_t> seen_by;  // the last observation that added to each column
+    columns.reset(n * atoms, ctc_.q());
+    seen_by.assign(n * atoms, m);
     std::size_t violated = 0;
     const Interval domain = work[0].tdomain()->t0_tf();
     for (std::size_t i = 0; i < m; ++i) {
@@ -165,10 +164,11 @@ class QEvalNode : public TubeNode {
           work[j] = x_[j]->tube();
           continue;
         }
-        std::sort(changed[j].begin(), changed[j].end());
-        changed[j].erase(std::unique(changed[j].begin(), changed[j].end()), changed[j].end());
         for (const std::size_t a : changed[j]) {
-          values.push_back({j, a, atom_of(d, a)});
+          const std::size_t col = j * atoms + a;
+          if (seen_by[col] == i) continue;  // logged again by a later pass of the same observation
+          seen_by[col] = i;
+          columns.add(col, atom_of(d, a));
           atom_of(d, a) = atom_of(x, a);
         }
         work[j].touch();
@@ -178,32 +178,25 @@ class QEvalNode : public TubeNode {
     // More than q observations violated by every trajectory of x: none is left.
     if (violated > static_cast<std::size_t>(ctc_.q())) return empty_all(r);
     // Atom by atom: the L - c live observations that left it whole hold all of it; a value
-    // must lie in m - q observations, so in need = (m - q) - (L - c) of the c that changed it.
-    std::sort(values.begin(), values.end(),
-              [](const AtomValue& a, const AtomValue& b) { return a.comp != b.comp ? a.comp < b.comp : a.atom < b.atom; });
-    const std::size_t keep = m - static_cast<std::size_t>(ctc_.q()), live = m - violated;
-    std::vector<Interval> column;
+    // must lie in m - q observations, so in need = (m - q) - (L - c) of the c that changed it,
+    // that is, at most q - violated of those c may exclude it.
+    const int allowed = ctc_.q() - static_cast<int>(violated);
     bool ok = true;
-    for (std::size_t g = 0; g < values.size() && ok;) {
-      std::size_t e = g;
-      column.clear();
-      while (e < values.size() && values[e].comp == values[g].comp && values[e].atom == values[g].atom) {
-        column.push_back(values[e++].value);
-      }
-      const std::size_t c = column.size();
-      if (live - c < keep) {
-        const std::size_t need = keep - (live - c);
-        Tube& xt = x_[values[g].comp]->tube();
-        Interval& atom = atom_of(xt.data(), values[g].atom);
+    for (std::size_t j = 0; j < n && ok; ++j) {
+      TubeData& xd = x_[j]->tube().data();
+      for (std::size_t a = 0; a < atoms; ++a) {
+        const std::size_t col = j * atoms + a;
+        if (columns.count(col) <= static_cast<std::size_t>(allowed)) continue;
+        Interval& atom = atom_of(xd, a);
         const Interval before = atom;
-        atom &= q_inter(column, static_cast<int>(c - need));
-        changes(r, values[g].comp).atom(values[g].atom, before, atom);
+        atom &= columns.hull(col, allowed);
+        changes(r, j).atom(a, before, atom);
         if (atom.is_empty()) {
-          r.empty_at = offset(values[g].comp) + values[g].atom;
+          r.empty_at = offset(j) + a;
           ok = false;
+          break;
         }
       }
-      g = e;
     }
     for (auto& x : x_) x->tube().touch();
     if (!ok) return empty_all(r);

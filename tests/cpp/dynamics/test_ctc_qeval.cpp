@@ -73,8 +73,8 @@ TEST(CtcQEval, Errors) {
 }
 
 // The network form: CtcQEval(q, obs) and cn.add(ctc, {x, v}). Alone in a
-// network its first run is the direct call (the node keeps one working copy
-// and the atoms each fix changed, the direct call a copy per fix).
+// network its first run is the direct call (the node records only the atoms
+// each fix changed, the direct call every atom of its copy).
 TEST(CtcQEval, NetworkFormIsTheDirectCall) {
   for (int q = 0; q <= 3; ++q) {
     Fixes f({3, 7});
