@@ -220,6 +220,8 @@ void backward_rows(const Tape& t, Interval* rows, std::size_t count_in, const In
         for (std::size_t j = 0; j < count; ++j)
           if (r[j].is_empty()) ok[j] = 0;
         break;
+      // The AVX2 add/sub rows on the portable path only: on the AVX-512 path they
+      // did not beat the embedded rounding (the pointwise contractor at 57-60 ns per slice either way).
       case Op::Add:
         if constexpr (kOne) binary([](I v, Interval& a, Interval& b) { return bwd_add(v, a, b); });
         else if (Ops::kPortable && avx2_rows_for(count)) add_sub_row_avx2<false>(count, rule, r, ra, rb, m, ma, mb, ok);

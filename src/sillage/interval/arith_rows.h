@@ -7,6 +7,9 @@
 // the next double as a 64-bit integer add. A block of four with a rare lane
 // (a magnitude beyond 2^±968, the *_rare predicates) is redone by
 // Interval's operators, whose exact fallback it needs; so is a tail below four.
+// Directed rounding has one answer, so these are the AVX-512 path's bounds
+// too (ArithRows.EqualOperatorsBitForBitOnEveryPath): the batch evaluator
+// takes the rows on both paths.
 //
 // The library is compiled for AVX (-mfma) only: the code is compiled for
 // AVX2 in its own file and runs only where the CPU has it (avx2_rows()).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sillage/expr/function.h"
+#include "sillage/interval/arith_rows.h"
 #include "sillage/interval/rounding_policies.h"
 
 #include "kit/close_bounds.h"
@@ -107,14 +108,20 @@ void check_one(const Function& f, const IntervalVector& y, std::uint64_t seed, b
   EXPECT_GT(changed, 10) << f;
 }
 
-// check_one on both rounding paths (the portable one alone without AVX-512F).
+// check_one on both rounding paths (the portable one alone without AVX-512F),
+// each with and without the AVX2 rows (the forward rows take them on both paths).
 void check(const Function& f, const IntervalVector& y, std::uint64_t seed, bool trig = false) {
-  const bool was = detail::hardware_rounding();
+  const bool was = detail::hardware_rounding(), rows_were = detail::avx2_rows();
   for (const bool hard : {true, false}) {
     if (hard && !detail::hardware_rounding_available()) continue;
     detail::set_hardware_rounding(hard);
-    check_one(f, y, seed, trig);
+    for (const bool rows : {true, false}) {
+      if (rows && !detail::avx2_rows_available()) continue;
+      detail::set_avx2_rows(rows);
+      check_one(f, y, seed, trig);
+    }
   }
+  detail::set_avx2_rows(rows_were);
   detail::set_hardware_rounding(was);
 }
 
@@ -133,10 +140,12 @@ TEST(BatchBitwise, ZerosTinyAndHuge) {
       a[i * v.size() + j] = v[i];
       b[i * v.size() + j] = v[j];
     }
-  const bool was = detail::hardware_rounding();
-  for (const bool hard : {true, false}) {
-    if (hard && !detail::hardware_rounding_available()) continue;
+  const bool was = detail::hardware_rounding(), rows_were = detail::avx2_rows();
+  for (const int path : {0, 1, 2, 3}) {  // hardware or not, AVX2 rows or not
+    const bool hard = path < 2, rows = path % 2 == 0;
+    if ((hard && !detail::hardware_rounding_available()) || (rows && !detail::avx2_rows_available())) continue;
     detail::set_hardware_rounding(hard);
+    detail::set_avx2_rows(rows);
     std::vector<std::vector<Interval>> out(4, std::vector<Interval>(count));
     const std::vector<const Interval*> xs{a.data(), b.data()};
     const std::vector<Interval*> os{out[0].data(), out[1].data(), out[2].data(), out[3].data()};
@@ -144,10 +153,11 @@ TEST(BatchBitwise, ZerosTinyAndHuge) {
     for (std::size_t j = 0; j < count; ++j) {
       const IntervalVector e = f.eval_vector(IntervalVector{a[j], b[j]});
       for (std::size_t i = 0; i < 4; ++i)
-        ASSERT_TRUE(same_bits(out[i][j], e[i])) << "hard " << hard << " output " << i << " of " << a[j] << ", " << b[j]
+        ASSERT_TRUE(same_bits(out[i][j], e[i])) << "hard " << hard << " rows " << rows << " output " << i << " of " << a[j] << ", " << b[j]
                                                 << ": " << out[i][j] << " vs " << e[i];
     }
   }
+  detail::set_avx2_rows(rows_were);
   detail::set_hardware_rounding(was);
 }
 
