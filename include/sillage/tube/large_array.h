@@ -8,7 +8,7 @@
 // pages, 5 to 6 times less per byte. The tail below 2 MiB keeps 4 KB pages,
 // so an array occupies its size rounded to 4 KB, as on the heap. Smaller
 // arrays, other systems and the AddressSanitizer builds (which watch heap
-// arrays) use the heap.
+// arrays) use the heap. Freed arrays are recycled (below).
 #include <cstddef>
 #include <iterator>
 #include <memory>
@@ -21,6 +21,21 @@ namespace sillage::detail {
 
 // Large pages from this size on (one huge page).
 inline constexpr std::size_t kLargeArrayBytes = std::size_t{2} << 20;
+// Freed arrays from this size on are kept for the next array of the same
+// size (take_recycled, keep_recycled): a network, an automatic δ or a loop of the user's
+// builds tubes of one TDomain again and again, and a block given back to the
+// system (munmap, or the heap's trim of its top) costs its page faults
+// again at the next use. At most kRecycledBytes are kept, the last freed
+// first; not under AddressSanitizer (it would hide a use after free).
+inline constexpr std::size_t kRecycledMinBytes = std::size_t{64} << 10;
+inline constexpr std::size_t kRecycledBytes = std::size_t{64} << 20;
+// A kept block of exactly `bytes`, or nullptr.
+void* take_recycled(std::size_t bytes) noexcept;
+// Keeps p (`bytes` long, from LargeArrayAllocator) if there is room; false if the
+// caller must free it.
+bool keep_recycled(void* p, std::size_t bytes) noexcept;
+// The bytes kept now (tests).
+std::size_t recycled_bytes() noexcept;
 // Bytes of memory (from a 2 MiB boundary, huge pages advised) or nullptr if not
 // available here (then the caller uses the heap); throws std::bad_alloc
 // when mapping fails.
@@ -46,12 +61,16 @@ struct LargeArrayAllocator {
 
   T* allocate(std::size_t n) {
     if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
+    if (n * sizeof(T) >= kRecycledMinBytes) {
+      if (void* p = take_recycled(n * sizeof(T))) return static_cast<T*>(p);
+    }
     if (n * sizeof(T) >= kLargeArrayBytes) {
       if (void* p = allocate_large(n * sizeof(T))) return static_cast<T*>(p);
     }
     return std::allocator<T>().allocate(n);
   }
   void deallocate(T* p, std::size_t n) noexcept {
+    if (n * sizeof(T) >= kRecycledMinBytes && keep_recycled(p, n * sizeof(T))) return;
     if (n * sizeof(T) >= kLargeArrayBytes && large_arrays_mapped()) {
       deallocate_large(p, n * sizeof(T));
     } else {

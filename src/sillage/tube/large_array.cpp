@@ -1,6 +1,14 @@
 #include "sillage/tube/large_array.h"
 
 #include <cstdint>
+#include <mutex>
+#include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SILLAGE_RECYCLE_ARRAYS 0
+#else
+#define SILLAGE_RECYCLE_ARRAYS 1
+#endif
 
 #if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
 #include <sys/mman.h>
@@ -21,6 +29,59 @@ std::size_t pages(std::size_t bytes) { return (bytes + kPage - 1) / kPage * kPag
 }  // namespace
 
 bool large_arrays_mapped() { return SILLAGE_LARGE_ARRAYS_MAPPED; }
+
+namespace {
+
+// The freed arrays kept, the last freed at the back. A handful of blocks
+// (at most kRecycledBytes / kRecycledMinBytes): a scan costs nothing next to
+// the faults of one block.
+struct Recycled {
+  std::mutex m;
+  std::vector<std::pair<void*, std::size_t>> blocks;
+  std::size_t bytes = 0;
+};
+
+// Never destroyed: a tube freed by a static destructor after it still finds it.
+Recycled& recycled() {
+  static Recycled* r = new Recycled;
+  return *r;
+}
+
+}  // namespace
+
+void* take_recycled(std::size_t bytes) noexcept {
+  if (!SILLAGE_RECYCLE_ARRAYS) return nullptr;
+  Recycled& r = recycled();
+  const std::lock_guard lock(r.m);
+  for (std::size_t i = r.blocks.size(); i-- > 0;) {
+    if (r.blocks[i].second != bytes) continue;
+    void* p = r.blocks[i].first;
+    r.blocks.erase(r.blocks.begin() + static_cast<std::ptrdiff_t>(i));
+    r.bytes -= bytes;
+    return p;
+  }
+  return nullptr;
+}
+
+bool keep_recycled(void* p, std::size_t bytes) noexcept {
+  if (!SILLAGE_RECYCLE_ARRAYS || bytes > kRecycledBytes) return false;
+  Recycled& r = recycled();
+  const std::lock_guard lock(r.m);
+  if (r.bytes + bytes > kRecycledBytes) return false;
+  try {
+    r.blocks.emplace_back(p, bytes);
+  } catch (...) {  // no room for the entry: free the block instead
+    return false;
+  }
+  r.bytes += bytes;
+  return true;
+}
+
+std::size_t recycled_bytes() noexcept {
+  Recycled& r = recycled();
+  const std::lock_guard lock(r.m);
+  return r.bytes;
+}
 
 std::size_t large_array_footprint(std::size_t bytes) {
   return bytes >= kLargeArrayBytes && large_arrays_mapped() ? pages(bytes) : bytes;

@@ -1,6 +1,7 @@
 // The allocator of a tube's slices and gates: arrays of 2 MiB and more are
 // mapped from a 2 MiB boundary (huge pages advised) where that is available, and
-// behave as any vector's storage: written, grown, copied, freed.
+// behave as any vector's storage: written, grown, copied, freed. Freed arrays
+// from 64 KiB on are kept (64 MiB at most) for the next array of their size.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -84,4 +85,63 @@ TEST(LargeArray, MemoryBytesCountsTheWholePages) {
                                    : slices + gates;
   EXPECT_EQ(x.memory_bytes(), sizeof(TubeData) + expected);
   EXPECT_LE(x.memory_bytes(), 33 * td->nb_slices());  // 32 bytes per slice, as on the heap
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kRecycles = false;  // AddressSanitizer watches every freed array
+#else
+constexpr bool kRecycles = true;
+#endif
+
+TEST(LargeArray, FreedArraysAreRecycledBySize) {
+  detail::LargeArrayAllocator<Interval> alloc;
+  const std::size_t n = 100000;  // 1.6 MB: from the heap
+  for (const std::size_t size : {n, 2 * kLarge}) {
+    Interval* p = alloc.allocate(size);
+    const std::size_t before = detail::recycled_bytes();
+    alloc.deallocate(p, size);
+    EXPECT_EQ(detail::recycled_bytes(), before + (kRecycles ? size * sizeof(Interval) : 0));
+    Interval* q = alloc.allocate(size);  // the same block back
+    if (kRecycles) { EXPECT_EQ(q, p); }
+    EXPECT_EQ(detail::recycled_bytes(), before);
+    Interval* r = alloc.allocate(size + 1);  // another size: not that block
+    EXPECT_NE(r, q);
+    alloc.deallocate(r, size + 1);
+    alloc.deallocate(q, size);
+  }
+  // Small arrays are left to the heap.
+  const std::size_t small = detail::kRecycledMinBytes / sizeof(Interval) - 1;
+  const std::size_t before = detail::recycled_bytes();
+  alloc.deallocate(alloc.allocate(small), small);
+  EXPECT_EQ(detail::recycled_bytes(), before);
+}
+
+TEST(LargeArray, AtMost64MegabytesAreKept) {
+  detail::LargeArrayAllocator<Interval> alloc;
+  const std::size_t n = 3 * kLarge;  // 6 MiB each: 21 of them are 126 MiB
+  std::vector<Interval*> blocks;
+  for (int i = 0; i < 21; ++i) blocks.push_back(alloc.allocate(n));
+  for (Interval* p : blocks) alloc.deallocate(p, n);
+  EXPECT_LE(detail::recycled_bytes(), detail::kRecycledBytes);
+  if (kRecycles) { EXPECT_GT(detail::recycled_bytes(), detail::kRecycledBytes - n * sizeof(Interval)); }
+  const std::size_t huge = detail::kRecycledBytes / sizeof(Interval) + 1;  // beyond the whole budget
+  const std::size_t before = detail::recycled_bytes();
+  alloc.deallocate(alloc.allocate(huge), huge);
+  EXPECT_EQ(detail::recycled_bytes(), before);
+}
+
+TEST(LargeArray, ATubeOnARecycledBlockHoldsOnlyItsOwnValues) {
+  auto td = TDomain::create(0.0, 100.0, 0.01);  // 10 000 slices: 160 kB arrays
+  { const Tube old(td, Interval(5, 6)); }       // freed: its arrays are kept
+  const Tube x(td, Interval(-1, 1));             // on them
+  const Tube y(td, "t");                         // unwritten arrays, each element computed
+  for (std::size_t k = 0; k < td->nb_slices(); ++k) {
+    ASSERT_EQ(x.data().slices[k], Interval(-1, 1)) << k;
+    ASSERT_EQ(x.data().gates[k], Interval(-1, 1)) << k;
+    ASSERT_EQ(y.data().slices[k], Interval(td->t(k), td->t(k + 1))) << k;
+  }
+  { const Tube old(td, Interval(5, 6)); }
+  Tube z = y;  // a copy on a recycled block
+  EXPECT_EQ(z.data().slices, y.data().slices);
+  EXPECT_EQ(z.data().gates, y.data().gates);
 }
