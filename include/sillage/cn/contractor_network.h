@@ -149,6 +149,8 @@ class ContractorNetwork {
 
  private:
   std::string label(std::size_t d) const;
+  // DimensionError naming domain d when its object lost the layout it was registered with.
+  void check_layout(std::size_t d) const;
   // "tube 'x'" when named, else label(d).
   std::string noun(std::size_t d) const;
   // Fills the emptiness fields of s: domain d, atom a (kNoAtom: none), found

@@ -1,10 +1,12 @@
 #include "sillage/problem/eval_rows.h"
 
-#include <cmath>
+#include "sillage/interval/rounding.h"
 
 namespace sillage::detail {
 
-Interval csv_cell(double d) { return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)); }
+// rounding.h's steps rather than std::nextafter: the same doubles without a
+// libm call (plaza1.toml reads about 10 000 cells; nextafter was 5 % of its build).
+Interval csv_cell(double d) { return Interval(rounding::next_down(d), rounding::next_up(d)); }
 
 bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values) {
   for (const auto& [col, value] : c.where)
