@@ -22,7 +22,7 @@ void ProblemLoader::read_time(const toml::table& t) {
     if (!(v > 0) || v > p_.time.tf - p_.time.t0)
       throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl), "a slice width in (0, tf - t0]");
     if ((p_.time.tf - p_.time.t0) / v > kMaxSlices)
-      throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl) + " (more than 5e7 slices)", "a larger delta");
+      throw ProblemError(doc_.pos(dl), "delta = " + doc_.raw(dl) + " (more than " + number_text(kMaxSlices) + " slices)", "a larger delta");
     p_.time.delta = v;
   }
 }

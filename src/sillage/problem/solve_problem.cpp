@@ -59,7 +59,7 @@ void check_delta(const Problem& p, double delta, const std::string& name) {
                 "] (tf - t0 of the problem's [time] domain)");
   if (span / delta > kMaxSlices)
     throw Error(name + ": found " + number_text(delta) + " (" + number_text(std::ceil(span / delta)) +
-                " slices), expected a larger delta (at most 5e7 slices)");
+                " slices), expected a larger delta (at most " + number_text(kMaxSlices) + " slices)");
 }
 
 SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
