@@ -16,9 +16,9 @@
 //     middle from the increments and |ψ''| <= α inside a slice  (CtcHeadingWindow)
 //   v = s (cos, sin)(ψ + e), s ∈ [0, s_max], |e| ≤ track; p' = v  (pointwise; CtcDeriv: slices)
 //   for each range j: q_j = p(t_j), t_j ∈ stamp ± τ  (CtcEval)
-//                     |q_j − beacon| ∈ r_j − [−e_short, e_long] (pointwise on the box q_j)
-// or, with q >= 0 outliers allowed among the ranges, one CtcQEval node holding
-// the 3529 range observations (at most q of them wrong).
+//                     |q_j − beacon| ∈ r_j − [−e_short, e_long] (on the box q_j)
+//     the 3529 ranges as one CtcEvalList node (all true), or with q >= 0
+//     outliers allowed among them, one CtcQEval node (at most q of them wrong).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,7 +34,7 @@
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"
-#include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_qeval.h"
@@ -128,7 +128,6 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   cn.set_name(psi, "psi");
 
   if (with_ranges) {
-    const auto eval = std::make_shared<CtcEval>();
     std::vector<TubeObservation> obs;
     std::map<int, Function> dist_to;  // per beacon, parsed once: ranges to one beacon share it
     for (std::size_t j = 0; j < d.rt.size(); ++j) {
@@ -143,20 +142,16 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
                                                             number_text(by) + ")^2)")).first;
       }
       const auto ring = std::make_shared<CtcFunction>(f->second, range);
-      if (q >= 0) {
-        obs.push_back({tj, IntervalVector(2), ring});
-      } else {
-        const auto qj = std::make_shared<IntervalVector>(2);
-        cn.add(eval, {std::make_shared<Interval>(tj), qj, s.p, v});
-        cn.add(ring, {qj});
-        char name[80];
-        std::snprintf(name, sizeof name, "q%zu (beacon %d seen at t = %.2f)", s.nb_ranges, static_cast<int>(d.rid[j]),
-                      d.rt[j]);
-        cn.set_name(qj, name);
-      }
+      // Named, so that an empty network says which range was inconsistent.
+      char name[80];
+      std::snprintf(name, sizeof name, "range %zu: beacon %d seen at t = %.2f", s.nb_ranges, static_cast<int>(d.rid[j]),
+                    d.rt[j]);
+      obs.push_back({tj, IntervalVector(2), ring, name});
       ++s.nb_ranges;
     }
+    // All true (one node for all of them), or at most q wrong.
     if (q >= 0) cn.add(std::make_shared<CtcQEval>(q, std::move(obs)), {s.p, v});
+    else cn.add(std::make_shared<CtcEvalList>(std::move(obs)), {s.p, v});
   }
   s.psi = psi;
   s.v = v;

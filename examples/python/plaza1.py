@@ -1,8 +1,8 @@
 """Real data: CMU "Plaza 1" (../shared/data/plaza1, read in place; --data DIR
 to point elsewhere). Dead reckoning from the odometry (distance and drifting
 heading change per period), then the same plus the 3529 radio ranges to 4
-beacons, each at an uncertain time (CtcEval); with --q-ranges Q also the ranges
-q-relaxed, at most Q of them wrong (one CtcQEval). The odometry increments tie
+beacons, each at an uncertain time (CtcEval; all of them one CtcEvalList node);
+with --q-ranges Q also the ranges q-relaxed, at most Q of them wrong (one CtcQEval). The odometry increments tie
 positions and heading both ways, over each period (CtcHeading) and over windows of
 40 s (CtcHeadingWindow, --heading-window S; 0: none), which keeps the heading
 bounded, even from an unknown start. The gyro's bias is one unknown b0 of the run
@@ -21,7 +21,7 @@ import plaza1_bounds
 from plaza1_data import FILES, load  # noqa: F401  (load: also the tests' loader)
 from bound_audit import print_audit
 from example_args import check_stats, empty_text, enclosure_ok, out_dir_and_data, print_result, run
-from sillage import (CtcBiasedIncrement, CtcDeriv, CtcEval, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
+from sillage import (CtcBiasedIncrement, CtcDeriv, CtcEvalList, CtcFunction, CtcHeading, CtcHeadingWindow, CtcIncrement, CtcQEval,
                      CtcSecondDeriv, Function,
                      Interval, IntervalVector, TDomain, Tube, TubeObservation, TubeVector)
 
@@ -40,7 +40,7 @@ HEADING_WINDOW = 40.0
 
 def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None, bias=None):
     """The position tube at the fixed point with the bounds b (default: the table); q >= 0: at most q
-    ranges wrong (one CtcQEval instead of a CtcEval per range); window > 0: CtcHeadingWindow over windows
+    ranges wrong (one CtcQEval instead of the CtcEvalList of all of them); window > 0: CtcHeadingWindow over windows
     of that many seconds. heading, velocity, bias: lists that receive the heading tube, the velocity tube,
     the gyro's turn-on bias b0 (an Interval, rad/s)."""
     b = b or plaza1_bounds.bounds(None, d)
@@ -83,9 +83,8 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
     cn.set_name(p, "p")
     cn.set_name(v, "v")
     cn.set_name(psi, "psi")
-    keep, obs = [], []  # the measurement domains (the network holds them too); the q-relaxed observations
+    obs = []  # the ranges: x(t) in z, |z - beacon| in the range, t within the stamp's error
     if with_ranges:
-        ev = CtcEval()
         dist_to = {}  # per beacon, parsed once: the ranges to one beacon share it
         for tj, bid, r in zip(d["rt"], d["rid"], d["r"]):
             t = Interval(tj - b.time_err, tj + b.time_err) & td.t0_tf()
@@ -94,17 +93,10 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
             if int(bid) not in dist_to:
                 dist_to[int(bid)] = Function(["q1", "q2"], f"sqrt((q1 - {bx!r})^2 + (q2 - {by!r})^2)")
             ring = CtcFunction(dist_to[int(bid)], rng)
-            if q >= 0:
-                obs.append(TubeObservation(t, IntervalVector(2), ring))
-                keep.append(t)
-                continue
-            z = IntervalVector(2)
-            cn.add(ev, [t, z, p, v])
-            cn.add(ring, [z])
-            cn.set_name(z, f"q{len(keep)} (beacon {int(bid)} seen at t = {tj:.2f})")
-            keep.append((t, z))
-        if q >= 0:
-            cn.add(CtcQEval(q, obs), [p, v])
+            # Named, so that an empty network says which range was inconsistent.
+            obs.append(TubeObservation(t, IntervalVector(2), ring, f"range {len(obs)}: beacon {int(bid)} seen at t = {tj:.2f}"))
+        # All true (one node for all of them), or at most q wrong.
+        cn.add(CtcQEval(q, obs) if q >= 0 else CtcEvalList(obs), [p, v])
     stats = cn.contract()
     cpu = time.process_time() - t0
     if heading is not None:
@@ -116,7 +108,7 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
     gx, gy = p[0].gates_array(), p[1].gates_array()
     inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
     diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]
-    return p, stats, cpu, inside, sum(diam) / len(diam), max(diam), len(keep)
+    return p, stats, cpu, inside, sum(diam) / len(diam), max(diam), len(obs)
 
 
 def times_after(t, n):

@@ -73,6 +73,7 @@
 #include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_increment.h"
@@ -82,6 +83,7 @@
 #include "sillage/dynamics/gomne_tube.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/dynamics/tube_nodes.h"
+#include "sillage/dynamics/tube_observation.h"
 
 #include "sillage/io/csv.h"
 

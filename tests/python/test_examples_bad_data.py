@@ -122,8 +122,8 @@ def test_python_default_data_folder_absent_is_skipped(tmp_path):
 def test_empty_network_says_empty_and_exits_1(run, tmp_path):
     r = run("plaza1", tmp_path, "--range-short", "0", "--range-long", "0", "--q-ranges", "-1")
     assert r.returncode == 1, r.stdout[-2000:] + r.stderr[-2000:]
-    empty = [l for l in r.stdout.splitlines() if l.startswith("  odometry + ranges: EMPTY: CtcFunction(")]
-    assert len(empty) == 1 and "emptied box 'q0 (beacon 5 seen at t = 3858.06)'" in empty[0], r.stdout
+    empty = [l for l in r.stdout.splitlines() if l.startswith("  odometry + ranges: EMPTY: CtcEvalList (")]
+    assert len(empty) == 1 and "(range 0: beacon 5 seen at t = 3858.06) emptied tube 'p[0]'" in empty[0], r.stdout
     assert "- -" not in r.stdout
     after = r.stdout[r.stdout.index(empty[0]):]
     assert "truth inside" not in after.split("RESULT")[0]

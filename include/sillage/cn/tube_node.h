@@ -82,6 +82,9 @@ class TubeNode : public CnNode, public TubeAtoms {
   // what shrank, and on emptiness sets run.empty_at to the first atom from
   // which the tube's former value is inconsistent (empty_prefix.h).
   bool contract_tube(NodeRun& run, std::size_t r, const std::function<bool(Tube&)>& contract) const;
+  // Empties the tubes of ranges [first, first + n) (an inconsistency found
+  // on them, Lemma 5.1), reporting every slice and gate; returns false.
+  bool empty_tubes(NodeRun& run, std::size_t first, std::size_t n) const;
 
  private:
   std::string name_;

@@ -29,22 +29,11 @@
 #include <vector>
 
 #include "sillage/cn/network_ctc.h"
-#include "sillage/ctc/ctc_algebra.h"
+#include "sillage/dynamics/tube_observation.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {
-
-// One fix: x(t) ∈ z for some t ∈ [t], and z satisfies the constraint of
-// `ctc` (null: none). A range r to a beacon b is z = IntervalVector(n) with
-// ctc = CtcFunction(|z - b|, [r]); a position fix is a bounded z alone.
-struct TubeObservation {
-  // The time interval of the fix.
-  Interval t;
-  // The box of the fix (contracted by ctc).
-  IntervalVector z;
-  CtcPtr ctc = nullptr;  // on z.size() variables
-};
 
 class CtcQEval : public NetworkCtc {
  public:

@@ -111,7 +111,9 @@ struct ConstraintSpec {
   // [lb, ub] ± time_error, or the whole time domain (no column: an unknown
   // time the observations contract). Each column c of `errors` is c ±
   // errors[c] (other columns: the cell as written, enclosed to one ulp). The
-  // errors are kept as written (decimal text), enclosed rigorously.
+  // errors are kept as written (decimal text), enclosed rigorously. The rows
+  // of one tube with its derivative, whose observation involves only that
+  // tube and the row's columns, are one CtcEvalList (build_network).
   std::vector<std::string> ys, vs;
   std::string data;
   std::vector<std::string> time_columns;

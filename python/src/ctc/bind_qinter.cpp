@@ -1,6 +1,6 @@
 // Outliers: the q-relaxed intersection (q_inter, CtcQInter), the GOMNE loop
-// (gomne, GomneResult) and position fixes on a tube (TubeObservation,
-// CtcQEval). gomne releases the GIL (Python subclasses of Ctc take it back in
+// (gomne, GomneResult) and position fixes on a tube (TubeObservation;
+// CtcEvalList: all true, CtcQEval: at most q wrong). gomne releases the GIL (Python subclasses of Ctc take it back in
 // their overrides).
 #include <pybind11/stl.h>
 
@@ -12,6 +12,7 @@
 #include "docstrings.h"
 #include "sillage/ctc/ctc_qinter.h"
 #include "sillage/ctc/gomne.h"
+#include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_qeval.h"
 #include "sillage/dynamics/gomne_tube.h"
 
@@ -89,16 +90,33 @@ bounded box), q_max >= 0 (default: the number of contractors).)doc");
   py::class_<TubeObservation>(m, "TubeObservation", R"doc(
 A fix x(t) in z for some t in the interval t, z satisfying the contractor ctc
 (None: no constraint). A range r to a beacon b: z = IntervalVector(n) and
-ctc = CtcFunction(|z - b|, r).)doc")
-      .def(py::init([](const Interval& t, const IntervalVector& z, const py::object& ctc) {
-             return TubeObservation{t, z, ctc.is_none() ? nullptr : hold_ctc(ctc)};
+ctc = CtcFunction(|z - b|, r). name: what the fix is, for the reports (e.g.
+'ranges line 12').)doc")
+      .def(py::init([](const Interval& t, const IntervalVector& z, const py::object& ctc, const std::string& name) {
+             return TubeObservation{t, z, ctc.is_none() ? nullptr : hold_ctc(ctc), name};
            }),
-           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(),
-           "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint).")
+           py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(), py::arg("name") = "",
+           "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint), named name for the reports.")
       .def_readwrite("t", &TubeObservation::t, DOC(TubeObservation, t))
       .def_readwrite("z", &TubeObservation::z, DOC(TubeObservation, z))
+      .def_readwrite("name", &TubeObservation::name, DOC(TubeObservation, name))
       .def("__repr__", [](const TubeObservation& o) {
-        return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + ">";
+        return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + (o.name.empty() ? "" : " name='" + o.name + "'") +
+               ">";
+      });
+
+  py::class_<CtcEvalList, NetworkCtc, std::shared_ptr<CtcEvalList>>(m, "CtcEvalList", R"doc(
+Fixes on a tube, all true, as one network node: CtcEvalList(obs), then
+cn.add(ctc, [x, v]) (x, v TubeVectors or Tubes of one size). Each run contracts
+the fixes whose slices changed: CtcEval on (t_i, z_i, x, v), then the fix's
+contractor on z_i, again while they shrink; t_i and z_i are held by the node.
+The set of one CtcEval and one observation node per fix, without a node, a
+domain and a name per fix. A fix found inconsistent empties x and the network's
+emptiness names it (TubeObservation.name).)doc")
+      .def(py::init<std::vector<TubeObservation>>(), py::arg("obs"), DOC(CtcEvalList, CtcEvalList))
+      .def("observations", &CtcEvalList::observations, DOC(CtcEvalList, observations))
+      .def("__repr__", [](const CtcEvalList& c) {
+        return "CtcEvalList(" + std::to_string(c.observations().size()) + " observations)";
       });
 
   py::class_<CtcQEval, NetworkCtc, std::shared_ptr<CtcQEval>>(m, "CtcQEval", R"doc(

@@ -115,4 +115,15 @@ bool TubeNode::contract_tube(NodeRun& run, std::size_t r, const std::function<bo
   return false;
 }
 
+bool TubeNode::empty_tubes(NodeRun& run, std::size_t first, std::size_t n) const {
+  for (std::size_t j = first; j < first + n; ++j) {
+    Tube& x = tubes_.at(j)->tube();
+    const TubeChanges out = changes(run, j);
+    for (std::size_t k = 0; k <= x.nb_slices(); ++k) out.gate(k, x.gate(k), Interval::empty());
+    for (std::size_t k = 0; k < x.nb_slices(); ++k) out.slice(k, x.slice(k), Interval::empty());
+    x.set(Interval::empty());
+  }
+  return false;
+}
+
 }  // namespace sillage

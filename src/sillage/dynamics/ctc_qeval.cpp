@@ -12,33 +12,12 @@ namespace sillage {
 
 namespace {
 
-// Each observation of the size n of the tube, at a time meeting `domain`.
-void check_observation_list(std::size_t n, const Interval& domain, const std::vector<TubeObservation>& obs,
-                            const std::string& where) {
-  if (obs.empty()) throw Error(where + ": needs at least one observation");
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    if (obs[i].z.size() != n) {
-      throw DimensionError(where + ": observation " + std::to_string(i) + " has " + std::to_string(obs[i].z.size()) +
-                           " components, the tube " + std::to_string(n));
-    }
-    if (!obs[i].t.intersects(domain)) {
-      throw Error(where + ": the time " + obs[i].t.str() + " of observation " + std::to_string(i) +
-                  " does not meet the time domain " + domain.str());
-    }
-    if (obs[i].ctc && obs[i].ctc->nb_vars() != n) {
-      throw DimensionError(where + ": the contractor of observation " + std::to_string(i) + " (" +
-                           obs[i].ctc->name() + ") acts on " + std::to_string(obs[i].ctc->nb_vars()) +
-                           " variables, the tube has " + std::to_string(n));
-    }
-  }
-}
-
 void check_observations(const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs) {
   if (v.size() != x.size() || v.tdomain() != x.tdomain()) {
     throw DimensionError("CtcQEval::contract: the derivative tube must have the size (" + std::to_string(x.size()) +
                          ") and the TDomain of the tube");
   }
-  check_observation_list(x.size(), x.tdomain()->t0_tf(), obs, "CtcQEval::contract");
+  detail::check_observation_list(x.size(), x.tdomain()->t0_tf(), obs, "CtcQEval::contract");
 }
 
 // Contracts by one observation alone: `eval(t, z)` (CtcEval on the tube)
@@ -126,7 +105,7 @@ class QEvalNode : public TubeNode {
     }
     x_ = whole_tubes(0, args.size() / 2, "x");
     v_ = whole_tubes(args.size() / 2, args.size() / 2, "v");
-    check_observation_list(x_.size(), x_[0]->tube().tdomain()->t0_tf(), ctc_.observations(), where());
+    detail::check_observation_list(x_.size(), x_[0]->tube().tdomain()->t0_tf(), ctc_.observations(), where());
   }
 
   bool run(NodeRun& r) const override {
@@ -176,7 +155,7 @@ class QEvalNode : public TubeNode {
       violated += !live;
     }
     // More than q observations violated by every trajectory of x: none is left.
-    if (violated > static_cast<std::size_t>(ctc_.q())) return empty_all(r);
+    if (violated > static_cast<std::size_t>(ctc_.q())) return empty_tubes(r, 0, x_.size());
     // Atom by atom: the L - c live observations that left it whole hold all of it; a value
     // must lie in m - q observations, so in need = (m - q) - (L - c) of the c that changed it,
     // that is, at most q - violated of those c may exclude it.
@@ -199,22 +178,11 @@ class QEvalNode : public TubeNode {
       }
     }
     for (auto& x : x_) x->tube().touch();
-    if (!ok) return empty_all(r);
+    if (!ok) return empty_tubes(r, 0, x_.size());
     return true;
   }
 
  private:
-  bool empty_all(NodeRun& r) const {
-    for (std::size_t j = 0; j < x_.size(); ++j) {
-      Tube& x = x_[j]->tube();
-      const TubeChanges out = changes(r, j);
-      for (std::size_t k = 0; k <= x.nb_slices(); ++k) out.gate(k, x.gate(k), Interval::empty());
-      for (std::size_t k = 0; k < x.nb_slices(); ++k) out.slice(k, x.slice(k), Interval::empty());
-      x.set(Interval::empty());
-    }
-    return false;
-  }
-
   CtcQEval ctc_;
   std::vector<std::shared_ptr<TubeDomain>> x_, v_;
 };

@@ -22,4 +22,20 @@ Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std
   return (t + Interval(-1, 1) * terr) & domain;
 }
 
+RowObservation::RowObservation(std::shared_ptr<const Ctc> obs, std::shared_ptr<const std::vector<int>> slots,
+                               std::size_t nz, IntervalVector values)
+    : Ctc(nz), obs_(std::move(obs)), slots_(std::move(slots)), values_(std::move(values)) {}
+
+void RowObservation::contract(IntervalVector& z) const {
+  check_dim(z);
+  thread_local IntervalVector box(1);  // scratch, per thread
+  const std::vector<int>& slots = *slots_;
+  if (box.size() != slots.size()) box = IntervalVector(slots.size());
+  std::size_t v = 0;
+  for (std::size_t k = 0; k < slots.size(); ++k) box[k] = slots[k] >= 0 ? z[static_cast<std::size_t>(slots[k])] : values_[v++];
+  obs_->contract(box);
+  for (std::size_t k = 0; k < slots.size(); ++k)
+    if (slots[k] >= 0) z[static_cast<std::size_t>(slots[k])] &= box[k];
+}
+
 }  // namespace sillage::detail

@@ -1,9 +1,11 @@
 #pragma once
 // The rows of an eval constraint: which are kept and at what time (internal;
 // shared by load_eval.cpp, which checks the times against [t0, tf], and
-// build_network.cpp, which builds one CtcEval per row).
+// build_network.cpp, which builds a CtcEval per row or a CtcEvalList of them).
+#include <memory>
 #include <vector>
 
+#include "sillage/ctc/ctc.h"
 #include "sillage/interval/interval.h"
 #include "sillage/io/csv.h"
 #include "sillage/problem/problem.h"
@@ -21,5 +23,23 @@ bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, const std::ve
 // domain (no time column: unknown), within the domain (empty: outside it).
 Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
                        const Interval& terr, const Interval& domain);
+
+// A row's observation as a contractor on z alone (the fix of CtcEvalList):
+// the constraint's contractor acts on its references in order, each either a
+// component of z (slot >= 0) or the next of the row's measured values
+// (slot -1), which stay constants here.
+class RowObservation : public Ctc {
+ public:
+  RowObservation(std::shared_ptr<const Ctc> obs, std::shared_ptr<const std::vector<int>> slots, std::size_t nz,
+                 IntervalVector values);
+  std::string name() const override { return obs_->name(); }
+  std::string describe() const override { return obs_->describe(); }
+  void contract(IntervalVector& z) const override;
+
+ private:
+  std::shared_ptr<const Ctc> obs_;
+  std::shared_ptr<const std::vector<int>> slots_;  // shared by the rows of a constraint
+  IntervalVector values_;
+};
 
 }  // namespace sillage::detail

@@ -2,6 +2,7 @@
 // and the real datasets of ../shared/data when present.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "sillage/error.h"
@@ -40,6 +41,20 @@ TEST(Csv, ErrorsSayWhere) {
   EXPECT_THROW(CsvTable::parse("a\nnan\n", "f.csv"), ParseError);
   EXPECT_THROW(CsvTable::parse("", "f.csv"), ParseError);
   EXPECT_THROW(CsvTable::read("/nonexistent/file.csv"), Error);
+  EXPECT_THROW(CsvTable::read(testing::TempDir()), Error);  // a folder
+  {
+    const std::string empty = testing::TempDir() + "empty.csv", small = testing::TempDir() + "small.csv";
+    std::FILE* f = std::fopen(empty.c_str(), "w");
+    std::fclose(f);
+    EXPECT_THROW(CsvTable::read(empty), ParseError);  // no header line
+    f = std::fopen(small.c_str(), "w");
+    std::fputs("t,x\n0,1.5\n2,-3\n", f);
+    std::fclose(f);
+    const CsvTable s = CsvTable::read(small);
+    ASSERT_EQ(s.nb_rows(), 2u);
+    EXPECT_EQ(s.row(1)[1], -3.0);
+    EXPECT_EQ(s.line(1), 3u);
+  }
   const CsvTable t = CsvTable::parse("a\n1\n", "f.csv");
   try {
     t.column("z");

@@ -64,11 +64,15 @@ TEST(LoadEval, ErrorsAtTheirPlace) {
 TEST(LoadEval, WhereKeepsTheRowsAndGatesSampleTheTimes) {
   const auto all = build_network(parse(eval("y = \"x\"\nv = \"v\"\ntime = \"t\"\ntime_error = 0.01\n")), 0.05);
   const auto two = build_network(parse(eval("y = \"x\"\nv = \"v\"\ntime = \"t\"\ntime_error = 0.01\nwhere = { b = 2 }\n")), 0.05);
-  EXPECT_EQ(all.cn->nb_ctc(), 1u + 9 * 2);  // the deriv, then per row a CtcEval and its observation
+  // The deriv, then the rows (y with its derivative, the observation on y and the row's values):
+  // one CtcEvalList holding a fix per row, each a time and a value.
+  EXPECT_EQ(all.cn->nb_ctc(), 2u);
+  EXPECT_EQ(all.extra_domains, 9u * 2);
   const CsvTable table = CsvTable::read(problem_test::problems_dir() + "/data/beacon_ranges.csv");
   std::size_t rows_b2 = 0;
   for (std::size_t i = 0; i < table.nb_rows(); ++i) rows_b2 += table.row(i)[table.column("b")] == 2;
-  EXPECT_EQ(two.cn->nb_ctc(), 1 + 2 * rows_b2);
+  EXPECT_EQ(two.cn->nb_ctc(), 2u);
+  EXPECT_EQ(two.extra_domains, 2 * rows_b2);
   EXPECT_GT(rows_b2, 0u);
   EXPECT_LT(rows_b2, 9u);
   EXPECT_EQ(all.td->nb_slices(), 400u);
@@ -128,6 +132,29 @@ TEST(LoadEval, RowsOutsideTheTimeDomain) {
   EXPECT_EQ(parse(eval("y = \"x\"\ntime = \"t\"\n")).constraints[1].nb_outside, 0u);
   // Within the time error of the domain: kept (its time is the part inside).
   EXPECT_EQ(parse(within_10(eval("y = \"x\"\ntime = \"t\"\ntime_error = 1.5\nwhere = { b = 2 }\noutside = \"skip\"\n"))).constraints[1].nb_outside, 2u);
+}
+
+// The rows of an eval whose observation involves only the tube and the row's
+// values are one CtcEvalList node; an observation that also involves another
+// variable (here a = 0, which changes nothing) keeps a CtcEval node and an
+// observation node per row. The two give the same tube: the same contractors
+// to a fixed point (in another order).
+TEST(LoadEval, RowsAsOneNodeGiveTheSetsOfANodePerRow) {
+  const std::string text = problem_test::read_file(problem_test::problems_dir() + "/line_ranges.toml");
+  std::string with_a = text;
+  with_a.replace(with_a.find("expr = \"abs(x - b) - r\""), 24, "expr = \"abs(x - b) - r + a\"");
+  with_a += "\n[var.a]\nkind = \"interval\"\nvalue = \"0\"\n";
+  const SolveResult list = solve_problem(parse(text)), rows = solve_problem(parse(with_a));
+  ASSERT_FALSE(list.empty) << list.why_empty;
+  ASSERT_FALSE(rows.empty) << rows.why_empty;
+  EXPECT_EQ(list.built.cn->nb_ctc(), 2u);
+  EXPECT_EQ(rows.built.cn->nb_ctc(), 1u + 2 * 9);
+  const Tube &a = (*list.built.var("x").tubes)[0], &b = (*rows.built.var("x").tubes)[0];
+  ASSERT_EQ(a.nb_slices(), b.nb_slices());
+  double va = 0, vb = 0;
+  for (std::size_t k = 0; k <= a.nb_slices(); ++k) va += a.gate(k).diam(), vb += b.gate(k).diam();
+  EXPECT_NEAR(va / vb, 1.0, 0.02) << va << " " << vb;
+  EXPECT_LT(a.max_thickness(), 1.0);
 }
 
 // An emptiness found by a row's observation names that row's domains by the
