@@ -1,6 +1,6 @@
 // The generic contractor laws (tests/cpp/kit/contractor_kit.h) on the tube
 // contractors: CtcDeriv (each sweep, scalar and vector, restricted), CtcEval,
-// CtcIncrement, CtcQEval. True trajectories: sums of sines with their exact
+// CtcIncrement, CtcQEval, CtcEvalList. True trajectories: sums of sines with their exact
 // derivative (kit::SineSum). The thesis values stay in each
 // contractor's own tests.
 #include <gtest/gtest.h>
@@ -14,6 +14,7 @@
 #include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/dynamics/ctc_qeval.h"
 
@@ -215,9 +216,9 @@ TEST(DynamicsLaws, CtcIncrement) {
   EXPECT_TRUE(kit::check_laws(contract, increment_case, o));
 }
 
-// Fixes on a 2-d trajectory, one of them wrong, q = 1: domains x, v, then
-// (t_i, z_i) for 4 observations.
-kit::Case qeval_case(std::mt19937_64& rng) {
+// Fixes on a 2-d trajectory (one of them wrong if one_wrong): domains x, v,
+// then (t_i, z_i) for 4 observations.
+kit::Case fixes_case(std::mt19937_64& rng, bool one_wrong) {
   const SineSum f(rng), g(rng);
   const auto td = kit::random_tdomain(rng, 20);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -226,7 +227,7 @@ kit::Case qeval_case(std::mt19937_64& rng) {
   c.domains = {TubeVector({kit::tube_around(td, pos(f), rng, 1.0, 0.3), kit::tube_around(td, pos(g), rng, 1.0, 0.3)}),
                TubeVector({kit::tube_around(td, vel(f), rng, 0.3), kit::tube_around(td, vel(g), rng, 0.3)})};
   c.truth = {std::vector<kit::Trajectory1>{pos(f), pos(g)}, std::vector<kit::Trajectory1>{vel(f), vel(g)}};
-  const int wrong = pick(rng);
+  const int wrong = one_wrong ? pick(rng) : -1;
   for (int i = 0; i < 4; ++i) {
     const double ts = td->t(0) + u(rng) * (td->t(td->nb_slices()) - td->t(0));
     const Interval t = kit::around(Interval(ts), rng, 0.3) & Interval(td->t(0), td->t(td->nb_slices()));
@@ -243,6 +244,24 @@ kit::Case qeval_case(std::mt19937_64& rng) {
     }
   }
   return c;
+}
+
+kit::Case qeval_case(std::mt19937_64& rng) { return fixes_case(rng, true); }
+
+// The fixes of the domains (t_i, z_i) held by the NetworkCtc `make` builds, on
+// x and v in a network of their own; x written back.
+template <class Make>
+void fixes_in_a_network(kit::Domains& d, Make make) {
+  std::vector<TubeObservation> obs;
+  for (std::size_t i = 2; i + 1 < d.size(); i += 2) {
+    obs.push_back({std::get<Interval>(d[i]), std::get<IntervalVector>(d[i + 1]), nullptr});
+  }
+  auto x = std::make_shared<TubeVector>(std::get<TubeVector>(d[0]));
+  auto v = std::make_shared<TubeVector>(std::get<TubeVector>(d[1]));
+  ContractorNetwork cn;
+  cn.add(make(std::move(obs)), {x, v});
+  cn.contract();
+  d[0] = *x;
 }
 
 void qeval_contract(kit::Domains& d) {
@@ -268,16 +287,7 @@ TEST(DynamicsLaws, CtcQEvalWithOneWrongFix) {
 // contractor (the domains t_i, z_i are read, not contracted).
 TEST(DynamicsLaws, CtcQEvalInANetwork) {
   const auto contract = [](kit::Domains& d) {
-    std::vector<TubeObservation> obs;
-    for (std::size_t i = 2; i + 1 < d.size(); i += 2) {
-      obs.push_back({std::get<Interval>(d[i]), std::get<IntervalVector>(d[i + 1]), nullptr});
-    }
-    auto x = std::make_shared<TubeVector>(std::get<TubeVector>(d[0]));
-    auto v = std::make_shared<TubeVector>(std::get<TubeVector>(d[1]));
-    ContractorNetwork cn;
-    cn.add(std::make_shared<CtcQEval>(1, obs), {x, v});
-    cn.contract();
-    d[0] = *x;
+    fixes_in_a_network(d, [](std::vector<TubeObservation> obs) { return std::make_shared<CtcQEval>(1, std::move(obs)); });
   };
   kit::Options o;
   o.cases = 20;
@@ -312,3 +322,19 @@ TEST(DynamicsLaws, CtcEvalIsMonotone) {
 }
 
 }  // namespace
+
+// CtcEvalList on the same fixes, all true, in a network of its own (the fronts
+// beyond each [t] are its own then): the fixes held by the contractor.
+TEST(DynamicsLaws, CtcEvalListInANetwork) {
+  const auto contract = [](kit::Domains& d) {
+    fixes_in_a_network(d, [](std::vector<TubeObservation> obs) { return std::make_shared<CtcEvalList>(std::move(obs)); });
+  };
+  kit::Options o;
+  o.cases = 20;
+  o.idempotence = kit::Idempotence::ContractionOnly;  // a network at the ratio 0.01
+  o.outputs = {0};
+  o.empty_any = true;
+  o.threads = false;  // a network per call
+  o.skip_empty = {2, 4, 6, 8};  // a time outside the domain is bad input (Error), as for CtcQEval
+  EXPECT_TRUE(kit::check_laws(contract, [](std::mt19937_64& rng) { return fixes_case(rng, false); }, o));
+}
