@@ -12,7 +12,9 @@
 // 5.2) on (t_i, z_i, x, v), then ctc_i on z_i, again while t_i or z_i shrink
 // by more than the network's ratio; then the next fix, on the tube as the
 // previous ones left it. t_i and z_i live in the node (contracted across runs
-// and contract() calls); the fronts beyond [t_i] are left to the network's
+// and contract() calls, as the domains t and z of a CtcEval node would be: a
+// network whose tubes are widened again is to be built again, which starts
+// from the fixes as given); the fronts beyond [t_i] are left to the network's
 // CtcDeriv when it has one on every (x[j], v[j]), as a CtcEval node does.
 // The set is that of m CtcEval nodes with their observation nodes (the same
 // contractors, to the same kind of fixed point); the order of the runs
