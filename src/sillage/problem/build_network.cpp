@@ -353,16 +353,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         const auto whole = [](const VarDomain& y) {
           return y.spec->kind == VarKind::Tube ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
         };
-        auto dims_eval = [&](const std::string& n) -> std::optional<std::size_t> {
-          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->dim;
-          if (has_column(n)) return 1;
-          return dims(n);
-        };
-        auto vec_eval = [&](const std::string& n) {
-          if (y_index(n) < ys.size()) return ys[y_index(n)]->spec->kind == VarKind::TubeVector;
-          return !has_column(n) && vec(n);
-        };
-        const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims_eval, vec_eval, "");
+        const RewrittenExpr r = detail::eval_observation(p, c);
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();
         const auto obs = std::make_shared<CtcFunction>(f);
@@ -381,10 +372,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         // involves only the evaluated tube and the row's values (ranges,
         // position fixes): no node, domain and name per row (plaza1's 3529
         // ranges were 7 058 nodes and 17 647 domains).
-        const bool listed = ys.size() == 1 && !c.vs[0].empty() &&
-                            (direct || std::all_of(r.refs.begin(), r.refs.end(), [&](const VarRef& ref) {
-                               return y_index(ref.var) < ys.size() || has_column(ref.var);
-                             }));
+        const bool listed = detail::eval_rows_listed(p, c, r);
         const std::size_t nz = ys[0]->spec->kind == VarKind::Tube ? 1 : ys[0]->spec->dim;
         std::shared_ptr<const std::vector<int>> slots;  // per reference: its component of z, or -1 (a value)
         if (listed && !direct) {

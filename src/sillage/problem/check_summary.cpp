@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "sillage/problem/build_network.h"
+#include "sillage/problem/eval_rows.h"
 
 namespace sillage {
 
@@ -47,8 +48,10 @@ std::string check_summary(const Problem& p) {
   for (const ConstraintSpec& c : p.constraints) {
     std::size_t n = 1;
     if (c.kind == ConstraintKind::Eval) {
-      n = 2 * p.table(c.data)->table.nb_rows();
-      domains += 3 * p.table(c.data)->table.nb_rows();
+      // One CtcEvalList holding the rows, or per row a CtcEval and its observation.
+      const bool listed = detail::eval_rows_listed(p, c, detail::eval_observation(p, c));
+      n = listed ? 1 : 2 * p.table(c.data)->table.nb_rows();
+      if (!listed) domains += 3 * p.table(c.data)->table.nb_rows();
       bytes += 6 * 16 * p.table(c.data)->table.nb_rows();
     }
     nodes += n;

@@ -1,5 +1,8 @@
 #include "sillage/problem/eval_rows.h"
 
+#include <algorithm>
+#include <optional>
+
 #include "sillage/interval/rounding.h"
 
 namespace sillage::detail {
@@ -20,6 +23,39 @@ Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std
   Interval t = csv_cell(values[table.column(c.time_columns[0])]);
   if (c.time_columns.size() == 2) t |= csv_cell(values[table.column(c.time_columns[1])]);
   return (t + Interval(-1, 1) * terr) & domain;
+}
+
+namespace {
+
+bool eval_has_column(const Problem& p, const ConstraintSpec& c, const std::string& n) {
+  return p.table(c.data)->table.has_column(n) || (!c.join_data.empty() && p.table(c.join_data)->table.has_column(n));
+}
+
+bool evaluated(const ConstraintSpec& c, const std::string& n) {
+  return std::find(c.ys.begin(), c.ys.end(), n) != c.ys.end();
+}
+
+}  // namespace
+
+RewrittenExpr eval_observation(const Problem& p, const ConstraintSpec& c) {
+  const auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
+    if (evaluated(c, n)) return p.var(n)->dim;
+    if (eval_has_column(p, c, n)) return 1;
+    const VarSpec* v = p.var(n);
+    return v ? std::optional<std::size_t>(v->dim) : std::nullopt;
+  };
+  const auto vec = [&](const std::string& n) {
+    if (evaluated(c, n)) return p.var(n)->kind == VarKind::TubeVector;
+    const VarSpec* v = p.var(n);
+    return !eval_has_column(p, c, n) && v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
+  };
+  return rewrite_refs(c.expr, c.expr_pos, dims, vec, "");
+}
+
+bool eval_rows_listed(const Problem& p, const ConstraintSpec& c, const RewrittenExpr& r) {
+  return c.ys.size() == 1 && !c.vs[0].empty() && std::all_of(r.refs.begin(), r.refs.end(), [&](const VarRef& ref) {
+           return evaluated(c, ref.var) || eval_has_column(p, c, ref.var);
+         });
 }
 
 RowObservation::RowObservation(std::shared_ptr<const Ctc> obs, std::shared_ptr<const std::vector<int>> slots,

@@ -9,6 +9,7 @@
 #include "sillage/interval/interval.h"
 #include "sillage/io/csv.h"
 #include "sillage/problem/problem.h"
+#include "sillage/problem/var_refs.h"
 
 namespace sillage::detail {
 
@@ -23,6 +24,16 @@ bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, const std::ve
 // domain (no time column: unknown), within the domain (empty: outside it).
 Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
                        const Interval& terr, const Interval& domain);
+
+// The observation of eval constraint c rewritten over its names: the tubes
+// of c.ys, the columns of its table (and of the joined one), and the
+// problem's other variables (ProblemError for an unknown name).
+RewrittenExpr eval_observation(const Problem& p, const ConstraintSpec& c);
+
+// True when the rows of c are one CtcEvalList (build_network, and `sillage
+// check`'s count): one tube with its derivative, and an observation r over
+// that tube and the row's columns only.
+bool eval_rows_listed(const Problem& p, const ConstraintSpec& c, const RewrittenExpr& r);
 
 // A row's observation as a contractor on z alone (the fix of CtcEvalList):
 // the constraint's contractor acts on its references in order, each either a

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "problem_text.h"
+#include "sillage/problem/check_summary.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 
@@ -149,6 +150,9 @@ TEST(LoadEval, RowsAsOneNodeGiveTheSetsOfANodePerRow) {
   ASSERT_FALSE(rows.empty) << rows.why_empty;
   EXPECT_EQ(list.built.cn->nb_ctc(), 2u);
   EXPECT_EQ(rows.built.cn->nb_ctc(), 1u + 2 * 9);
+  // sillage check counts the nodes the build makes.
+  EXPECT_NE(check_summary(parse(text)).find("network: 2 nodes"), std::string::npos) << check_summary(parse(text));
+  EXPECT_NE(check_summary(parse(with_a)).find("network: 19 nodes"), std::string::npos) << check_summary(parse(with_a));
   const Tube &a = (*list.built.var("x").tubes)[0], &b = (*rows.built.var("x").tubes)[0];
   ASSERT_EQ(a.nb_slices(), b.nb_slices());
   double va = 0, vb = 0;
