@@ -70,6 +70,10 @@ void RowObservation::contract(IntervalVector& z) const {
   std::size_t v = 0;
   for (std::size_t k = 0; k < slots.size(); ++k) box[k] = slots[k] >= 0 ? z[static_cast<std::size_t>(slots[k])] : values_[v++];
   obs_->contract(box);
+  if (box.is_empty()) {  // a value emptied is the row's inconsistency too, whatever the contractor
+    z.set_empty();
+    return;
+  }
   for (std::size_t k = 0; k < slots.size(); ++k)
     if (slots[k] >= 0) z[static_cast<std::size_t>(slots[k])] &= box[k];
 }

@@ -7,6 +7,7 @@
 
 #include "problem_text.h"
 #include "sillage/problem/check_summary.h"
+#include "sillage/problem/eval_rows.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 
@@ -190,4 +191,19 @@ TEST(LoadEval, TruthInAnUnboundedTubeIsNoPass) {
   EXPECT_EQ(none.inside, 0u);
   ASSERT_FALSE(none.first_misses.empty());
   EXPECT_NE(none.first_misses[0].find("in the unbounded"), std::string::npos) << none.first_misses[0];
+}
+
+// A row's observation whose contractor empties only one of the row's values
+// (a contractor need not empty the whole box) still makes the row's z empty:
+// the inconsistency is never lost.
+TEST(LoadEval, RowObservationEmptiedByAValueIsEmpty) {
+  struct EmptiesTheLast : Ctc {
+    EmptiesTheLast() : Ctc(2) {}
+    void contract(IntervalVector& x) const override { x[1] = Interval::empty(); }
+  };
+  const detail::RowObservation row(std::make_shared<EmptiesTheLast>(), std::make_shared<const std::vector<int>>(std::vector<int>{0, -1}),
+                                   1, IntervalVector{Interval(3.0)});
+  IntervalVector z{Interval(1, 2)};
+  row.contract(z);
+  EXPECT_TRUE(z.is_empty());
 }
