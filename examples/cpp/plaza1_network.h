@@ -150,8 +150,9 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
       ++s.nb_ranges;
     }
     // All true (one node for all of them), or at most q wrong.
-    if (q >= 0) cn.add(std::make_shared<CtcQEval>(q, std::move(obs)), {s.p, v});
-    else cn.add(std::make_shared<CtcEvalList>(std::move(obs)), {s.p, v});
+    // None within the run (another recording): nothing to add.
+    if (!obs.empty() && q >= 0) cn.add(std::make_shared<CtcQEval>(q, std::move(obs)), {s.p, v});
+    else if (!obs.empty()) cn.add(std::make_shared<CtcEvalList>(std::move(obs)), {s.p, v});
   }
   s.psi = psi;
   s.v = v;

@@ -95,8 +95,9 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
             ring = CtcFunction(dist_to[int(bid)], rng)
             # Named, so that an empty network says which range was inconsistent.
             obs.append(TubeObservation(t, IntervalVector(2), ring, f"range {len(obs)}: beacon {int(bid)} seen at t = {tj:.2f}"))
-        # All true (one node for all of them), or at most q wrong.
-        cn.add(CtcQEval(q, obs) if q >= 0 else CtcEvalList(obs), [p, v])
+        # All true (one node for all of them), or at most q wrong; none within the run: nothing.
+        if obs:
+            cn.add(CtcQEval(q, obs) if q >= 0 else CtcEvalList(obs), [p, v])
     stats = cn.contract()
     cpu = time.process_time() - t0
     if heading is not None:
