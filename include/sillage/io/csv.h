@@ -5,6 +5,7 @@
 // names the file, the line and the column. Header names are non-empty and
 // distinct. Cells are quoted in messages up to 60 characters.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,9 @@ class CsvTable {
   // The header names, in order.
   const std::vector<std::string>& columns() const { return columns_; }
   // Number of data rows.
-  std::size_t nb_rows() const { return rows_.size(); }
-  // Row i (OutOfRangeError if i >= nb_rows()).
-  const std::vector<double>& row(std::size_t i) const;
+  std::size_t nb_rows() const { return lines_.size(); }
+  // Row i, one value per column (OutOfRangeError if i >= nb_rows()).
+  std::span<const double> row(std::size_t i) const;
   // "the table has 3 rows: 0 to 2", for messages about rows.
   std::string rows_text() const;
   // The file (or the source given to parse) the table was read from.
@@ -44,7 +45,7 @@ class CsvTable {
  private:
   std::string source_;
   std::vector<std::string> columns_;
-  std::vector<std::vector<double>> rows_;
+  std::vector<double> cells_;       // row after row: one allocation, not one per row
   std::vector<std::size_t> lines_;  // per row
 };
 

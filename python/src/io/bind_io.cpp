@@ -2,7 +2,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <span>
 #include <string>
+#include <vector>
 
 #include "bindings.h"
 #include "docstrings.h"
@@ -38,7 +40,10 @@ void init_io(py::module_& m) {
       .def("nb_rows", &CsvTable::nb_rows, DOC(CsvTable, nb_rows))
       .def(
           "row",
-          [](const CsvTable& t, py::ssize_t i) { return t.row(row_index(t, i, "CsvTable.row")); },
+          [](const CsvTable& t, py::ssize_t i) {
+            const std::span<const double> r = t.row(row_index(t, i, "CsvTable.row"));
+            return std::vector<double>(r.begin(), r.end());
+          },
           py::arg("i"), "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()).")
       .def("source", &CsvTable::source, DOC(CsvTable, source))
       .def(

@@ -1,9 +1,12 @@
 #include "sillage/problem/build_network.h"
 
 #include <algorithm>
+#include <span>
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <string_view>
+#include <unordered_set>
 
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -75,6 +78,28 @@ std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, 
   return cols;
 }
 
+// The indices of f's variables that its expressions read: a table's row is
+// converted to intervals only in the columns an expression uses (plaza1's
+// odometry has 8 columns, its expressions read one: converting them all was a
+// third of plaza1.toml's build).
+std::vector<std::size_t> read_vars(const Function& f) {
+  std::unordered_set<const ExprNode*> seen;
+  std::unordered_set<std::string_view> names;
+  std::vector<const ExprNode*> todo;
+  for (const Expr& e : f.exprs()) todo.push_back(e.get());
+  while (!todo.empty()) {
+    const ExprNode* n = todo.back();
+    todo.pop_back();
+    if (!seen.insert(n).second) continue;
+    if (n->op == Op::Var) names.insert(n->name);
+    for (const Expr& a : n->args) todo.push_back(a.get());
+  }
+  std::vector<std::size_t> read;
+  for (std::size_t i = 0; i < f.nb_vars(); ++i)
+    if (names.count(f.var_names()[i])) read.push_back(i);
+  return read;
+}
+
 // The slices of x from a table (row k: slice k of [time] points), after the
 // time points added since (gates of 'at', of evals) split some of them.
 // Gate k: the hull of the slices around it (a value per period, not a
@@ -88,14 +113,16 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const std::vector<double>& pts = p.time.points;
   const TDomain& td = *x.tdomain();
   IntervalVector args(names.size());
+  const std::vector<std::size_t> read = read_vars(f);
   TubeArray& slices = x.data().slices;
   std::size_t row = 0, evaluated = table.nb_rows();
   Interval value;
   for (std::size_t k = 0; k < slices.size(); ++k) {
     while (row + 1 < table.nb_rows() && pts[row + 1] <= td.t(k)) ++row;
     if (row != evaluated) {
-      const std::vector<double>& values = table.row(row);
-      for (std::size_t c = 0; c < values.size(); ++c) args[c] = csv_cell(values[c]);
+      const std::span<const double> values = table.row(row);
+      for (std::size_t c : read)
+        if (c < values.size()) args[c] = csv_cell(values[c]);
       args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
       value = f.eval(args);
       evaluated = row;
@@ -117,12 +144,13 @@ void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
   const std::vector<double>& pts = p.time.points;
   const TDomain& td = *x.tdomain();
   IntervalVector args(table.columns().size());
+  const std::vector<std::size_t> read = read_vars(f);
   std::size_t row = 0;
   for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
     while (row < pts.size() && pts[row] < td.t(k)) ++row;
     if (row == pts.size() || pts[row] != td.t(k)) continue;
-    const std::vector<double>& values = table.row(row);
-    for (std::size_t c = 0; c < values.size(); ++c) args[c] = csv_cell(values[c]);
+    const std::span<const double> values = table.row(row);
+    for (std::size_t c : read) args[c] = csv_cell(values[c]);
     x.set_gate(k, x.gate(k) & f.eval(args));
   }
 }
@@ -360,11 +388,11 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         const Interval terr = constant_text(c.time_error, c.pos);
         std::map<std::string, Interval> errs;
         for (const auto& [col, text] : c.errors) errs[col] = constant_text(text, c.pos);
-        const std::vector<double>* join_values = nullptr;  // the joined row of the current row
-        const auto measured = [&](const std::vector<double>& values, const std::string& col) {
+        std::span<const double> join_values;  // the joined row of the current row
+        const auto measured = [&](std::span<const double> values, const std::string& col) {
           const auto it = errs.find(col);
           const Interval e = it == errs.end() ? Interval(0) : it->second;
-          const double v = data.table.has_column(col) ? values[data.table.column(col)] : (*join_values)[joined->column(col)];
+          const double v = data.table.has_column(col) ? values[data.table.column(col)] : join_values[joined->column(col)];
           return csv_cell(v) + Interval(-1, 1) * e;
         };
         const auto direct = direct_columns(c, data.table, ys);
@@ -383,7 +411,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         }
         std::vector<TubeObservation> fixes;
         for (std::size_t row = 0; row < data.table.nb_rows(); ++row) {
-          const std::vector<double>& values = data.table.row(row);
+          const std::span<const double> values = data.table.row(row);
           if (!eval_row_kept(c, data.table, values)) continue;
           if (joined) {
             const auto j = join_rows.find(values[data.table.column(c.join_on)]);
@@ -391,7 +419,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
               throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' with " + c.join_on + " = " +
                                             number_text(values[data.table.column(c.join_on)]) + ", not in '" + c.join_data + "'",
                                  "a matching row in '" + c.join_data + "'");
-            join_values = &joined->row(j->second);
+            join_values = joined->row(j->second);
           }
           const Interval row_t = eval_row_time(c, data.table, values, terr, b.td->t0_tf());
           if (row_t.is_empty()) continue;  // a measurement outside the time domain says nothing about it

@@ -1,6 +1,7 @@
 #include "sillage/problem/eval_rows.h"
 
 #include <algorithm>
+#include <span>
 #include <optional>
 
 #include "sillage/interval/rounding.h"
@@ -11,13 +12,13 @@ namespace sillage::detail {
 // libm call (plaza1.toml reads about 10 000 cells; nextafter was 5 % of its build).
 Interval csv_cell(double d) { return Interval(rounding::next_down(d), rounding::next_up(d)); }
 
-bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values) {
+bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values) {
   for (const auto& [col, value] : c.where)
     if (values[table.column(col)] != value) return false;
   return true;
 }
 
-Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
+Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values,
                        const Interval& terr, const Interval& domain) {
   if (c.time_columns.empty()) return domain;
   Interval t = csv_cell(values[table.column(c.time_columns[0])]);

@@ -3,6 +3,7 @@
 // shared by load_eval.cpp, which checks the times against [t0, tf], and
 // build_network.cpp, which builds a CtcEval per row or a CtcEvalList of them).
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "sillage/ctc/ctc.h"
@@ -18,11 +19,11 @@ namespace sillage::detail {
 Interval csv_cell(double d);
 
 // True if the row passes the constraint's `where` filter.
-bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values);
+bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values);
 
 // The time of a row: the stamp ± terr, or [lb, ub] ± terr, or the whole
 // domain (no time column: unknown), within the domain (empty: outside it).
-Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, const std::vector<double>& values,
+Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values,
                        const Interval& terr, const Interval& domain);
 
 // The observation of eval constraint c rewritten over its names: the tubes

@@ -2,6 +2,7 @@
 #include "sillage/problem/problem_loader.h"
 
 #include <charconv>
+#include <span>
 
 #include "sillage/expr/function.h"
 #include "sillage/problem/eval_rows.h"
@@ -23,7 +24,7 @@ std::size_t outside_rows(const ConstraintSpec& c, const DataSpec& d, const Inter
   const Interval terr = Function({"t"}, c.time_error).eval(IntervalVector{Interval(0)});
   std::size_t n = 0;
   for (std::size_t row = 0; row < d.table.nb_rows(); ++row) {
-    const std::vector<double>& values = d.table.row(row);
+    const std::span<const double> values = d.table.row(row);
     if (!eval_row_kept(c, d.table, values) || !eval_row_time(c, d.table, values, terr, domain).is_empty()) continue;
     if (!c.skip_outside)
       throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' (" + d.table.where(row) + ") at " +

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <cmath>
 #include <optional>
 
@@ -58,7 +59,7 @@ void expect_path_inside(const TubeVector& x) {
   const CsvTable truth = CsvTable::read(problem_test::problems_dir() + "/data/robot_truth.csv");
   std::size_t checked = 0;
   for (std::size_t r = 0; r < truth.nb_rows(); ++r) {
-    const std::vector<double>& row = truth.row(r);
+    const std::span<const double> row = truth.row(r);
     const auto k = x.tdomain()->time_index(row[0]);
     if (k < 0) continue;
     for (std::size_t i = 0; i < 4; ++i)
