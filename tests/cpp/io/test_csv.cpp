@@ -2,6 +2,7 @@
 // and the real datasets of ../shared/data when present.
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -204,4 +205,100 @@ TEST(Csv, EveryFormOfLineReadsAlike) {
                      "' is not a finite number")
         << faulty;
   }
+}
+
+namespace {
+
+// The format read the plain way, line by line (the reference for the
+// one-pass reading of plain rows): blank and '#' lines skipped, cells split
+// at commas and trimmed, each a whole finite number. "error" for anything
+// CsvTable must refuse.
+struct Reference {
+  std::vector<std::vector<double>> rows;
+  std::vector<std::size_t> lines;
+  bool error = false;
+};
+
+Reference read_plainly(const std::string& text) {
+  Reference r;
+  std::size_t at = 0, line_no = 0, ncols = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find_first_of("\r\n", at);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(at, end - at);
+    at = end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
+    ++line_no;
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::vector<std::string> cells;
+    for (std::size_t from = 0;;) {
+      const std::size_t comma = std::min(line.find(',', from), line.size());
+      std::string cell = line.substr(from, comma - from);
+      const std::size_t a = cell.find_first_not_of(" \t"), b = cell.find_last_not_of(" \t");
+      cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+      if (comma == line.size()) break;
+      from = comma + 1;
+    }
+    if (ncols == 0) {
+      ncols = cells.size();
+      continue;
+    }
+    std::vector<double> row;
+    for (const std::string& c : cells) {
+      double v = 0;
+      const auto [p, ec] = std::from_chars(c.data(), c.data() + c.size(), v);
+      if (c.empty() || ec != std::errc() || p != c.data() + c.size() || !std::isfinite(v)) r.error = true;
+      row.push_back(v);
+    }
+    if (cells.size() != ncols || r.error) {
+      r.error = true;
+      return r;
+    }
+    r.rows.push_back(row);
+    r.lines.push_back(line_no);
+  }
+  return r;
+}
+
+}  // namespace
+
+// Valid tables mutated at random (characters replaced, inserted or removed
+// among those that matter to the format): CsvTable reads what the plain
+// reference reads, values and lines, and refuses what it refuses.
+TEST(Csv, MutatedTablesReadAsThePlainReference) {
+  std::mt19937_64 rng(11);
+  const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
+  const std::string alphabet = "0123456789.,-+eE \t\r\n#xn";
+  int parsed = 0, refused = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text = "a,b,c\n";
+    for (int r = 0; r < 6; ++r)
+      text += std::to_string(pick(2000)) + "." + std::to_string(pick(100)) + ", -" + std::to_string(pick(50)) +
+              "e-" + std::to_string(pick(5)) + " ,\t" + std::to_string(pick(9)) + "\n";
+    for (std::size_t m = 1 + pick(3); m > 0; --m) {
+      const std::size_t i = 6 + pick(text.size() - 6);  // the header stays
+      const char c = alphabet[pick(alphabet.size())];
+      switch (pick(3)) {
+        case 0: text[i] = c; break;
+        case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(i), c); break;
+        default: text.erase(i, 1);
+      }
+    }
+    const Reference ref = read_plainly(text);
+    try {
+      const CsvTable t = CsvTable::parse(text, "f.csv");
+      ++parsed;
+      ASSERT_FALSE(ref.error) << text;
+      ASSERT_EQ(t.nb_rows(), ref.rows.size()) << text;
+      for (std::size_t r = 0; r < ref.rows.size(); ++r) {
+        EXPECT_EQ(std::vector<double>(t.row(r).begin(), t.row(r).end()), ref.rows[r]) << text;
+        EXPECT_EQ(t.line(r), ref.lines[r]) << text;
+      }
+    } catch (const ParseError&) {
+      ++refused;
+      EXPECT_TRUE(ref.error) << text;
+    }
+  }
+  EXPECT_GT(parsed, 300);  // both outcomes well exercised
+  EXPECT_GT(refused, 300);
 }
