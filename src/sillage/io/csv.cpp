@@ -134,7 +134,9 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
       row.resize(n);
       const std::size_t from = at;
       if (plain_row(body, at, n, row.data())) {
-        if (t.lines_.empty()) {  // room for as many rows as the first one's length suggests
+        // Room for as many rows as the first one's length suggests: at most
+        // 4.5 bytes per byte of text (one-digit cells), what such a table needs.
+        if (t.lines_.empty()) {
           const std::size_t rows = (body.size() - from) / (at - from) + 1;
           t.cells_.reserve(rows * n + rows * n / 8);
           t.lines_.reserve(rows + rows / 8);
