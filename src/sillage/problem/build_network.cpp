@@ -1,11 +1,10 @@
 #include "sillage/problem/build_network.h"
 
 #include <algorithm>
-#include <span>
 #include <cctype>
 #include <cmath>
 #include <optional>
-#include <string_view>
+#include <span>
 #include <unordered_set>
 
 #include "sillage/ctc/ctc_function.h"
@@ -18,6 +17,7 @@
 #include "sillage/dynamics/ctc_increment.h"
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
+#include "sillage/expr/tape.h"
 #include "sillage/problem/eval_rows.h"
 #include "sillage/problem/var_refs.h"
 #include "sillage/slam/ctc_p_implies_z.h"
@@ -83,17 +83,9 @@ std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, 
 // odometry has 8 columns, its expressions read one: converting them all was a
 // third of plaza1.toml's build).
 std::vector<std::size_t> read_vars(const Function& f) {
-  std::unordered_set<const ExprNode*> seen;
-  std::unordered_set<std::string_view> names;
-  std::vector<const ExprNode*> todo;
-  for (const Expr& e : f.exprs()) todo.push_back(e.get());
-  while (!todo.empty()) {
-    const ExprNode* n = todo.back();
-    todo.pop_back();
-    if (!seen.insert(n).second) continue;
-    if (n->op == Op::Var) names.insert(n->name);
-    for (const Expr& a : n->args) todo.push_back(a.get());
-  }
+  std::unordered_set<std::string> names;
+  for (const Expr& e : detail::topological_order(f.exprs()))
+    if (e.op() == Op::Var) names.insert(e.node().name);
   std::vector<std::size_t> read;
   for (std::size_t i = 0; i < f.nb_vars(); ++i)
     if (names.count(f.var_names()[i])) read.push_back(i);
@@ -122,7 +114,7 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
     if (row != evaluated) {
       const std::span<const double> values = table.row(row);
       for (std::size_t c : read)
-        if (c < values.size()) args[c] = csv_cell(values[c]);
+        if (c < values.size()) args[c] = csv_cell(values[c]);  // the last variable, dt, is set below
       args[values.size()] = Interval(pts[row + 1]) - Interval(pts[row]);  // the row's slice, outward
       value = f.eval(args);
       evaluated = row;

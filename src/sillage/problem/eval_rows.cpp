@@ -1,8 +1,8 @@
 #include "sillage/problem/eval_rows.h"
 
 #include <algorithm>
-#include <span>
 #include <optional>
+#include <span>
 
 #include "sillage/interval/rounding.h"
 
