@@ -60,8 +60,10 @@ def test_network_with_deriv_and_eval():
 def test_csv_table():
     t = sillage.CsvTable.parse("a,b\n1,2\n3,4\n")
     assert list(t.values("b")) == [2.0, 4.0] and t.columns() == ["a", "b"]
-    with pytest.raises(sillage.ParseError, match="line|:3"):
-        sillage.CsvTable.parse("a\n1\nx\n", "f.csv")
+    with pytest.raises(sillage.ParseError, match="^f.csv:3: column 'a': 'x' is not a finite number$"):
+        sillage.CsvTable.parse("a\n1\nx\n", "f.csv").values("a")
+    with pytest.raises(sillage.ParseError, match="^f.csv:2: 1 cells, the header"):
+        sillage.CsvTable.parse("a,b\n1\n", "f.csv")
     t = sillage.CsvTable.parse("# c\na\n\n1\n2\n", "f.csv")  # each row's line, for messages about it
     assert (t.source(), t.line(0), t.line(1), t.where(1)) == ("f.csv", 4, 5, "f.csv:5")
     with pytest.raises(sillage.OutOfRangeError, match="CsvTable.line: no row -1"):
@@ -69,6 +71,24 @@ def test_csv_table():
     plaza = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "plaza1" / "beacons.csv"
     if plaza.exists():
         assert sillage.CsvTable.read(str(plaza)).nb_rows() == 4
+
+
+def test_csv_text_columns_kept_until_read():
+    """A log's text columns (a frame name, a missing value) do not stop the table from being read; reading them does."""
+    t = sillage.CsvTable.parse("t,frame,x\n0.5,base_link,1.5\n1.0,,2\n", "log.csv")
+    assert list(t.values("x")) == [1.5, 2.0] and t.column("t") == 0
+    assert t.is_numeric("x") and not t.is_numeric("frame") and t.has_column("frame")
+    with pytest.raises(sillage.ParseError, match="^log.csv:2: column 'frame': 'base_link' is not a finite number$"):
+        t.column("frame")
+    with pytest.raises(sillage.ParseError, match="base_link"):
+        t.values("frame")
+    with pytest.raises(sillage.ParseError, match="base_link"):
+        t.check_numeric(1)
+    t.check_numeric(2)
+    row = t.row(0)
+    assert row[0] == 0.5 and math.isnan(row[1]) and row[2] == 1.5
+    with pytest.raises(sillage.Error, match="no column 'y'"):
+        t.is_numeric("y")
 
 
 def test_inverse_within_a_time_interval_and_memory():

@@ -82,6 +82,26 @@ def test_load_problem_errors_name_the_place(tmp_path):
     assert r.schedule[0]["slices"] == 128
 
 
+def test_a_log_with_text_columns(tmp_path):
+    """A table with text columns (a frame name, a status) solves as long as no expression reads them."""
+    (tmp_path / "fixes.csv").write_text("t,frame,x,status\n0,base_link,0,ok\n1,base_link,1,\n2,odom,2,slip\n")
+    head = ('[data.fixes]\nfile = "fixes.csv"\n[time]\npoints = { data = "fixes", column = "t" }\n'
+            '[var.v]\nkind = "tube"\nvalue = "[0.9, 1.1]"\n[var.x]\nkind = "tube"\n')
+    tail = '[[constraint]]\nkind = "deriv"\nx = "x"\nv = "v"\n'
+    problem = tmp_path / "log.toml"
+    problem.write_text(head + 'gates = { data = "fixes", value = "x + [-0.1, 0.1]" }\n' + tail)
+    r = sillage.solve(str(problem))
+    x = r.domains["x"]
+    assert not r.empty and x.gate(1).contains(1.0) and x.gate(1).diam() < 0.25
+    assert x.slice(0).contains(0.5) and x.slice(0).is_subset(sillage.Interval(-0.2, 1.2))
+    line = 'gates = { data = "fixes", value = "x + status" }'
+    problem.write_text(head + line + "\n" + tail)
+    at = f"log.toml:10:{line.index('x + status') + 1}"
+    with pytest.raises(sillage.ParseError, match=f"{at}: found the column 'status' of table 'fixes', which is "
+                       r"not all numbers \(.*fixes.csv:2: column 'status': 'ok' is not a finite number\)"):
+        sillage.load_problem(str(problem))
+
+
 def test_find_loops_and_constraint_order():
     p = sillage.load_problem(str(PROBLEMS / "figure_eight.toml"))
     r = sillage.solve_problem(p)

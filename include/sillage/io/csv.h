@@ -1,9 +1,12 @@
 #pragma once
-// CsvTable: a numeric CSV file with one header line (the datasets of
-// ../shared/data: odometry, ranges, ground truth). Every cell must be a
-// finite number; a bad cell, a short row or a missing column is a ParseError that
-// names the file, the line and the column. Header names are non-empty and
-// distinct. Cells are quoted in messages up to 60 characters.
+// CsvTable: a CSV file with one header line (the datasets of ../shared/data:
+// odometry, ranges, ground truth; a robot's logs). Every cell that is read
+// must be a finite number; a column with a cell that is not (a text column of
+// a log: a frame name, a label, a missing value) is kept, and reading it
+// (column(), values(), a problem file's expression) is a ParseError that names
+// its first such cell: file, line, column. A short row or a missing column is
+// a ParseError that names the file and the line. Header names are non-empty
+// and distinct. Cells are quoted in messages up to 60 characters.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -11,7 +14,7 @@
 
 namespace sillage {
 
-// A numeric CSV file with one header line; bad cells are ParseErrors naming file, line, column.
+// A CSV file with one header line; reading a cell that is not a number is a ParseError naming file, line, column.
 class CsvTable {
  public:
   // Reads `path` (comma-separated; blank lines and lines starting with '#'
@@ -25,7 +28,9 @@ class CsvTable {
   const std::vector<std::string>& columns() const { return columns_; }
   // Number of data rows.
   std::size_t nb_rows() const { return lines_.size(); }
-  // Row i, one value per column (OutOfRangeError if i >= nb_rows()).
+  // Row i, one value per column (OutOfRangeError if i >= nb_rows()); a cell
+  // that is not a number is NaN there: read by index only the columns that
+  // column() or check_numeric() accepted.
   std::span<const double> row(std::size_t i) const;
   // "the table has 3 rows: 0 to 2", for messages about rows.
   std::string rows_text() const;
@@ -37,9 +42,15 @@ class CsvTable {
   std::string where(std::size_t i) const;
   // True if a column is called name.
   bool has_column(const std::string& name) const;
-  // Index of a column; Error naming the file and the columns it has.
+  // Index of a column of numbers: Error naming the file and the columns it
+  // has if there is none called name, ParseError naming the first cell that
+  // is not a finite number if it is a text column.
   std::size_t column(const std::string& name) const;
-  // The values of a column, in file order.
+  // True if every cell of the column is a finite number (Error if there is no such column).
+  bool is_numeric(const std::string& name) const;
+  // ParseError naming the first cell of column c that is not a finite number, if any.
+  void check_numeric(std::size_t c) const;
+  // The values of a column of numbers, in file order (the errors of column()).
   std::vector<double> values(const std::string& name) const;
 
  private:
@@ -47,6 +58,7 @@ class CsvTable {
   std::vector<std::string> columns_;
   std::vector<double> cells_;       // row after row: one allocation, not one per row
   std::vector<std::size_t> lines_;  // per row
+  std::vector<std::string> not_numbers_;  // per column: its first cell that is not a number, "" if none
 };
 
 }  // namespace sillage

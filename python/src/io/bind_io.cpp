@@ -44,7 +44,9 @@ void init_io(py::module_& m) {
             const std::span<const double> r = t.row(row_index(t, i, "CsvTable.row"));
             return std::vector<double>(r.begin(), r.end());
           },
-          py::arg("i"), "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()).")
+          py::arg("i"),
+          "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()); a cell that is not a number "
+          "is nan: read only the columns that column() or is_numeric() accepts.")
       .def("source", &CsvTable::source, DOC(CsvTable, source))
       .def(
           "line",
@@ -57,6 +59,8 @@ void init_io(py::module_& m) {
       .def("has_column", &CsvTable::has_column, py::arg("name"), DOC(CsvTable, has_column))
       .def("column", &CsvTable::column, py::arg("name"),
            DOC(CsvTable, column))
+      .def("is_numeric", &CsvTable::is_numeric, py::arg("name"), DOC(CsvTable, is_numeric))
+      .def("check_numeric", &CsvTable::check_numeric, py::arg("c"), DOC(CsvTable, check_numeric))
       .def(
           "values",
           [](const CsvTable& t, const std::string& name) {

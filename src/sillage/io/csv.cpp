@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <unordered_map>
@@ -156,6 +157,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
       const std::vector<std::string> names(cells.begin(), cells.end());
       check_header(names, where());
       t.columns_ = names;
+      t.not_numbers_.assign(names.size(), std::string());
       header_line = line_no;
       continue;
     }
@@ -168,11 +170,15 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
       const char* end = cell.data() + cell.size();
       double v = 0;
       const auto [p, ec] = std::from_chars(cell.data(), end, v);
-      t.cells_.push_back(v);
       if (cell.empty() || ec != std::errc() || p != end || !std::isfinite(v)) {
-        throw ParseError(where() + ": column '" + detail::quote_text(t.columns_[c]) + "': '" + detail::quote_text(std::string(cell)) +
-                         "' is not a finite number");
+        // Text (a label, a missing value): the column is kept, and reading it
+        // is an error naming this cell, its first one.
+        v = std::numeric_limits<double>::quiet_NaN();
+        if (t.not_numbers_[c].empty())
+          t.not_numbers_[c] = where() + ": column '" + detail::quote_text(t.columns_[c]) + "': '" +
+                              detail::quote_text(std::string(cell)) + "' is not a finite number";
       }
+      t.cells_.push_back(v);
     }
     t.lines_.push_back(line_no);
   }
@@ -206,12 +212,34 @@ bool CsvTable::has_column(const std::string& name) const {
   return false;
 }
 
-std::size_t CsvTable::column(const std::string& name) const {
-  for (std::size_t i = 0; i < columns_.size(); ++i)
-    if (columns_[i] == name) return i;
+namespace {
+
+std::size_t index_of(const std::vector<std::string>& columns, const std::string& name, const std::string& source) {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
   std::string have;
-  for (const auto& c : columns_) have += (have.empty() ? "" : ", ") + c;
-  throw Error(source_ + ": no column '" + detail::quote_text(name) + "' (columns: " + detail::quote_text(have, 200) + ")");
+  for (const auto& c : columns) have += (have.empty() ? "" : ", ") + c;
+  throw Error(source + ": no column '" + detail::quote_text(name) + "' (columns: " + detail::quote_text(have, 200) + ")");
+}
+
+}  // namespace
+
+std::size_t CsvTable::column(const std::string& name) const {
+  const std::size_t c = index_of(columns_, name, source_);
+  check_numeric(c);
+  return c;
+}
+
+bool CsvTable::is_numeric(const std::string& name) const {
+  return not_numbers_[index_of(columns_, name, source_)].empty();
+}
+
+void CsvTable::check_numeric(std::size_t c) const {
+  if (c >= columns_.size()) {
+    throw OutOfRangeError(source_ + ": no column " + std::to_string(c) + " (the table has " +
+                          std::to_string(columns_.size()) + ")");
+  }
+  if (!not_numbers_[c].empty()) throw ParseError(not_numbers_[c]);
 }
 
 std::vector<double> CsvTable::values(const std::string& name) const {

@@ -106,6 +106,8 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const TDomain& td = *x.tdomain();
   IntervalVector args(names.size());
   const std::vector<std::size_t> read = read_vars(f);
+  for (std::size_t c : read)
+    if (c < table.columns().size()) table.check_numeric(c);  // the loader checked them; a row holds NaN in text
   TubeArray& slices = x.data().slices;
   std::size_t row = 0, evaluated = table.nb_rows();
   Interval value;
@@ -137,6 +139,7 @@ void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
   const TDomain& td = *x.tdomain();
   IntervalVector args(table.columns().size());
   const std::vector<std::size_t> read = read_vars(f);
+  for (std::size_t c : read) table.check_numeric(c);  // the loader checked them; a row holds NaN in text
   std::size_t row = 0;
   for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
     while (row < pts.size() && pts[row] < td.t(k)) ++row;

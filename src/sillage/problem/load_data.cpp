@@ -32,6 +32,7 @@ void ProblemLoader::read_data(const std::string& name, const toml::key& key, con
       const std::string col = f.string(c, "a column name (string)");
       if (!d.table.has_column(col))
         throw ProblemError(doc_.pos(c), "the column '" + col + "' missing from " + d.path, "one of: " + column_list(d.table));
+      require_column(doc_.pos(c), col, name, d.table);  // listed: read
     }
   }
   p_.data.push_back(std::move(d));

@@ -76,7 +76,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   c.v = c.vs[0];
   auto column = [&](const toml::node& n) {
     const std::string col = f.string(n, "a column name (string)");
-    if (!d->table.has_column(col)) throw missing_column(doc_.pos(n), col, c.data, d->table);
+    require_column(doc_.pos(n), col, c.data, d->table);
     return col;
   };
   if (const toml::node* tn = f.find("time")) {
@@ -93,8 +93,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   }
   if (const toml::node* er = f.find("errors")) {
     for (auto&& [key, node] : f.table(*er, "a table {column = error}")) {
-      if (!d->table.has_column(std::string(key.str())))
-        throw missing_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
+      require_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
       if (f.number(node, "an error >= 0 (number)") < 0)
         throw ProblemError(doc_.pos(node), "a negative error", "an error >= 0");
       c.errors[std::string(key.str())] = f.bound_text(node);
@@ -102,8 +101,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   }
   if (const toml::node* wn = f.find("where")) {
     for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
-      if (!d->table.has_column(std::string(key.str())))
-        throw missing_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
+      require_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
       c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
     }
   }
@@ -120,6 +118,8 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
     c.join_data = joined->name;
     if (!d->table.has_column(c.join_on) || !joined->table.has_column(c.join_on))
       throw ProblemError(doc_.pos(on), "the column '" + c.join_on + "'", "a column of both '" + c.data + "' and '" + joined->name + "'");
+    require_column(doc_.pos(on), c.join_on, c.data, d->table);
+    require_column(doc_.pos(on), c.join_on, joined->name, joined->table);
     for (const auto& col : joined->table.columns())
       if (col != c.join_on && d->table.has_column(col))
         throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
@@ -133,7 +133,11 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   };
   auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
     if (const VarSpec* y = y_of(n)) return y->dim;
-    if (has_column(n)) return 1;
+    if (has_column(n)) {  // a column the observation reads: numbers only
+      const DataSpec& t = d->table.has_column(n) ? *d : *joined;
+      require_column(c.expr_pos, n, t.name, t.table);
+      return 1;
+    }
     const VarSpec* v = p_.var(n);
     if (v && !v->is_tube()) return v->dim;
     return std::nullopt;

@@ -25,6 +25,16 @@ ProblemError missing_column(const SourcePos& pos, const std::string& column, con
                       "one of its columns: " + column_list(table));
 }
 
+void require_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table) {
+  if (!table.has_column(column)) throw missing_column(pos, column, name, table);
+  try {
+    (void)table.column(column);
+  } catch (const ParseError& e) {  // a text column: a label, a missing value
+    throw ProblemError(pos, "the column '" + column + "' of table '" + name + "', which is not all numbers (" + e.what() + ")",
+                       "a column of finite numbers");
+  }
+}
+
 const DataSpec& ProblemLoader::data_table(const Fields& f, const toml::node& dn) {
   const std::string name = f.string(dn, "a data table name (string)");
   if (const DataSpec* d = p_.table(name)) return *d;

@@ -44,8 +44,7 @@ void ProblemLoader::read_output(const toml::table& t) {
     if (a.size() != 2) throw ProblemError(doc_.pos(cn), describe(cn), "two columns [\"x\", \"y\"]");
     for (const toml::node& c : a) {
       const std::string col = lf.string(c, "a column name");
-      if (!d.table.has_column(col))
-        throw missing_column(doc_.pos(c), col, d.name, d.table);
+      require_column(doc_.pos(c), col, d.name, d.table);
     }
     l.x = a.get(0)->as_string()->get();
     l.y = a.get(1)->as_string()->get();
@@ -81,8 +80,7 @@ void ProblemLoader::read_output(const toml::table& t) {
     if (!d) throw ProblemError(doc_.pos(dn), "the unknown table '" + ts.data + "'", "a [data.NAME] table");
     auto col = [&](const toml::node& n) {
       const std::string c = tf.string(n, "a column name");
-      if (!d->table.has_column(c))
-        throw missing_column(doc_.pos(n), c, ts.data, d->table);
+      require_column(doc_.pos(n), c, ts.data, d->table);
       return c;
     };
     ts.time_column = col(tf.require("time", "the time column"));

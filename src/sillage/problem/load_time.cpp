@@ -38,7 +38,7 @@ void ProblemLoader::read_time_points(const Fields& f, const toml::node& pn) {
   const DataSpec& d = data_table(pf, dn);
   const toml::node& cn = pf.require("column", "its time column");
   const std::string col = pf.string(cn, "a column name (string)");
-  if (!d.table.has_column(col)) throw missing_column(doc_.pos(cn), col, d.name, d.table);
+  require_column(doc_.pos(cn), col, d.name, d.table);
   p_.time.points = d.table.values(col);
   p_.time.points_data = d.name;
   p_.time.pos = doc_.pos(pn);

@@ -3,6 +3,7 @@
 #include "sillage/problem/problem_loader.h"
 
 #include "sillage/expr/parser.h"
+#include "sillage/expr/tape.h"
 #include "sillage/problem/var_refs.h"
 
 namespace sillage::detail {
@@ -115,12 +116,16 @@ SliceDataSpec ProblemLoader::read_from_table(const Fields& f, const toml::node& 
   s.value = {sf.bound_text(vn), detail::shifted(doc_.pos(vn), vn.is_string() ? 1 : 0)};
   std::vector<std::string> names = d.table.columns();
   if (!gates) names.push_back("dt");
-  try {
-    (void)detail::parse_expr(names, s.value.expr);
-  } catch (const ParseError& e) {
-    throw rejected_expression(s.value.pos, "the value", s.value.expr, s.value.expr, e,
-                              "an expression of the columns of '" + d.name + "'" + (gates ? "" : " and dt"));
-  }
+  const Expr e = [&] {
+    try {
+      return detail::parse_expr(names, s.value.expr);
+    } catch (const ParseError& err) {
+      throw rejected_expression(s.value.pos, "the value", s.value.expr, s.value.expr, err,
+                                "an expression of the columns of '" + d.name + "'" + (gates ? "" : " and dt"));
+    }
+  }();
+  for (const Expr& x : detail::topological_order({e}))  // the columns it reads: numbers only
+    if (x.op() == Op::Var && (gates || x.node().name != "dt")) require_column(s.value.pos, x.node().name, d.name, d.table);
   return s;
 }
 

@@ -27,6 +27,9 @@ bool valid_name(const std::string& s);
 std::string column_list(const CsvTable& table);
 // The error for a column the table `name` does not have: its columns listed (load_lookup.cpp).
 ProblemError missing_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
+// A column the problem reads: the table `name` has it and its cells are all
+// finite numbers; a ProblemError at pos otherwise (load_lookup.cpp).
+void require_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
 
 class ProblemLoader {
  public:

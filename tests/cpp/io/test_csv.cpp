@@ -35,14 +35,16 @@ TEST(Csv, RowsKnowTheirLines) {
 }
 
 TEST(Csv, ErrorsSayWhere) {
+  const CsvTable x = CsvTable::parse("a,b\n1,2\n3,x\n", "f.csv");  // b is read as text: an error when read
   try {
-    CsvTable::parse("a,b\n1,2\n3,x\n", "f.csv");
+    x.column("b");
     FAIL();
   } catch (const ParseError& e) {
-    EXPECT_NE(std::string(e.what()).find("f.csv:3: column 'b': 'x'"), std::string::npos) << e.what();
+    EXPECT_STREQ(e.what(), "f.csv:3: column 'b': 'x' is not a finite number");
   }
+  EXPECT_THROW(x.values("b"), ParseError);
   EXPECT_THROW(CsvTable::parse("a,b\n1\n", "f.csv"), ParseError);
-  EXPECT_THROW(CsvTable::parse("a\nnan\n", "f.csv"), ParseError);
+  EXPECT_THROW(CsvTable::parse("a\nnan\n", "f.csv").values("a"), ParseError);
   EXPECT_THROW(CsvTable::parse("", "f.csv"), ParseError);
   EXPECT_THROW(CsvTable::read("/nonexistent/file.csv"), Error);
   EXPECT_THROW(CsvTable::read(testing::TempDir()), Error);  // a folder
@@ -80,9 +82,12 @@ TEST(Csv, ReadsThePlaza1Dataset) {
 
 namespace {
 
+// The error of reading the table, then each of its columns (a column with a
+// cell that is not a number is kept by parse and refused when read).
 std::string csv_error(const std::string& text) {
   try {
-    CsvTable::parse(text, "f.csv");
+    const CsvTable t = CsvTable::parse(text, "f.csv");
+    for (const std::string& c : t.columns()) (void)t.column(c);
   } catch (const ParseError& e) {
     return e.what();
   }
@@ -121,6 +126,40 @@ TEST(Csv, LongCellsAreQuotedBriefly) {
   EXPECT_EQ(m, "f.csv:2: column 't': '" + std::string(60, 'z') + "...' is not a finite number");
   // Cells that are not UTF-8 still give a UTF-8 message.
   EXPECT_EQ(csv_error("t\n\xE9\n"), "f.csv:2: column 't': '\xEF\xBF\xBD' is not a finite number");
+}
+
+// A log's text columns (a frame name, a label, a missing value) do not stop
+// the table from being read: reading them does, naming their first such cell.
+TEST(Csv, TextColumnsAreKeptUntilRead) {
+  const CsvTable t = CsvTable::parse("t, frame, x, note\n0.5, base_link, 1.5, \n1.0, odom, -2, ok\n1.5, map, 3e-1, 7\n",
+                                     "log.csv");
+  ASSERT_EQ(t.nb_rows(), 3u);
+  EXPECT_EQ(t.values("t"), (std::vector<double>{0.5, 1.0, 1.5}));
+  EXPECT_EQ(t.values("x"), (std::vector<double>{1.5, -2.0, 0.3}));
+  EXPECT_TRUE(t.is_numeric("x"));
+  EXPECT_FALSE(t.is_numeric("frame"));
+  EXPECT_FALSE(t.is_numeric("note"));
+  EXPECT_TRUE(t.has_column("frame"));
+  EXPECT_THROW(t.is_numeric("y"), Error);
+  EXPECT_EQ(t.column("x"), 2u);
+  EXPECT_NO_THROW(t.check_numeric(2));
+  EXPECT_THROW(t.check_numeric(4), OutOfRangeError);
+  const auto message = [&](const std::string& name) {
+    try {
+      (void)t.column(name);
+    } catch (const ParseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("frame"), "log.csv:2: column 'frame': 'base_link' is not a finite number");
+  EXPECT_EQ(message("note"), "log.csv:2: column 'note': '' is not a finite number");  // the first one: a missing value
+  EXPECT_THROW(t.values("note"), ParseError);
+  EXPECT_THROW(t.check_numeric(1), ParseError);
+  EXPECT_TRUE(std::isnan(t.row(0)[1]));
+  EXPECT_TRUE(std::isnan(t.row(0)[3]));
+  EXPECT_EQ(t.row(2)[3], 7.0);  // a number in a text column is still read as one
+  EXPECT_EQ(t.row(1)[2], -2.0);
 }
 
 TEST(Csv, RowOutOfRange) {
@@ -211,12 +250,14 @@ namespace {
 
 // The format read the plain way, line by line (the reference for the
 // one-pass reading of plain rows): blank and '#' lines skipped, cells split
-// at commas and trimmed, each a whole finite number. "error" for anything
-// CsvTable must refuse.
+// at commas and trimmed; a cell that is not a whole finite number is NaN and
+// marks its column as text. "error" for a row of another length than the
+// header, which CsvTable must refuse.
 struct Reference {
-  std::vector<std::vector<double>> rows;
+  std::vector<std::vector<double>> rows;  // NaN where a cell is not a number
   std::vector<std::size_t> lines;
-  bool error = false;
+  std::vector<std::size_t> first_bad;  // per column: the line of its first cell that is not a number, 0 if none
+  bool error = false;                  // the table refused (a row of another length)
 };
 
 Reference read_plainly(const std::string& text) {
@@ -241,18 +282,23 @@ Reference read_plainly(const std::string& text) {
     }
     if (ncols == 0) {
       ncols = cells.size();
+      r.first_bad.assign(ncols, 0);
       continue;
     }
-    std::vector<double> row;
-    for (const std::string& c : cells) {
-      double v = 0;
-      const auto [p, ec] = std::from_chars(c.data(), c.data() + c.size(), v);
-      if (c.empty() || ec != std::errc() || p != c.data() + c.size() || !std::isfinite(v)) r.error = true;
-      row.push_back(v);
-    }
-    if (cells.size() != ncols || r.error) {
+    if (cells.size() != ncols) {
       r.error = true;
       return r;
+    }
+    std::vector<double> row;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const std::string& c = cells[k];
+      double v = 0;
+      const auto [p, ec] = std::from_chars(c.data(), c.data() + c.size(), v);
+      if (c.empty() || ec != std::errc() || p != c.data() + c.size() || !std::isfinite(v)) {
+        v = std::nan("");
+        if (r.first_bad[k] == 0) r.first_bad[k] = line_no;
+      }
+      row.push_back(v);
     }
     r.rows.push_back(row);
     r.lines.push_back(line_no);
@@ -264,12 +310,13 @@ Reference read_plainly(const std::string& text) {
 
 // Valid tables mutated at random (characters replaced, inserted or removed
 // among those that matter to the format): CsvTable reads what the plain
-// reference reads, values and lines, and refuses what it refuses.
+// reference reads, values and lines, refuses what it refuses, and refuses to
+// read the columns it finds a cell that is not a number in, naming the first.
 TEST(Csv, MutatedTablesReadAsThePlainReference) {
   std::mt19937_64 rng(11);
   const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
   const std::string alphabet = "0123456789.,-+eE \t\r\n#xn";
-  int parsed = 0, refused = 0;
+  int parsed = 0, refused = 0, text_columns = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     std::string text = "a,b,c\n";
     for (int r = 0; r < 6; ++r)
@@ -291,14 +338,34 @@ TEST(Csv, MutatedTablesReadAsThePlainReference) {
       ASSERT_FALSE(ref.error) << text;
       ASSERT_EQ(t.nb_rows(), ref.rows.size()) << text;
       for (std::size_t r = 0; r < ref.rows.size(); ++r) {
-        EXPECT_EQ(std::vector<double>(t.row(r).begin(), t.row(r).end()), ref.rows[r]) << text;
+        for (std::size_t c = 0; c < 3; ++c) {
+          if (std::isnan(ref.rows[r][c])) EXPECT_TRUE(std::isnan(t.row(r)[c])) << text;
+          else EXPECT_EQ(t.row(r)[c], ref.rows[r][c]) << text;
+        }
         EXPECT_EQ(t.line(r), ref.lines[r]) << text;
+      }
+      for (std::size_t c = 0; c < 3; ++c) {  // a text column: refused when read, at its first cell that is not a number
+        const std::string name = t.columns()[c];
+        if (ref.first_bad[c] == 0) {
+          EXPECT_TRUE(t.is_numeric(name)) << text;
+          continue;
+        }
+        ++text_columns;
+        EXPECT_FALSE(t.is_numeric(name)) << text;
+        try {
+          (void)t.column(name);
+          ADD_FAILURE() << text;
+        } catch (const ParseError& e) {
+          EXPECT_EQ(std::string(e.what()).rfind("f.csv:" + std::to_string(ref.first_bad[c]) + ": column '" + name + "': ", 0), 0u)
+              << e.what() << "\n" << text;
+        }
       }
     } catch (const ParseError&) {
       ++refused;
       EXPECT_TRUE(ref.error) << text;
     }
   }
-  EXPECT_GT(parsed, 300);  // both outcomes well exercised
+  EXPECT_GT(parsed, 300);  // every outcome well exercised
   EXPECT_GT(refused, 300);
+  EXPECT_GT(text_columns, 300);
 }

@@ -1,6 +1,9 @@
 #pragma once
 // Helpers of the problem tests: the example problems' directory, a problem
-// text parsed under a name in that directory (so data paths resolve).
+// text parsed under a name in that directory (so data paths resolve), the
+// message of the error it gives.
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -30,6 +33,12 @@ inline std::string error_of(const std::string& text) {
     return e.what();
   }
   return "";
+}
+
+// Parsing `text` fails with a message that contains `part`.
+inline void expect_error(const std::string& text, const std::string& part) {
+  const std::string msg = error_of(text);
+  EXPECT_NE(msg.find(part), std::string::npos) << msg;
 }
 
 }  // namespace problem_test

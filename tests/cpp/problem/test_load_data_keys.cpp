@@ -8,39 +8,19 @@
 #include <filesystem>
 #include <fstream>
 
+#include "data_tables.h"
 #include "problem_text.h"
 #include "sillage/problem/solve_problem.h"
 
 using namespace sillage;
-using problem_test::error_of;
+using problem_test::data_dir;
+using problem_test::expect_error;
 using problem_test::parse;
+using problem_test::table;
 
 namespace {
 
-// A folder of small tables: 4 stamps, 3 periods, 2 beacons, 2 ranges.
-std::string data_dir() {
-  static const std::string dir = [] {
-    const auto d = std::filesystem::temp_directory_path() / ("sillage_data_keys_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    std::ofstream(d / "stamps.csv") << "t\n0\n0.5\n1.5\n2\n";
-    std::ofstream(d / "odo.csv") << "d,h\n0.5,0.1\n1,0.2\n0.5,0.3\n";
-    std::ofstream(d / "beacons.csv") << "id,bx,by\n3,10,0\n7,0,10\n";
-    std::ofstream(d / "ranges.csv") << "t,id,r\n1,3,9\n1.6,7,9\n1.8,9,1\n";
-    return d.string();
-  }();
-  return dir;
-}
-
-std::string table(const std::string& name, const std::string& file) {
-  return "[data." + name + "]\nfile = \"" + data_dir() + "/" + file + "\"\n";
-}
-
 const std::string kStamps = "[time]\npoints = { data = \"stamps\", column = \"t\" }\n";  // line 2 after the tables
-
-void expect_error(const std::string& text, const std::string& part) {
-  const std::string msg = error_of(text);
-  EXPECT_NE(msg.find(part), std::string::npos) << msg;
-}
 
 }  // namespace
 

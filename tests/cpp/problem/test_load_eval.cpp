@@ -12,7 +12,7 @@
 #include "sillage/problem/solve_problem.h"
 
 using namespace sillage;
-using problem_test::error_of;
+using problem_test::expect_error;
 using problem_test::parse;
 
 namespace {
@@ -25,11 +25,6 @@ const std::string kHead = "[time]\ndomain = [0, 20]\ndelta = 0.05\n[data.ranges]
 
 std::string eval(const std::string& keys) {
   return kHead + "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\n" + keys + "expr = \"abs(x - b) - r\"\n";
-}
-
-void expect_error(const std::string& text, const std::string& part) {
-  const std::string msg = error_of(text);
-  EXPECT_NE(msg.find(part), std::string::npos) << msg;
 }
 
 }  // namespace

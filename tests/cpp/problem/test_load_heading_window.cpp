@@ -15,7 +15,7 @@
 #include "sillage/problem/solve_problem.h"
 
 using namespace sillage;
-using problem_test::error_of;
+using problem_test::expect_error;
 using problem_test::parse;
 
 namespace {
@@ -37,11 +37,6 @@ const std::string kHeading = "[[constraint]]\nkind = \"heading\"\np = \"p\"\npsi
                              "track = 0.05\n";
 const std::string kWindow = "[[constraint]]\nkind = \"heading_window\"\np = \"p\"\npsi = \"psi\"\ndist = \"d\"\n"
                             "dpsi = \"dpsi\"\nomega = \"w\"\ntrack = 0.05\nwindow = 4\nturn_accel = 2\n";
-
-void expect_error(const std::string& text, const std::string& part) {
-  const std::string msg = error_of(text);
-  EXPECT_NE(msg.find(part), std::string::npos) << msg;
-}
 
 }  // namespace
 

@@ -14,7 +14,7 @@
 #include "sillage/slam/ctc_p_implies_z.h"
 
 using namespace sillage;
-using problem_test::error_of;
+using problem_test::expect_error;
 using problem_test::parse;
 
 namespace {
@@ -29,11 +29,6 @@ const std::string kHead =
     "[[constraint]]\nkind = \"deriv\"\nx = \"p\"\nv = \"w\"\n";  // 18 lines
 
 const std::string kSlam = "[[constraint]]\nkind = \"p_implies_z\"\np = \"p\"\nw = \"w\"\nz = \"z\"\neps = 0.01\n";
-
-void expect_error(const std::string& text, const std::string& part) {
-  const std::string msg = error_of(text);
-  EXPECT_NE(msg.find(part), std::string::npos) << msg;
-}
 
 }  // namespace
 
