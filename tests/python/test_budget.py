@@ -4,6 +4,7 @@ another thread (sillage.Cancelled), and Ctrl-C (SIGINT) stopping a SIVIA or a
 t-plane computation that runs without the GIL within a second."""
 import math
 import os
+from pathlib import Path
 import signal
 import threading
 import time
@@ -113,3 +114,22 @@ def test_ctrl_c_stops_tplane_detections(sigint_raises):
         tp.compute_detections(1e-9, v, sl.Budget(max_boxes=0, max_bytes=2 << 30))  # 2 GB: a guard, as above
     assert time.monotonic() - start < 2
     assert tp.nb_detections() == 0
+
+
+def test_ctrl_c_stops_a_problem_solve(sigint_raises, tmp_path):
+    """sillage.solve runs on a worker thread: Ctrl-C stops its contraction (a budget too)."""
+    slow = tmp_path / "slow.toml"  # x = y and y = 0.99999 x from [0, 10^6]: millions of contractor runs
+    slow.write_text('[time]\ndomain = [0, 1]\ndelta = 0.5\n[network]\nratio = 0\n[var.x]\nkind = "interval"\n'
+                    'value = "[0, 1000000]"\n[var.y]\nkind = "interval"\nvalue = "[0, 1000000]"\n'
+                    '[[constraint]]\nkind = "expr"\nexpr = "x - y"\n'
+                    '[[constraint]]\nkind = "expr"\nexpr = "y - 0.99999*x"\n')
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        sl.solve(str(slow), budget=sl.Budget(max_boxes=0, max_seconds=60))  # 60 s: a guard
+    assert time.monotonic() - start < 2
+    with pytest.raises(sl.BudgetExceeded, match="1001 contractor calls > max_boxes = 1000"):
+        sl.solve_problem(sl.load_problem(str(slow)), budget=sl.Budget(max_boxes=1000))
+    problems = Path(__file__).resolve().parents[2] / "examples" / "problems"
+    assert not sl.solve(str(problems / "line_ranges.toml")).empty  # usable afterwards
+

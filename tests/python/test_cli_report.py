@@ -76,6 +76,45 @@ def test_exit_codes():
     assert run("solve", PROBLEMS / "causal_chain.toml", "--delta", "-1").returncode == 2
 
 
+# x = y and y = 0.99999 x from [0, 10^6]: a contraction that runs for millions of steps.
+SLOW = ('[time]\ndomain = [0, 1]\ndelta = 0.5\n[network]\nratio = 0\n[var.x]\nkind = "interval"\n'
+        'value = "[0, 1000000]"\n[var.y]\nkind = "interval"\nvalue = "[0, 1000000]"\n'
+        '[[constraint]]\nkind = "expr"\nexpr = "x - y"\n[[constraint]]\nkind = "expr"\nexpr = "y - 0.99999*x"\n')
+
+
+def test_budget_options_and_exit_status_3(tmp_path):
+    slow = tmp_path / "slow.toml"
+    slow.write_text(SLOW)
+    stopped = run("solve", slow, "--max-runs", 1000, "--out", tmp_path / "out")
+    assert stopped.returncode == 3, stopped.stderr
+    assert stopped.stderr.startswith("sillage: stopped before the fixed point: ContractorNetwork::contract: budget "
+                                      "exceeded: 1001 contractor calls > max_boxes = 1000")
+    assert "--max-runs N / --max-seconds S" in stopped.stderr
+    stopped = run("solve", slow, "--max-runs", 0, "--max-seconds", 0.1, "--out", tmp_path / "out")
+    assert stopped.returncode == 3 and "max_seconds" in stopped.stderr
+    assert run("solve", slow, "--max-seconds", -1).returncode == 2
+
+
+def test_options_that_do_not_apply_are_errors_of_the_option(tmp_path):
+    # A table's time points take no delta: the option is named, not the file.
+    (tmp_path / "stamps.csv").write_text("t\n0\n0.5\n1\n")
+    points = tmp_path / "points.toml"
+    points.write_text('[data.stamps]\nfile = "stamps.csv"\n[time]\npoints = { data = "stamps", column = "t" }\n'
+                      '[var.x]\nkind = "tube"\nvalue = "[0, 1]"\n[var.v]\nkind = "tube"\nvalue = "[-1, 1]"\n'
+                      '[[constraint]]\nkind = "deriv"\nx = "x"\nv = "v"\n')
+    assert run("solve", points, "--out", tmp_path / "out", "--quiet").returncode == 0
+    bad = run("solve", points, "--delta", "0.1")
+    assert bad.returncode == 2
+    assert bad.stderr.startswith("sillage: --delta: found 0.1, expected no delta: the time points of this problem are "
+                                 f"the stamps of the table 'stamps' ([time] points at {points}:4:10)"), bad.stderr
+    assert run("solve", points, "--delta", "auto").stderr.startswith("sillage: --delta: found auto, expected no delta")
+    bad = run("solve", PROBLEMS / "causal_chain.toml", "--refine", "regions")
+    assert bad.returncode == 2
+    assert bad.stderr.startswith("sillage: --refine: found regions, expected it with an automatic delta"), bad.stderr
+    assert run("solve", PROBLEMS / "line_ranges.toml", "--refine", "regions", "--delta", "auto", "--quiet",
+               "--out", tmp_path / "regions").returncode == 0
+
+
 def test_scheduling_option_and_file_key(tmp_path):
     """--scheduling priority (or [network] scheduling) in results.json and the report; a bad
     value of the key is an error at its place (exit 2)."""

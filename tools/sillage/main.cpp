@@ -1,10 +1,12 @@
 // The sillage command (docs/cli.md):
 //   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions]
-//                 [--scheduling fifo|priority] [--threads N] [--quiet] [--save-tubes]
+//                 [--scheduling fifo|priority] [--threads N] [--max-runs N] [--max-seconds S]
+//                 [--quiet] [--save-tubes]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
-// Exit codes: 0 solved (or valid), 1 no solution (an empty domain, explained), 2 bad input.
+// Exit codes: 0 solved (or valid), 1 no solution (an empty domain, explained), 2 bad input,
+// 3 stopped by a budget before the fixed point.
 #include <unistd.h>
 
 #include <charconv>
@@ -30,7 +32,8 @@ using namespace sillage;
 
 namespace {
 
-constexpr int kSolved = 0, kNoSolution = 1, kBadInput = 2;
+// 3: a budget (--max-runs, --max-seconds) ran out before the fixed point.
+constexpr int kSolved = 0, kNoSolution = 1, kBadInput = 2, kStopped = 3;
 
 std::optional<double> parse_delta(const std::string& s, bool& is_auto) {
   is_auto = s == "auto";
@@ -59,16 +62,17 @@ void save_tubes(const SolveResult& r, const std::string& out) {
 }
 
 int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions,
-          const std::string& scheduling, int threads, bool quiet, bool tubes) {
+          const std::string& scheduling, int threads, bool quiet, bool tubes, const Budget& budget) {
   std::optional<ThreadLimit> limit;
   if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
   SolveOptions o;
+  o.budget = budget;
   o.delta = parse_delta(delta_text, o.auto_delta);
   if (regions) o.refinement = DeltaRefinement::Regions;
   if (!scheduling.empty()) o.scheduling = scheduling == "priority" ? Scheduling::Priority : Scheduling::Fifo;
   const auto start = std::chrono::steady_clock::now();
   const Problem p = load_problem(file);
-  if (o.delta && p.time.points.empty()) check_delta(p, *o.delta, "--delta");
+  check_solve_options(p, o, "--");
   if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(file).stem()).string();
   const bool progress = !quiet && isatty(STDERR_FILENO);
   if (progress)
@@ -154,6 +158,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::string problem, out, delta, tube_file, refine = "halving", scheduling;
   int threads = 0;
+  Budget budget;
   bool quiet = false, save_tube_files = false;
   auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
   s->add_option("problem", problem, "the problem file (TOML)")->required();
@@ -173,6 +178,11 @@ int main(int argc, char** argv) {
                        : "found \"" + v + "\", expected a number of threads >= 1";
           },
           "N >= 1"));
+  s->add_option("--max-runs", budget.max_boxes,
+                "contractor runs of one contraction before it stops, exit status 3 (default 10000000; 0: no limit)");
+  s->add_option("--max-seconds", budget.max_seconds,
+                "wall-clock seconds of one contraction before it stops, exit status 3 (default 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
   s->add_flag("--save-tubes", save_tube_files, "also write each tube as DIR/NAME.tube (for sillage show, load_tube)");
   s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
@@ -189,10 +199,14 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
   try {
-    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files);
+    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files, budget);
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);
+  } catch (const BudgetExceeded& e) {  // the problem is not at fault: stopped before its fixed point
+    std::fprintf(stderr, "sillage: stopped before the fixed point: %s (sillage solve --max-runs N / --max-seconds S)\n",
+                 e.what());
+    return kStopped;
   } catch (const Error& e) {
     std::fprintf(stderr, "sillage: %s\n", e.what());
     return kBadInput;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/problem/build_network.h"
 
 namespace sillage {
@@ -34,6 +35,10 @@ struct SolveOptions {
   DeltaRefinement refinement = DeltaRefinement::Halving;  // the faster to a thinner result (docs/cli.md)
   // The order within a round of the propagation; none: the file's ([network] scheduling, default Fifo).
   std::optional<Scheduling> scheduling;
+  // The budget of each contraction (ContractorNetwork::set_budget: 10^7 contractor runs by
+  // default; max_seconds; a cancel token, which Python sets on Ctrl-C). Exceeded:
+  // BudgetExceeded (cancelled: Cancelled) out of solve_problem.
+  Budget budget;
   // Regions: a slice is split when its excess thickness over its gates (summed
   // over the bounded tube components) is above this quantile of all the
   // slices' (0.5: the thicker half).
@@ -68,13 +73,21 @@ struct SolveResult {
 // slice width (default: the file's), auto_delta: refine δ from coarse until the result changes by
 // less than tolerance or the budget is spent; scheduling: the order within a round (default: the file's
 // [network] scheduling). In Python also delta="auto", refine="halving" | "regions" and
-// scheduling="fifo" | "priority", the names of the `sillage solve` options. A given delta is
-// checked by check_delta.
+// scheduling="fifo" | "priority", the names of the `sillage solve` options. The options are
+// checked by check_solve_options.
 SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
 
 // Error if delta is not in (0, tf - t0] or gives more than kMaxSlices slices (the file's rule for
 // its own delta), the message led by `name` (the option that gave it: "--delta", "delta").
+// A problem whose time points are a table's stamps takes no delta: an Error
+// naming the table and the file's [time] too.
 void check_delta(const Problem& p, double delta, const std::string& name);
+
+// The options of a solve against the problem, named with `prefix` ("--" on
+// the command line, "" in Python): check_delta for o.delta, no automatic δ on
+// a table's time points, refinement by regions only with an automatic δ.
+// Error saying what and why; solve_problem calls it with "".
+void check_solve_options(const Problem& p, const SolveOptions& o, const std::string& prefix);
 
 // The mean thickness (volume / duration) summed over the tube components with
 // a finite volume.

@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "docstrings.h"
+#include "interruptible.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
@@ -73,14 +74,18 @@ SolveOptions options_of(const py::object& delta, bool auto_delta, DeltaRefinemen
   return o;
 }
 
+// On a worker thread: Ctrl-C stops the contraction at its next contractor run (KeyboardInterrupt).
 std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delta, bool auto_delta,
                                         double tolerance, double budget_seconds, DeltaRefinement refinement,
-                                        const std::optional<std::string>& refine, const py::object& scheduling) {
+                                        const std::optional<std::string>& refine, const py::object& scheduling,
+                                        const std::optional<Budget>& budget) {
   SolveOptions o = options_of(delta, auto_delta, refinement, refine, scheduling);
   o.tolerance = tolerance;
   o.budget_seconds = budget_seconds;
-  py::gil_scoped_release release;
-  return std::make_shared<SolveResult>(solve_problem(p, o));
+  if (budget) o.budget = *budget;
+  return run_interruptible(o.budget.cancel, [&](const CancelToken& token) {
+    return std::make_shared<SolveResult>(solve_problem(p, with_token(o, token)));
+  });
 }
 
 }  // namespace
@@ -143,18 +148,27 @@ void init_problem(py::module_& m) {
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
         py::arg("refinement") = DeltaRefinement::Halving, py::arg("refine") = py::none(),
-        py::arg("scheduling") = py::none(), DOC(solve_problem));
+        py::arg("scheduling") = py::none(), py::arg("budget") = py::none(), DOC(solve_problem));
+  m.def(
+      "check_solve_options",
+      [](const Problem& p, const py::object& delta, bool auto_delta, DeltaRefinement refinement,
+         const std::optional<std::string>& refine, const std::string& prefix) {
+        check_solve_options(p, options_of(delta, auto_delta, refinement, refine, py::none()), prefix);
+      },
+      py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
+      py::arg("refinement") = DeltaRefinement::Halving, py::arg("refine") = py::none(), py::arg("prefix") = "",
+      DOC(check_solve_options));
   m.def(
       "solve",
       [](const std::string& path, const py::object& delta, bool auto_delta, double tolerance,
          double budget_seconds, DeltaRefinement refinement, const std::optional<std::string>& refine,
-         const py::object& scheduling) {
+         const py::object& scheduling, const std::optional<Budget>& budget) {
         return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds, refinement, refine,
-                          scheduling);
+                          scheduling, budget);
       },
       py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
       py::arg("budget_seconds") = 60.0, py::arg("refinement") = DeltaRefinement::Halving,
-      py::arg("refine") = py::none(), py::arg("scheduling") = py::none(),
+      py::arg("refine") = py::none(), py::arg("scheduling") = py::none(), py::arg("budget") = py::none(),
       "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
   m.def(
       "find_loops",

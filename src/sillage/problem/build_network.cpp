@@ -410,10 +410,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           if (!eval_row_kept(c, data.table, values)) continue;
           if (joined) {
             const auto j = join_rows.find(values[data.table.column(c.join_on)]);
-            if (j == join_rows.end())
-              throw ProblemError(c.pos, "row " + std::to_string(row) + " of '" + c.data + "' with " + c.join_on + " = " +
-                                            number_text(values[data.table.column(c.join_on)]) + ", not in '" + c.join_data + "'",
-                                 "a matching row in '" + c.join_data + "'");
+            if (j == join_rows.end()) detail::check_join_keys(c, data.table, *joined, c.pos);  // throws; the loader checked them
             join_values = joined->row(j->second);
           }
           const Interval row_t = eval_row_time(c, data.table, values, terr, b.td->t0_tf());

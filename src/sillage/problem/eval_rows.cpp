@@ -1,8 +1,10 @@
 #include "sillage/problem/eval_rows.h"
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
 #include <span>
+#include <unordered_set>
 
 #include "sillage/interval/rounding.h"
 
@@ -11,6 +13,24 @@ namespace sillage::detail {
 // rounding.h's steps rather than std::nextafter: the same doubles without a
 // libm call (plaza1.toml reads about 10 000 cells; nextafter was 5 % of its build).
 Interval csv_cell(double d) { return Interval(rounding::next_down(d), rounding::next_up(d)); }
+
+std::string cell_text(double d) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
+}
+
+void check_join_keys(const ConstraintSpec& c, const CsvTable& table, const CsvTable& joined, const SourcePos& at) {
+  const std::vector<double> keys = joined.values(c.join_on);
+  const std::unordered_set<double> known(keys.begin(), keys.end());
+  const std::size_t on = table.column(c.join_on);
+  for (std::size_t row = 0; row < table.nb_rows(); ++row) {
+    const std::span<const double> values = table.row(row);
+    if (!eval_row_kept(c, table, values) || known.count(values[on])) continue;
+    throw ProblemError(at, "the row of '" + c.data + "' at " + table.where(row) + " with " + c.join_on + " = " +
+                               cell_text(values[on]) + ", which is in no row of '" + c.join_data + "'",
+                       "a row of '" + c.join_data + "' with that " + c.join_on + " ('where' leaves rows out)");
+  }
+}
 
 bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values) {
   for (const auto& [col, value] : c.where)

@@ -4,12 +4,14 @@
 // build_network.cpp, which builds a CtcEval per row or a CtcEvalList of them).
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "sillage/ctc/ctc.h"
 #include "sillage/interval/interval.h"
 #include "sillage/io/csv.h"
 #include "sillage/problem/problem.h"
+#include "sillage/problem/problem_error.h"
 #include "sillage/problem/var_refs.h"
 
 namespace sillage::detail {
@@ -17,6 +19,13 @@ namespace sillage::detail {
 // A CSV cell as written: its decimal text is within half an ulp of the
 // double read, so the double's neighbours enclose it.
 Interval csv_cell(double d);
+// The shortest text that reads back as d ("13.3", where number_text gives 17
+// digits): a cell as written, for messages.
+std::string cell_text(double d);
+
+// The first row c keeps whose join key is in no row of the joined table: an
+// error at c's join, naming the row's file and line; none if c has no join.
+void check_join_keys(const ConstraintSpec& c, const CsvTable& table, const CsvTable& joined, const SourcePos& at);
 
 // True if the row passes the constraint's `where` filter.
 bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values);

@@ -11,12 +11,6 @@ namespace sillage::detail {
 
 namespace {
 
-// The shortest text that reads back as x ("13.3", where number_text gives 17 digits): a cell as written.
-std::string cell_text(double x) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
-}
-
 // The kept rows of c whose time lies wholly outside the domain: an error
 // naming the first (file and line) unless c.skip_outside, else counted.
 std::size_t outside_rows(const ConstraintSpec& c, const DataSpec& d, const Interval& domain) {
@@ -123,6 +117,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
     for (const auto& col : joined->table.columns())
       if (col != c.join_on && d->table.has_column(col))
         throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
+    check_join_keys(c, d->table, joined->table, doc_.pos(*jn));  // here, so that sillage check says it
   }
   const auto has_column = [&](const std::string& n) { return d->table.has_column(n) || (joined && joined->table.has_column(n)); };
   // In the observation: the evaluated values are named as their tubes, the columns by name.

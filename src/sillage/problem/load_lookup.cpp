@@ -43,12 +43,13 @@ const DataSpec& ProblemLoader::data_table(const Fields& f, const toml::node& dn)
   throw ProblemError(doc_.pos(dn), "the unknown table '" + name + "'", "a [data.NAME] table (" + names + ")");
 }
 
-std::string ProblemLoader::known_vars() const {
+std::string ProblemLoader::known_vars(bool tubes_only) const {
   std::string s;
-  for (const VarSpec& v : p_.vars)
-    s += (s.empty() ? "" : ", ") + (v.dim > 1 || v.kind == VarKind::TubeVector || v.kind == VarKind::Box
-                                        ? v.name + "[0.." + std::to_string(v.dim - 1) + "]"
-                                        : v.name);
+  for (const VarSpec& v : p_.vars) {
+    if (tubes_only && !v.is_tube()) continue;
+    const bool vector = v.dim > 1 || v.kind == VarKind::TubeVector || v.kind == VarKind::Box;
+    s += (s.empty() ? "" : ", ") + (vector ? v.name + "[0.." + std::to_string(v.dim - 1) + "]" : v.name);
+  }
   return s;
 }
 
@@ -61,7 +62,7 @@ const VarSpec& ProblemLoader::tube_var(const Fields& f, const toml::node& n) {
   const VarSpec* v = p_.var(name);
   if (!v || !v->is_tube())
     throw ProblemError(doc_.pos(n), v ? "the " + std::string(kind_name(v->kind)) + " '" + name + "'" : "'" + name + "'",
-                       "a tube or tube_vector variable (" + known_vars() + ")");
+                       "a tube or tube_vector variable (" + known_vars(true) + ")");
   return *v;
 }
 

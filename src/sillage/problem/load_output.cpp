@@ -10,7 +10,7 @@ std::pair<std::string, std::size_t> ProblemLoader::tube_ref(const Fields& f, con
   const auto b = s.find('[');
   const std::string name = s.substr(0, b);
   const VarSpec* v = p_.var(name);
-  if (!v || !v->is_tube()) throw ProblemError(doc_.pos(n), "'" + s + "'", "a tube variable (" + known_vars() + ")");
+  if (!v || !v->is_tube()) throw ProblemError(doc_.pos(n), "'" + s + "'", "a tube variable (" + known_vars(true) + ")");
   if (b == std::string::npos) {
     if (!allow_whole && v->kind == VarKind::TubeVector)
       throw ProblemError(doc_.pos(n), "'" + s + "'", "a component such as " + name + "[0]");
@@ -88,7 +88,7 @@ void ProblemLoader::read_output(const toml::table& t) {
       const std::string name(key.str());
       const VarSpec* v = p_.var(name);
       if (!v || !v->is_tube())
-        throw ProblemError(doc_.pos(key.source()), "'" + name + "'", "a tube variable (" + known_vars() + ")");
+        throw ProblemError(doc_.pos(key.source()), "'" + name + "'", "a tube variable (" + known_vars(true) + ")");
       std::vector<std::string> cols;
       if (node.is_string()) cols.push_back(col(node));
       else

@@ -1,6 +1,8 @@
 // [time]: the domain and δ, or the time points of a table's column.
 #include "sillage/problem/problem_loader.h"
 
+#include "sillage/problem/eval_rows.h"
+
 namespace sillage::detail {
 
 void ProblemLoader::read_time(const toml::table& t) {
@@ -46,9 +48,9 @@ void ProblemLoader::read_time_points(const Fields& f, const toml::node& pn) {
     throw ProblemError(doc_.pos(cn), std::to_string(p_.time.points.size()) + " time point(s)", "at least 2");
   for (std::size_t i = 1; i < p_.time.points.size(); ++i)
     if (!(p_.time.points[i] > p_.time.points[i - 1]))
-      throw ProblemError(doc_.pos(cn), "the stamps of rows " + std::to_string(i - 1) + " and " + std::to_string(i) + " of '" +
-                                           d.name + "' not increasing (" + number_text(p_.time.points[i - 1]) + ", " +
-                                           number_text(p_.time.points[i]) + ")",
+      throw ProblemError(doc_.pos(cn), "the stamps " + cell_text(p_.time.points[i - 1]) + " at " + d.table.where(i - 1) +
+                                           " and " + cell_text(p_.time.points[i]) + " at line " +
+                                           std::to_string(d.table.line(i)) + " of '" + d.name + "', not increasing",
                          "strictly increasing time points");
   p_.time.t0 = p_.time.points.front();
   p_.time.tf = p_.time.points.back();

@@ -45,6 +45,9 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
   if (!valid_name(name))
     throw ProblemError(kp, "the variable name '" + name + "'",
                        "an identifier (letters, digits, _; not __, not a function name)");
+  if (name == "t" || name == "dt")  // a bound or a table's value reads them as the time and the slice's width
+    throw ProblemError(kp, "the variable name '" + name + "'",
+                       "a name other than t and dt (the time and the slice width in bounds and table values)");
   const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
                  "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates"});
   VarSpec v;

@@ -69,7 +69,8 @@ class ProblemLoader {
   void read_network(const toml::table& t);
   // Shared look-ups (load_lookup.cpp)
   const DataSpec& data_table(const Fields& f, const toml::node& dn);
-  std::string known_vars() const;
+  // "v, x[0..2]": the variables, for messages; only the tube ones if tubes_only.
+  std::string known_vars(bool tubes_only = false) const;
   const VarSpec& tube_var(const Fields& f, const char* key);
   const VarSpec& tube_var(const Fields& f, const toml::node& n);
   void read_expr(const Fields& f, ConstraintSpec& c, const DimOf& dims, const IsVector& vec, const std::string& known);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "sillage/problem/eval_rows.h"
 #include "sillage/problem/refined_points.h"
 
 namespace sillage {
@@ -52,7 +53,18 @@ double mean_thickness(const BuiltProblem& b) {
   return sum;
 }
 
+namespace {
+
+// "expected no delta: ...", for a delta given to a problem with time points from a table.
+std::string no_delta(const Problem& p) {
+  return "expected no delta: the time points of this problem are the stamps of the table '" + p.time.points_data +
+         "' ([time] points at " + p.time.pos.str() + "), one slice per period of the data";
+}
+
+}  // namespace
+
 void check_delta(const Problem& p, double delta, const std::string& name) {
+  if (!p.time.points.empty()) throw Error(name + ": found " + detail::cell_text(delta) + ", " + no_delta(p));
   const double span = p.time.tf - p.time.t0;
   if (!(delta > 0) || !(delta <= span))
     throw Error(name + ": found " + number_text(delta) + ", expected a slice width in (0, " + number_text(span) +
@@ -62,17 +74,21 @@ void check_delta(const Problem& p, double delta, const std::string& name) {
                 " slices), expected a larger delta (at most " + number_text(kMaxSlices) + " slices)");
 }
 
+void check_solve_options(const Problem& p, const SolveOptions& o, const std::string& prefix) {
+  if (o.delta) check_delta(p, *o.delta, prefix + "delta");
+  if (o.auto_delta && !p.time.points.empty()) throw Error(prefix + "delta: found auto, " + no_delta(p));
+  const bool automatic = p.time.points.empty() && (o.auto_delta || (!o.delta && !p.time.delta));
+  if (o.refinement == DeltaRefinement::Regions && !automatic)
+    throw Error(prefix + "refine: found regions, expected it with an automatic delta (" + prefix +
+                "delta auto, or delta = \"auto\" in [time]): a fixed delta is not refined");
+}
+
 SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
+  check_solve_options(p, o, "");
   std::optional<double> fixed = o.delta ? o.delta : p.time.delta;
   if (o.auto_delta) fixed.reset();
-  if (o.delta && p.time.points.empty()) check_delta(p, *o.delta, "delta");
-  if (!p.time.points.empty()) {
-    if (o.delta || o.auto_delta)
-      throw ProblemError(p.time.pos, "a delta (" + std::string(o.auto_delta ? "auto" : number_text(*o.delta)) +
-                                         ") for time points from the table '" + p.time.points_data + "'",
-                         "no delta: the slices are the periods of the data");
+  if (!p.time.points.empty())
     fixed = (p.time.tf - p.time.t0) / static_cast<double>(p.time.points.size() - 1);  // the mean period, for the reports
-  }
   SolveResult r;
   const auto start = std::chrono::steady_clock::now();
   double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;
@@ -85,6 +101,7 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
     step.build_seconds = seconds_since(t0);
     step.slices = b.td->nb_slices();
     if (o.scheduling) b.cn->set_scheduling(*o.scheduling);
+    b.cn->set_budget(o.budget);
     r.scheduling = b.cn->scheduling();
     if (!points.empty()) {
       step.delta = INFINITY;

@@ -40,17 +40,36 @@ TEST(LoadDataKeys, TimePointsAndSlicesFromTables) {
   const Tube& x = (*r.built.var("x").tubes)[0];
   EXPECT_TRUE(x.gate(3).contains(2.0));  // x' = 1 over [0, 2]
   EXPECT_LT(x.gate(3).diam(), 0.05);
-  // A delta for time points from data is an error, not ignored.
+  // A delta for time points from data is an error of the option, not ignored nor blamed on the file.
+  const auto error_of_options = [&](const SolveOptions& o, const std::string& prefix) {
+    try {
+      check_solve_options(p, o, prefix);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
   SolveOptions o;
   o.delta = 0.1;
-  EXPECT_THROW((void)solve_problem(p, o), ProblemError);
+  const std::string why = "expected no delta: the time points of this problem are the stamps of the table 'stamps' "
+                          "([time] points at " + problem_test::problems_dir() + "/test.toml:6:10), one slice per period of the data";
+  EXPECT_EQ(error_of_options(o, "--"), "--delta: found 0.1, " + why);
+  EXPECT_THROW((void)solve_problem(p, o), Error);
+  o.delta.reset();
+  o.auto_delta = true;
+  EXPECT_EQ(error_of_options(o, ""), "delta: found auto, " + why);
+  o.auto_delta = false;
+  o.refinement = DeltaRefinement::Regions;  // refines an automatic delta only
+  EXPECT_EQ(error_of_options(o, "--"), "--refine: found regions, expected it with an automatic delta (--delta auto, "
+                                       "or delta = \"auto\" in [time]): a fixed delta is not refined");
 }
 
 TEST(LoadDataKeys, TimePointsErrors) {
   expect_error(table("stamps", "stamps.csv") + "[time]\npoints = { data = \"stamps\", column = \"t\" }\ndelta = 0.1\n",
                "found 'delta' with 'points', expected either points = {data, column} or domain and delta");
   expect_error(table("odo", "odo.csv") + "[time]\npoints = { data = \"odo\", column = \"d\" }\n",
-               "not increasing (1, 0.5), expected strictly increasing time points");
+               "found the stamps 1 at " + data_dir() + "/odo.csv:3 and 0.5 at line 4 of 'odo', not increasing, "
+               "expected strictly increasing time points");
   expect_error(table("stamps", "stamps.csv") + "[time]\npoints = { data = \"stamps\", column = \"u\" }\n",
                "test.toml:4:38: found the column 'u' missing from table 'stamps'");
   expect_error(table("stamps", "stamps.csv") + table("beacons", "beacons.csv") + kStamps +
@@ -136,7 +155,12 @@ TEST(LoadDataKeys, EvalRowsJoinedToAnotherTable) {
   } catch (const ProblemError& e) {
     msg = e.what();
   }
-  EXPECT_NE(msg.find("row 2 of 'ranges' with id = 9, not in 'beacons'"), std::string::npos) << msg;
+  // Found by the loader, so that sillage check says it: the row's line, the join's place.
+  EXPECT_NE(msg.find("test.toml:19:8: found the row of 'ranges' at " + data_dir() +
+                     "/ranges.csv:4 with id = 9, which is in no row of 'beacons', expected a row of 'beacons' with "
+                     "that id ('where' leaves rows out)"),
+            std::string::npos)
+      << msg;
   const SolveResult r = solve_problem(parse(head + "where = { r = 9 }\n" + obs));
   ASSERT_FALSE(r.empty);
   const TubeVector& p = *r.built.var("p").tubes;

@@ -60,6 +60,25 @@ TEST(LoadProblem, UnknownVariableInAnExpression) {
   EXPECT_TRUE(has(msg, "expected a variable or column (v, x)")) << msg;
 }
 
+// t and dt are the time and the slice width in bounds and table values: a
+// variable of that name would mean one thing there and another in constraints.
+TEST(LoadProblem, TimeNamesAreNotVariableNames) {
+  for (const std::string name : {"t", "dt"}) {
+    const std::string msg = error_of(kHead + "[var." + name + "]\nkind = \"interval\"\nvalue = \"[100, 101]\"\n" + kVars);
+    EXPECT_TRUE(has(msg, "test.toml:4:6: found the variable name '" + name + "', expected a name other than t and dt"))
+        << msg;
+  }
+}
+
+// Where a tube is expected, the variables listed are the tubes only.
+TEST(LoadProblem, ExpectedTubesListTheTubes) {
+  const std::string consts = "[var.a]\nkind = \"interval\"\n[var.b]\nkind = \"box\"\ndim = 2\n";
+  std::string msg = error_of(kHead + consts + kVars + kDeriv + "[output]\nplots = [\"a\"]\n");
+  EXPECT_TRUE(has(msg, "found 'a', expected a tube variable (v, x)")) << msg;
+  msg = error_of(kHead + consts + kVars + "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"a\"\n");
+  EXPECT_TRUE(has(msg, "found the interval 'a', expected a tube or tube_vector variable (v, x)")) << msg;
+}
+
 TEST(LoadProblem, ComponentIndexOutOfRange) {
   const std::string msg = error_of(kHead + "[var.p]\nkind = \"tube_vector\"\ndim = 2\n" +
                                    "[[constraint]]\nkind = \"expr\"\nexpr = \"p[0] - p[2]\"\n");
