@@ -91,6 +91,16 @@ def test_csv_text_columns_kept_until_read():
         t.is_numeric("y")
 
 
+def test_csv_quoted_cells_and_signs():
+    """Quoted names and cells (R, spreadsheets, pandas), commas inside quotes, a '+' sign."""
+    t = sillage.CsvTable.parse('"t","label","x"\n1,"a, b",+0.5\n2,"say ""hi""","-2"\n')
+    assert t.columns() == ["t", "label", "x"] and list(t.values("x")) == [0.5, -2.0]
+    with pytest.raises(sillage.ParseError, match="^<text>:2: column 'label': 'a, b' is not a finite number$"):
+        t.values("label")
+    with pytest.raises(sillage.ParseError, match="^<text>:2: a quote opened at column 3 is not closed on its line$"):
+        sillage.CsvTable.parse('t,x\n1,"2\n')
+
+
 def test_inverse_within_a_time_interval_and_memory():
     td = TDomain(0.0, 10.0, 0.5)
     y, w = Tube(td, "t"), Tube(td, Interval(1.0))

@@ -6,7 +6,9 @@
 // (column(), values(), a problem file's expression) is a ParseError that names
 // its first such cell: file, line, column. A short row or a missing column is
 // a ParseError that names the file and the line. Header names are non-empty
-// and distinct. Cells are quoted in messages up to 60 characters.
+// and distinct. A cell in double quotes (RFC 4180: R, spreadsheets, pandas)
+// may hold commas, "" stands for a quote; a number may carry a '+' sign.
+// Cells are quoted in messages up to 60 characters.
 #include <cstddef>
 #include <span>
 #include <string>

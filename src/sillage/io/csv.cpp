@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -17,20 +19,80 @@ namespace sillage {
 
 namespace {
 
+std::string_view trimmed(std::string_view cell) {
+  const auto a = cell.find_first_not_of(" \t\r");
+  return a == std::string_view::npos ? std::string_view() : cell.substr(a, cell.find_last_not_of(" \t\r") - a + 1);
+}
+
 // The cells of a line, blanks around them removed (views into the line: no
-// stream, no copy; tables of 10^5 rows are read by `sillage check`).
-void split(std::string_view line, std::vector<std::string_view>& cells) {
+// stream, no copy; tables of 10^5 rows are read by `sillage check`). A cell
+// in double quotes (RFC 4180, as R, spreadsheets and pandas write text) may
+// hold commas, and "" stands for a quote: its text without the quotes, put in
+// `unquoted` when it had "" (reserved to the line's size: the views stay valid).
+// ParseError for a quote left open (a quoted cell across lines is not read).
+void split(std::string_view line, std::vector<std::string_view>& cells, std::string& unquoted,
+           const std::string& where) {
   cells.clear();
+  unquoted.clear();
+  unquoted.reserve(line.size());
   if (line.empty()) return;
   for (std::size_t at = 0;;) {
-    const std::size_t comma = std::min(line.find(',', at), line.size());
-    std::string_view cell = line.substr(at, comma - at);
-    const auto a = cell.find_first_not_of(" \t\r");
-    cell = a == std::string_view::npos ? std::string_view() : cell.substr(a, cell.find_last_not_of(" \t\r") - a + 1);
-    cells.push_back(cell);
+    const std::size_t first = line.find_first_not_of(" \t", at);
+    std::size_t comma = 0;
+    if (first != std::string_view::npos && line[first] == '"') {
+      std::size_t q = first + 1, close = std::string_view::npos;
+      bool escaped = false;
+      while (q < line.size()) {
+        if (line[q] == '"' && q + 1 < line.size() && line[q + 1] == '"') {
+          escaped = true;
+          q += 2;
+        } else if (line[q] == '"') {
+          close = q;
+          break;
+        } else {
+          ++q;
+        }
+      }
+      if (close == std::string_view::npos)
+        throw ParseError(where + ": a quote opened at column " + std::to_string(first + 1) +
+                         " is not closed on its line");
+      comma = std::min(line.find(',', close), line.size());
+      if (!trimmed(line.substr(close + 1, comma - close - 1)).empty())
+        throw ParseError(where + ": text after the quoted cell closed at column " + std::to_string(close + 1));
+      std::string_view inner = line.substr(first + 1, close - first - 1);
+      if (escaped) {
+        const std::size_t from = unquoted.size();
+        for (std::size_t i = 0; i < inner.size(); ++i) {
+          unquoted.push_back(inner[i]);
+          if (inner[i] == '"') ++i;  // "" is one quote
+        }
+        inner = std::string_view(unquoted).substr(from);
+      }
+      cells.push_back(trimmed(inner));
+    } else {
+      comma = std::min(line.find(',', at), line.size());
+      cells.push_back(trimmed(line.substr(at, comma - at)));
+    }
     if (comma == line.size()) return;
     at = comma + 1;
   }
+}
+
+// The cell as a number: what from_chars reads, also after a leading '+'
+// (printf's %+f); a decimal below the smallest subnormal reads as its nearest
+// double (0 or the smallest), which the one-ulp cell of a problem encloses.
+// False if the whole cell is not a finite number.
+bool number(std::string_view cell, double& v) {
+  if (cell.size() > 1 && cell[0] == '+' && (std::isdigit(static_cast<unsigned char>(cell[1])) || cell[1] == '.'))
+    cell.remove_prefix(1);
+  const char* end = cell.data() + cell.size();
+  const auto [p, ec] = std::from_chars(cell.data(), end, v);
+  if (p != end || cell.empty()) return false;
+  if (ec == std::errc::result_out_of_range) {  // an overflow (not finite) or an underflow (a tiny finite number)
+    v = std::strtod(std::string(cell).c_str(), nullptr);
+    return std::isfinite(v);
+  }
+  return ec == std::errc() && std::isfinite(v);
 }
 
 // The text without its UTF-8 byte order mark; ParseError for UTF-16 (a byte
@@ -129,6 +191,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
   const std::string_view body = checked_encoding(text, source);
   std::size_t line_no = 0, header_line = 0;
   std::vector<std::string_view> cells;
+  std::string unquoted;  // the quoted cells of a line that had ""
   std::vector<double> row;
   for (std::size_t at = 0; at < body.size();) {
     if (const std::size_t n = t.columns_.size(); n > 0) {
@@ -151,7 +214,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
     ++line_no;
     const std::size_t first = line.find_first_not_of(" \t");
     if (first == std::string_view::npos || line[first] == '#') continue;
-    split(line, cells);
+    split(line, cells, unquoted, source + ":" + std::to_string(line_no));
     const auto where = [&] { return source + ":" + std::to_string(line_no); };
     if (t.columns_.empty()) {
       const std::vector<std::string> names(cells.begin(), cells.end());
@@ -167,10 +230,8 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
     }
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const std::string_view cell = cells[c];
-      const char* end = cell.data() + cell.size();
       double v = 0;
-      const auto [p, ec] = std::from_chars(cell.data(), end, v);
-      if (cell.empty() || ec != std::errc() || p != end || !std::isfinite(v)) {
+      if (!number(cell, v)) {
         // Text (a label, a missing value): the column is kept, and reading it
         // is an error naming this cell, its first one.
         v = std::numeric_limits<double>::quiet_NaN();

@@ -2,6 +2,7 @@
 // and the real datasets of ../shared/data when present.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -162,6 +163,25 @@ TEST(Csv, TextColumnsAreKeptUntilRead) {
   EXPECT_EQ(t.row(1)[2], -2.0);
 }
 
+// Forms of real exports: quoted names and cells (R's write.csv, spreadsheets,
+// pandas), commas and "" inside quotes, a '+' sign (printf's %+f), a number
+// below the smallest subnormal.
+TEST(Csv, QuotedCellsSignsAndTinyNumbers) {
+  const CsvTable t = CsvTable::parse(
+      "\"t\",\"name\",\"x\"\n1,\"a, b\",+0.5\n2, \"say \"\"hi\"\"\" ,\"1e-400\"\n3,plain,\"-2.5\"\n", "f.csv");
+  EXPECT_EQ(t.columns(), (std::vector<std::string>{"t", "name", "x"}));
+  ASSERT_EQ(t.nb_rows(), 3u);
+  EXPECT_EQ(t.values("t"), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(t.values("x"), (std::vector<double>{0.5, 0.0, -2.5}));  // 1e-400: its nearest double
+  EXPECT_EQ(csv_error("t,name\n1,\"a, b\"\n"), "f.csv:2: column 'name': 'a, b' is not a finite number");
+  EXPECT_EQ(csv_error("t,name\n1,\"say \"\"hi\"\"\"\n"), "f.csv:2: column 'name': 'say \"hi\"' is not a finite number");
+  EXPECT_EQ(csv_error("t,x\n1,\"2\n3\"\n"), "f.csv:2: a quote opened at column 3 is not closed on its line");
+  EXPECT_EQ(csv_error("t,x\n1,\"2\"5\n"), "f.csv:2: text after the quoted cell closed at column 5");
+  for (const std::string bad : {"+-1", "+", "++1", "1e400", "-1e400", "+inf"})
+    EXPECT_EQ(csv_error("x\n" + bad + "\n"), "f.csv:2: column 'x': '" + bad + "' is not a finite number") << bad;
+  EXPECT_EQ(CsvTable::parse("x\n+.5\n1e-320\n", "f.csv").values("x"), (std::vector<double>{0.5, 1e-320}));
+}
+
 TEST(Csv, RowOutOfRange) {
   const CsvTable t = CsvTable::parse("a\n1\n2\n", "f.csv");
   EXPECT_EQ(t.row(1)[0], 2.0);
@@ -220,7 +240,7 @@ TEST(Csv, EveryFormOfLineReadsAlike) {
     // One cell of one row made wrong: named with its line and column.
     const std::size_t r = static_cast<std::size_t>(pick(nrows));
     const int c = pick(ncols);
-    const char* bad[] = {"1.5x", "nan", "1 2", "+1", "inf", "0x10", "--1"};
+    const char* bad[] = {"1.5x", "nan", "1 2", "+-1", "inf", "0x10", "--1"};
     const std::string b = bad[pick(7)];
     std::string faulty;
     std::size_t at = 0, line_no = 0;
@@ -250,7 +270,7 @@ namespace {
 
 // The format read the plain way, line by line (the reference for the
 // one-pass reading of plain rows): blank and '#' lines skipped, cells split
-// at commas and trimmed; a cell that is not a whole finite number is NaN and
+// at commas and trimmed, a '+' sign dropped; a cell that is not a whole finite number is NaN and
 // marks its column as text. "error" for a row of another length than the
 // header, which CsvTable must refuse.
 struct Reference {
@@ -291,7 +311,8 @@ Reference read_plainly(const std::string& text) {
     }
     std::vector<double> row;
     for (std::size_t k = 0; k < cells.size(); ++k) {
-      const std::string& c = cells[k];
+      std::string c = cells[k];
+      if (c.size() > 1 && c[0] == '+' && (std::isdigit(static_cast<unsigned char>(c[1])) || c[1] == '.')) c.erase(0, 1);
       double v = 0;
       const auto [p, ec] = std::from_chars(c.data(), c.data() + c.size(), v);
       if (c.empty() || ec != std::errc() || p != c.data() + c.size() || !std::isfinite(v)) {
@@ -356,7 +377,8 @@ TEST(Csv, MutatedTablesReadAsThePlainReference) {
           (void)t.column(name);
           ADD_FAILURE() << text;
         } catch (const ParseError& e) {
-          EXPECT_EQ(std::string(e.what()).rfind("f.csv:" + std::to_string(ref.first_bad[c]) + ": column '" + name + "': ", 0), 0u)
+          const std::string at = "f.csv:" + std::to_string(ref.first_bad[c]) + ": column '" + name + "': ";
+          EXPECT_EQ(std::string(e.what()).rfind(at, 0), 0u)
               << e.what() << "\n" << text;
         }
       }
