@@ -72,7 +72,10 @@ def test_exit_codes():
     assert run("check", PROBLEMS / "causal_chain.toml").returncode == 0
     bad = run("check", PROBLEMS / "data" / "beacon_ranges.csv")
     assert bad.returncode == 2 and "beacon_ranges.csv:" in bad.stderr
-    assert run("solve", "/no/such.toml").returncode == 2
+    missing = run("solve", "/no/such.toml")
+    assert missing.returncode == 2 and missing.stderr == "sillage: /no/such.toml: found no such file, expected a problem file (TOML)\n"
+    typo = run("slove", PROBLEMS / "causal_chain.toml")
+    assert typo.returncode == 2 and "found the command 'slove', expected solve, check, show or plot" in typo.stderr
     assert run("solve", PROBLEMS / "causal_chain.toml", "--delta", "-1").returncode == 2
 
 

@@ -192,6 +192,13 @@ int main(int argc, char** argv) {
   auto* pl = app.add_subcommand("plot", "SVG figure of a tube file");
   pl->add_option("tubefile", tube_file, "a file written by save()")->required();
   pl->add_option("--out", out, "the SVG file")->required();
+  // A mistyped command is named (CLI11 would only say that one is required).
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (!first.empty() && first[0] != '-' && first != "solve" && first != "check" && first != "show" && first != "plot") {
+    std::fprintf(stderr, "sillage: found the command '%s', expected solve, check, show or plot (sillage --help)\n",
+                 argv[1]);
+    return kBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -59,6 +59,14 @@ std::string check_summary(const Problem& p) {
     if (c.nb_outside > 0)
       s += line("           %zu row(s) of '%s' outside [t0, tf] skipped (outside = \"skip\")\n", c.nb_outside,
                 c.data.c_str());
+    if (c.kind == ConstraintKind::Eval) {  // a 'where' that keeps no row states nothing: say so
+      const CsvTable& t = p.table(c.data)->table;
+      std::size_t used = 0;
+      for (std::size_t row = 0; row < t.nb_rows(); ++row) used += detail::eval_row_kept(c, t, t.row(row));
+      used -= c.nb_outside;
+      s += line("           %zu of the %zu rows of '%s' used%s\n", used, t.nb_rows(), c.data.c_str(),
+                used == 0 ? ": none, this constraint states nothing" : "");
+    }
   }
   s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains, %s scheduling\n", nodes, domains,
             bytes / 1048576.0, scheduling_name(p.network.scheduling));

@@ -164,7 +164,10 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   }
   c.nb_outside = outside_rows(c, *d, Interval(p_.time.t0, p_.time.tf));
   c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
-            (c.time_columns.empty() ? std::string("t unknown") : c.time_columns[0]) + ") for every row of '" +
+            (c.time_columns.empty()       ? std::string("t unknown")
+             : c.time_columns.size() == 1 ? c.time_columns[0]
+                                          : "[" + c.time_columns[0] + ", " + c.time_columns[1] + "]") +
+            ") for every row of '" +
             c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");
 }
 

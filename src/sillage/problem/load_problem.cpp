@@ -62,6 +62,8 @@ Problem parse_problem(const std::string& text, const std::string& path) { return
 Problem load_problem(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw ProblemError(SourcePos{path}, "a directory", "a problem file (TOML)");
   std::ifstream is(path, std::ios::binary);
+  if (!is && !std::filesystem::exists(path))
+    throw ProblemError(SourcePos{path}, "no such file", "a problem file (TOML)");
   if (!is) throw ProblemError(SourcePos{path}, "a file that cannot be read", "a readable problem file (TOML)");
   std::ostringstream ss;
   ss << is.rdbuf();

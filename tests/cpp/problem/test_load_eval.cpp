@@ -42,6 +42,19 @@ TEST(LoadEval, ReadsTheNewKeys) {
   EXPECT_EQ(*p.network.ratio, 0.0);
 }
 
+// The label names both time columns; sillage check says how many rows each
+// eval uses, and that one whose 'where' keeps none states nothing.
+TEST(LoadEval, LabelAndRowsUsed) {
+  const Problem p = parse(eval("y = \"x\"\ntime = [\"t\", \"t\"]\nwhere = { b = 2 }\n"));
+  EXPECT_NE(p.constraints[1].label.find("at x([t, t]) for every row of 'ranges' kept by 'where'"), std::string::npos)
+      << p.constraints[1].label;
+  const std::string kept = check_summary(p);
+  EXPECT_NE(kept.find("5 of the 9 rows of 'ranges' used\n"), std::string::npos) << kept;
+  const std::string none = check_summary(parse(eval("y = \"x\"\ntime = \"t\"\nwhere = { b = 7 }\n")));
+  EXPECT_NE(none.find("0 of the 9 rows of 'ranges' used: none, this constraint states nothing"), std::string::npos)
+      << none;
+}
+
 TEST(LoadEval, ErrorsAtTheirPlace) {
   expect_error(eval("y = \"x\"\ntime = [\"t\", \"b\", \"r\"]\n"),
                "test.toml:20:8: found an array of 3 element(s), expected a time column, or two columns [lb, ub]");
