@@ -89,9 +89,10 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   if (!quiet) {
     const ScheduleStep& last = r.schedule.back();
     std::printf("%s: %s with δ = %g (%zu slices), %zu contractor runs, build %.3f s, contraction %.3f s\n",
-                file.c_str(), r.empty ? "NO SOLUTION" : "solved", last.delta, last.slices, last.stats.contractor_calls,
+                file.c_str(), r.empty ? "NO SOLUTION" : r.stopped.empty() ? "solved" : "STOPPED", last.delta, last.slices, last.stats.contractor_calls,
                 r.build_seconds(), r.contract_seconds());
     if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
+    if (!r.stopped.empty()) std::printf("  STOPPED before the fixed point (the domains are enclosures): %s\n", r.stopped.c_str());
     if (p.output.truth && !r.empty) {
       const TruthCheck c = check_truth(p, r.built);
       std::printf("  truth: %zu of %zu time points inside%s\n", c.inside, c.samples,
@@ -101,6 +102,11 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
                 tubes ? " and one .tube file" : "");
   } else if (r.empty) {  // quiet drops the summary, never the answer's explanation
     std::printf("%s: NO SOLUTION\n  %s\n", file.c_str(), r.why_empty.c_str());
+  }
+  if (!r.stopped.empty()) {
+    std::fprintf(stderr, "sillage: stopped before the fixed point: %s (sillage solve --max-runs N / --max-seconds S)\n",
+                 r.stopped.c_str());
+    return kStopped;
   }
   return r.empty ? kNoSolution : kSolved;
 }
@@ -210,10 +216,6 @@ int main(int argc, char** argv) {
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);
-  } catch (const BudgetExceeded& e) {  // the problem is not at fault: stopped before its fixed point
-    std::fprintf(stderr, "sillage: stopped before the fixed point: %s (sillage solve --max-runs N / --max-seconds S)\n",
-                 e.what());
-    return kStopped;
   } catch (const Error& e) {
     std::fprintf(stderr, "sillage: %s\n", e.what());
     return kBadInput;

@@ -183,7 +183,7 @@ struct NetworkSpec {
 
 struct Problem {
   std::string file, text;  // the path as given, and its text
-  std::string hash;        // FNV-1a 64 of the text, hex
+  std::string hash;        // FNV-1a 64 of the text and the tables' names, columns and numbers, hex
   TimeSpec time;
   std::vector<DataSpec> data;
   std::vector<VarSpec> vars;

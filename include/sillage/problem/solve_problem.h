@@ -36,8 +36,8 @@ struct SolveOptions {
   // The order within a round of the propagation; none: the file's ([network] scheduling, default Fifo).
   std::optional<Scheduling> scheduling;
   // The budget of each contraction (ContractorNetwork::set_budget: 10^7 contractor runs by
-  // default; max_seconds; a cancel token, which Python sets on Ctrl-C). Exceeded:
-  // BudgetExceeded (cancelled: Cancelled) out of solve_problem.
+  // default; max_seconds; a cancel token, which Python sets on Ctrl-C). Exceeded: the result so
+  // far, SolveResult::stopped saying why; cancelled: Cancelled out of solve_problem.
   Budget budget;
   // Regions: a slice is split when its excess thickness over its gates (summed
   // over the bounded tube components) is above this quantile of all the
@@ -62,6 +62,10 @@ struct SolveResult {
   // True if the problem has no solution (an empty domain).
   bool empty = false;
   std::string why_empty;  // ContractStats::emptiness + the constraint and its place in the file
+  // Why the contraction stopped before its fixed point ("": it did not): a budget of
+  // SolveOptions::budget spent (BudgetExceeded's message). The domains are still enclosures of
+  // every solution, only not as tight as the fixed point's; no further δ is tried.
+  std::string stopped;
   Scheduling scheduling = Scheduling::Fifo;  // the order the propagation ran
   // Time spent building the networks (all steps).
   double build_seconds() const;

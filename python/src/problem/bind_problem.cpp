@@ -115,6 +115,7 @@ void init_problem(py::module_& m) {
       .def_readonly("why_empty", &SolveResult::why_empty,
                     DOC(SolveResult, why_empty))
       .def_readonly("scheduling", &SolveResult::scheduling, DOC(SolveResult, scheduling))
+      .def_readonly("stopped", &SolveResult::stopped, DOC(SolveResult, stopped))
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
@@ -124,7 +125,7 @@ void init_problem(py::module_& m) {
       .def("contract_seconds", &SolveResult::contract_seconds, DOC(SolveResult, contract_seconds))
       .def("__repr__", [](const SolveResult& r) {
         const ScheduleStep& s = r.schedule.back();
-        return std::string("SolveResult(") + (r.empty ? "no solution" : "solved") + ", delta=" + number_text(s.delta) +
+        return std::string("SolveResult(") + (r.empty ? "no solution" : r.stopped.empty() ? "solved" : "stopped") + ", delta=" + number_text(s.delta) +
                ", slices=" + std::to_string(s.slices) + ", steps=" + std::to_string(r.schedule.size()) + ")";
       });
 

@@ -141,6 +141,9 @@ std::string report_html(const Problem& p, const SolveResult& r) {
   h << "<h1>sillage solve " << xml_escape(p.file) << "</h1>\n";
   if (r.empty)
     h << "<p class=\"empty\" id=\"status\">No solution: " << xml_escape(r.why_empty) << "</p>\n";
+  else if (!r.stopped.empty())
+    h << "<p class=\"empty\" id=\"status\">Stopped before the fixed point: " << xml_escape(r.stopped)
+      << ". Every domain below still encloses every solution; a larger budget may contract them further.</p>\n";
   else
     h << "<p id=\"status\">Solved: every domain below encloses every solution of the problem.</p>\n";
 

@@ -108,12 +108,17 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
       for (std::size_t k = 0; k < step.slices; ++k) step.delta = std::min(step.delta, b.td->t(k + 1) - b.td->t(k));
     }
     t0 = std::chrono::steady_clock::now();
-    step.stats = b.cn->contract();
+    try {
+      step.stats = b.cn->contract();
+    } catch (const BudgetExceeded& e) {  // the domains contracted so far are still enclosures: an answer
+      r.stopped = e.what();
+    }
     step.contract_seconds = seconds_since(t0);
     step.mean_thickness = step.stats.empty ? 0 : mean_thickness(b);
     r.schedule.push_back(step);
     if (o.on_step) o.on_step(step);
     r.built = std::move(b);
+    if (!r.stopped.empty()) return r;
     if (step.stats.empty) {
       r.empty = true;
       r.why_empty = explain(p, r.built, step.stats);

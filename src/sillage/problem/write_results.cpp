@@ -75,8 +75,9 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   json j;
   j["problem"] = p.file;
   j["hash"] = p.hash;
-  j["status"] = r.empty ? "no solution" : "solved";
+  j["status"] = r.empty ? "no solution" : !r.stopped.empty() ? "stopped" : "solved";
   if (r.empty) j["why"] = r.why_empty;
+  if (!r.stopped.empty()) j["why"] = r.stopped;
   // Eval rows skipped as outside [t0, tf] (outside = "skip"), per constraint label.
   json outside = json::object();
   for (const ConstraintSpec& c : p.constraints)

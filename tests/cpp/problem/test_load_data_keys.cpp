@@ -175,6 +175,21 @@ TEST(LoadDataKeys, EvalRowsJoinedToAnotherTable) {
                "found the column 'r', expected a column of both 'ranges' and 'beacons'");
 }
 
+// The hash is of the problem's inputs: its text and the numbers of its tables.
+TEST(LoadDataKeys, TheHashCoversTheData) {
+  const std::string dir = data_dir();
+  std::ofstream(dir + "/hash_a.csv") << "t,x\n0,1\n1,2\n";
+  std::ofstream(dir + "/hash_b.csv") << "t,x\n0,1\n1,2.5\n";
+  std::ofstream(dir + "/hash_c.csv") << "# the same numbers, written otherwise\nt, x\n0.0, 1e0\n1, 2\n";
+  const auto hash = [&](const std::string& file) {
+    std::ofstream(dir + "/hash.csv") << problem_test::read_file(dir + "/" + file);
+    return parse(table("d", "hash.csv") + "[time]\ndomain = [0, 1]\ndelta = 0.5\n[var.x]\nkind = \"tube\"\n"
+                 "[[constraint]]\nkind = \"expr\"\nexpr = \"x\"\n").hash;
+  };
+  EXPECT_NE(hash("hash_a.csv"), hash("hash_b.csv"));
+  EXPECT_EQ(hash("hash_a.csv"), hash("hash_c.csv"));
+}
+
 TEST(LoadDataKeys, EnvironmentInDataPaths) {
   ::setenv("SILLAGE_TEST_DIR", data_dir().c_str(), 1);
   const Problem p = parse("[data.s]\nfile = \"${SILLAGE_TEST_DIR}/stamps.csv\"\n" + kStamps.substr(0, 7) +
