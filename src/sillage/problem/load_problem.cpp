@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 #include <string_view>
 
@@ -24,14 +25,20 @@ std::uint64_t fnv1a(std::string_view text, std::uint64_t h = 1469598103934665603
 }
 
 // The tables' names, columns and numbers folded into h, a 64-bit word at a
-// time (plaza1's 155 000 cells in about 0.1 ms): the same problem text on
-// other data has another hash. Text cells are NaN here: they are never read.
+// time in four independent lanes (one chain of multiplications waits on each
+// one: plaza1's 136 000 cells took 0.26 ms that way): the same problem text
+// on other data has another hash. Text cells are NaN here: they are never read.
 std::uint64_t with_tables(std::uint64_t h, const std::vector<DataSpec>& data) {
   for (const DataSpec& d : data) {
     h = fnv1a(d.name, h);
     for (const std::string& c : d.table.columns()) h = fnv1a(c, h);
-    for (std::size_t r = 0; r < d.table.nb_rows(); ++r)
-      for (const double v : d.table.row(r)) h = (h ^ std::bit_cast<std::uint64_t>(v)) * kFnvPrime;
+    std::uint64_t lane[4] = {h, h + 1, h + 2, h + 3};
+    for (std::size_t r = 0; r < d.table.nb_rows(); ++r) {
+      const std::span<const double> row = d.table.row(r);
+      for (std::size_t c = 0; c < row.size(); ++c)
+        lane[c % 4] = (lane[c % 4] ^ std::bit_cast<std::uint64_t>(row[c])) * kFnvPrime;
+    }
+    for (const std::uint64_t l : lane) h = (h ^ l) * kFnvPrime;
   }
   return h;
 }
