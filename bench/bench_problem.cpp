@@ -19,6 +19,9 @@
 //   BM_Schedule/i/s   the network's scheduling (s = 0: FIFO, 1: by expected
 //                     contraction over cost); counters: contractor calls,
 //                     rounds, mean thickness (the same fixed point)
+//   BM_HandBuilt/i    the same tubes and network written in C++, as the
+//                     C++ examples build them (no contraction): BM_ParseBuild/i
+//                     less this is what the file itself costs (problems 0, 1, 3)
 //   BM_Plaza1Cpp/l    the C++ example's network on the same data
 //                     (examples/cpp/plaza1_network.h), to compare with
 //                     BM_Solve of plaza1.toml (l = 0: build + contract) and
@@ -35,6 +38,8 @@
 #include <tuple>
 #include <type_traits>
 
+#include "../examples/cpp/causal_chain_network.h"
+#include "../examples/cpp/dead_reckoning_network.h"
 #include "../examples/cpp/plaza1_network.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
@@ -194,6 +199,48 @@ void BM_Schedule(benchmark::State& state) {
                  (state.range(1) == 0 ? " fifo" : " priority"));
 }
 BENCHMARK(BM_Schedule)->ArgsProduct({benchmark::CreateDenseRange(0, kLast, 1), {0, 1}})->Unit(benchmark::kMillisecond);
+
+// Dead reckoning (0), the causal chain (1) and the kidnapped robot (3) as a
+// C++ program writes them: TDomain, the input tubes from their expressions
+// of t, the gates, the network (tests/cpp/problem/test_problem_examples.cpp
+// checks that the file gives these networks' sets).
+void BM_HandBuilt(benchmark::State& state) {
+  const std::int64_t problem = state.range(0);
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    if (problem == 1) {
+      causal_chain::Problem p = causal_chain::build(TDomain::create(0.0, causal_chain::kTf, 0.01), true);
+      nodes = p.cn->nb_ctc();
+      state.PauseTiming();
+      destroy(std::move(p));
+      state.ResumeTiming();
+      continue;
+    }
+    const auto td = TDomain::create(0.0, 64.0, 0.01);
+    const std::size_t k37 = problem == 3 ? td->sample(37.0) : 0;  // the measurement's time, before the tubes
+    auto x = std::make_shared<TubeVector>(td, 4), v = std::make_shared<TubeVector>(td, 4);
+    const Interval c = Interval(-1, 1) / Interval(100);
+    const Interval heading = Interval::half_pi() + c;
+    if (problem == 0) {
+      x->set_gate(0, IntervalVector{Interval(-1, 1), Interval(-1, 1), heading, c});
+    } else {
+      x->set_gate(0, IntervalVector{Interval::all_reals(), Interval::all_reals(), heading, c});
+      (*x)[0].set_gate(k37, Interval(59.25, 61.25));
+      (*x)[1].set_gate(k37, Interval(36.16, 38.16));
+    }
+    (*v)[2] = Tube(td, "-9/20*cos(t/5) + [-0.001,0.001]");
+    (*v)[3] = Tube(td, "1/10 + sin(t/4) + [-0.001,0.001]");
+    auto cn = std::make_unique<ContractorNetwork>();
+    dead_reckoning::add_constraints(*cn, x, v);
+    nodes = cn->nb_ctc();
+    state.PauseTiming();
+    destroy(std::move(cn), std::move(x), std::move(v));
+    state.ResumeTiming();
+  }
+  state.counters["nodes"] = static_cast<double>(nodes);
+  state.SetLabel(kProblems.at(static_cast<std::size_t>(problem)));
+}
+BENCHMARK(BM_HandBuilt)->Arg(0)->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond);
 
 void BM_Plaza1Cpp(benchmark::State& state) {
   if (!std::filesystem::exists(kPlaza1 / "odometry.csv")) {

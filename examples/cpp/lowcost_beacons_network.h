@@ -102,8 +102,9 @@ inline Problem build(const std::shared_ptr<TDomain>& td, double ratio,
     p.t.push_back(std::make_shared<Interval>(cents(m.t)));
     p.z.push_back(std::make_shared<Interval>(cents(m.z)));
     cn.add(std::make_shared<CtcEval>(), {p.t.back(), p.z.back(), p.y[m.k], p.w[m.k]});
-    cn.set_name(p.t.back(), "t" + std::to_string(p.t.size()));
-    cn.set_name(p.z.back(), "z" + std::to_string(p.z.size()));
+    const std::string i = std::to_string(p.t.size());  // "t" + a temporary: a false -Wrestrict of GCC 12
+    cn.set_name(p.t.back(), std::string("t").append(i));
+    cn.set_name(p.z.back(), std::string("z").append(i));
   }
   // Named as in lowcost_beacons.py, so that an empty network says which domain emptied.
   cn.set_name(p.x, "x");

@@ -187,7 +187,10 @@ const char* const kTubeSetDoc =
 // Python str of an interval vector: ([a, b], [c, d]).
 std::string box_text(const IntervalVector& v) {
   std::string s = "(";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i].str();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i > 0) s += ", ";
+    s += v[i].str();
+  }
   return s + ")";
 }
 
