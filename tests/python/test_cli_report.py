@@ -155,7 +155,12 @@ def test_no_solution_exits_1_and_says_why(tmp_path):
         problem.unlink()
     assert r.returncode == 1
     assert "NO SOLUTION" in r.stdout and "constraint" in r.stdout
-    assert "No solution" in (tmp_path / "report.html").read_text()
+    report = (tmp_path / "report.html").read_text()
+    assert "No solution" in report
+    results = report[report.index('<table id="results">'):]
+    results = results[:results.index("</table>")]
+    assert "[" not in results.replace("<th>", "").split("</tr>", 1)[1]  # no value shown as if it held a solution
+    assert results.count("∅") >= 2
     assert quiet.returncode == 1  # --quiet drops the summary, not the explanation
     assert "NO SOLUTION" in quiet.stdout and "constraint" in quiet.stdout and "wrote" not in quiet.stdout
 

@@ -28,7 +28,8 @@ std::string itv(const Interval& x) {
 }
 
 std::string comp_name(const VarDomain& v, std::size_t i) {
-  return v.spec->kind == VarKind::Tube ? v.spec->name : v.spec->name + "[" + std::to_string(i) + "]";
+  const bool scalar = v.spec->kind == VarKind::Tube || v.spec->kind == VarKind::Interval;
+  return scalar ? v.spec->name : v.spec->name + "[" + std::to_string(i) + "]";
 }
 
 const std::vector<std::string>* truth_columns(const Problem& p, const std::string& var) {
@@ -169,7 +170,7 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       h << "<tr><td>" << xml_escape(comp_name(v, i)) << "</td>";
       for (double t : times) {
         const Interval x = v.tubes ? (*v.tubes)[i](t) : v.interval ? *v.interval : (*v.box)[i];
-        h << "<td>" << itv(x) << "</td>";
+        h << "<td>" << itv(r.empty ? Interval::empty() : x) << "</td>";  // no solution: every set is empty
       }
       h << "</tr>\n";
     }
