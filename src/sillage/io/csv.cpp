@@ -24,14 +24,44 @@ std::string_view trimmed(std::string_view cell) {
   return a == std::string_view::npos ? std::string_view() : cell.substr(a, cell.find_last_not_of(" \t\r") - a + 1);
 }
 
+// The quoted cell opening at `first` (RFC 4180: "" stands for a quote; text
+// after the closing quote is refused): its text, in `unquoted` when it had ""
+// (reserved to the line's size: earlier views stay valid); `comma` set to the
+// comma that ends it, or the line's end; source and line_no name the line in errors.
+std::string_view quoted_cell(std::string_view line, std::size_t first, std::string& unquoted, std::size_t& comma,
+                             const std::string& source, std::size_t line_no) {
+  const auto where = [&] { return source + ":" + std::to_string(line_no); };
+  std::size_t close = first + 1;
+  bool escaped = false;
+  for (; close < line.size(); ++close) {
+    if (line[close] != '"') continue;
+    if (close + 1 < line.size() && line[close + 1] == '"') {
+      escaped = true;
+      ++close;
+      continue;
+    }
+    break;
+  }
+  if (close >= line.size())
+    throw ParseError(where() + ": a quote opened at column " + std::to_string(first + 1) + " is not closed on its line");
+  comma = std::min(line.find(',', close), line.size());
+  if (!trimmed(line.substr(close + 1, comma - close - 1)).empty())
+    throw ParseError(where() + ": text after the quoted cell closed at column " + std::to_string(close + 1));
+  const std::string_view inner = line.substr(first + 1, close - first - 1);
+  if (!escaped) return inner;
+  const std::size_t from = unquoted.size();
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    unquoted.push_back(inner[i]);
+    if (inner[i] == '"') ++i;  // "" is one quote
+  }
+  return std::string_view(unquoted).substr(from);
+}
+
 // The cells of a line, blanks around them removed (views into the line: no
 // stream, no copy; tables of 10^5 rows are read by `sillage check`). A cell
-// in double quotes (RFC 4180, as R, spreadsheets and pandas write text) may
-// hold commas, and "" stands for a quote: its text without the quotes, put in
-// `unquoted` when it had "" (reserved to the line's size: the views stay valid).
-// ParseError for a quote left open (a quoted cell across lines is not read).
+// in double quotes (R, spreadsheets and pandas write text so) may hold commas.
 void split(std::string_view line, std::vector<std::string_view>& cells, std::string& unquoted,
-           const std::string& where) {
+           const std::string& source, std::size_t line_no) {
   cells.clear();
   unquoted.clear();
   unquoted.reserve(line.size());
@@ -40,35 +70,7 @@ void split(std::string_view line, std::vector<std::string_view>& cells, std::str
     const std::size_t first = line.find_first_not_of(" \t", at);
     std::size_t comma = 0;
     if (first != std::string_view::npos && line[first] == '"') {
-      std::size_t q = first + 1, close = std::string_view::npos;
-      bool escaped = false;
-      while (q < line.size()) {
-        if (line[q] == '"' && q + 1 < line.size() && line[q + 1] == '"') {
-          escaped = true;
-          q += 2;
-        } else if (line[q] == '"') {
-          close = q;
-          break;
-        } else {
-          ++q;
-        }
-      }
-      if (close == std::string_view::npos)
-        throw ParseError(where + ": a quote opened at column " + std::to_string(first + 1) +
-                         " is not closed on its line");
-      comma = std::min(line.find(',', close), line.size());
-      if (!trimmed(line.substr(close + 1, comma - close - 1)).empty())
-        throw ParseError(where + ": text after the quoted cell closed at column " + std::to_string(close + 1));
-      std::string_view inner = line.substr(first + 1, close - first - 1);
-      if (escaped) {
-        const std::size_t from = unquoted.size();
-        for (std::size_t i = 0; i < inner.size(); ++i) {
-          unquoted.push_back(inner[i]);
-          if (inner[i] == '"') ++i;  // "" is one quote
-        }
-        inner = std::string_view(unquoted).substr(from);
-      }
-      cells.push_back(trimmed(inner));
+      cells.push_back(trimmed(quoted_cell(line, first, unquoted, comma, source, line_no)));
     } else {
       comma = std::min(line.find(',', at), line.size());
       cells.push_back(trimmed(line.substr(at, comma - at)));
@@ -214,7 +216,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
     ++line_no;
     const std::size_t first = line.find_first_not_of(" \t");
     if (first == std::string_view::npos || line[first] == '#') continue;
-    split(line, cells, unquoted, source + ":" + std::to_string(line_no));
+    split(line, cells, unquoted, source, line_no);
     const auto where = [&] { return source + ":" + std::to_string(line_no); };
     if (t.columns_.empty()) {
       const std::vector<std::string> names(cells.begin(), cells.end());
