@@ -1,7 +1,9 @@
 #pragma once
 // Budgets and cancellation of the long algorithms (SIVIA and its variants,
 // the t-plane detections and proofs, the degree and count refinements, the
-// contractor network, where max_boxes counts contractor calls).
+// contractor network, where max_boxes counts contractor calls). CtcIvp and
+// CtcPImpliesZ, whose work is bounded by their tubes, take a CancelToken
+// alone; a network passes its own to them.
 // Their cost grows without bound as eps shrinks or the dimension grows, so
 // each one checks a Budget as it goes:
 //  - max_boxes: boxes stored or refined (for a paving: its nodes), 10^7 by
@@ -63,6 +65,12 @@ class Cancelled : public std::runtime_error {
   explicit Cancelled(const std::string& where) : std::runtime_error(where + ": cancelled") {}
 };
 
+// Throws Cancelled(where) once `token` is cancelled: for the loops that
+// check a token alone, without a BudgetMeter (CtcIvp, CtcOmega).
+inline void check_cancel(const CancelToken& token, const char* where) {
+  if (token.cancelled()) throw Cancelled(where);
+}
+
 // Counts the boxes of one run against a Budget; thread-safe (one meter is
 // shared by the oneTBB tasks of the run). `option` names the setting that
 // holds the budget in error messages (e.g. "options.budget"), `hint` another
@@ -75,6 +83,8 @@ class BudgetMeter {
   // Counts one more box; throws BudgetExceeded or Cancelled.
   void add();
   std::size_t boxes() const { return boxes_.load(std::memory_order_relaxed); }
+  // The budget's token, for the work between two boxes that checks it alone.
+  const CancelToken& cancel() const { return budget_.cancel; }
 
  private:
   Budget budget_;

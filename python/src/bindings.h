@@ -37,6 +37,7 @@ std::string fields_repr(const py::object& self);
 void init_errors(py::module_& m);
 void init_budget(py::module_& m);
 void init_threads(py::module_& m);
+void init_read_file(py::module_& m);
 void init_interval(py::module_& m);
 void init_expr(py::module_& m);
 void init_ctc(py::module_& m);

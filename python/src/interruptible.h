@@ -47,6 +47,12 @@ auto run_interruptible(const CancelToken& user, Run&& run) {
   return result.get();                              // or rethrows the worker's exception
 }
 
+// The same with the caller's token optional (an argument cancel=None).
+template <class Run>
+auto run_interruptible(const CancelToken* user, Run&& run) {
+  return run_interruptible(user != nullptr ? *user : CancelToken(), std::forward<Run>(run));
+}
+
 // The budget, or the options with their budget, holding `token`.
 inline Budget with_token(Budget b, const CancelToken& token) {
   b.cancel = token;

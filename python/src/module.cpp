@@ -9,6 +9,7 @@ PYBIND11_MODULE(_sillage, m) {
   sillage::python::init_errors(m);
   sillage::python::init_budget(m);
   sillage::python::init_threads(m);
+  sillage::python::init_read_file(m);
   sillage::python::init_interval(m);
   sillage::python::init_expr(m);
   sillage::python::init_ctc(m);

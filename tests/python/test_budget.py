@@ -1,7 +1,8 @@
 """Budgets and cancellation of the long algorithms from Python: BudgetExceeded
 with a message that says how to raise the budget, a CancelToken set from
-another thread (sillage.Cancelled), and Ctrl-C (SIGINT) stopping a SIVIA or a
-t-plane computation that runs without the GIL within a second."""
+another thread (sillage.Cancelled), and Ctrl-C (SIGINT) stopping a SIVIA, a
+t-plane computation, a problem's solve, CtcIvp or CtcPImpliesZ (they run
+without the GIL) within a second."""
 import math
 import os
 from pathlib import Path
@@ -136,3 +137,55 @@ def test_ctrl_c_stops_a_problem_solve(sigint_raises, tmp_path):
     problems = Path(__file__).resolve().parents[2] / "examples" / "problems"
     assert not sl.solve(str(problems / "line_ranges.toml")).empty  # usable afterwards
 
+
+
+def ivp_tube():
+    """x' = -sin x over 10^5 slices: about ten seconds of validated integration."""
+    x = sl.Tube(sl.TDomain(0.0, 1000.0, 0.01))
+    x.set_gate(0, sl.Interval(1))
+    return sl.CtcIvp(sl.Function(["x"], "-sin(x)")), x
+
+
+def slow_slam():
+    """The figure eight of test_slam.py on 5000 slices, t-boxes of 0.0005 s: about ten seconds."""
+    td = sl.TDomain(0.0, 5.0, 0.001)
+    w = sl.TubeVector([sl.Tube(td, "10*cos(t - 0.5) + [-0.2,0.2]"), sl.Tube(td, "10*cos(2*t - 1) + [-0.2,0.2]")])
+    z = sl.Tube(td, "sin(10*sin(t - 0.5)/3) + cos(5*sin(2*t - 1)/4) + sin(t - 0.5) + [-0.01,0.01]")
+    p = sl.TubeVector(td, 2)
+    p.set_gate(0, sl.IntervalVector([sl.Interval(-4.85, -4.75), sl.Interval(-4.26, -4.16)]))
+    sl.CtcDeriv().contract(p, w)
+    return sl.CtcPImpliesZ(0.0005), p, w, z
+
+
+def test_ctrl_c_stops_ctc_ivp(sigint_raises):
+    ctc, x = ivp_tube()
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        ctc.contract(x)
+    assert time.monotonic() - start < 2
+    assert ctc.contract(sl.Tube(sl.TDomain(0.0, 1.0, 0.5))) is True  # usable afterwards
+
+
+def test_ctrl_c_stops_ctc_p_implies_z(sigint_raises):
+    ctc, p, w, z = slow_slam()
+    before = p.copy()
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        ctc.contract(p, w, z)
+    assert time.monotonic() - start < 2
+    assert p.is_subset(before)
+
+
+def test_token_stops_ctc_ivp_and_ctc_p_implies_z():
+    """A token cancelled from another thread: sillage.Cancelled."""
+    ctc, x = ivp_tube()
+    slam, p, w, z = slow_slam()
+    for run in (lambda t: ctc.contract(x, cancel=t), lambda t: slam.contract(p, w, z, cancel=t)):
+        token = sl.CancelToken()
+        threading.Timer(0.3, token.cancel).start()
+        start = time.monotonic()
+        with pytest.raises(sl.Cancelled, match="cancelled"):
+            run(token)
+        assert time.monotonic() - start < 2

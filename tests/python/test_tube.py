@@ -4,6 +4,7 @@ builders and files."""
 import copy
 import math
 import random
+import struct
 
 import numpy as np
 import pytest
@@ -188,6 +189,30 @@ def test_tube_vector_live_components():
     assert w[-1].slice(1) == Interval(2, 3)
 
 
+def test_indices_out_of_range_are_index_errors():
+    """Every slice, gate, time point or component index past the end (or negative) is an
+    IndexError (sillage.OutOfRangeError, also a sillage.Error) that gives the index and the range."""
+    td = TDomain(0.0, 10.0, 0.1)  # 100 slices
+    x, v = Tube(td), TubeVector(td, 2)
+    y, box = Interval(0, 1), IntervalVector([[0, 1], [0, 1]])
+    calls = {
+        "x.set_gate(500, y)": lambda: x.set_gate(500, y), "x.gate(101)": lambda: x.gate(101),
+        "x.slice(100)": lambda: x.slice(100), "x.set(y, 100)": lambda: x.set(y, 100),
+        "x.thickness(100)": lambda: x.thickness(100), "x.gate(-1)": lambda: x.gate(-1),
+        "v.slice(100)": lambda: v.slice(100), "v.gate(101)": lambda: v.gate(101), "v.slice(-1)": lambda: v.slice(-1),
+        "v.set_gate(500, box)": lambda: v.set_gate(500, box), "v.set(box, 100)": lambda: v.set(box, 100),
+        "v[2]": lambda: v[2], "td.t(101)": lambda: td.t(101), "td.t(-1)": lambda: td.t(-1),
+        "td.slice_domain(100)": lambda: td.slice_domain(100), "td.slice_width(100)": lambda: td.slice_width(100),
+    }
+    for name, call in calls.items():
+        with pytest.raises(IndexError) as e:
+            call()
+        assert isinstance(e.value, sillage.Error) or name == "v[2]", name
+        assert "out of range" in str(e.value) or "negative" in str(e.value), (name, str(e.value))
+    with pytest.raises(sillage.OutOfRangeError, match=r"^Tube::set_gate\(k, y\): gate 500 out of range \[0, 100\]$"):
+        x.set_gate(500, y)
+
+
 def test_tube_vector_from_expression():
     td = TDomain(0.0, 6.0, 0.1)
     v = TubeVector(td, "(cos(t), sin(t))")
@@ -270,3 +295,16 @@ def test_load_tube_rejects_trailing_bytes_directories_and_disjoint_gates(tmp_pat
         sillage.load_tube(str(tmp_path))
     with pytest.raises(sillage.Error, match=r"gate 1 = \[5, 5\] does not meet slice 0 = \[0, 1\]"):
         Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(5), Interval(2)])
+
+
+def test_load_tube_names_the_file_and_the_bad_time_point(tmp_path):
+    """A time point NaN or not after the one before: the file, the point, its byte and its value."""
+    path = tmp_path / "x.tube"
+    sillage.save_tube(Tube(TDomain([0.0, 1.0, 2.0]), Interval(0, 1)), str(path))
+    good = path.read_bytes()
+    at = 8 + 4 + 4 + 8  # time point 0
+    for k, t, why in [(1, math.nan, "is nan, not a finite time"), (2, 0.5, "is 0.5, not after time point 1 = 1")]:
+        path.write_bytes(good[:at + 8 * k] + struct.pack("<d", t) + good[at + 8 * k + 8:])
+        with pytest.raises(sillage.Error) as e:
+            sillage.load_tube(str(path))
+        assert str(e.value) == f"load tube: '{path}': time point {k} (byte {at + 8 * k}) {why}"

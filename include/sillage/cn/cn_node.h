@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/cn/domain.h"
 #include "sillage/ctc/ctc.h"
 
@@ -64,6 +65,12 @@ struct NodeRun {
   std::span<const DerivativePair> derivatives = {};
   // Whether a node of the network enforces x' = v over the whole tubes x, v.
   bool has_derivative(const AtomRange& x, const AtomRange& v) const;
+  // The network's cancel token (its budget's; null: none), for a node that
+  // runs long (CtcIvp, CtcPImpliesZ) to pass on, so that a cancelled
+  // contract() stops within the node.
+  const CancelToken* cancel = nullptr;
+  // *cancel, or a token that is never cancelled.
+  const CancelToken& cancel_token() const;
 };
 
 class CnNode {

@@ -110,6 +110,11 @@ class ContractorNetwork {
   // The name of domain number d ("" if none).
   const std::string& domain_name(std::size_t d) const { return names_.at(d); }
 
+  // Names contractor i (in add order: nb_ctc() - 1 is the last added) for the
+  // reports, e.g. the measurement it stands for: "CtcEval (ranges line 12)
+  // emptied tube 'x' ...". Error if there is no contractor i or name is empty.
+  void set_ctc_name(std::size_t i, const std::string& name);
+
   // Binds ctc to the concatenation of the domains (registered on first use);
   // applied at every time if a domain is a tube (see above).
   void add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains);
@@ -141,11 +146,15 @@ class ContractorNetwork {
   void set_scheduling(Scheduling s) { scheduling_ = s; }
   // Limits of contract(): max_boxes counts contractor calls (10^7 by
   // default), max_seconds the wall-clock time, cancel stops it from another
-  // thread (Python: Ctrl-C). Exceeded: BudgetExceeded (cancelled: Cancelled),
+  // thread (Python: Ctrl-C), between contractor calls and within the long
+  // ones (CtcIvp, CtcPImpliesZ). Exceeded: BudgetExceeded (cancelled: Cancelled),
   // the domains left contracted as far as they got (still enclosures).
   const Budget& budget() const { return budget_; }
   // Sets budget(); contract() then raises BudgetExceeded past it (the domains stay enclosures).
   void set_budget(const Budget& budget);
+  // What the last contract() that raised BudgetExceeded did before it stopped
+  // (its rounds and contractor runs, the time).
+  const ContractStats& stopped_stats() const { return stopped_stats_; }
 
  private:
   std::string label(std::size_t d) const;
@@ -162,7 +171,9 @@ class ContractorNetwork {
   // rather than a result computed on the wrong atoms.
   void check_layouts_after(const CnNode& node) const;
   // Same for a node whose run() returned false.
-  void explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const;
+  void explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const;
+  // Node i's describe(), with its name (set_ctc_name) if it has one.
+  std::string describe_node(std::size_t i) const;
   // The first empty atom of domain d in [first, first + count), or kNoAtom.
   std::size_t first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const;
   // Registers the parts of the references; validates first, so that a failed
@@ -194,6 +205,8 @@ class ContractorNetwork {
   double ratio_ = 0.01;
   Scheduling scheduling_ = Scheduling::Fifo;
   Budget budget_;
+  ContractStats stopped_stats_;
+  std::vector<std::string> ctc_names_;  // per node, "" if unnamed (set_ctc_name)
   // True during contract(): a contractor calling back into the network (a
   // Python one may) must not grow the arrays contract() is walking.
   bool contracting_ = false;

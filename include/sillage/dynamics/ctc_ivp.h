@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/expr/function.h"
@@ -72,24 +73,28 @@ class CtcIvp : public NetworkCtc {
 
   // Contracts x in place (touch()es what changed); false if x is now empty
   // (then every slice and gate is empty). DimensionError on wrong sizes or
-  // TDomains.
-  bool contract(Tube& x) const;
+  // TDomains. `cancel` is checked at every integration step (a few
+  // microseconds): once cancelled, Cancelled is thrown and x is still an
+  // enclosure (contracted as far as the integration got). A network passes
+  // its own token.
+  bool contract(Tube& x, const CancelToken& cancel = {}) const;
   // Contracts the tube vector x in place; returns false if x is now empty.
-  bool contract(TubeVector& x) const;
+  bool contract(TubeVector& x, const CancelToken& cancel = {}) const;
   // With the input tube u (any u(t) in it); returns false if x is now empty.
-  bool contract(Tube& x, const Tube& u) const;
+  bool contract(Tube& x, const Tube& u, const CancelToken& cancel = {}) const;
   // With the input tube vector u; returns false if x is now empty.
-  bool contract(TubeVector& x, const TubeVector& u) const;
+  bool contract(TubeVector& x, const TubeVector& u, const CancelToken& cancel = {}) const;
   // The same (u null without inputs), remembering the run in `memory`: the
   // next call re-integrates only from the first gate or slice of x or u
   // that changed since (the network node's way; internal type).
-  bool contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory) const;
+  bool contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory, const CancelToken& cancel = {}) const;
 
  private:
   void check(const TubeVector& x, const TubeVector* u) const;
-  bool contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const;
-  bool sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const;
-  bool sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const;
+  bool contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory, const CancelToken& cancel) const;
+  bool sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory,
+             const CancelToken& cancel) const;
+  bool sweep_pieces(TubeVector& x, const TubeVector* u, double sign, const CancelToken& cancel) const;
 
   std::shared_ptr<const detail::TaylorOde> ode_;
   int order_;

@@ -21,7 +21,8 @@ class CsvTable {
  public:
   // Reads `path` (comma-separated; blank lines and lines starting with '#'
   // are skipped; lines end with \n, \r\n or \r; a UTF-8 byte order mark is
-  // skipped, UTF-16 is a ParseError). Error if the file cannot be read.
+  // skipped, UTF-16 is a ParseError). Error if the file cannot be read, or
+  // is larger than max_file_bytes() (read_file.h: 2 GiB by default).
   static CsvTable read(const std::string& path);
   // Parses text already in memory; `source` names it in error messages.
   static CsvTable parse(const std::string& text, const std::string& source);

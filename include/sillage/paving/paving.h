@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/paving/component.h"
 #include "sillage/paving/paving_tag.h"
@@ -69,7 +70,9 @@ class Paving {
   std::optional<PavingTag> tag_at(const Vector& p) const;
 
   // Connected components of X+ (see component.h), in a deterministic order.
-  std::vector<Component> components() const;
+  // Cancelled once `cancel` is (checked every 1024 leaves: a large paving
+  // takes tens of milliseconds).
+  std::vector<Component> components(const CancelToken& cancel = {}) const;
 
   // ---- raw node access (pre-order indices) ----
   // The box of node i (pre-order index; the left child of i is i + 1).

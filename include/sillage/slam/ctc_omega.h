@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/slam/ctc_t1t2.h"
 #include "sillage/tube/tube_vector.h"
@@ -63,9 +64,10 @@ class CtcOmega {
 
   // The sparse hull against the reference tube `p`; `work` must equal p on
   // entry (it is used as scratch and is equal to p again on return). Several
-  // threads may run it at once with their own `work`.
+  // threads may run it at once with their own `work`. `cancel` is checked at
+  // every box: once cancelled, Cancelled (work is then left as scratch).
   OmegaHull hull(const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w,
-                 TubeVector& work) const;
+                 TubeVector& work, const CancelToken& cancel = {}) const;
 
  private:
   CtcT1T2 t1t2_;

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/slam/slam_row.h"
 #include "sillage/tube/tube.h"
@@ -64,14 +65,20 @@ class CtcPImpliesZ : public NetworkCtc {
 
   // Contracts p to a fixed point; returns one row per iteration (the last
   // one contracted nothing more, or p became empty: then p is empty).
-  std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const TubeVector& z) const;
+  // `cancel` is checked at every box of the t-plane, of the degree tests, of
+  // 𝕋_z and of C_Ω: once cancelled, Cancelled is thrown and p is left as the
+  // last complete iteration made it. A network passes its own token.
+  std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const TubeVector& z,
+                                const CancelToken& cancel = {}) const;
   // The same with a scalar observation Tube z.
-  std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const Tube& z) const;
+  std::vector<SlamRow> contract(TubeVector& p, const TubeVector& w, const Tube& z,
+                                const CancelToken& cancel = {}) const;
   // One iteration of C_{p⇒z} on p (2-D or 1-D); `row` (a SlamRow, filled in
   // place) receives its detections, proofs and atoms touched (iteration,
   // times and contractions are left to the caller). Returns true if p shrank
-  // by more than ratio somewhere.
-  bool iterate(TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row) const;
+  // by more than ratio somewhere. Cancelled as contract() (p unchanged).
+  bool iterate(TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row,
+               const CancelToken& cancel = {}) const;
 
  private:
   double eps_;

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/interval/interval_vector.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -48,7 +49,8 @@ bool scalar_loop_exists(const std::vector<IntervalVector>& boxes, const TubeVect
 
 // The pieces of the loop set of the scalar p (see above) at precision eps > 0 (seconds), each with
 // its existence test; chronological by t1. p and w 1-D on one TDomain (DimensionError, Error
-// otherwise).
-std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const TubeVector& w);
+// otherwise). Cancelled once `cancel` is (checked at every box of the t-plane and every piece).
+std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const TubeVector& w,
+                                     const CancelToken& cancel = {});
 
 }  // namespace sillage

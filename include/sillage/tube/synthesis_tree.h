@@ -115,7 +115,7 @@ class SynthesisTree {
   std::size_t nb_slices() const { return n_; }
   double t0() const { return t0_; }
   double tf() const { return tf_; }
-  double t(std::size_t k) const;    // t_k, Error if k > N
+  double t(std::size_t k) const;    // t_k, OutOfRangeError if k > N
   Interval slice(std::size_t k) const;  // [x](k), Error if k >= N
   bool has_empty_slice() const { return has_empty_; }
   bool has_gates() const { return has_gates_; }

@@ -77,7 +77,7 @@ class TDomain {
   }
 
   std::size_t nb_slices() const { return times_.size() - 1; }  // N
-  double t(std::size_t k) const;                 // t_k, k <= N (Error otherwise)
+  double t(std::size_t k) const;                 // t_k, k <= N (OutOfRangeError otherwise)
   std::span<const double> times() const { return times_; }
   double t0() const { return times_.front(); }
   double tf() const { return times_.back(); }
@@ -94,8 +94,9 @@ class TDomain {
   // True if t is one of the time points t_k.
   bool is_time_point(double t) const { return time_index(t) >= 0; }
 
-  Interval slice_domain(std::size_t k) const;  // [t_k, t_{k+1}]
-  // Rigorous width t_{k+1} - t_k: Interval(t_{k+1}) - Interval(t_k), outward.
+  Interval slice_domain(std::size_t k) const;  // [t_k, t_{k+1}], OutOfRangeError if k >= N
+  // Rigorous width t_{k+1} - t_k: Interval(t_{k+1}) - Interval(t_k), outward
+  // (OutOfRangeError if k >= N).
   Interval slice_width(std::size_t k) const;
 
   // Adds the time point t (inside (t_0, t_N)) and splits, in every attached

@@ -65,8 +65,8 @@ class Tube {
   const std::shared_ptr<TDomain>& tdomain() const { return td_; }
   // N, the number of slices.
   std::size_t nb_slices() const { return data_->slices.size(); }
-  const Interval& slice(std::size_t k) const;  // [x](k), Error if k >= N
-  const Interval& gate(std::size_t k) const;   // [x](t_k), Error if k > N
+  const Interval& slice(std::size_t k) const;  // [x](k), OutOfRangeError if k >= N
+  const Interval& gate(std::size_t k) const;   // [x](t_k), OutOfRangeError if k > N
   std::span<const Interval> slices() const { return data_->slices; }
   std::span<const Interval> gates() const { return data_->gates; }
   // Increases at every modification of this tube (including TDomain::sample).
@@ -87,7 +87,7 @@ class Tube {
   Interval operator()(const Interval& t) const;
 
   // Slice k := y and its two gates := y ∩ the neighbouring slice (an end
-  // gate := y).
+  // gate := y). OutOfRangeError if k >= N (set_gate: gate k := y, if k > N).
   void set(const Interval& y, std::size_t k);
   void set_gate(std::size_t k, const Interval& y);
   void set(const Interval& y);  // every slice and gate := y

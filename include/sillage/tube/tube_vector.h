@@ -38,11 +38,11 @@ class TubeVector {
   // N, the number of slices.
   std::size_t nb_slices() const { return x_.front().nb_slices(); }
 
-  // Component i, a live reference (Error if i >= size()).
+  // Component i, a live reference (OutOfRangeError if i >= size()).
   Tube& operator[](std::size_t i);
   const Tube& operator[](std::size_t i) const;
   // Component i shared: the same object as (*this)[i], alive as long as
-  // someone holds it (Error if i >= size()).
+  // someone holds it (OutOfRangeError if i >= size()).
   std::shared_ptr<Tube> shared_component(std::size_t i);
   // Components i..j (inclusive, like IntervalVector::subvector), copied.
   TubeVector subvector(std::size_t i, std::size_t j) const;

@@ -7,6 +7,7 @@
 
 #include "bindings.h"
 #include "docstrings.h"
+#include "interruptible.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/tube/tube.h"
@@ -31,34 +32,32 @@ void init_ivp(py::module_& m) {
       .def("set_tolerance", &C::set_tolerance, py::arg("tol"), DOC(CtcIvp, set_tolerance))
       .def("max_pieces", &C::max_pieces, DOC(CtcIvp, max_pieces))
       .def("set_max_pieces", &C::set_max_pieces, py::arg("m"), DOC(CtcIvp, set_max_pieces))
+      // On a worker thread: Ctrl-C (or `cancel`) stops it within an integration step.
       .def(
           "contract",
-          [](const C& c, Tube& x) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x);
+          [](const C& c, Tube& x, const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(x, t); });
           },
-          py::arg("x"), DOC(CtcIvp, contract, Tube))
+          py::arg("x"), py::arg("cancel") = nullptr, DOC(CtcIvp, contract, Tube_CancelToken))
       .def(
           "contract",
-          [](const C& c, TubeVector& x) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x);
+          [](const C& c, TubeVector& x, const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(x, t); });
           },
-          py::arg("x"), DOC(CtcIvp, contract, TubeVector))
+          py::arg("x"), py::arg("cancel") = nullptr, DOC(CtcIvp, contract, TubeVector_CancelToken))
       .def(
           "contract",
-          [](const C& c, Tube& x, const Tube& u) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, u);
+          [](const C& c, Tube& x, const Tube& u, const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(x, u, t); });
           },
-          py::arg("x"), py::arg("u"), DOC(CtcIvp, contract, Tube_Tube))
+          py::arg("x"), py::arg("u"), py::arg("cancel") = nullptr, DOC(CtcIvp, contract, Tube_Tube_CancelToken))
       .def(
           "contract",
-          [](const C& c, TubeVector& x, const TubeVector& u) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, u);
+          [](const C& c, TubeVector& x, const TubeVector& u, const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(x, u, t); });
           },
-          py::arg("x"), py::arg("u"), DOC(CtcIvp, contract, TubeVector_TubeVector))
+          py::arg("x"), py::arg("u"), py::arg("cancel") = nullptr,
+          DOC(CtcIvp, contract, TubeVector_TubeVector_CancelToken))
       .def("__repr__", [](const C& c) {
         std::ostringstream os;
         os << "CtcIvp(" << c.function() << ", nb_inputs=" << c.nb_inputs() << ", order=" << c.order() << ")";

@@ -116,7 +116,8 @@ void init_paving(py::module_& m) {
         return "<Component of " + std::to_string(c.size()) + " boxes, hull " + c.hull.str() + ">";
       });
 
-  m.def("contour", &contour, py::arg("boxes"), DOC(contour));
+  m.def("contour", [](const std::vector<IntervalVector>& boxes) { return contour(boxes); }, py::arg("boxes"),
+        DOC(contour));
   m.def("connected_components", &connected_components, py::arg("boxes"),
         py::arg("tags") = std::vector<PavingTag>{}, DOC(connected_components));
 
@@ -139,7 +140,7 @@ void init_paving(py::module_& m) {
       .def("outer_volume", &Paving::outer_volume, DOC(Paving, outer_volume))
       .def("hull", &Paving::hull, DOC(Paving, hull))
       .def("tag_at", &Paving::tag_at, py::arg("point"), DOC(Paving, tag_at))
-      .def("components", &Paving::components,
+      .def("components", [](const Paving& p) { return p.components(); },
            DOC(Paving, components))
       .def("node_box", &Paving::node_box, py::arg("i"),
            DOC(Paving, node_box))

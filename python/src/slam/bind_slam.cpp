@@ -7,6 +7,7 @@
 
 #include "bindings.h"
 #include "docstrings.h"
+#include "interruptible.h"
 #include "sillage/expr/function.h"
 #include "sillage/slam/ctc_omega.h"
 #include "sillage/slam/ctc_p_implies_z.h"
@@ -112,28 +113,30 @@ void init_slam(py::module_& m) {
       .def("set_ratio", &CtcPImpliesZ::set_ratio, py::arg("ratio"),
            DOC(CtcPImpliesZ, set_ratio))
       .def("set_max_iterations", &CtcPImpliesZ::set_max_iterations, py::arg("n"), DOC(CtcPImpliesZ, set_max_iterations))
+      // On a worker thread: Ctrl-C (or `cancel`) stops it within a t-box.
       .def(
           "contract",
-          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z) {
-            py::gil_scoped_release unlocked;
-            return c.contract(p, w, z);
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z,
+             const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(p, w, z, t); });
           },
-          py::arg("p"), py::arg("w"), py::arg("z"),
-          DOC(CtcPImpliesZ, contract, TubeVector_TubeVector_TubeVector))
+          py::arg("p"), py::arg("w"), py::arg("z"), py::arg("cancel") = nullptr,
+          DOC(CtcPImpliesZ, contract, TubeVector_TubeVector_TubeVector_CancelToken))
       .def(
           "contract",
-          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const Tube& z) {
-            py::gil_scoped_release unlocked;
-            return c.contract(p, w, z);
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const Tube& z, const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.contract(p, w, z, t); });
           },
-          py::arg("p"), py::arg("w"), py::arg("z"), DOC(CtcPImpliesZ, contract, TubeVector_TubeVector_Tube))
+          py::arg("p"), py::arg("w"), py::arg("z"), py::arg("cancel") = nullptr,
+          DOC(CtcPImpliesZ, contract, TubeVector_TubeVector_Tube_CancelToken))
       .def(
           "iterate",
-          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row) {
-            py::gil_scoped_release unlocked;
-            return c.iterate(p, w, z, row);
+          [](const CtcPImpliesZ& c, TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row,
+             const CancelToken* cancel) {
+            return run_interruptible(cancel, [&](const CancelToken& t) { return c.iterate(p, w, z, row, t); });
           },
-          py::arg("p"), py::arg("w"), py::arg("z"), py::arg("row"), DOC(CtcPImpliesZ, iterate))
+          py::arg("p"), py::arg("w"), py::arg("z"), py::arg("row"), py::arg("cancel") = nullptr,
+          DOC(CtcPImpliesZ, iterate))
       .def("__repr__", [](const CtcPImpliesZ& c) {
         return "CtcPImpliesZ(eps=" + py::repr(py::float_(c.eps())).cast<std::string>() +
                ", fast=" + (c.fast() ? "True" : "False") + ")";

@@ -201,14 +201,19 @@ void init_tdomain(py::module_& m) {
            DOC(TDomain, TDomain, double_double_double))
       .def(py::init<std::vector<double>>(), py::arg("times"), DOC(TDomain, TDomain, vector_double))
       .def("nb_slices", &TDomain::nb_slices, DOC(TDomain, nb_slices))
-      .def("t", &TDomain::t, py::arg("k"), DOC(TDomain, t))
+      .def("t", [](const TDomain& td, py::ssize_t k) { return td.t(index_arg(k, "TDomain.t", "index")); }, py::arg("k"),
+           DOC(TDomain, t))
       .def("t0_tf", &TDomain::t0_tf, DOC(TDomain, t0_tf))
       .def("times", [](const TDomain& td) { return std::vector<double>(td.times().begin(), td.times().end()); },
            "The N+1 time points as a list of floats.")
       .def("slice_index", &TDomain::slice_index, py::arg("t"),
            DOC(TDomain, slice_index))
-      .def("slice_domain", &TDomain::slice_domain, py::arg("k"), DOC(TDomain, slice_domain))
-      .def("slice_width", &TDomain::slice_width, py::arg("k"), DOC(TDomain, slice_width))
+      .def("slice_domain",
+           [](const TDomain& td, py::ssize_t k) { return td.slice_domain(index_arg(k, "TDomain.slice_domain", "slice")); },
+           py::arg("k"), DOC(TDomain, slice_domain))
+      .def("slice_width",
+           [](const TDomain& td, py::ssize_t k) { return td.slice_width(index_arg(k, "TDomain.slice_width", "slice")); },
+           py::arg("k"), DOC(TDomain, slice_width))
       .def("is_time_point", &TDomain::is_time_point, py::arg("t"), DOC(TDomain, is_time_point))
       .def("time_index", &TDomain::time_index, py::arg("t"), DOC(TDomain, time_index))
       .def("sample", py::overload_cast<double>(&TDomain::sample), py::arg("t"),
@@ -284,7 +289,8 @@ void init_tube_class(py::module_& m) {
           py::arg("k"), py::arg("y"), "Gate k := y (not checked against the slices).")
       .def("codomain", &T::codomain, DOC(Tube, codomain))
       .def("volume", &T::volume, DOC(Tube, volume))
-      .def("thickness", &T::thickness, py::arg("k"), DOC(Tube, thickness))
+      .def("thickness", [](const T& x, py::ssize_t k) { return x.thickness(index_arg(k, "Tube.thickness", "slice")); },
+           py::arg("k"), DOC(Tube, thickness))
       .def("max_thickness", &T::max_thickness, DOC(Tube, max_thickness))
       .def("is_empty", &T::is_empty, DOC(Tube, is_empty))
       .def("is_subset", &T::is_subset, py::arg("y"), DOC(Tube, is_subset))
@@ -477,8 +483,10 @@ void init_tube_vector(py::module_& m) {
            },
            py::arg("i"), py::arg("x"), "Component i := a copy of the tube x (same TDomain).")
       .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), DOC(TubeVector, subvector))
-      .def("slice", &V::slice, py::arg("k"), DOC(TubeVector, slice))
-      .def("gate", &V::gate, py::arg("k"), DOC(TubeVector, gate))
+      .def("slice", [](const V& v, py::ssize_t k) { return v.slice(index_arg(k, "TubeVector.slice", "slice")); },
+           py::arg("k"), DOC(TubeVector, slice))
+      .def("gate", [](const V& v, py::ssize_t k) { return v.gate(index_arg(k, "TubeVector.gate", "gate")); },
+           py::arg("k"), DOC(TubeVector, gate))
       .def("__call__", py::overload_cast<double>(&V::operator(), py::const_), py::arg("t"),
            DOC(TubeVector, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&V::operator(), py::const_), py::arg("t"))
@@ -537,7 +545,10 @@ void init_tube_vector(py::module_& m) {
           py::arg("y"), py::arg("k") = py::none(), py::kw_only(), py::arg("t") = py::none(),
           "Tube.set component-wise with a box y: set(y), set(y, k) (slice index), set(y, t=t) (the gate at\n"
           "time t, sampling the TDomain at t if needed).")
-      .def("set_gate", &V::set_gate, py::arg("k"), py::arg("y"), DOC(TubeVector, set_gate))
+      .def(
+          "set_gate",
+          [](V& v, py::ssize_t k, const IntervalVector& y) { v.set_gate(index_arg(k, "TubeVector.set_gate", "gate"), y); },
+          py::arg("k"), py::arg("y"), DOC(TubeVector, set_gate))
       .def(py::self == py::self)
       .def(py::self != py::self)
       .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),

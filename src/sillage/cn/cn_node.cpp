@@ -30,6 +30,11 @@ bool NodeRun::has_derivative(const AtomRange& x, const AtomRange& v) const {
   return false;
 }
 
+const CancelToken& NodeRun::cancel_token() const {
+  static const CancelToken never;  // no one holds it to cancel it
+  return cancel ? *cancel : never;
+}
+
 std::size_t CnNode::range_of(std::size_t pos) const {
   std::size_t g = ranges_.size() - 1;
   while (offsets_[g] > pos) --g;

@@ -253,11 +253,26 @@ void ContractorNetwork::check_layouts_after(const CnNode& node) const {
   }
 }
 
-void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node, const NodeRun& run) const {
+void ContractorNetwork::set_ctc_name(std::size_t i, const std::string& name) {
+  if (i >= nodes_.size())
+    throw Error("ContractorNetwork::set_ctc_name: no contractor " + std::to_string(i) + " (" +
+                std::to_string(nodes_.size()) + " added)");
+  if (name.empty()) throw Error("ContractorNetwork::set_ctc_name: empty name");
+  if (ctc_names_.size() <= i) ctc_names_.resize(i + 1);
+  ctc_names_[i] = name;
+}
+
+std::string ContractorNetwork::describe_node(std::size_t i) const {
+  const std::string d = nodes_[i]->describe();
+  return i < ctc_names_.size() && !ctc_names_[i].empty() ? d + " (" + ctc_names_[i] + ")" : d;
+}
+
+void ContractorNetwork::explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const {
+  const CnNode& node = *nodes_[i];
   if (node.ranges().empty()) {
     s.empty = true;
-    s.empty_contractor = node.describe();
-    s.emptiness = node.describe() + " found no solution";
+    s.empty_contractor = describe_node(i);
+    s.emptiness = s.empty_contractor + " found no solution";
     return;
   }
   // The atom the node names, else its first empty atom, else its first domain.
@@ -272,7 +287,7 @@ void ContractorNetwork::explain_node_empty(ContractStats& s, const CnNode& node,
     }
     if (g == node.ranges().size()) g = 0;
   }
-  explain_empty(s, node.ranges()[g].domain, a, node.describe(), run.empty_time);
+  explain_empty(s, node.ranges()[g].domain, a, describe_node(i), run.empty_time);
 }
 
 void ContractorNetwork::set_budget(const Budget& budget) {
@@ -323,14 +338,20 @@ ContractStats ContractorNetwork::contract() {
       dirty_->take(i, dirty);
       NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
       run.derivatives = derivatives;
+      run.cancel = &budget_.cancel;
       fresh[i] = 0;
-      meter.add();
+      try {
+        meter.add();
+      } catch (const BudgetExceeded&) {
+        stopped_stats_ = finish();  // the runs done: the summary of a stopped solve
+        throw;
+      }
       ++stats.contractor_calls;
       const bool ok = node.run(run);
       order.ran(i, changed.size(), node.nb_atoms());
       check_layouts_after(node);
       if (!ok) {
-        explain_node_empty(stats, node, run);
+        explain_node_empty(stats, i, run);
         stats.empty_node = i;
         return finish();
       }

@@ -43,13 +43,16 @@ bool meet(detail::LohnerSet& set, const IntervalVector& known) {
 }
 
 // From t_from to t_to (a slice) in steps that end exactly at t_to; `range`
-// receives the hull of the enclosures over the steps.
+// receives the hull of the enclosures over the steps. The token is checked
+// at every step: a slice may take many.
 Crossing cross_slice(const IvpStepper& stepper, LohnerSet& set, double t_from, double t_to, const IntervalVector& u,
-                     const IntervalVector& slice, double sign, double tol, IntervalVector& range) {
+                     const IntervalVector& slice, double sign, double tol, IntervalVector& range,
+                     const CancelToken& cancel) {
   double tau = t_from;
   double hs = stepper.suggest(set, u, sign, tol);
   int guard = 0;
   while (tau != t_to) {
+    check_cancel(cancel, "CtcIvp::contract");
     if (!(hs > 0.0) || ++guard > 100000) return Crossing::Lost;
     const double rem = std::abs(t_to - tau);
     const double next = hs >= 0.95 * rem ? t_to : tau + sign * hs;
@@ -73,10 +76,17 @@ void set_empty(TubeVector& x) {
 }
 
 // Intersects gates and slices of x with enclosures, remembering which
-// components changed; finish() touches them.
+// components changed; touches them when it goes, a cancelled sweep too.
 class TubeWriter {
  public:
   explicit TubeWriter(TubeVector& x) : x_(x), changed_(x.size(), false) {}
+  ~TubeWriter() {
+    for (std::size_t i = 0; i < x_.size(); ++i) {
+      if (changed_[i]) x_[i].touch();
+    }
+  }
+  TubeWriter(const TubeWriter&) = delete;
+  TubeWriter& operator=(const TubeWriter&) = delete;
   void write(bool gate, std::size_t k, const IntervalVector& v) {
     for (std::size_t i = 0; i < x_.size(); ++i) {
       Interval& cur = gate ? x_[i].data().gates[k] : x_[i].data().slices[k];
@@ -87,12 +97,6 @@ class TubeWriter {
       }
     }
   }
-  void finish() {
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-      if (changed_[i]) x_[i].touch();
-    }
-  }
-
  private:
   TubeVector& x_;
   std::vector<bool> changed_;
@@ -134,13 +138,13 @@ void CtcIvp::set_tolerance(double tol) {
   tol_ = tol;
 }
 
-bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory) const {
+bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpMemory* memory,
+                   const CancelToken& cancel) const {
   const std::size_t n = x.size(), N = x.nb_slices();
   const TDomain& td = *x.tdomain();
   const IvpStepper stepper(*ode_, order_);
   TubeWriter writer(x);
   auto write = [&](bool gate, std::size_t k, const IntervalVector& v) { writer.write(gate, k, v); };
-  auto finish = [&] { writer.finish(); };
   detail::LohnerSet set;
   bool active = false;
   // With a memory: resume at the first step whose tubes changed.
@@ -160,9 +164,9 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpM
     const std::size_t k = sign > 0 ? j : N - j;
     if (arriving) (*arriving)[j] = active ? std::optional<LohnerSet>(set) : std::nullopt;
     const IntervalVector g = x.gate(k);
-    if (g.is_empty()) return finish(), false;
+    if (g.is_empty()) return false;
     if (active) {
-      if (!meet(set, g)) return finish(), false;
+      if (!meet(set, g)) return false;
       write(true, k, set.box);
     } else if (!g.is_unbounded()) {
       set = LohnerSet::from_box(g, u != nullptr && nb_inputs() > 0);
@@ -174,16 +178,15 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpM
     const IntervalVector slice = x.slice(s);
     IntervalVector range = IntervalVector::empty(n);
     const double to = sign > 0 ? td.t(k + 1) : td.t(k - 1);
-    switch (cross_slice(stepper, set, td.t(k), to, us, slice, sign, tol_, range)) {
+    switch (cross_slice(stepper, set, td.t(k), to, us, slice, sign, tol_, range, cancel)) {
       case Crossing::Lost: active = false; break;
-      case Crossing::Empty: return finish(), false;
+      case Crossing::Empty: return false;
       case Crossing::Done:
         write(false, s, range);
-        if (x.slice(s).is_empty()) return finish(), false;
+        if (x.slice(s).is_empty()) return false;
         break;
     }
   }
-  finish();
   return true;
 }
 
@@ -192,7 +195,7 @@ void CtcIvp::set_max_pieces(std::size_t m) {
   max_pieces_ = m;
 }
 
-bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const {
+bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign, const CancelToken& cancel) const {
   const std::size_t n = x.size(), N = x.nb_slices();
   const TDomain& td = *x.tdomain();
   const IvpStepper stepper(*ode_, order_);
@@ -232,7 +235,7 @@ bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const
       const IntervalVector us = u ? u->slice(s) : IntervalVector(0);
       const double to = sign > 0 ? td.t(k + 1) : td.t(k - 1);
       IntervalVector r = IntervalVector::empty(n);
-      const Crossing c = cross_slice(stepper, set, td.t(k), to, us, x.slice(s), sign, tol_, r);
+      const Crossing c = cross_slice(stepper, set, td.t(k), to, us, x.slice(s), sign, tol_, r, cancel);
       if (c == Crossing::Empty) break;
       if (c == Crossing::Lost) {
         if (p.budget >= 2 && width0 > 0.0) {
@@ -261,13 +264,12 @@ bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign) const
   for (std::size_t j = start; j <= limit; ++j) {
     const std::size_t k = gate_index(j);
     writer.write(true, k, gates[j]);
-    if (x.gate(k).is_empty()) return writer.finish(), false;
+    if (x.gate(k).is_empty()) return false;
     if (j == limit) break;
     const std::size_t s = sign > 0 ? k : k - 1;
     writer.write(false, s, slices[j]);
-    if (x.slice(s).is_empty()) return writer.finish(), false;
+    if (x.slice(s).is_empty()) return false;
   }
-  writer.finish();
   return true;
 }
 
@@ -288,39 +290,45 @@ void CtcIvp::check(const TubeVector& x, const TubeVector* u) const {
   if (u->tdomain() != x.tdomain()) throw DimensionError("CtcIvp::contract: x and u are not on the same TDomain");
 }
 
-bool CtcIvp::contract(TubeVector& x, const TubeVector& u) const {
+bool CtcIvp::contract(TubeVector& x, const TubeVector& u, const CancelToken& cancel) const {
   check(x, &u);
-  return contract_impl(x, &u, nullptr);
+  return contract_impl(x, &u, nullptr, cancel);
 }
 
-bool CtcIvp::contract(TubeVector& x) const {
+bool CtcIvp::contract(TubeVector& x, const CancelToken& cancel) const {
   check(x, nullptr);
-  return contract_impl(x, nullptr, nullptr);
+  return contract_impl(x, nullptr, nullptr, cancel);
 }
 
-bool CtcIvp::contract(Tube& x) const {
+bool CtcIvp::contract(Tube& x, const CancelToken& cancel) const {
   TubeVector xv(std::vector<Tube>{x});
-  const bool ok = contract(xv);
+  const bool ok = contract(xv, cancel);
   x &= xv[0];
   return ok && !x.is_empty();
 }
 
-bool CtcIvp::contract(Tube& x, const Tube& u) const {
+bool CtcIvp::contract(Tube& x, const Tube& u, const CancelToken& cancel) const {
   TubeVector xv(std::vector<Tube>{x});
   const TubeVector uv(std::vector<Tube>{u});
-  const bool ok = contract(xv, uv);
+  const bool ok = contract(xv, uv, cancel);
   x &= xv[0];
   return ok && !x.is_empty();
 }
 
-bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory) const {
+bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory* memory,
+                           const CancelToken& cancel) const {
   bool ok = true;
   // With pieces the memory (one set per gate) does not apply: a full run.
   const auto run = [&](double sign) {
-    return max_pieces_ > 1 ? sweep_pieces(x, u, sign) : sweep(x, u, sign, memory);
+    return max_pieces_ > 1 ? sweep_pieces(x, u, sign, cancel) : sweep(x, u, sign, memory, cancel);
   };
-  if (has(propag_, TimePropag::FORWARD)) ok = run(1.0);
-  if (ok && has(propag_, TimePropag::BACKWARD)) ok = run(-1.0);
+  try {
+    if (has(propag_, TimePropag::FORWARD)) ok = run(1.0);
+    if (ok && has(propag_, TimePropag::BACKWARD)) ok = run(-1.0);
+  } catch (...) {  // Cancelled: a sweep cut short left sets in memory that x does not match
+    if (memory) memory->forget();
+    throw;
+  }
   if (!ok) set_empty(x);
   if (memory) {
     if (ok) {
@@ -332,9 +340,10 @@ bool CtcIvp::contract_impl(TubeVector& x, const TubeVector* u, detail::IvpMemory
   return ok;
 }
 
-bool CtcIvp::contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory) const {
+bool CtcIvp::contract(TubeVector& x, const TubeVector* u, detail::IvpMemory& memory,
+                      const CancelToken& cancel) const {
   check(x, u);
-  return contract_impl(x, u, &memory);
+  return contract_impl(x, u, &memory, cancel);
 }
 
 std::size_t CtcIvp::nb_states() const { return ode_->nb_states(); }

@@ -4,7 +4,8 @@
 // known better starts the integration again from it), and re-integrates
 // only from the first change forward and from the last one backward: the
 // node remembers its last run (ivp_memory.h), behind a mutex since a node
-// may be shared; the memory checks itself, a stale one is never used.
+// may be shared; the memory checks itself, a stale one is never used. The
+// network's cancel token stops a run within one integration step.
 #include <memory>
 #include <mutex>
 #include <string>
@@ -40,11 +41,11 @@ class IvpNode : public TubeNode {
     {
       const std::lock_guard<std::mutex> lock(*mutex_);
       if (u_.empty()) {
-        ok = ctc_.contract(x, nullptr, *memory_);
+        ok = ctc_.contract(x, nullptr, *memory_, r.cancel_token());
       } else {
         for (const auto& d : u_) us.push_back(d->tube());
         const TubeVector u(std::move(us));
-        ok = ctc_.contract(x, &u, *memory_);
+        ok = ctc_.contract(x, &u, *memory_, r.cancel_token());
       }
     }
     for (std::size_t i = 0; i < x_.size(); ++i) {

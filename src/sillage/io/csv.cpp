@@ -5,14 +5,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <span>
 #include <string_view>
 #include <unordered_map>
 
 #include "sillage/error.h"
+#include "sillage/read_file.h"
 #include "sillage/text_utf8.h"
 
 namespace sillage {
@@ -171,20 +170,7 @@ bool plain_row(std::string_view text, std::size_t& at, std::size_t n, double* ou
 }  // namespace
 
 CsvTable CsvTable::read(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error("CsvTable::read: " + path + " is a folder, not a CSV file");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error("CsvTable::read: cannot open " + path);
-  // One read of the whole file (a stream buffer grows and copies it twice).
-  const std::streamoff size = in.tellg();
-  std::string text;
-  if (size > 0) {
-    text.resize(static_cast<std::size_t>(size));
-    in.seekg(0);
-    in.read(text.data(), size);
-  }
-  if (size < 0 || !in) throw Error("CsvTable::read: cannot read " + path);
-  return parse(text, path);
+  return parse(read_file_bytes(path, "CsvTable::read", "a CSV file"), path);
 }
 
 CsvTable CsvTable::parse(const std::string& text, const std::string& source) {

@@ -191,9 +191,9 @@ DegreeResult degree_of(const std::vector<ContourLoop>& loops, const PlaneFunctio
   return result;
 }
 
-std::vector<ContourLoop> loops_of(const std::vector<IntervalVector>& boxes) {
+std::vector<ContourLoop> loops_of(const std::vector<IntervalVector>& boxes, const CancelToken& cancel) {
   if (boxes.empty()) throw Error("topological_degree: no box (the region is empty)");
-  std::vector<ContourLoop> loops = contour(boxes);
+  std::vector<ContourLoop> loops = contour(boxes, cancel);
   if (loops.empty()) throw Error("topological_degree: the boxes have no interior, the region has no boundary");
   return loops;
 }
@@ -209,12 +209,12 @@ DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const Pla
 DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                 const DegreeOptions& options) {
   BudgetMeter meter(options.budget, "topological_degree");
-  return degree_of(loops_of(boxes), f, options, meter);
+  return degree_of(loops_of(boxes, meter.cancel()), f, options, meter);
 }
 
 DegreeResult detail::topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                         const DegreeOptions& options, BudgetMeter& meter) {
-  return degree_of(loops_of(boxes), f, options, meter);
+  return degree_of(loops_of(boxes, meter.cancel()), f, options, meter);
 }
 
 }  // namespace sillage

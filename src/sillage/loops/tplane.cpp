@@ -65,7 +65,7 @@ void TPlane::compute_detections(double eps, const TubeVector& p, const TubeVecto
 void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
   Paving paving = detail::build_loop_paving(f, domain_, eps, budget, "TPlane::compute_detections");
   std::vector<Loop> loops;
-  for (Component& c : paving.components()) {
+  for (Component& c : paving.components(budget.cancel)) {
     Loop l;
     l.boxes_ = std::move(c.boxes);
     l.nb_inner_ = c.count(PavingTag::Inner);

@@ -113,9 +113,13 @@ std::string ContourLoop::str() const {
   return os.str();
 }
 
-std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
+std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes, const CancelToken& cancel) {
+  const auto check = [&](std::size_t i) {
+    if (i % 1024 == 0) check_cancel(cancel, "contour");
+  };
   std::vector<Side> vertical, horizontal;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
+    check(i);
     const IntervalVector& b = boxes[i];
     if (b.size() != 2) {
       throw DimensionError("contour: box " + std::to_string(i) + " has dimension " + std::to_string(b.size()) +
@@ -131,7 +135,9 @@ std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
   }
   std::vector<RawEdge> edges;
   boundary_pieces(vertical, true, edges);
+  check(0);  // between the sorts, each of tens of milliseconds on 10^5 boxes
   boundary_pieces(horizontal, false, edges);
+  check(0);
 
   // Deterministic edge order: by start point, then direction.
   std::sort(edges.begin(), edges.end(), [](const RawEdge& e, const RawEdge& f) {
@@ -141,6 +147,7 @@ std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
   // next[e]: the outgoing edge at e.b with the rightmost turn (right, straight, left).
   std::vector<std::size_t> next(m), prev_count(m, 0);
   for (std::size_t e = 0; e < m; ++e) {
+    check(e);
     auto lo = std::lower_bound(edges.begin(), edges.end(), edges[e].b,
                                [](const RawEdge& f, const Point2& p) { return point_less(f.a, p); });
     std::size_t best = m;
@@ -169,6 +176,7 @@ std::vector<ContourLoop> contour(const std::vector<IntervalVector>& boxes) {
   std::vector<ContourLoop> loops;
   std::vector<bool> used(m, false);
   for (std::size_t s = 0; s < m; ++s) {
+    check(s);
     if (used[s]) continue;
     std::vector<std::size_t> cycle;
     for (std::size_t e = s; !used[e]; e = next[e]) {

@@ -125,7 +125,7 @@ std::vector<std::size_t> Paving::leaves_intersecting(const IntervalVector& x) co
   return r;
 }
 
-std::vector<Component> Paving::components() const {
+std::vector<Component> Paving::components(const CancelToken& cancel) const {
   // Union-find over the outer leaves; neighbours found by tree descent.
   std::vector<std::size_t> leaves;
   std::vector<std::size_t> slot(nodes_.size(), nodes_.size());
@@ -145,6 +145,7 @@ std::vector<Component> Paving::components() const {
   }
   detail::DisjointSets sets(leaves.size());
   for (std::size_t k = 0; k < leaves.size(); ++k) {
+    if (k % 1024 == 0) check_cancel(cancel, "Paving::components");
     for (std::size_t j : leaves_intersecting(boxes[k])) {
       if (slot[j] != nodes_.size() && slot[j] > k) sets.unite(k, slot[j]);
     }

@@ -52,7 +52,7 @@ bool OmegaHull::apply_to(TubeVector& p, std::size_t* nb_shrunk, double ratio) co
 }
 
 OmegaHull CtcOmega::hull(const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w,
-                         TubeVector& work) const {
+                         TubeVector& work, const CancelToken& cancel) const {
   const char* where = "CtcOmega::hull(boxes, p, w, work)";
   check_boxes(boxes, where);
   if (work.size() != p.size() || work.tdomain() != p.tdomain() || work.nb_slices() != p.nb_slices()) {
@@ -83,6 +83,7 @@ OmegaHull CtcOmega::hull(const std::vector<IntervalVector>& boxes, const TubeVec
   for (std::size_t j = 0, idx = 0; j < m; ++j, idx = (idx + stride) % m) {
     const IntervalVector& box = boxes[idx];
     if (out.nb_consistent > 0 && cand.empty()) break;
+    check_cancel(cancel, "CtcOmega::hull");
     for (auto& l : logged) l.clear();
     std::vector<TubeChanges> logs;
     for (auto& l : logged) logs.emplace_back(l, 0, 0.0);

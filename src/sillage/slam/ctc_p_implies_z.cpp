@@ -52,7 +52,8 @@ void check(const TubeVector& p, const TubeVector& w, const TubeVector& z, const 
 }
 
 // Ω ∩ 𝕋_z: the outer kernel SIVIA of (7.17) on each box of Ω.
-std::vector<IntervalVector> intersect_tz(const std::vector<IntervalVector>& omega, const TubeVector& z, double eps) {
+std::vector<IntervalVector> intersect_tz(const std::vector<IntervalVector>& omega, const TubeVector& z, double eps,
+                                         const CancelToken& cancel) {
   const Interval dom = z.tdomain()->t0_tf();
   const KernelBounds fz = [&z, &dom](const IntervalVector& t) {
     const IntervalVector d = z(t[0] & dom) - z(t[1] & dom);
@@ -60,6 +61,7 @@ std::vector<IntervalVector> intersect_tz(const std::vector<IntervalVector>& omeg
   };
   SiviaOptions o;
   o.parallel = false;  // components already run in parallel
+  o.budget.cancel = cancel;
   std::vector<IntervalVector> out;
   for (const IntervalVector& b : omega) {
     const Paving pv = kernel_sivia(b, fz, eps, o);
@@ -76,12 +78,13 @@ IntervalVector hull_of(const std::vector<IntervalVector>& boxes) {
 
 // Planar p: the t-plane (7.28) and the degree test 𝒯 on each Ω_i as detected.
 std::vector<std::vector<IntervalVector>> planar_proofs(double eps, const TubeVector& p, const TubeVector& w,
-                                                       SlamRow& row) {
+                                                       SlamRow& row, const CancelToken& cancel) {
   TPlane tp(p.tdomain());
-  tp.compute_detections(eps, p, w);
+  tp.compute_detections(eps, p, w, Budget{.cancel = cancel});
   ProofOptions po;
   po.newton = false;  // the degree test 𝒯 is the existence test of Alg. 13
   po.count = false;
+  po.budget.cancel = cancel;
   tp.compute_proofs(p, w, po);
   row.nb_detections = tp.nb_complete_detections();
   row.nb_proofs = tp.nb_proofs();
@@ -94,9 +97,9 @@ std::vector<std::vector<IntervalVector>> planar_proofs(double eps, const TubeVec
 
 // Scalar p: the pieces of scalar_loops.h and their sign-change test.
 std::vector<std::vector<IntervalVector>> scalar_proofs(double eps, const TubeVector& p, const TubeVector& w,
-                                                       SlamRow& row) {
+                                                       SlamRow& row, const CancelToken& cancel) {
   std::vector<std::vector<IntervalVector>> out;
-  for (ScalarLoop& l : scalar_loops(eps, p, w)) {
+  for (ScalarLoop& l : scalar_loops(eps, p, w, cancel)) {
     ++row.nb_detections;
     if (l.proven) out.push_back(std::move(l.boxes));
   }
@@ -122,20 +125,21 @@ void CtcPImpliesZ::set_max_iterations(std::size_t n) {
   max_iterations_ = n;
 }
 
-bool CtcPImpliesZ::iterate(TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row) const {
+bool CtcPImpliesZ::iterate(TubeVector& p, const TubeVector& w, const TubeVector& z, SlamRow& row,
+                           const CancelToken& cancel) const {
   check(p, w, z, "CtcPImpliesZ::iterate(p, w, z)");
   row.fast = fast_;
   if (p.is_empty()) return false;
   // 1-2. Detections and their existence tests: the proven t-sets.
   const std::vector<std::vector<IntervalVector>> proven =
-      p.size() == 2 ? planar_proofs(eps_, p, w, row) : scalar_proofs(eps_, p, w, row);
+      p.size() == 2 ? planar_proofs(eps_, p, w, row, cancel) : scalar_proofs(eps_, p, w, row, cancel);
   // 3-4. Per proven component, against the tube as it is now.
   const TubeVector ref = p;
   const CtcOmega omega;
   std::vector<OmegaHull> hulls(proven.size());
   tbb::enumerable_thread_specific<std::optional<TubeVector>> works;
   tbb::parallel_for(std::size_t{0}, proven.size(), [&](std::size_t i) {
-    std::vector<IntervalVector> boxes = intersect_tz(proven[i], z, eps_);
+    std::vector<IntervalVector> boxes = intersect_tz(proven[i], z, eps_, cancel);
     if (boxes.empty()) {
       hulls[i].empty = true;  // the proven loop is nowhere in 𝕋_z
       return;
@@ -143,7 +147,7 @@ bool CtcPImpliesZ::iterate(TubeVector& p, const TubeVector& w, const TubeVector&
     if (fast_) boxes = {hull_of(boxes)};
     auto& work = works.local();
     if (!work) work.emplace(ref);
-    hulls[i] = omega.hull(boxes, ref, w, *work);
+    hulls[i] = omega.hull(boxes, ref, w, *work, cancel);
   });
   std::size_t nb_shrunk = 0;
   for (const OmegaHull& h : hulls) {
@@ -153,7 +157,8 @@ bool CtcPImpliesZ::iterate(TubeVector& p, const TubeVector& w, const TubeVector&
   return nb_shrunk > 0;
 }
 
-std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, const TubeVector& z) const {
+std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, const TubeVector& z,
+                                            const CancelToken& cancel) const {
   check(p, w, z, "CtcPImpliesZ::contract(p, w, z)");
   using clock = std::chrono::steady_clock;
   const std::size_t n = p.nb_slices();
@@ -164,7 +169,7 @@ std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, 
     SlamRow row;
     row.iteration = it;
     const auto start = clock::now();
-    const bool shrunk = iterate(p, w, z, row);
+    const bool shrunk = iterate(p, w, z, row, cancel);
     row.seconds = std::chrono::duration<double>(clock::now() - start).count();
     cumulated += row.seconds;
     row.cumulated_seconds = cumulated;
@@ -176,8 +181,9 @@ std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, 
   return rows;
 }
 
-std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, const Tube& z) const {
-  return contract(p, w, TubeVector(std::vector<Tube>{z}));
+std::vector<SlamRow> CtcPImpliesZ::contract(TubeVector& p, const TubeVector& w, const Tube& z,
+                                            const CancelToken& cancel) const {
+  return contract(p, w, TubeVector(std::vector<Tube>{z}), cancel);
 }
 
 }  // namespace sillage

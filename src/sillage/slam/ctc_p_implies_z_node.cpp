@@ -2,7 +2,8 @@
 // with p and w 2-D or 1-D and z of any dimension, all on one TDomain. A run takes
 // C_{p⇒z} to its fixed point on copies of the tubes (its own cost, the
 // t-plane, dwarfs the copy) and intersects p with the result, reporting the
-// slices and gates that shrank.
+// slices and gates that shrank. The network's cancel token stops a run
+// within one t-box.
 #include <string>
 
 #include "sillage/cn/tube_node.h"
@@ -29,7 +30,7 @@ class PImpliesZNode : public TubeNode {
 
   bool run(NodeRun& r) const override {
     TubeVector p = vector_of(p_), w = vector_of(w_), z = vector_of(z_);
-    ctc_.contract(p, w, z);
+    ctc_.contract(p, w, z, r.cancel_token());
     for (std::size_t i = 0; i < p_.size(); ++i) {
       const Tube& pi = p[i];
       if (!contract_tube(r, i, [&](Tube& x) {

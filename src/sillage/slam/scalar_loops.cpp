@@ -70,13 +70,13 @@ bool scalar_loop_exists(const std::vector<IntervalVector>& boxes, const TubeVect
   return sign_change(boxes, LoopFunction(p2, w2));
 }
 
-std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const TubeVector& w) {
+std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const TubeVector& w, const CancelToken& cancel) {
   check(p, w, "scalar_loops(eps, p, w)");
   if (!(eps > 0.0) || std::isinf(eps)) throw Error("scalar_loops(eps, p, w): eps must be positive and finite, not " + number_text(eps));
   if (p.is_empty() || w.is_empty()) return {};
   const TubeVector p2 = planar(p), w2 = planar(w);
   TPlane tp(p.tdomain());
-  tp.compute_detections(eps, p2, w2);
+  tp.compute_detections(eps, p2, w2, Budget{.cancel = cancel});
   // Columns of t1, eps wide, of the boxes strictly above the diagonal.
   const double t0 = p.tdomain()->t0();
   std::map<long, std::vector<IntervalVector>> columns;
@@ -89,6 +89,7 @@ std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const Tube
   std::vector<ScalarLoop> out;
   for (const auto& [column, boxes] : columns) {
     for (Component& c : connected_components(boxes)) {
+      check_cancel(cancel, "scalar_loops");
       ScalarLoop l;
       l.hull = c.hull;
       l.boxes = std::move(c.boxes);

@@ -84,7 +84,7 @@ SynthesisTree::View SynthesisTree::view(const char* where) const {
 double SynthesisTree::t(std::size_t k) const {
   const View d = view("SynthesisTree::t(k)");
   if (k > n_) {
-    throw Error("SynthesisTree::t(k): index " + std::to_string(k) + " out of range [0, " + std::to_string(n_) + "]");
+    throw OutOfRangeError("SynthesisTree::t(k): index " + std::to_string(k) + " out of range [0, " + std::to_string(n_) + "]");
   }
   return d.times[k];
 }
@@ -92,7 +92,7 @@ double SynthesisTree::t(std::size_t k) const {
 Interval SynthesisTree::slice(std::size_t k) const {
   const View d = view("SynthesisTree::slice(k)");
   if (k >= n_) {
-    throw Error("SynthesisTree::slice(k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(n_) +
+    throw OutOfRangeError("SynthesisTree::slice(k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(n_) +
                 ")");
   }
   return d.slices[k];
@@ -183,7 +183,7 @@ Interval SynthesisTree::slice_hull(std::size_t first, std::size_t last) const {
   if (first > last) return Interval::empty();
   const View d = view("SynthesisTree::slice_hull");
   if (last >= n_) {
-    throw Error("SynthesisTree::slice_hull: slice " + std::to_string(last) + " out of range [0, " +
+    throw OutOfRangeError("SynthesisTree::slice_hull: slice " + std::to_string(last) + " out of range [0, " +
                 std::to_string(n_) + ")");
   }
   return hull(d, has_gates_ ? slice_nodes_ : eval_nodes_, false, first, last);

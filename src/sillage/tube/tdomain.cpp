@@ -75,7 +75,7 @@ TDomain::TDomain(std::vector<double> times) : times_(std::move(times)) {
 
 double TDomain::t(std::size_t k) const {
   if (k >= times_.size()) {
-    throw Error("TDomain::t(k): index " + std::to_string(k) + " out of range [0, " +
+    throw OutOfRangeError("TDomain::t(k): index " + std::to_string(k) + " out of range [0, " +
                 std::to_string(nb_slices()) + "]");
   }
   return times_[k];
@@ -99,7 +99,7 @@ std::ptrdiff_t TDomain::time_index(double t) const {
 
 Interval TDomain::slice_domain(std::size_t k) const {
   if (k >= nb_slices()) {
-    throw Error("TDomain::slice_domain(k): slice " + std::to_string(k) + " out of range [0, " +
+    throw OutOfRangeError("TDomain::slice_domain(k): slice " + std::to_string(k) + " out of range [0, " +
                 std::to_string(nb_slices()) + ")");
   }
   return {times_[k], times_[k + 1]};
@@ -107,7 +107,7 @@ Interval TDomain::slice_domain(std::size_t k) const {
 
 Interval TDomain::slice_width(std::size_t k) const {
   if (k >= nb_slices()) {
-    throw Error("TDomain::slice_width(k): slice " + std::to_string(k) + " out of range [0, " +
+    throw OutOfRangeError("TDomain::slice_width(k): slice " + std::to_string(k) + " out of range [0, " +
                 std::to_string(nb_slices()) + ")");
   }
   return Interval(times_[k + 1]) - Interval(times_[k]);

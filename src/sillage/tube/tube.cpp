@@ -178,7 +178,7 @@ Tube& Tube::operator=(const Tube& x) {
 
 const Interval& Tube::slice(std::size_t k) const {
   if (k >= nb_slices()) {
-    throw Error("Tube::slice(k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(nb_slices()) +
+    throw OutOfRangeError("Tube::slice(k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(nb_slices()) +
                 ")");
   }
   return data_->slices[k];
@@ -186,7 +186,7 @@ const Interval& Tube::slice(std::size_t k) const {
 
 const Interval& Tube::gate(std::size_t k) const {
   if (k > nb_slices()) {
-    throw Error("Tube::gate(k): gate " + std::to_string(k) + " out of range [0, " + std::to_string(nb_slices()) +
+    throw OutOfRangeError("Tube::gate(k): gate " + std::to_string(k) + " out of range [0, " + std::to_string(nb_slices()) +
                 "]");
   }
   return data_->gates[k];
@@ -253,7 +253,7 @@ std::size_t Tube::memory_bytes() const {
 void Tube::set(const Interval& y, std::size_t k) {
   const std::size_t n = nb_slices();
   if (k >= n) {
-    throw Error("Tube::set(y, k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(n) + ")");
+    throw OutOfRangeError("Tube::set(y, k): slice " + std::to_string(k) + " out of range [0, " + std::to_string(n) + ")");
   }
   data_->slices[k] = y;
   data_->gates[k] = k > 0 ? y & data_->slices[k - 1] : y;
@@ -263,7 +263,7 @@ void Tube::set(const Interval& y, std::size_t k) {
 
 void Tube::set_gate(std::size_t k, const Interval& y) {
   if (k > nb_slices()) {
-    throw Error("Tube::set_gate(k, y): gate " + std::to_string(k) + " out of range [0, " +
+    throw OutOfRangeError("Tube::set_gate(k, y): gate " + std::to_string(k) + " out of range [0, " +
                 std::to_string(nb_slices()) + "]");
   }
   data_->gates[k] = y;

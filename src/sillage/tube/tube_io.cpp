@@ -3,14 +3,15 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <streambuf>
 #include <string>
 #include <utility>
 
 #include "sillage/error.h"
+#include "sillage/read_file.h"
 
 namespace sillage {
 
@@ -93,7 +94,8 @@ class Reader {
     const double lb = f64(what), ub = f64(what);
     if (lb == rounding::kInf && ub == -rounding::kInf) return Interval::empty();
     if (std::isnan(lb) || std::isnan(ub) || lb > ub || lb == rounding::kInf || ub == -rounding::kInf) {
-      throw Error(where_ + "invalid bounds for " + what + " at byte " + std::to_string(at));
+      throw Error(where_ + "invalid bounds (" + number_text(lb) + ", " + number_text(ub) + ") for " + what + " at byte " +
+                  std::to_string(at));
     }
     return Interval(lb, ub);
   }
@@ -104,6 +106,28 @@ class Reader {
   std::string where_;
   std::size_t offset_ = 0;
 };
+
+// The time points: finite and increasing, or equal to those of the given
+// TDomain. An error names the first bad one, its byte and its value.
+void check_times(const Reader& r, const std::vector<double>& times, std::size_t at, const TDomain* td) {
+  const auto point = [&](std::size_t k) {
+    return r.where() + "time point " + std::to_string(k) + " (byte " + std::to_string(at + 8 * k) + ") is " +
+           number_text(times[k]);
+  };
+  if (td && td->nb_slices() + 1 != times.size()) {
+    throw DimensionError(r.where() + "the file has " + std::to_string(times.size()) + " time points, the given TDomain " +
+                         std::to_string(td->nb_slices() + 1));
+  }
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (td) {
+      if (times[k] != td->t(k)) throw DimensionError(point(k) + ", the given TDomain's is " + number_text(td->t(k)));
+    } else if (!std::isfinite(times[k])) {
+      throw Error(point(k) + ", not a finite time");
+    } else if (k > 0 && !(times[k - 1] < times[k])) {
+      throw Error(point(k) + ", not after time point " + std::to_string(k - 1) + " = " + number_text(times[k - 1]));
+    }
+  }
+}
 
 struct Loaded {
   std::shared_ptr<TDomain> td;
@@ -132,15 +156,11 @@ Loaded read_all(std::istream& is, std::uint32_t expected_kind, std::shared_ptr<T
     throw Error(r.where() + "invalid number of time points " + std::to_string(nt) + " at byte " +
                 std::to_string(r.offset() - 8));
   }
+  const std::size_t times_at = r.offset();
   std::vector<double> times;
   for (std::uint64_t k = 0; k < nt; ++k) times.push_back(r.f64("the time points"));
-  if (td) {
-    if (std::vector<double>(td->times().begin(), td->times().end()) != times) {
-      throw DimensionError(r.where() + "the stored time points differ from those of the given TDomain");
-    }
-  } else {
-    td = TDomain::create(std::move(times));  // validates the time points
-  }
+  check_times(r, times, times_at, td.get());
+  if (!td) td = TDomain::create(std::move(times));
   const std::uint64_t n = r.u64("the number of components");
   if (n == 0 || (kind == kKindTube && n != 1) || n > (std::uint64_t{1} << 20)) {
     throw Error(r.where() + "invalid number of components " + std::to_string(n));
@@ -167,20 +187,18 @@ std::ofstream open_out(const std::string& path) {
   if (!os) throw Error("save(tube, path): cannot open '" + path + "' for writing");
   return os;
 }
-std::ifstream open_in(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Error("load tube: '" + path + "' is a directory, not a tube file");
-  if (!std::filesystem::exists(path, ec)) throw Error("load tube: '" + path + "': no such file");
-  std::ifstream is(path, std::ios::binary);
-  if (!is) throw Error("load tube: '" + path + "': cannot open it for reading (permissions?)");
-  return is;
-}
+// The bytes of a file read whole, as a stream for the reader (not copied).
+struct BytesBuf : std::streambuf {
+  explicit BytesBuf(std::string& s) { setg(s.data(), s.data(), s.data() + s.size()); }
+};
 
 // A file holds one object: bytes after it are an error (a stream may go on).
 Loaded read_file(const std::string& path, std::uint32_t kind, std::shared_ptr<TDomain> td) {
-  auto is = open_in(path);
+  std::string bytes = read_file_bytes(path, "load tube", "a tube file");
+  BytesBuf buf(bytes);
+  std::istream is(&buf);
   Loaded out = read_all(is, kind, std::move(td), path);
-  if (is.peek() != std::ifstream::traits_type::eof()) {
+  if (out.end != bytes.size()) {
     throw Error("load tube: '" + path + "' has trailing bytes after the " +
                 (kind == kKindTube ? "Tube" : "TubeVector") + ", from byte " + std::to_string(out.end));
   }

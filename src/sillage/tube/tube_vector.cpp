@@ -58,7 +58,7 @@ void TubeVector::check_size(std::size_t n, const char* where) const {
 
 Tube& TubeVector::operator[](std::size_t i) {
   if (i >= size()) {
-    throw DimensionError("TubeVector[i]: index " + std::to_string(i) + " out of range for size " + std::to_string(size()));
+    throw OutOfRangeError("TubeVector[i]: index " + std::to_string(i) + " out of range for size " + std::to_string(size()));
   }
   return x_[i];
 }
@@ -66,7 +66,7 @@ Tube& TubeVector::operator[](std::size_t i) {
 const Tube& TubeVector::operator[](std::size_t i) const { return const_cast<TubeVector&>(*this)[i]; }
 
 std::shared_ptr<Tube> TubeVector::shared_component(std::size_t i) {
-  (void)(*this)[i];  // DimensionError when out of range
+  (void)(*this)[i];  // OutOfRangeError when out of range
   return x_.shared(i);
 }
 

@@ -89,8 +89,8 @@ TEST(TDomain, SliceIndexBoundaryConvention) {
   EXPECT_EQ(td.time_index(2.0), 2);
   EXPECT_EQ(td.time_index(2.5), -1);
   EXPECT_TRUE(td.is_time_point(3.0));
-  EXPECT_THROW(td.t(4), Error);
-  EXPECT_THROW(td.slice_domain(3), Error);
+  EXPECT_THROW(td.t(4), OutOfRangeError);
+  EXPECT_THROW(td.slice_domain(3), OutOfRangeError);
   EXPECT_EQ(td.slice_domain(1), Interval(1.0, 2.0));
 }
 

@@ -108,10 +108,10 @@ TEST(Tube, SetSliceAndGate) {
   EXPECT_FALSE(x.is_empty());
   x.set(Interval(3, 4));
   EXPECT_EQ(x, Tube(td, Interval(3, 4)));
-  EXPECT_THROW(x.set(Interval(0, 1), 3), Error);
-  EXPECT_THROW(x.set_gate(4, Interval(0, 1)), Error);
-  EXPECT_THROW(x.slice(3), Error);
-  EXPECT_THROW(x.gate(4), Error);
+  EXPECT_THROW(x.set(Interval(0, 1), 3), OutOfRangeError);
+  EXPECT_THROW(x.set_gate(4, Interval(0, 1)), OutOfRangeError);
+  EXPECT_THROW(x.slice(3), OutOfRangeError);
+  EXPECT_THROW(x.gate(4), OutOfRangeError);
 }
 
 TEST(Tube, CodomainVolumeThickness) {

@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
+#include "kit/files.h"
 #include "sillage/error.h"
 #include "sillage/tube/tube_io.h"
 
@@ -90,19 +90,10 @@ TEST(TubeIo, RejectsForeignAndTruncatedFiles) {
 namespace {
 
 std::string load_error(const std::string& path) {
-  try {
-    load_tube(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
+  return test::error_of([&] { load_tube(path); });
 }
 
-std::string temp_file(const std::string& name, const std::string& bytes) {
-  const std::string path = testing::TempDir() + name;
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
+using test::temp_file;
 
 }  // namespace
 

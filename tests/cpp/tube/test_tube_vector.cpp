@@ -21,7 +21,7 @@ TEST(TubeVector, ConstantAndBox) {
   EXPECT_EQ(y.volume(), 4.0);  // 2 slices * (1 * 2)
   EXPECT_EQ(y.codomain(), (IntervalVector{Interval(0, 1), Interval(2, 4)}));
   EXPECT_THROW(TubeVector(td, 0), DimensionError);
-  EXPECT_THROW((void)y[2], DimensionError);
+  EXPECT_THROW((void)y[2], OutOfRangeError);  // an index, like Tube::slice(k)
 }
 
 TEST(TubeVector, ComponentsAreLiveReferences) {
