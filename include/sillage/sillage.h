@@ -5,6 +5,7 @@
 
 #include "sillage/budget.h"
 #include "sillage/error.h"
+#include "sillage/read_file.h"
 #include "sillage/threads.h"
 
 #include "sillage/interval/backward.h"
@@ -119,6 +120,7 @@
 #include "sillage/problem/problem.h"
 #include "sillage/problem/problem_error.h"
 #include "sillage/problem/problem_loops.h"
+#include "sillage/problem/problem_warnings.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/write_results.h"

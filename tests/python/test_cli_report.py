@@ -99,6 +99,25 @@ def test_budget_options_and_exit_status_3(tmp_path):
     stopped = run("solve", slow, "--max-runs", 0, "--max-seconds", 0.1, "--out", tmp_path / "out")
     assert stopped.returncode == 3 and "max_seconds" in stopped.stderr
     assert run("solve", slow, "--max-seconds", -1).returncode == 2
+    # The summary counts the runs done before the stop, as the budget does.
+    five = run("solve", slow, "--max-runs", 5, "--out", tmp_path / "out")
+    assert five.returncode == 3 and "STOPPED with" in five.stdout and ", 5 contractor runs," in five.stdout
+    # Numbers that would wrap around or truncate: refused, the option named.
+    for bad in ["-1", "10^20", "100000000000000000000", "1e20", "2.5"]:
+        refused = run("solve", slow, "--max-runs", bad)
+        assert refused.returncode == 2 and "--max-runs" in refused.stderr, (bad, refused.stderr)
+        assert "expected a number of contractor runs (0: no limit) from 0 to 1000000000000000" in refused.stderr
+
+
+def test_outputs_beside_the_problem_never_overwrite_it(tmp_path):
+    (tmp_path / "x.csv").write_text("t,x\n0,1\n1,2\n")
+    problem = tmp_path / "p.toml"
+    problem.write_text('[time]\ndomain = [0, 1]\ndelta = 0.5\n[data.logged]\nfile = "x.csv"\n'
+                       '[var.x]\nkind = "tube"\n[[constraint]]\nkind = "expr"\nexpr = "x - 1"\n')
+    refused = run("solve", problem, "--out", tmp_path)
+    assert refused.returncode == 2 and "would overwrite the table 'logged'" in refused.stderr
+    assert (tmp_path / "x.csv").read_text() == "t,x\n0,1\n1,2\n"
+    assert not (tmp_path / "results.json").exists()
 
 
 def test_options_that_do_not_apply_are_errors_of_the_option(tmp_path):

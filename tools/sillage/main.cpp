@@ -35,6 +35,25 @@ namespace {
 // 3: a budget (--max-runs, --max-seconds) ran out before the fixed point.
 constexpr int kSolved = 0, kNoSolution = 1, kBadInput = 2, kStopped = 3;
 
+// At most 10^15 contractor runs: years of work, and far from the size_t limit
+// that a number written past it would wrap around.
+constexpr unsigned long long kMaxRuns = 1'000'000'000'000'000ULL;
+
+// An option's value written as a whole number from min to max (no sign, no
+// exponent: "-1" and "1e20" are refused, not wrapped or truncated).
+CLI::Validator whole_number(const std::string& what, unsigned long long min, unsigned long long max) {
+  const std::string range = std::to_string(min) + " to " + std::to_string(max);
+  return CLI::Validator(
+      [=](std::string& v) {
+        unsigned long long n = 0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+        const bool ok = !v.empty() && v[0] != '-' && ec == std::errc() && end == v.data() + v.size() && n >= min && n <= max;
+        const std::string shown = v.size() > 40 ? v.substr(0, 40) + "..." : v;
+        return ok ? std::string() : "found \"" + shown + "\", expected " + what + " from " + range;
+      },
+      "N in " + range);
+}
+
 std::optional<double> parse_delta(const std::string& s, bool& is_auto) {
   is_auto = s == "auto";
   if (is_auto || s.empty()) return std::nullopt;
@@ -74,6 +93,7 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   const Problem p = load_problem(file);
   check_solve_options(p, o, "--");
   if (out.empty()) out = (std::filesystem::path("out") / std::filesystem::path(file).stem()).string();
+  check_output_dir(p, out, tubes);  // before the solve: never an input overwritten, nor time lost
   const bool progress = !quiet && isatty(STDERR_FILENO);
   if (progress)
     o.on_step = [&](const ScheduleStep& s) {
@@ -83,6 +103,7 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
     };
   const SolveResult r = solve_problem(p, o);
   if (progress) std::fprintf(stderr, "\n");
+  for (const std::string& w : r.warnings) std::fprintf(stderr, "sillage: warning: %s\n", w.c_str());
   write_results(p, r, out);
   write_text_file(out, "report.html", report_html(p, r));
   if (tubes) save_tubes(r, out);
@@ -175,17 +196,10 @@ int main(int argc, char** argv) {
   s->add_option("--scheduling", scheduling, "the order within a round: fifo or priority (default: the file's)")
       ->check(CLI::IsMember({"fifo", "priority"}));
   s->add_option("--threads", threads, "worker threads (default: all)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            int n = 0;
-            const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-            return ec == std::errc() && end == v.data() + v.size() && n >= 1
-                       ? std::string()
-                       : "found \"" + v + "\", expected a number of threads >= 1";
-          },
-          "N >= 1"));
+      ->check(whole_number("a number of threads", 1, 1 << 16));
   s->add_option("--max-runs", budget.max_boxes,
-                "contractor runs of one contraction before it stops, exit status 3 (default 10000000; 0: no limit)");
+                "contractor runs of one contraction before it stops, exit status 3 (default 10000000; 0: no limit)")
+      ->check(whole_number("a number of contractor runs (0: no limit)", 0, kMaxRuns));
   s->add_option("--max-seconds", budget.max_seconds,
                 "wall-clock seconds of one contraction before it stops, exit status 3 (default 0: no limit)")
       ->check(CLI::NonNegativeNumber);
@@ -218,6 +232,10 @@ int main(int argc, char** argv) {
     if (*pl) return plot(tube_file, out);
   } catch (const Error& e) {
     std::fprintf(stderr, "sillage: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "sillage: out of memory: the tubes and the network do not fit (sillage check gives an "
+                         "estimate); a larger --delta\n");
     return kBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sillage: %s\n", e.what());

@@ -44,9 +44,12 @@ struct BoundSpec {
   SourcePos pos;
 };
 
-// A value at a time point (a gate), e.g. the initial condition x(0) in [x0].
+// A value at a time, e.g. the initial condition x(0) in [x0]. The time as
+// written is a decimal in [t_lo, t_hi] (the doubles around it; t_lo = t_hi =
+// t when the double is the decimal itself): a gate then, else an evaluation
+// at that time interval (build_network.h).
 struct GateSpec {
-  double t = 0;
+  double t = 0, t_lo = 0, t_hi = 0;
   std::vector<BoundSpec> value;  // one per component
   SourcePos pos;
 };

@@ -66,6 +66,9 @@ struct SolveResult {
   // SolveOptions::budget spent (BudgetExceeded's message). The domains are still enclosures of
   // every solution, only not as tight as the fixed point's; no further δ is tried.
   std::string stopped;
+  // What the file may state without meaning to (problem_warnings): printed by sillage solve,
+  // in results.json and the report.
+  std::vector<std::string> warnings;
   Scheduling scheduling = Scheduling::Fifo;  // the order the propagation ran
   // Time spent building the networks (all steps).
   double build_seconds() const;

@@ -6,6 +6,7 @@
 // unbounded ends written inf / -inf, read as such by numpy and pandas).
 // In JSON an interval is [lb, ub], an unbounded end null, the empty set null.
 #include <string>
+#include <vector>
 
 #include "sillage/problem/solve_problem.h"
 
@@ -15,7 +16,14 @@ namespace sillage {
 std::string results_json(const Problem& p, const SolveResult& r);
 // The CSV text of one tube variable.
 std::string tube_csv(const VarDomain& v);
-// Writes results.json and the CSV files into dir (created); Error if it cannot.
+// The names of the files `sillage solve` writes into its directory for p:
+// results.json, report.html, NAME.csv per tube variable (and NAME.tube with tube_files).
+std::vector<std::string> output_names(const Problem& p, bool tube_files);
+// Error if writing output_names(p, tube_files) into dir would overwrite an
+// input of p (the problem file or a data table: e.g. --out at the problem's
+// own folder, where a table shares a tube's name), naming both; nothing is written.
+void check_output_dir(const Problem& p, const std::string& dir, bool tube_files);
+// Writes results.json and the CSV files into dir (created, check_output_dir first); Error if it cannot.
 void write_results(const Problem& p, const SolveResult& r, const std::string& dir);
 
 // Writes text to dir/name; Error naming the path if it cannot.

@@ -105,6 +105,8 @@ void init_cn(py::module_& m) {
           py::arg("domain"), py::arg("name"),
           "Names a domain for the reports (stats.emptiness); a TubeVector's components become name[i].")
       .def("domain_name", &ContractorNetwork::domain_name, py::arg("d"), DOC(ContractorNetwork, domain_name))
+      .def("set_ctc_name", &ContractorNetwork::set_ctc_name, py::arg("i"), py::arg("name"),
+           DOC(ContractorNetwork, set_ctc_name))
       .def(
           "add",
           [](ContractorNetwork& cn, const py::object& ctc, const py::iterable& domains) {

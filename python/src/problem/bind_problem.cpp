@@ -9,7 +9,9 @@
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
+#include "sillage/problem/problem_warnings.h"
 #include "sillage/problem/report_html.h"
+#include "sillage/problem/write_results.h"
 #include "sillage/problem/solve_problem.h"
 
 namespace sillage::python {
@@ -116,6 +118,7 @@ void init_problem(py::module_& m) {
                     DOC(SolveResult, why_empty))
       .def_readonly("scheduling", &SolveResult::scheduling, DOC(SolveResult, scheduling))
       .def_readonly("stopped", &SolveResult::stopped, DOC(SolveResult, stopped))
+      .def_readonly("warnings", &SolveResult::warnings, DOC(SolveResult, warnings))
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
@@ -179,6 +182,10 @@ void init_problem(py::module_& m) {
       },
       py::arg("problem"), py::arg("result"),
       DOC(find_loops));
+  m.def("problem_warnings", &problem_warnings, py::arg("problem"), DOC(problem_warnings));
+  m.def("output_names", &output_names, py::arg("problem"), py::arg("tube_files") = false, DOC(output_names));
+  m.def("check_output_dir", &check_output_dir, py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false,
+        DOC(check_output_dir));
   m.def("constraint_order", &constraint_order, py::arg("problem"),
         DOC(constraint_order));
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <unistd.h>
 #include <optional>
 #include <span>
 #include <unordered_set>
@@ -32,6 +34,7 @@ using detail::eval_row_kept;
 using detail::eval_row_time;
 using detail::RowObservation;
 using detail::csv_cell;
+using detail::cell_text;
 
 namespace {
 
@@ -129,24 +132,21 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   x.touch();
 }
 
-// The gate at each time point of the table's stamps from its row (gates =
-// {data, value}); gates added between the stamps (an evaluation's times) keep
-// their bounds.
-void set_gates(Tube& x, const Problem& p, const SliceDataSpec& g) {
+// The value at each stamp of the table (gates = {data, value}), from its
+// row: a fix at the stamp as written, a decimal that the time point (its
+// nearest double) need not be (time_fixes).
+void table_gate_fixes(std::vector<TubeObservation>& fixes, const Problem& p, const SliceDataSpec& g,
+                      const Interval& domain) {
   const CsvTable& table = p.table(g.data)->table;
   const Function f(table.columns(), g.value.expr);
-  const std::vector<double>& pts = p.time.points;
-  const TDomain& td = *x.tdomain();
   IntervalVector args(table.columns().size());
   const std::vector<std::size_t> read = read_vars(f);
   for (std::size_t c : read) table.check_numeric(c);  // the loader checked them; a row holds NaN in text
-  std::size_t row = 0;
-  for (std::size_t k = 0; k <= x.nb_slices(); ++k) {
-    while (row < pts.size() && pts[row] < td.t(k)) ++row;
-    if (row == pts.size() || pts[row] != td.t(k)) continue;
+  for (std::size_t row = 0; row < table.nb_rows(); ++row) {  // row k: time point k (the loader checked the count)
     const std::span<const double> values = table.row(row);
     for (std::size_t c : read) args[c] = csv_cell(values[c]);
-    x.set_gate(k, x.gate(k) & f.eval(args));
+    fixes.push_back({csv_cell(p.time.points[row]) & domain,
+                     IntervalVector{f.eval(args)}, nullptr, g.data + " line " + std::to_string(table.line(row))});
   }
 }
 
@@ -239,6 +239,26 @@ std::size_t nb_slices_for(const Problem& p, double delta) {
   return static_cast<std::size_t>(std::ceil((p.time.tf - p.time.t0) / delta));
 }
 
+std::size_t peak_memory_estimate(const Problem& p, std::size_t slices) {
+  std::size_t bytes = 0;
+  for (const VarSpec& v : p.vars) bytes += v.is_tube() ? v.dim * (slices + 1) * 150 : v.dim * 16;
+  for (const ConstraintSpec& c : p.constraints)
+    if (c.kind == ConstraintKind::Eval) bytes += 200 * p.table(c.data)->table.nb_rows();
+  return bytes;
+}
+
+void check_memory(const Problem& p, std::size_t slices, const std::string& what) {
+  const double need = static_cast<double>(peak_memory_estimate(p, slices));
+  const double have = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+  if (have > 0 && need > have) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s gives %zu slices: about %.1f GiB of memory at the peak of the solve, more "
+                  "than this machine's %.1f GiB; a larger slice width (or fewer tubes)",
+                  what.c_str(), slices, need / 1073741824.0, have / 1073741824.0);
+    throw Error(buf);
+  }
+}
+
 namespace {
 
 BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td);
@@ -257,12 +277,32 @@ BuiltProblem build_network(const Problem& p, const std::vector<double>& points) 
 
 namespace {
 
+// The values of v stated at times that are not time points (time_fixes): one
+// CtcEvalList on v and its derivative, the first deriv constraint's on v, or
+// the whole line (none: a value at a time between two doubles then bounds no
+// gate, only the slices around it).
+void add_time_fixes(BuiltProblem& b, const Problem& p, const VarDomain& v, std::vector<TubeObservation> fixes) {
+  std::shared_ptr<TubeVector> w;
+  for (const ConstraintSpec& c : p.constraints)
+    if (c.kind == ConstraintKind::Deriv && c.x == v.spec->name) {
+      w = b.var(c.v).tubes;
+      break;
+    }
+  if (!w) w = std::make_shared<TubeVector>(std::vector<Tube>(v.spec->dim, Tube(b.td, Interval())));
+  const auto whole = [&](const std::shared_ptr<TubeVector>& x) {
+    return v.spec->kind == VarKind::Tube ? DomainRef(x->shared_component(0)) : DomainRef(x);
+  };
+  b.value_nodes.push_back("the values of " + v.spec->name + " at times between two doubles (" +
+                          (v.spec->at.empty() ? v.spec->pos.str() : v.spec->at[0].pos.str()) + ")");
+  b.cn->add(std::make_shared<CtcEvalList>(std::move(fixes)), {whole(v.tubes), whole(w)});
+}
+
 BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   BuiltProblem b;
   b.td = std::move(td);
   for (const VarSpec& v : p.vars)
     for (const GateSpec& g : v.at)
-      if (g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
+      if (g.t_lo == g.t_hi && g.t > p.time.t0 && g.t < p.time.tf) b.td->sample(g.t);
   for (const ConstraintSpec& c : p.constraints) {
     if (c.kind != ConstraintKind::Eval || !c.gates) continue;
     const CsvTable& table = p.table(c.data)->table;
@@ -279,6 +319,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   ContractorNetwork& cn = *b.cn;
   if (p.network.ratio) cn.set_ratio(*p.network.ratio);
   cn.set_scheduling(p.network.scheduling);
+  std::vector<std::vector<TubeObservation>> time_fixes(p.vars.size());  // per variable
   for (const VarSpec& v : p.vars) {
     VarDomain d;
     d.spec = std::make_shared<const VarSpec>(v);
@@ -286,13 +327,20 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
       if (v.slices) set_slices(comps[0], p, *v.slices);
-      if (v.gates) set_gates(comps[0], p, *v.gates);
+      if (v.gates) table_gate_fixes(time_fixes[b.vars.size()], p, *v.gates, b.td->t0_tf());
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
       for (const GateSpec& g : v.at) {
+        IntervalVector z(v.dim);
+        for (std::size_t i = 0; i < v.dim; ++i) z[i] = constant(g.value[i]);
+        if (g.t_lo != g.t_hi) {  // a decimal between two doubles: a fix at its time
+          time_fixes[b.vars.size()].push_back({Interval(g.t_lo, g.t_hi) & b.td->t0_tf(), z, nullptr,
+                                               v.name + " at t = " + cell_text(g.t) + " (" + g.pos.str() + ")"});
+          continue;
+        }
         const std::size_t k = static_cast<std::size_t>(b.td->time_index(g.t));
         for (std::size_t i = 0; i < v.dim; ++i) {
           Tube& x = (*d.tubes)[i];
-          x.set_gate(k, x.gate(k) & constant(g.value[i]));
+          x.set_gate(k, x.gate(k) & z[i]);
         }
       }
     } else if (v.kind == VarKind::Interval) {
@@ -431,7 +479,8 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           }
           auto t = std::make_shared<Interval>(row_t);
           // The row's domains are named after its line, so that an emptiness names the measurement.
-          const std::string of_row = " (" + c.data + " line " + std::to_string(data.table.line(row)) + ")";
+          const std::string row_name = c.data + " line " + std::to_string(data.table.line(row));
+          const std::string of_row = " (" + row_name + ")";
           // One z per evaluated tube, all at the same time t.
           std::vector<std::shared_ptr<Interval>> z1(ys.size());
           std::vector<std::shared_ptr<IntervalVector>> zn(ys.size());
@@ -442,6 +491,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), whole(y)};
             if (!c.vs[j].empty()) eval_args.push_back(whole(b.var(c.vs[j])));
             cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
+            cn.set_ctc_name(cn.nb_ctc() - 1, row_name);  // it may empty y itself: the row is named then too
             cn.set_name(eval_args[1], y.spec->name + "(t)" + of_row);
           }
           cn.set_name(t, "t" + of_row);
@@ -460,6 +510,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             }
           }
           cn.add(std::static_pointer_cast<const Ctc>(obs), args);
+          cn.set_ctc_name(cn.nb_ctc() - 1, row_name);
         }
         if (!fixes.empty()) {
           cn.add(std::make_shared<CtcEvalList>(std::move(fixes)), {whole(*ys[0]), whole(b.var(c.vs[0]))});
@@ -468,6 +519,9 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       }
     }
   }
+  b.first_value_node = cn.nb_ctc();
+  for (std::size_t i = 0; i < b.vars.size(); ++i)
+    if (!time_fixes[i].empty()) add_time_fixes(b, p, b.vars[i], std::move(time_fixes[i]));
   for (const VarDomain& v : b.vars) {
     if (v.tubes && v.spec->kind == VarKind::Tube) cn.set_name(v.tubes->shared_component(0), v.spec->name);
     else if (v.tubes) cn.set_name(v.tubes, v.spec->name);

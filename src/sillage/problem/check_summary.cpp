@@ -5,6 +5,7 @@
 
 #include "sillage/problem/build_network.h"
 #include "sillage/problem/eval_rows.h"
+#include "sillage/problem/problem_warnings.h"
 
 namespace sillage {
 
@@ -68,8 +69,11 @@ std::string check_summary(const Problem& p) {
                 used == 0 ? ": none, this constraint states nothing" : "");
     }
   }
+  for (const std::string& w : problem_warnings(p)) s += "warning: " + w + "\n";
   s += line("network: %zu nodes, about %zu domains, about %.3f MiB of domains, %s scheduling\n", nodes, domains,
             bytes / 1048576.0, scheduling_name(p.network.scheduling));
+  s += line("memory: about %.1f MiB at the peak of a solve (an estimate)\n",
+            static_cast<double>(peak_memory_estimate(p, slices)) / 1048576.0);
   return s;
 }
 

@@ -4,7 +4,8 @@
 #include <charconv>
 #include <optional>
 #include <span>
-#include <unordered_set>
+#include <cmath>
+#include <unordered_map>
 
 #include "sillage/interval/rounding.h"
 
@@ -21,7 +22,19 @@ std::string cell_text(double d) {
 
 void check_join_keys(const ConstraintSpec& c, const CsvTable& table, const CsvTable& joined, const SourcePos& at) {
   const std::vector<double> keys = joined.values(c.join_on);
-  const std::unordered_set<double> known(keys.begin(), keys.end());
+  std::unordered_map<double, std::size_t> known;  // key -> its first row
+  for (std::size_t row = 0; row < keys.size(); ++row) {
+    const auto [it, fresh] = known.emplace(keys[row], row);
+    const std::span<const double> a = joined.row(it->second), b = joined.row(row);
+    // The same key twice: which row a measurement joins would decide the answer.
+    if (!fresh && !std::equal(a.begin(), a.end(), b.begin(), b.end(), [](double x, double y) {
+          return x == y || (std::isnan(x) && std::isnan(y));  // text cells are NaN: compared by the columns read
+        }))
+      throw ProblemError(at, "the " + c.join_on + " " + cell_text(keys[row]) + " in two rows of '" + c.join_data +
+                                 "' with other values: " + joined.where(it->second) + " and line " +
+                                 std::to_string(joined.line(row)),
+                         "one row per " + c.join_on + " in the joined table");
+  }
   const std::size_t on = table.column(c.join_on);
   for (std::size_t row = 0; row < table.nb_rows(); ++row) {
     const std::span<const double> values = table.row(row);

@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include "sillage/expr/parser.h"
+#include "sillage/problem/eval_rows.h"
 #include "sillage/problem/var_refs.h"
 
 namespace sillage::detail {
@@ -83,6 +84,16 @@ std::vector<const toml::node*> ProblemLoader::one_or_many(const Fields& f, const
     out.push_back(&n);
   }
   return out;
+}
+
+void require_increasing(const SourcePos& pos, const std::vector<double>& stamps, const DataSpec& d,
+                        const std::string& expected) {
+  for (std::size_t i = 1; i < stamps.size(); ++i)
+    if (!(stamps[i] > stamps[i - 1]))
+      throw ProblemError(pos, "the stamps " + cell_text(stamps[i - 1]) + " at " + d.table.where(i - 1) + " and " +
+                                  cell_text(stamps[i]) + " at line " + std::to_string(d.table.line(i)) + " of '" +
+                                  d.name + "', not increasing",
+                         expected);
 }
 
 }  // namespace sillage::detail

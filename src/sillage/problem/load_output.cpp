@@ -83,7 +83,8 @@ void ProblemLoader::read_output(const toml::table& t) {
       require_column(doc_.pos(n), c, ts.data, d->table);
       return c;
     };
-    ts.time_column = col(tf.require("time", "the time column"));
+    const toml::node& tn = tf.require("time", "the time column");
+    ts.time_column = col(tn);
     for (auto&& [key, node] : tf.table(tf.require("columns", "{var = [columns]}"), "a table {var = [columns]}")) {
       const std::string name(key.str());
       const VarSpec* v = p_.var(name);
@@ -98,6 +99,8 @@ void ProblemLoader::read_output(const toml::table& t) {
                            std::to_string(v->dim) + " (one per component of '" + name + "')");
       ts.columns[name] = cols;
     }
+    // A truth is a trajectory: in time order, each time once (after its columns' own checks).
+    require_increasing(doc_.pos(tn), d->table.values(ts.time_column), *d, "a truth with strictly increasing times");
     p_.output.truth = ts;
   }
 }

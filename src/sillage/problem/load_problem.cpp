@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "sillage/problem/problem_loader.h"
+#include "sillage/read_file.h"
 
 namespace sillage {
 
@@ -93,9 +94,8 @@ Problem load_problem(const std::string& path) {
   if (!is && !std::filesystem::exists(path))
     throw ProblemError(SourcePos{path}, "no such file", "a problem file (TOML)");
   if (!is) throw ProblemError(SourcePos{path}, "a file that cannot be read", "a readable problem file (TOML)");
-  std::ostringstream ss;
-  ss << is.rdbuf();
-  return parse_problem(ss.str(), path);
+  // Size-limited: a device (/dev/zero) or a huge file is refused, not read without end.
+  return parse_problem(read_file_bytes(path, "load_problem", "a problem file (TOML)"), path);
 }
 
 }  // namespace sillage

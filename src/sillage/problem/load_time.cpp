@@ -46,12 +46,7 @@ void ProblemLoader::read_time_points(const Fields& f, const toml::node& pn) {
   p_.time.pos = doc_.pos(pn);
   if (p_.time.points.size() < 2)
     throw ProblemError(doc_.pos(cn), std::to_string(p_.time.points.size()) + " time point(s)", "at least 2");
-  for (std::size_t i = 1; i < p_.time.points.size(); ++i)
-    if (!(p_.time.points[i] > p_.time.points[i - 1]))
-      throw ProblemError(doc_.pos(cn), "the stamps " + cell_text(p_.time.points[i - 1]) + " at " + d.table.where(i - 1) +
-                                           " and " + cell_text(p_.time.points[i]) + " at line " +
-                                           std::to_string(d.table.line(i)) + " of '" + d.name + "', not increasing",
-                         "strictly increasing time points");
+  require_increasing(doc_.pos(cn), p_.time.points, d, "strictly increasing time points");
   p_.time.t0 = p_.time.points.front();
   p_.time.tf = p_.time.points.back();
 }

@@ -2,6 +2,9 @@
 // expressions of t, gates at given times, slices and gates from a table).
 #include "sillage/problem/problem_loader.h"
 
+#include <tuple>
+
+#include "sillage/expr/function.h"
 #include "sillage/expr/parser.h"
 #include "sillage/expr/tape.h"
 #include "sillage/problem/var_refs.h"
@@ -11,13 +14,20 @@ namespace sillage::detail {
 void ProblemLoader::check_bound(const BoundSpec& b, bool of_t) {
   if (b.expr.empty()) return;
   const std::vector<std::string> vars = of_t ? std::vector<std::string>{"t"} : std::vector<std::string>{};
+  const std::string expected = of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""
+                                     : "a constant expression such as \"[-1, 1]\" or \"pi/2 + [-0.01, 0.01]\"";
   try {
     (void)detail::parse_expr(vars, b.expr);
   } catch (const ParseError& e) {
-    throw rejected_expression(b.pos, "the bound", b.expr, b.expr, e,
-                              of_t ? "an expression of t such as \"sin(t) + [-0.1, 0.1]\""
-                                   : "a constant expression such as \"[-1, 1]\" or \"pi/2 + [-0.01, 0.01]\"");
+    throw rejected_expression(b.pos, "the bound", b.expr, b.expr, e, expected);
   }
+  // Empty over the whole time domain ("1/0"): no value at all, a mistake of
+  // the file, not a problem without solution.
+  const IntervalVector at = of_t ? IntervalVector{Interval(p_.time.t0, p_.time.tf)} : IntervalVector(0);
+  if (Function(vars, b.expr).eval(at).is_empty())
+    throw ProblemError(b.pos, "the bound \"" + b.expr + "\", which is empty (undefined" +
+                                  (of_t ? " at every t of the domain)" : ")"),
+                       expected);
 }
 
 std::vector<BoundSpec> ProblemLoader::read_bounds(const Fields& f, const toml::node& n, std::size_t dim, bool of_t) {
@@ -80,6 +90,7 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
       gs.pos = doc_.pos(g);
       const toml::node& tn = gf.require("t", "a time in the domain");
       gs.t = gf.number(tn, "a time (number)");
+      std::tie(gs.t_lo, gs.t_hi) = gf.number_as_written(tn, "a time (number)");
       if (gs.t < p_.time.t0 || gs.t > p_.time.tf)
         throw ProblemError(doc_.pos(tn), "t = " + doc_.raw(tn) + " outside the time domain",
                            "a time in [" + number_text(p_.time.t0) + ", " + number_text(p_.time.tf) + "]");

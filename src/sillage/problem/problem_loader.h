@@ -31,6 +31,11 @@ ProblemError missing_column(const SourcePos& pos, const std::string& column, con
 // finite numbers; a ProblemError at pos otherwise (load_lookup.cpp).
 void require_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
 
+// The values of a time column of table d strictly increasing: a ProblemError
+// at pos naming the first two that are not, by line (load_lookup.cpp).
+void require_increasing(const SourcePos& pos, const std::vector<double>& stamps, const DataSpec& d,
+                        const std::string& expected);
+
 class ProblemLoader {
  public:
   // text: the file's content; path names it in messages and is the base of the data paths.

@@ -24,7 +24,12 @@ std::string fmt(double x, const char* f = "%.6g") {
 
 std::string itv(const Interval& x) {
   if (x.is_empty()) return "∅";
-  return "[" + fmt(x.lb()) + ", " + fmt(x.ub()) + "]";
+  std::string s = "[";  // appended: "[" + a temporary is a false -Wrestrict of GCC 12
+  s += fmt(x.lb());
+  s += ", ";
+  s += fmt(x.ub());
+  s += ']';
+  return s;
 }
 
 std::string comp_name(const VarDomain& v, std::size_t i) {
@@ -147,6 +152,12 @@ std::string report_html(const Problem& p, const SolveResult& r) {
       << ". Every domain below still encloses every solution; a larger budget may contract them further.</p>\n";
   else
     h << "<p id=\"status\">Solved: every domain below encloses every solution of the problem.</p>\n";
+
+  if (!r.warnings.empty()) {
+    h << "<ul id=\"warnings\">";
+    for (const std::string& w : r.warnings) h << "<li class=\"empty\">Warning: " << xml_escape(w) << "</li>";
+    h << "</ul>\n";
+  }
 
   h << "<h2>Problem</h2>\n<p>hash " << p.hash << "</p><pre>" << xml_escape(p.text) << "</pre>\n";
 

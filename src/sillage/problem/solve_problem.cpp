@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sillage/problem/eval_rows.h"
+#include "sillage/problem/problem_warnings.h"
 #include "sillage/problem/refined_points.h"
 
 namespace sillage {
@@ -17,7 +18,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 std::string explain(const Problem& p, const BuiltProblem& b, const ContractStats& s) {
   std::string why = s.emptiness;
-  if (s.empty_node < b.cn->nb_ctc() && !b.first_node.empty()) {
+  if (s.empty_node >= b.first_value_node && s.empty_node < b.first_value_node + b.value_nodes.size()) {
+    why += "; by " + b.value_nodes[s.empty_node - b.first_value_node];
+  } else if (s.empty_node < b.cn->nb_ctc() && !b.first_node.empty()) {
     const ConstraintSpec& c = p.constraints[b.constraint_of_node(s.empty_node)];
     why += "; by " + c.label + " (" + c.pos.str() + ")";
   } else if (s.empty_node == static_cast<std::size_t>(-1)) {
@@ -90,6 +93,7 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
   if (!p.time.points.empty())
     fixed = (p.time.tf - p.time.t0) / static_cast<double>(p.time.points.size() - 1);  // the mean period, for the reports
   SolveResult r;
+  r.warnings = problem_warnings(p);
   const auto start = std::chrono::steady_clock::now();
   double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;
   std::vector<double> points;  // regions: the time points of the next step (none: the uniform δ)
@@ -97,6 +101,8 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
     ScheduleStep step;
     step.delta = delta;
     auto t0 = std::chrono::steady_clock::now();
+    check_memory(p, points.empty() ? nb_slices_for(p, delta) : points.size() - 1,
+                 points.empty() ? "delta = " + number_text(delta) : "the refined time points");
     BuiltProblem b = points.empty() ? build_network(p, delta) : build_network(p, points);
     step.build_seconds = seconds_since(t0);
     step.slices = b.td->nb_slices();
@@ -112,6 +118,7 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
       step.stats = b.cn->contract();
     } catch (const BudgetExceeded& e) {  // the domains contracted so far are still enclosures: an answer
       r.stopped = e.what();
+      step.stats = b.cn->stopped_stats();
     }
     step.contract_seconds = seconds_since(t0);
     step.mean_thickness = step.stats.empty ? 0 : mean_thickness(b);

@@ -1,7 +1,10 @@
 #include "sillage/problem/toml_fields.h"
 
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
+
+#include "sillage/interval/rounding.h"
 
 namespace sillage::detail {
 
@@ -97,6 +100,27 @@ std::string Fields::bound_text(const toml::node& n) const {
     return raw;
   }
   throw ProblemError(doc_.pos(n), describe(n), expected);
+}
+
+std::pair<double, double> Fields::number_as_written(const toml::node& n, const std::string& expected) const {
+  const double d = number(n, expected);
+  if (n.is_integer()) {  // exact unless beyond 2^53: compared in long double, 64 bits of mantissa
+    if (static_cast<long double>(d) == static_cast<long double>(n.as_integer()->get())) return {d, d};
+    return {rounding::next_down(d), rounding::next_up(d)};
+  }
+  std::string text;
+  for (char c : bound_text(n))
+    if (c != '_') text += c;  // TOML's digit separators
+  // strtod rounds in the current mode (glibc): down and up give the doubles
+  // around the decimal, equal when it is one.
+  const int mode = std::fegetround();
+  std::fesetround(FE_DOWNWARD);
+  const double lo = std::strtod(text.c_str(), nullptr);
+  std::fesetround(FE_UPWARD);
+  const double hi = std::strtod(text.c_str(), nullptr);
+  std::fesetround(mode);
+  if (!(lo <= d && d <= hi)) return {rounding::next_down(d), rounding::next_up(d)};  // a form strtod reads otherwise
+  return {lo, hi};
 }
 
 std::string expand_env(const std::string& path, const SourcePos& pos) {

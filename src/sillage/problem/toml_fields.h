@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -48,6 +49,10 @@ class Fields {
   const toml::table& table(const toml::node& n, const std::string& expected) const;
   // A rigorous bound: a string expression, or a number as written.
   std::string bound_text(const toml::node& n) const;
+  // The decimal as written, enclosed: [d, d] when the double read is the
+  // number itself (0, 2.5, 1e3), else the two doubles around it (0.1): a
+  // time written in the file is the decimal, not its nearest double.
+  std::pair<double, double> number_as_written(const toml::node& n, const std::string& expected) const;
 
  private:
   const Document& doc_;

@@ -78,6 +78,7 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   j["status"] = r.empty ? "no solution" : !r.stopped.empty() ? "stopped" : "solved";
   if (r.empty) j["why"] = r.why_empty;
   if (!r.stopped.empty()) j["why"] = r.stopped;
+  j["warnings"] = r.warnings;
   // Eval rows skipped as outside [t0, tf] (outside = "skip"), per constraint label.
   json outside = json::object();
   for (const ConstraintSpec& c : p.constraints)
@@ -159,7 +160,32 @@ void write_text_file(const std::string& dir, const std::string& name, const std:
   if (!os || !(os << text)) throw Error("cannot write " + path);
 }
 
+std::vector<std::string> output_names(const Problem& p, bool tube_files) {
+  std::vector<std::string> names{"results.json", "report.html"};
+  for (const VarSpec& v : p.vars) {
+    if (!v.is_tube()) continue;
+    names.push_back(v.name + ".csv");
+    if (tube_files) names.push_back(v.name + ".tube");
+  }
+  return names;
+}
+
+void check_output_dir(const Problem& p, const std::string& dir, bool tube_files) {
+  std::vector<std::pair<std::string, std::string>> inputs{{p.file, "the problem file"}};
+  for (const DataSpec& d : p.data) inputs.push_back({d.path, "the table '" + d.name + "' (" + d.pos.str() + ")"});
+  for (const std::string& name : output_names(p, tube_files)) {
+    const std::filesystem::path out = std::filesystem::path(dir) / name;
+    for (const auto& [path, what] : inputs) {
+      std::error_code ec;  // false with an error when either does not exist: nothing to overwrite
+      if (std::filesystem::equivalent(out, path, ec))
+        throw Error("the output " + out.string() + " would overwrite " + what + ", " + path +
+                    ": choose another output directory (--out)");
+    }
+  }
+}
+
 void write_results(const Problem& p, const SolveResult& r, const std::string& dir) {
+  check_output_dir(p, dir, false);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error("cannot create the directory " + dir + ": " + ec.message());

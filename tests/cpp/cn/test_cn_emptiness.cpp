@@ -36,6 +36,21 @@ TEST(ContractorNetworkEmptiness, IntervalNetworkNamesContractorAndDomain) {
   EXPECT_TRUE(x->is_empty());
 }
 
+// A contractor named after what it stands for (a measurement's row) is named
+// so in the emptiness, whichever domain it emptied.
+TEST(ContractorNetworkEmptiness, NamedContractors) {
+  ContractorNetwork cn;
+  auto x = cn.create_dom(Interval(0, 1), "x");
+  auto y = cn.create_dom(Interval(2, 3), "y");
+  cn.add(ctc({"a", "b"}, "a - b"), {x, y});
+  cn.set_ctc_name(0, "ranges line 12");
+  EXPECT_THROW(cn.set_ctc_name(1, "none"), Error);
+  EXPECT_THROW(cn.set_ctc_name(0, ""), Error);
+  const ContractStats s = cn.contract();
+  EXPECT_EQ(s.emptiness, "CtcFunction(a - b) (ranges line 12) emptied interval 'x'");
+  EXPECT_EQ(s.empty_contractor, "CtcFunction(a - b) (ranges line 12)");
+}
+
 TEST(ContractorNetworkEmptiness, UnnamedDomainsAndBoxComponents) {
   ContractorNetwork cn;
   auto p = std::make_shared<IntervalVector>(IntervalVector{{0, 1}, {0, 1}});

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "sillage/problem/load_problem.h"
+#include "sillage/problem/solve_problem.h"
 
 namespace problem_test {
 
@@ -24,6 +25,9 @@ inline std::string read_file(const std::string& path) {
 inline sillage::Problem parse(const std::string& text) {
   return sillage::parse_problem(text, problems_dir() + "/test.toml");
 }
+
+// The problem `text` (parsed as by parse()) solved with its own options.
+inline sillage::SolveResult solve_text(const std::string& text) { return sillage::solve_problem(parse(text)); }
 
 // The message of the ProblemError that parsing `text` throws ("" if none).
 inline std::string error_of(const std::string& text) {

@@ -25,7 +25,7 @@ void expect_same(const Tube& a, const Tube& b) {
 }  // namespace
 
 TEST(BuildBounds, SameTubesAsTubeOfTheExpression) {
-  const std::vector<std::string> bounds{"[-10, 10]", "pi/2 + [-1, 1]/100", "sqrt(-1)", "max(0, [-1, 2])*tan(0.1)",
+  const std::vector<std::string> bounds{"[-10, 10]", "pi/2 + [-1, 1]/100", "sqrt(t - 2)", "max(0, [-1, 2])*tan(0.1)",
                                         "cos(t) + [-0.01, 0.01]", "tan(t/10)", "[0, 1]*t", "exp(-t)*[1, 2]"};
   std::string text = "[time]\ndomain = [0, 3]\ndelta = 0.01\n";
   for (std::size_t i = 0; i < bounds.size(); ++i)
@@ -37,7 +37,7 @@ TEST(BuildBounds, SameTubesAsTubeOfTheExpression) {
     SCOPED_TRACE(bounds[i]);
     expect_same((*b.vars[i].tubes)[0], Tube(b.td, Function({"t"}, bounds[i])));
   }
-  EXPECT_TRUE((*b.var("x2").tubes)[0].codomain().is_unbounded());  // undefined: the whole line, as Tube(td, f)
+  EXPECT_TRUE((*b.var("x2").tubes)[0].codomain().is_unbounded());  // undefined before t = 2: the whole line there, as Tube(td, f)
 }
 
 // slices = {data, value}: slice k is its row's value (each row evaluated once
@@ -48,12 +48,12 @@ TEST(BuildBounds, SlicesFromATableRowByRow) {
       "[data.truth]\nfile = \"data/robot_truth.csv\"\n"
       "[data.periods]\nfile = \"../../tests/cpp/problem/fuzz_corpus/robot_periods.csv\"\n"
       "[var.s]\nkind = \"tube\"\nvalue = \"[-100, 100]\"\nslices = { data = \"periods\", value = \"speed + dt*[-1, 1]\" }\n"
-      "at = [{ t = 10.1, value = \"[-50, 50]\" }]\n"
+      "at = [{ t = 10.125, value = \"[-50, 50]\" }]\n"  // a double: a time point
       "[[constraint]]\nkind = \"expr\"\nexpr = \"s - s\"\n";
   const Problem p = problem_test::parse(text);
   const BuiltProblem b = build_network(p, 1.0);
   const Tube& s = (*b.var("s").tubes)[0];
-  ASSERT_EQ(s.nb_slices(), p.time.points.size());  // 10.1 splits the period [10, 10.25]
+  ASSERT_EQ(s.nb_slices(), p.time.points.size());  // 10.125 splits the period [10, 10.25]
   const CsvTable& periods = p.table("periods")->table;
   for (std::size_t k = 0; k < s.nb_slices(); ++k) {
     const double t = s.tdomain()->t(k);

@@ -93,16 +93,16 @@ TEST(LoadDataKeys, GatesFromATable) {
   ASSERT_TRUE(p.var("x")->gates);
   EXPECT_EQ(p.var("x")->gates->data, "stamps");
   const BuiltProblem b = build_network(p, 0.5);
-  const Tube& x0 = (*b.var("x").tubes)[0];
-  const std::vector<double> stamps{0, 0.5, 1.5, 2};
-  for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_TRUE(x0.gate(k).contains(stamps[k])) << k;
-    EXPECT_TRUE(x0.gate(k).is_subset(Interval(stamps[k] - 0.0100001, stamps[k] + 0.0100001))) << x0.gate(k);
-  }
-  EXPECT_TRUE(x0.slice(1).is_unbounded());  // the slices are the constraints' to contract
+  EXPECT_TRUE((*b.var("x").tubes)[0].slice(1).is_unbounded());  // the slices are the constraints' to contract
+  EXPECT_EQ(b.value_nodes.size(), 1u);  // the values at the stamps as written: one CtcEvalList
   const SolveResult r = solve_problem(p);
   ASSERT_FALSE(r.empty) << r.why_empty;
   const Tube& x = (*r.built.var("x").tubes)[0];
+  const std::vector<double> stamps{0, 0.5, 1.5, 2};
+  for (std::size_t k = 0; k < 4; ++k) {  // within an ulp of a stamp times |x'| <= 1.5 of the row's value
+    EXPECT_TRUE(x.gate(k).contains(stamps[k])) << k;
+    EXPECT_TRUE(x.gate(k).is_subset(Interval(stamps[k] - 0.0100001, stamps[k] + 0.0100001))) << x.gate(k);
+  }
   EXPECT_TRUE(x.slice(1).contains(1.0));  // x(t) = t, between its gates 0.5 and 1.5 with x' in [0.5, 1.5]
   EXPECT_LT(x.slice(1).diam(), 1.1);
 
@@ -173,6 +173,25 @@ TEST(LoadDataKeys, EvalRowsJoinedToAnotherTable) {
                    "[var.p]\nkind = \"tube_vector\"\ndim = 2\n[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\n"
                    "join = { data = \"beacons\", on = \"r\" }\ny = \"p\"\n" + obs,
                "found the column 'r', expected a column of both 'ranges' and 'beacons'");
+}
+
+// A key listed twice in the joined table with other values: which row a
+// range joins would decide the answer (one order solved, the other did not).
+// Refused, naming both lines; the same row twice is harmless.
+TEST(LoadDataKeys, AJoinKeyTwiceIsRefused) {
+  const std::string dir = data_dir();
+  std::ofstream(dir + "/beacons_twice.csv") << "id,bx,by\n3,10,0\n7,0,10\n3,-10,0\n";
+  std::ofstream(dir + "/beacons_same_twice.csv") << "id,bx,by\n3,10,0\n7,0,10\n3,10,0\n";
+  const auto problem = [](const std::string& beacons) {
+    return "[time]\ndomain = [0, 2]\ndelta = 0.1\n" + table("beacons", beacons) + table("ranges", "ranges.csv") +
+           "[var.p]\nkind = \"tube_vector\"\ndim = 2\n[var.v]\nkind = \"tube_vector\"\ndim = 2\n"
+           "[[constraint]]\nkind = \"eval\"\ndata = \"ranges\"\njoin = { data = \"beacons\", on = \"id\" }\n"
+           "y = \"p\"\nv = \"v\"\ntime = \"t\"\nwhere = { r = 9 }\n"
+           "expr = \"sqrt((p[0] - bx)^2 + (p[1] - by)^2) - r + [-0.1, 0.1]\"\n";
+  };
+  expect_error(problem("beacons_twice.csv"), "found the id 3 in two rows of 'beacons' with other values: " + dir +
+                                                 "/beacons_twice.csv:2 and line 4, expected one row per id in the joined table");
+  expect_error(problem("beacons_same_twice.csv"), "");  // valid
 }
 
 // The hash is of the problem's inputs: its text and the numbers of its tables.

@@ -5,6 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
 #include "problem_text.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/write_results.h"
@@ -43,4 +47,31 @@ TEST(WriteResults, BoundsExactlyNullsForInfinitiesAndEmpties) {
   EXPECT_EQ(j["variables"]["b"]["dim"], 2);
   EXPECT_EQ(j["variables"]["b"]["value"][1][1].get<double>(), 3.0);
   EXPECT_EQ(j["status"], "solved");
+}
+
+// --out at the problem's own folder, where a table is named like a tube
+// (x.csv): refused before anything is written, naming both; the table intact.
+TEST(WriteResults, NeverOverwritesAnInput) {
+  const auto dir = std::filesystem::temp_directory_path() / ("sillage_out_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "x.csv") << "t,x\n0,1\n1,2\n";
+  const std::string text = "[time]\ndomain = [0, 1]\ndelta = 0.5\n[data.logged]\nfile = \"x.csv\"\n"
+                           "[var.x]\nkind = \"tube\"\n[[constraint]]\nkind = \"expr\"\nexpr = \"x - 1\"\n";
+  std::ofstream(dir / "p.toml") << text;
+  const Problem p = load_problem((dir / "p.toml").string());
+  const SolveResult r = solve_problem(p);
+  std::string msg;
+  try {
+    write_results(p, r, dir.string());
+  } catch (const Error& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("the output " + (dir / "x.csv").string() + " would overwrite the table 'logged' (" + (dir / "p.toml").string() +
+                     ":4:7), " + (dir / "x.csv").string() + ": choose another output directory (--out)"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(problem_test::read_file((dir / "x.csv").string()), "t,x\n0,1\n1,2\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
+  EXPECT_NO_THROW(check_output_dir(p, (dir / "out").string(), true));
+  std::filesystem::remove_all(dir);
 }
