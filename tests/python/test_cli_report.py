@@ -243,3 +243,20 @@ def test_show_and_plot_a_tube_file(tmp_path):
     bad = run("show", PROBLEMS / "causal_chain.toml")  # not a tube file: the message names it
     assert bad.returncode == 2
     assert f"load tube: '{PROBLEMS / 'causal_chain.toml'}': not a sillage tube file" in bad.stderr
+
+
+def test_outputs_in_proportion(tmp_path):
+    # 20 000 slices: written as 10 000 slice rows (hulls of two) unless --full-tubes.
+    problem = tmp_path / "long.toml"
+    problem.write_text('[time]\ndomain = [0, 20]\ndelta = 0.001\n[var.x]\nkind = "tube"\n'
+                       'value = "sin(t) + [-0.1, 0.1]"\n[[constraint]]\nkind = "expr"\nexpr = "x - x"\n')
+    assert run("solve", problem, "--out", tmp_path / "dec").returncode == 0
+    result = json.loads((tmp_path / "dec" / "results.json").read_text())
+    assert result["decimated"] == 2 and len(result["times"]) == 10001
+    rows = np.genfromtxt(tmp_path / "dec" / "x.csv", delimiter=",", names=True)
+    assert len(rows) == 10001 + 10000
+    spans = rows["t_ub"] - rows["t_lb"]
+    assert np.allclose(spans[spans > 0], 0.002)
+    assert run("solve", problem, "--out", tmp_path / "full", "--full-tubes").returncode == 0
+    full = json.loads((tmp_path / "full" / "results.json").read_text())
+    assert full["decimated"] == 1 and len(full["times"]) == 20001

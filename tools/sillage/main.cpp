@@ -1,7 +1,7 @@
 // The sillage command (docs/cli.md):
 //   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions]
 //                 [--scheduling fifo|priority] [--threads N] [--max-runs N] [--max-seconds S]
-//                 [--quiet] [--save-tubes]
+//                 [--quiet] [--save-tubes] [--full-tubes]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
@@ -81,7 +81,7 @@ void save_tubes(const SolveResult& r, const std::string& out) {
 }
 
 int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions,
-          const std::string& scheduling, int threads, bool quiet, bool tubes, const Budget& budget) {
+          const std::string& scheduling, int threads, bool quiet, bool tubes, bool full_tubes, const Budget& budget) {
   std::optional<ThreadLimit> limit;
   if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
   SolveOptions o;
@@ -104,7 +104,9 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   const SolveResult r = solve_problem(p, o);
   if (progress) std::fprintf(stderr, "\n");
   for (const std::string& w : r.warnings) std::fprintf(stderr, "sillage: warning: %s\n", w.c_str());
-  write_results(p, r, out);
+  OutputOptions written;
+  if (full_tubes) written.max_slices = 0;
+  write_results(p, r, out, written);
   write_text_file(out, "report.html", report_html(p, r));
   if (tubes) save_tubes(r, out);
   if (!quiet) {
@@ -186,7 +188,7 @@ int main(int argc, char** argv) {
   std::string problem, out, delta, tube_file, refine = "halving", scheduling;
   int threads = 0;
   Budget budget;
-  bool quiet = false, save_tube_files = false;
+  bool quiet = false, save_tube_files = false, full_tubes = false;
   auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
   s->add_option("problem", problem, "the problem file (TOML)")->required();
   s->add_option("--out", out, "output directory (default out/<problem name>)");
@@ -204,6 +206,9 @@ int main(int argc, char** argv) {
                 "wall-clock seconds of one contraction before it stops, exit status 3 (default 0: no limit)")
       ->check(CLI::NonNegativeNumber);
   s->add_flag("--save-tubes", save_tube_files, "also write each tube as DIR/NAME.tube (for sillage show, load_tube)");
+  s->add_flag("--full-tubes", full_tubes,
+              "write every slice in results.json and the CSV files (default: at most 10000 per tube, hulls of "
+              "consecutive slices beyond)");
   s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
   c->add_option("problem", problem, "the problem file (TOML)")->required();
@@ -226,7 +231,8 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
   try {
-    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files, budget);
+    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files, full_tubes,
+                         budget);
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);

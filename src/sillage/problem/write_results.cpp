@@ -1,5 +1,6 @@
 #include "sillage/problem/write_results.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -9,6 +10,10 @@
 #include <nlohmann/json.hpp>
 
 namespace sillage {
+
+std::size_t decimation(std::size_t n, const OutputOptions& o) {
+  return o.max_slices == 0 || n <= o.max_slices ? 1 : (n + o.max_slices - 1) / o.max_slices;
+}
 
 namespace {
 
@@ -37,14 +42,13 @@ void append_bound(std::string& out, double x) {
   else out += "null";
 }
 
-// Intervals as a JSON array of [lb, ub] (null for an empty one).
-template <class Range>
-void append_intervals(std::string& out, const Range& xs) {
+// Intervals get(0), ..., get(n - 1) as a JSON array of [lb, ub] (null for an empty one).
+template <class Get>
+void append_intervals(std::string& out, std::size_t n, const Get& get) {
   out += '[';
-  bool first = true;
-  for (const Interval& x : xs) {
-    if (!first) out += ", ";
-    first = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Interval x = get(k);
+    if (k > 0) out += ", ";
     if (x.is_empty()) {
       out += "null";
       continue;
@@ -57,6 +61,35 @@ void append_intervals(std::string& out, const Range& xs) {
   }
   out += ']';
 }
+
+// A tube vector as written (write_results.h): time points 0, g, 2g, ... and
+// the last; the gates there and, between two of them, the slice (g = 1) or
+// the hull of the slices and gates (empty if one of them is). Read on
+// demand: nothing is copied.
+class Written {
+ public:
+  Written(const TubeVector& x, const OutputOptions& o) : x_(x), n_(x.nb_slices()), g_(decimation(n_, o)) {}
+  std::size_t nb_points() const { return (n_ + g_ - 1) / g_ + 1; }
+  std::size_t point(std::size_t j) const { return std::min(j * g_, n_); }
+  Interval gate(std::size_t i, std::size_t j) const { return x_[i].gate(point(j)); }
+  Interval slice(std::size_t i, std::size_t j) const {  // between points j and j + 1
+    const Tube& c = x_[i];
+    const std::size_t a = point(j), b = point(j + 1);
+    if (g_ == 1) return c.slice(a);
+    Interval h = Interval::empty();
+    for (std::size_t k = a; k < b; ++k) {
+      const Interval s = c.slice(k), gk = k > a ? c.gate(k) : s;
+      if (s.is_empty() || gk.is_empty()) return Interval::empty();
+      h |= s;
+      h |= gk;
+    }
+    return h;
+  }
+
+ private:
+  const TubeVector& x_;
+  std::size_t n_, g_;
+};
 
 json stats_json(const ScheduleStep& s) {
   return {{"delta", s.delta},
@@ -71,7 +104,7 @@ json stats_json(const ScheduleStep& s) {
 
 }  // namespace
 
-std::string results_json(const Problem& p, const SolveResult& r) {
+std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o) {
   json j;
   j["problem"] = p.file;
   j["hash"] = p.hash;
@@ -88,7 +121,12 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   j["schedule"] = json::array();
   for (const ScheduleStep& s : r.schedule) j["schedule"].push_back(stats_json(s));
   const TDomain& td = *r.built.td;
-  j["times"] = std::vector<double>(td.times().begin(), td.times().end());
+  const std::size_t g = decimation(td.nb_slices(), o);
+  std::vector<double> times;
+  for (std::size_t k = 0; k < td.nb_slices(); k += g) times.push_back(td.t(k));
+  times.push_back(td.tf());
+  j["times"] = times;
+  j["decimated"] = g;  // 1: every slice; g: every g-th time point, hulls between them
   // The variables are written as text, not as a JSON tree: a tree of their
   // million bounds (plaza1) took most of the time and memory of the output.
   std::string out = j.dump(1);
@@ -102,18 +140,19 @@ std::string results_json(const Problem& p, const SolveResult& r) {
            ", \"dim\": " + std::to_string(v.spec->dim);
     if (v.tubes) {
       out += ", \"components\": [";
+      const Written w(*v.tubes, o);
       for (std::size_t i = 0; i < v.tubes->size(); ++i) {
-        const Tube& x = (*v.tubes)[i];
         out += i == 0 ? "{\"gates\": " : ", {\"gates\": ";
-        append_intervals(out, x.gates());
+        append_intervals(out, w.nb_points(), [&](std::size_t j) { return w.gate(i, j); });
         out += ", \"slices\": ";
-        append_intervals(out, x.slices());
+        append_intervals(out, w.nb_points() - 1, [&](std::size_t j) { return w.slice(i, j); });
         out += "}";
       }
       out += "]";
     } else {
       out += ", \"value\": ";
-      append_intervals(out, v.interval ? std::vector<Interval>{*v.interval} : v.box->components());
+      const std::vector<Interval> value = v.interval ? std::vector<Interval>{*v.interval} : v.box->components();
+      append_intervals(out, value.size(), [&](std::size_t k) { return value[k]; });
     }
     out += "}";
   }
@@ -121,9 +160,10 @@ std::string results_json(const Problem& p, const SolveResult& r) {
   return out;
 }
 
-std::string tube_csv(const VarDomain& v) {
+std::string tube_csv(const VarDomain& v, const OutputOptions& o) {
   const TubeVector& x = *v.tubes;
   const TDomain& td = *x.tdomain();
+  const Written w(x, o);
   std::string out = "t_lb,t_ub";
   for (std::size_t i = 0; i < x.size(); ++i) {
     const std::string n = v.spec->kind == VarKind::Tube ? v.spec->name : v.spec->name + std::to_string(i);
@@ -135,7 +175,7 @@ std::string tube_csv(const VarDomain& v) {
     out += ',';
     append_number(out, tb);
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const Interval y = get(x[i]);
+      const Interval y = get(i);
       if (y.is_empty()) {
         out += ",nan,nan";
         continue;
@@ -147,9 +187,10 @@ std::string tube_csv(const VarDomain& v) {
     }
     out += '\n';
   };
-  for (std::size_t k = 0; k <= td.nb_slices(); ++k) {
-    row(td.t(k), td.t(k), [k](const Tube& c) { return c.gate(k); });
-    if (k < td.nb_slices()) row(td.t(k), td.t(k + 1), [k](const Tube& c) { return c.slice(k); });
+  for (std::size_t j = 0; j < w.nb_points(); ++j) {
+    const double t = td.t(w.point(j));
+    row(t, t, [&](std::size_t i) { return w.gate(i, j); });
+    if (j + 1 < w.nb_points()) row(t, td.t(w.point(j + 1)), [&](std::size_t i) { return w.slice(i, j); });
   }
   return out;
 }
@@ -184,14 +225,14 @@ void check_output_dir(const Problem& p, const std::string& dir, bool tube_files)
   }
 }
 
-void write_results(const Problem& p, const SolveResult& r, const std::string& dir) {
+void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o) {
   check_output_dir(p, dir, false);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error("cannot create the directory " + dir + ": " + ec.message());
-  write_text_file(dir, "results.json", results_json(p, r));
+  write_text_file(dir, "results.json", results_json(p, r, o));
   for (const VarDomain& v : r.built.vars)
-    if (v.tubes) write_text_file(dir, v.spec->name + ".csv", tube_csv(v));
+    if (v.tubes) write_text_file(dir, v.spec->name + ".csv", tube_csv(v, o));
 }
 
 }  // namespace sillage

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -74,4 +75,47 @@ TEST(WriteResults, NeverOverwritesAnInput) {
   EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
   EXPECT_NO_THROW(check_output_dir(p, (dir / "out").string(), true));
   std::filesystem::remove_all(dir);
+}
+
+// Outputs in proportion: past max_slices, every g-th time point with the hull
+// of the slices and gates between (an enclosure still), an empty group empty;
+// max_slices = 0 writes every slice.
+TEST(WriteResults, DecimatedOutputsStillEnclose) {
+  const Problem p = problem_test::parse("[time]\ndomain = [0, 25]\ndelta = 1\n"
+                                        "[var.x]\nkind = \"tube\"\nvalue = \"sin(t) + [-0.1, 0.1]\"\n"
+                                        "[[constraint]]\nkind = \"expr\"\nexpr = \"x - x\"\n");
+  SolveResult r = solve_problem(p);
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  Tube& x = (*r.built.var("x").tubes)[0];
+  x.set(Interval::empty(), 7);  // as a writer may meet it
+  const OutputOptions o{10};
+  EXPECT_EQ(decimation(25, o), 3u);
+  EXPECT_EQ(decimation(10, o), 1u);
+  EXPECT_EQ(decimation(25, OutputOptions{0}), 1u);
+  const auto j = nlohmann::json::parse(results_json(p, r, o));
+  EXPECT_EQ(j["decimated"], 3);
+  const auto& times = j["times"];
+  ASSERT_EQ(times.size(), 10u);  // 0, 3, ..., 24, and 25
+  EXPECT_EQ(times[9], 25.0);
+  const auto& gates = j["variables"]["x"]["components"][0]["gates"];
+  const auto& slices = j["variables"]["x"]["components"][0]["slices"];
+  ASSERT_EQ(gates.size(), 10u);
+  ASSERT_EQ(slices.size(), 9u);
+  for (std::size_t q = 0; q < 9; ++q) {
+    const std::size_t a = 3 * q, b = std::min<std::size_t>(a + 3, 25);
+    EXPECT_EQ(gates[q][0].get<double>(), x.gate(a).lb());
+    if (a <= 7 && 7 < b) {  // the group with the empty slice
+      EXPECT_TRUE(slices[q].is_null());
+      continue;
+    }
+    Interval hull = Interval::empty();  // the slices a..b-1 and the gates a+1..b-1
+    for (std::size_t k = a; k < b; ++k) hull |= k > a ? x.slice(k) | x.gate(k) : x.slice(k);
+    EXPECT_EQ(slices[q][0].get<double>(), hull.lb());
+    EXPECT_EQ(slices[q][1].get<double>(), hull.ub());
+  }
+  const std::string csv = tube_csv(r.built.var("x"), o);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 10 + 9);  // header, gates, slices
+  const std::string full = tube_csv(r.built.var("x"), OutputOptions{0});
+  EXPECT_EQ(std::count(full.begin(), full.end(), '\n'), 1 + 26 + 25);
+  EXPECT_EQ(nlohmann::json::parse(results_json(p, r))["decimated"], 1);  // 25 slices: whole by default
 }
