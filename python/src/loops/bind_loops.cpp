@@ -375,7 +375,7 @@ void init_loops(py::module_& m) {
       .def_readonly("segment1", &PathCrossing::segment1, DOC(PathCrossing, segment1))
       .def_readonly("segment2", &PathCrossing::segment2, "The segment [k, k+1] holding t2 (segment1 + 1 < segment2).")
       .def("__repr__", [](const PathCrossing& c) {
-        return "<PathCrossing t1=" + std::to_string(c.t1) + " t2=" + std::to_string(c.t2) + ">";
+        return "<PathCrossing t1=" + number_text(c.t1) + " t2=" + number_text(c.t2) + ">";
       });
   m.def("self_crossings", &self_crossings, py::arg("t"), py::arg("x"), py::arg("y"), nogil,
         DOC(self_crossings));

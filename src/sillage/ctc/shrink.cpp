@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "sillage/error.h"
+
 namespace sillage {
 
 bool shrank(const IntervalVector& before, const IntervalVector& after, double ratio) {
@@ -15,7 +17,7 @@ bool shrank(const IntervalVector& before, const IntervalVector& after, double ra
 
 void check_ratio(double ratio, const char* where) {
   if (!(ratio >= 0.0 && ratio < 1.0)) {
-    throw Error(std::string(where) + ": ratio must lie in [0, 1), got " + std::to_string(ratio));
+    throw Error(std::string(where) + ": ratio must lie in [0, 1), got " + number_text(ratio));
   }
 }
 

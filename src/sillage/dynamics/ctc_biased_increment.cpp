@@ -179,7 +179,7 @@ class BiasedIncrementNode : public TubeNode {
 
 CtcBiasedIncrement::CtcBiasedIncrement(double drift) : drift_(drift) {
   if (!(drift >= 0) || !std::isfinite(drift)) {
-    throw Error("CtcBiasedIncrement: the in-run drift must be finite and >= 0, got " + std::to_string(drift));
+    throw Error("CtcBiasedIncrement: the in-run drift must be finite and >= 0, got " + number_text(drift));
   }
 }
 

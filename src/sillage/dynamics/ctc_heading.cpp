@@ -32,7 +32,7 @@ bool sweep_positions(TubeData& px, TubeData& py, const std::vector<Interval>& ix
 
 CtcHeading::CtcHeading(double track) : track_(track) {
   if (!(track >= 0) || !std::isfinite(track)) {
-    throw Error("CtcHeading: the track error must be finite and >= 0, got " + std::to_string(track));
+    throw Error("CtcHeading: the track error must be finite and >= 0, got " + number_text(track));
   }
 }
 

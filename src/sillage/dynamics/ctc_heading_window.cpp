@@ -153,13 +153,13 @@ class HeadingWindowNode : public detail::HeadingNodeBase {
 CtcHeadingWindow::CtcHeadingWindow(double window, double track, double turn_accel, std::size_t stride)
     : window_(window), track_(track), turn_accel_(turn_accel), stride_(stride) {
   if (!(window > 0) || !std::isfinite(window)) {
-    throw Error("CtcHeadingWindow: the window must be finite and > 0 s, got " + std::to_string(window));
+    throw Error("CtcHeadingWindow: the window must be finite and > 0 s, got " + number_text(window));
   }
   if (!(track >= 0) || !std::isfinite(track)) {
-    throw Error("CtcHeadingWindow: the track error must be finite and >= 0, got " + std::to_string(track));
+    throw Error("CtcHeadingWindow: the track error must be finite and >= 0, got " + number_text(track));
   }
   if (!(turn_accel > 0)) {
-    throw Error("CtcHeadingWindow: the turn acceleration must be > 0 (or inf), got " + std::to_string(turn_accel));
+    throw Error("CtcHeadingWindow: the turn acceleration must be > 0 (or inf), got " + number_text(turn_accel));
   }
   if (stride == 0) throw Error("CtcHeadingWindow: the stride must be >= 1 slice, got 0");
 }

@@ -28,12 +28,12 @@ void check_options(const BathymetryMissionOptions& o) {
   positive(o.turn_radius, "turn_radius"), positive(o.rail_spacing, "rail_spacing"), positive(o.depth, "depth");
   if (o.rail_spacing >= 2 * o.turn_radius)
     throw Error("BathymetryMission: rail_spacing must be < 2 turn_radius (keyhole turns), got " +
-                std::to_string(o.rail_spacing) + " >= 2 * " + std::to_string(o.turn_radius));
+                number_text(o.rail_spacing) + " >= 2 * " + number_text(o.turn_radius));
   if (!(o.tie_line_angle >= 0 && o.tie_line_angle <= 45))
     throw Error("BathymetryMission: tie_line_angle must be in [0, 45] degrees (0: no tie lines), got " +
                 std::to_string(o.tie_line_angle));
   if (o.speed * 1.02 > o.bounds.speed_max)
-    throw Error("BathymetryMission: speed " + std::to_string(o.speed) + " too close to the stated speed_max");
+    throw Error("BathymetryMission: speed " + number_text(o.speed) + " too close to the stated speed_max");
 }
 
 }  // namespace
@@ -91,11 +91,11 @@ BathymetryMission::BathymetryMission(std::uint64_t seed, const BathymetryMission
     tide_truth_[i] = o.tide.height_value(t) + 0.04 * std::sin(2 * kPi * t / 5000 + tide_ph);
     const Interval seabed = seabed_.dem(p[0], p[1]);
     if (!std::isfinite(seabed.lb()) || !std::isfinite(seabed.ub()))
-      throw Error("BathymetryMission: the path leaves the DEM at t = " + std::to_string(t) + " s");
+      throw Error("BathymetryMission: the path leaves the DEM at t = " + number_text(t) + " s");
     truth_.altitude[i] = seabed.mid() + tide_truth_[i] + p[2];
     if (!(truth_.altitude[i] > 0))
       throw Error("BathymetryMission: the seabed (" + std::to_string(seabed.mid()) + " m deep) rises above the vehicle (" +
-                  std::to_string(-p[2]) + " m deep) at t = " + std::to_string(t) +
+                  number_text(-p[2]) + " m deep) at t = " + number_text(t) +
                   " s; lower options.depth or options.seabed.relief");
     alt_filt_[i] = footprint_depth(seabed_.dem, p[0], p[1], s.yaw, truth_.altitude[i], o.bounds) + tide_truth_[i] + p[2];
     if (i == n) break;
@@ -154,7 +154,7 @@ std::shared_ptr<TDomain> BathymetryMission::tdomain(double dt) const {
   const auto k = static_cast<std::size_t>(std::llround(m));
   if (!(dt > 0) || k == 0 || std::abs(m - static_cast<double>(k)) > 1e-9)
     throw Error("BathymetryMission.tdomain: dt must be a positive multiple of the sensor step " +
-                std::to_string(options_.step) + " s, got " + std::to_string(dt));
+                number_text(options_.step) + " s, got " + number_text(dt));
   std::vector<double> ts;
   for (std::size_t i = 0; i < times_.size(); i += k) ts.push_back(times_[i]);
   if (ts.back() != times_.back()) ts.push_back(times_.back());

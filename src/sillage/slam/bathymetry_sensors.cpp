@@ -74,7 +74,7 @@ double nadir_altitude_max(double measured, const SeabedClass& c, double cell, co
   if (cq.ub() <= 0) return K.ub();
   const Interval disc = Interval(1) - Interval(4) * cq * K;
   if (!(disc.lb() > 0))
-    throw Error("nadir_altitude_max: measured altitude " + std::to_string(measured) +
+    throw Error("nadir_altitude_max: measured altitude " + number_text(measured) +
                 " m is too high for the seabed class (the footprint filter bound has no fixed point)");
   // Smaller root (1 - sqrt(disc)) / (2 cq) = 2K / (1 + sqrt(disc)): the second form is stable.
   return (Interval(2) * K / (Interval(1) + sqrt(disc))).ub();
