@@ -189,3 +189,26 @@ def test_token_stops_ctc_ivp_and_ctc_p_implies_z():
         with pytest.raises(sl.Cancelled, match="cancelled"):
             run(token)
         assert time.monotonic() - start < 2
+
+
+def test_ctrl_c_and_token_stop_temporal_slam(sigint_raises):
+    """temporal_slam on the slow figure eight (x = p, x' = the velocity w): Ctrl-C gives
+    KeyboardInterrupt, a token sillage.Cancelled, both well within 2 s; x stays an enclosure."""
+    _, p, w, z1 = slow_slam()
+    z = sl.TubeVector([z1])
+    f, h = sl.Function(["x1", "x2", "u1", "u2"], "(u1, u2)"), sl.Function(["x1", "x2"], "(x1, x2)")
+    o = sl.TemporalSlamOptions()
+    o.eps = 0.0005
+    x = p.copy()
+    interrupt_after(0.3)
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        sl.temporal_slam(x, w.copy(), w, z, f, h, o)
+    assert time.monotonic() - start < 2
+    assert x.is_subset(p)
+    o.cancel = sl.CancelToken()
+    threading.Timer(0.3, o.cancel.cancel).start()
+    start = time.monotonic()
+    with pytest.raises(sl.Cancelled, match="cancelled"):
+        sl.temporal_slam(p.copy(), w.copy(), w, z, f, h, o)
+    assert time.monotonic() - start < 2

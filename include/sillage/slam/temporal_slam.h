@@ -14,6 +14,7 @@
 #include <functional>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/slam/slam_row.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -35,6 +36,9 @@ struct TemporalSlamOptions {
   // snapshots. Not timed (the row's seconds exclude it). In Python any
   // callable(row, p), or None.
   SlamIterationCallback on_iteration;
+  // Another thread may cancel it: temporal_slam then throws Cancelled within
+  // tens of milliseconds, x and v left as enclosures (Python: Ctrl-C).
+  CancelToken cancel;
 };
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may

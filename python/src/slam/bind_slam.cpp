@@ -149,14 +149,18 @@ void init_slam(py::module_& m) {
       .def_readwrite("accurate", &TemporalSlamOptions::accurate, DOC(TemporalSlamOptions, accurate))
       .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, DOC(TemporalSlamOptions, max_rounds))
       .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration, DOC(TemporalSlamOptions, on_iteration))
+      .def_readwrite("cancel", &TemporalSlamOptions::cancel, DOC(TemporalSlamOptions, cancel))
       .def("__repr__", [](const py::object& self) { return fields_repr(self); });
 
   m.def(
       "temporal_slam",
       [](TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z, const Function& f, const Function& h,
          const TemporalSlamOptions& o) {
-        py::gil_scoped_release unlocked;
-        return temporal_slam(x, v, u, z, f, h, o);
+        TemporalSlamOptions with = o;  // copied with the GIL: it may hold a Python callback
+        return run_interruptible(o.cancel, [&](const CancelToken& token) {
+          with.cancel = token;
+          return temporal_slam(x, v, u, z, f, h, with);
+        });
       },
       py::arg("x"), py::arg("v"), py::arg("u"), py::arg("z"), py::arg("f"), py::arg("h"),
       py::arg("options") = TemporalSlamOptions(),

@@ -106,6 +106,7 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
     if ((fast && !options.fast) || (!fast && !options.accurate)) continue;
     const CtcPImpliesZ cpz(options.eps, fast);
     for (std::size_t round = 0; round < options.max_rounds; ++round) {
+      check_cancel(options.cancel, "temporal_slam");
       // 1-2. Evolution: v = f(x, u) both ways (x from v too), x' = v.
       evolution(x, v, u, f);
       CtcDeriv().contract(x, v);
@@ -123,7 +124,7 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
       for (std::size_t it = 0; it < cpz.max_iterations(); ++it) {
         SlamRow r;
         const auto start = std::chrono::steady_clock::now();
-        const bool shrunk = cpz.iterate(p, w, z, r);
+        const bool shrunk = cpz.iterate(p, w, z, r, options.cancel);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         r.iteration = rows.size() + 1;
         cumulated += r.seconds;
