@@ -74,6 +74,6 @@ TEST(LoadRefusals, ASolveThatCannotFitIsRefusedWithItsFigure) {
                      "the solve, more than this machine's"),
             std::string::npos)
       << msg;
-  EXPECT_NE(check_summary(p).find("memory: about 5722046.0 MiB at the peak of a solve (an estimate)"), std::string::npos)
+  EXPECT_NE(check_summary(p).find("memory: about 5722054.0 MiB at the peak of a solve (an estimate)"), std::string::npos)
       << check_summary(p);
 }
