@@ -20,14 +20,21 @@ VERSION = re.search(r"project\(sillage VERSION ([0-9.]+)", (ROOT / "CMakeLists.t
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build_dir = Path(self.build_temp).resolve() / "cmake"
-        build_dir.mkdir(parents=True, exist_ok=True)
-        subprocess.check_call([
-            "cmake", "-S", str(ROOT), "-B", str(build_dir),
-            "-DCMAKE_BUILD_TYPE=Release",
-            "-DSILLAGE_BUILD_TESTS=OFF", "-DSILLAGE_BUILD_BENCH=OFF", "-DSILLAGE_BUILD_EXAMPLES=OFF",
-            f"-DPython3_EXECUTABLE={sys.executable}",
-        ])
+        # SILLAGE_BUILD_DIR: a build directory of this project configured with the Python module
+        # (scripts/build.sh's build/): the module is built there (nothing to do when it is up to
+        # date) instead of configuring and compiling everything again in a directory of pip's.
+        reuse = os.environ.get("SILLAGE_BUILD_DIR")
+        build_dir = Path(reuse).resolve() if reuse else Path(self.build_temp).resolve() / "cmake"
+        if reuse and not (build_dir / "CMakeCache.txt").is_file():
+            raise RuntimeError(f"SILLAGE_BUILD_DIR={reuse}: not a configured CMake build directory")
+        if not reuse:
+            build_dir.mkdir(parents=True, exist_ok=True)
+            subprocess.check_call([
+                "cmake", "-S", str(ROOT), "-B", str(build_dir),
+                "-DCMAKE_BUILD_TYPE=Release",
+                "-DSILLAGE_BUILD_TESTS=OFF", "-DSILLAGE_BUILD_BENCH=OFF", "-DSILLAGE_BUILD_EXAMPLES=OFF",
+                f"-DPython3_EXECUTABLE={sys.executable}",
+            ])
         jobs = str(os.cpu_count() or 2)
         subprocess.check_call(["cmake", "--build", str(build_dir), "--target", "_sillage", "-j", jobs])
         built = next((build_dir / "python" / "sillage").glob("_sillage*.so"))

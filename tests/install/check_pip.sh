@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # `pip install --no-build-isolation .` into a fresh virtual environment, offline,
-# then imports the installed package and uses it.
+# then imports the installed package and uses it. With a build directory as
+# argument, pip takes the module from it (SILLAGE_BUILD_DIR, setup.py) rather
+# than compiling the whole library a second time.
 set -euo pipefail
+if [ $# -ge 1 ]; then export SILLAGE_BUILD_DIR="$1"; fi
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
