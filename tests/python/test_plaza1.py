@@ -1,6 +1,7 @@
 """The plaza1 example on the real data (skipped without ../shared/data/plaza1):
 with the stated bounds every ground-truth sample is inside the position tube,
 with and without the ranges, and the ranges make the tube much thinner."""
+import math
 import sys
 from pathlib import Path
 
@@ -44,6 +45,33 @@ def test_ten_times_the_drift_stays_inside():
     _, stats0, _, inside0, _, _, _ = plaza1.solve(d, False, fitted)
     _, stats1, _, _, _, _, _ = plaza1.solve(d, True, fitted)
     assert inside0 < len(t) and stats1.empty
+
+
+@pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
+def test_a_turn_on_bias_over_the_old_class_bound_stays_inside():
+    """Issue 37: another recording of the same robot class had a turn-on bias 6 % over the old
+    class bound, 5 mrad/s (0.3 deg/s, stated without a margin). This run's heading given such a bias
+    (5.30 mrad/s instead of 0.345): the old bound is violated (the audit says so, the example would
+    fail); the class bound with its margin (0.6 deg/s, 10.5 mrad/s) holds it with room, the truth
+    stays inside, and the b0 learnt with the ranges holds the recording's slope."""
+    import types
+    import plaza1_bounds
+    d = plaza1.load(DATA)
+    t, n = d["t"], len(d["dist"])
+    d["dpsi"] = [d["dpsi"][k] - 0.004955 * (t[k + 1] - t[k]) for k in range(n)]
+    b = plaza1_bounds.bounds(None, d)
+    assert b.gyro_bias == pytest.approx(10.5e-3)
+    old = types.SimpleNamespace(**dict(vars(b), gyro_bias=5e-3))
+    slope = {l.name: l for l in plaza1_bounds.audit(d, old)}["gyro turn-on bias"]
+    assert slope.used == pytest.approx(5.30e-3, abs=0.01e-3) and slope.percent() > 100
+    stated = {l.name: l for l in plaza1_bounds.audit(d, b)}
+    assert stated["gyro turn-on bias"].percent() < 55 and all(
+        math.isnan(l.used) or l.percent() <= 100 for l in stated.values())
+    for with_ranges in (False, True):
+        bias = []
+        _, stats, _, inside, mean, _, _ = plaza1.solve(d, with_ranges, b, bias=bias)
+        assert not stats.empty and inside == len(t)
+    assert bias[0].contains(-slope.used) and mean < 30
 
 
 @pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
@@ -120,24 +148,40 @@ def test_q_relaxed_ranges(tmp_path):
 def test_heading_windows_bound_the_heading_from_an_unknown_start():
     """CtcHeadingWindow (40 s windows): from an unknown start (any heading) the heading is learned
     from the positions and stays bounded, where without the windows it stays a full turn and grows
-    with the gyro drift; the truth stays inside and the boxes are thinner."""
+    with the gyro drift; the truth stays inside and the boxes are thinner. Any heading is taken as
+    its two halves, [-pi, 0] and [0, pi]: one interval [-pi, pi] of the heading, whose gates grow
+    wider than a turn with the stated gyro class (10.5 mrad/s), keeps both ends of a gate where a
+    window's cells lie a turn apart, and learns nothing on this run (docs/plaza1.md, "Left for
+    later"); the half that does not hold the start heading is proven empty."""
     import argparse
+    import types
     import plaza1_bounds
     d = plaza1.load(DATA)
     ap = argparse.ArgumentParser()
     plaza1_bounds.add_options(ap)
     b = plaza1_bounds.bounds(ap.parse_args(["--unknown-start", "1"]), d)
     n = len(d["t"])
-    widths = {}
-    for window in (0, plaza1.HEADING_WINDOW):
-        heading = []
-        _, stats, _, inside, mean, _, _ = plaza1.solve(d, True, b, window=window, heading=heading)
-        assert not stats.empty and inside == n
-        widths[window] = ([heading[0].gate(k).diam() for k in range(n)], mean)
-    (plain, mean0), (windowed, mean1) = widths[0], widths[plaza1.HEADING_WINDOW]
     late = [k for k in range(n) if d["t"][k] >= d["t"][0] + 60]
     middle = [k for k in late if d["t"][k] <= d["t"][0] + 1200]
-    assert min(plain[k] for k in late) > 6.28  # a full turn and more: nothing learned
+    # The whole turn as one interval: the guarantee holds, with and without the windows.
+    means = {}
+    for window in (0, plaza1.HEADING_WINDOW):
+        heading = []
+        _, stats, _, inside, means[window], _, _ = plaza1.solve(d, True, b, window=window, heading=heading)
+        assert not stats.empty and inside == n
+        if window == 0:
+            assert min(heading[0].gate(k).diam() for k in late) > 6.28  # a full turn and more: nothing learned
+    # Its two halves, with the windows: one is empty, the other holds the truth and learns the heading.
+    kept = []
+    for centre in (-math.pi / 2, math.pi / 2):
+        half = types.SimpleNamespace(**dict(vars(b), start_heading=centre, heading0=math.pi / 2))
+        heading = []
+        _, stats, _, inside, mean, _, _ = plaza1.solve(d, True, half, heading=heading)
+        if not stats.empty:
+            assert inside == n
+            kept.append(([heading[0].gate(k).diam() for k in range(n)], mean))
+    assert len(kept) == 1
+    windowed, mean = kept[0]
     assert max(windowed[k] for k in middle) < 3.0  # within +-1.5 rad from 60 s to 1200 s
     assert max(windowed[k] for k in late) < 5.0  # less than a full turn to the end (docs/plaza1.md)
-    assert mean1 < mean0 - 1.0
+    assert mean < means[0] - 1.0 and mean <= means[plaza1.HEADING_WINDOW]
