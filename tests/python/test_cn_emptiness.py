@@ -63,6 +63,32 @@ def test_ctc_eval_with_an_impossible_observation():
     assert s.empty_contractor == "CtcEval"
 
 
+def test_a_gate_off_its_slice_is_inconsistent_input():
+    """A tube with no continuous trajectory (gate 3 misses slice 2): no
+    solution before any contractor runs, the pair named, the tube left as given."""
+    td = TDomain(0.0, 2.0, 0.5)
+    slices, gates = [Interval()] * 4, [Interval()] * 5
+    slices[2], gates[3] = Interval(0, 1), Interval(5, 6)
+    x, v = Tube(td, slices, gates), Tube(td, Interval(-1, 1))
+    given = x.copy()
+    cn = sillage.ContractorNetwork()
+    cn.add(CtcDeriv(), [x, v])
+    cn.add(CtcEval(), [Interval(0.1, 0.2), Interval(-10, 10), x, v])
+    cn.set_name(x, "x")
+    for _ in range(2):  # never a success, however often asked
+        s = cn.contract()
+        assert s.empty and s.contractor_calls == 0 and s.empty_contractor == ""
+        assert s.emptiness == ("tube 'x': gate 3 [5, 6] at t = 1.5 does not meet slice 2 [0, 1] ([1, 1.5]): "
+                               "no continuous trajectory through it (inconsistent input)")
+        assert (s.empty_domain_name, s.empty_atom, s.empty_atom_index) == ("x", "gate", 3)
+        assert (s.empty_time, s.empty_atom_value) == (Interval(1.5), Interval(5, 6))
+        assert (s.disjoint_atom, s.disjoint_atom_index) == ("slice", 2)
+        assert (s.disjoint_time, s.disjoint_value) == (Interval(1, 1.5), Interval(0, 1))
+    assert x == given
+    assert not CtcDeriv().contract(x.copy(), v)  # alone: no solution too
+    assert not CtcEval().contract(Interval(0.1, 0.2), Interval(-10, 10), x.copy(), v)
+
+
 def test_set_name_errors():
     cn = sillage.ContractorNetwork()
     with pytest.raises(sillage.Error, match="empty name"):

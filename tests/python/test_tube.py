@@ -282,7 +282,7 @@ def test_undefined_expression_gates_are_unknown_not_empty():
         assert consistent and not cn.contract().empty and x == y, e
 
 
-def test_load_tube_rejects_trailing_bytes_directories_and_disjoint_gates(tmp_path):
+def test_load_tube_rejects_trailing_bytes_and_directories(tmp_path):
     td = TDomain([0.0, 1.0, 2.0])
     x = Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(1), Interval(2)])
     path = tmp_path / "x.tube"
@@ -293,8 +293,16 @@ def test_load_tube_rejects_trailing_bytes_directories_and_disjoint_gates(tmp_pat
         sillage.load_tube(str(path))
     with pytest.raises(sillage.Error, match="is a directory"):
         sillage.load_tube(str(tmp_path))
-    with pytest.raises(sillage.Error, match=r"gate 1 = \[5, 5\] does not meet slice 0 = \[0, 1\]"):
-        Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(5), Interval(2)])
+
+
+def test_a_gate_off_its_slice_is_kept_and_loads_as_saved(tmp_path):
+    """No continuous trajectory goes through gate 1: a tube that holds none, not an error."""
+    td = TDomain([0.0, 1.0, 2.0])
+    x = Tube(td, [Interval(0, 1), Interval(1, 2)], [Interval(0), Interval(5), Interval(2)])
+    assert x.gate(1) == Interval(5) and not x.is_empty()
+    path = tmp_path / "x.tube"
+    sillage.save_tube(x, str(path))
+    assert sillage.load_tube(str(path), td) == x
 
 
 def test_load_tube_names_the_file_and_the_bad_time_point(tmp_path):

@@ -63,9 +63,26 @@ def test_tube_from_array_errors():
     bad[0] = [2.0, 1.0]
     with pytest.raises(s.Error, match="slices row 0: lb > ub"):
         Tube(td, bad)
+    g = np.array([[0.0, 0.0], [0.5, 1.0], [1.0, 2.0], [3.0, 3.0]])
+    bad = g.copy()
+    bad[1, 1] = np.nan
+    with pytest.raises(s.Error, match="gates row 1 has a NaN bound"):
+        Tube(td, A, bad)
+    bad = g.copy()
+    bad[3] = [4.0, 3.0]
+    with pytest.raises(s.Error, match="gates row 3: lb > ub"):
+        Tube(td, A, bad)
+
+
+def test_tube_from_arrays_keeps_a_gate_off_its_slice():
+    """Not malformed: a tube with no continuous trajectory, kept as given (a
+    network reports it as empty, test_cn_emptiness.py), and pickled as such."""
     g = np.array([[0.0, 0.0], [5.0, 6.0], [1.0, 2.0], [3.0, 3.0]])  # gate 1 disjoint from slice 0
-    with pytest.raises(s.Error):
-        Tube(td, A, g)
+    x = Tube(td3(), A, g)
+    assert x.gates_array().tolist() == g.tolist() and not x.is_empty()
+    assert pickle.loads(pickle.dumps(x)).gates_array().tolist() == g.tolist()
+    v = TubeVector(td3(), [A, A], [g, g])
+    assert v[1].gate(1) == Interval(5, 6)
 
 
 def test_tube_list_forms_still_work():

@@ -35,9 +35,6 @@ struct DerivativePair {
   AtomRange x, v;
 };
 
-// "No atom" (NodeRun::empty_at).
-inline constexpr std::size_t kNoAtom = static_cast<std::size_t>(-1);
-
 // What one run of a node gets from the network, and gives back.
 struct NodeRun {
   const std::vector<std::shared_ptr<Domain>>& domains;

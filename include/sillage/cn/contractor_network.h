@@ -45,8 +45,11 @@
 // Emptiness is an answer (no trajectory, no solution fits the data and the
 // bounds), never a success: ContractStats says which contractor emptied which
 // domain, and where (the slice or gate of a tube, and its time), in words
-// (emptiness) and field by field. Name the domains (set_name, create_dom) to
-// read "tube 'x'" rather than "domain 3 (Tube(100 slices))".
+// (emptiness) and field by field. Before the propagation contract() checks
+// each domain once: an empty one, or a tube with a gate disjoint from a
+// neighbouring slice (no continuous trajectory through it), is no solution,
+// reported with both atoms and left as given. Name the domains (set_name,
+// create_dom) to read "tube 'x'" rather than "domain 3 (Tube(100 slices))".
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -89,6 +92,14 @@ struct ContractStats {
   std::string empty_atom;                // "slice", "gate", "component" or "" (the whole domain)
   std::size_t empty_atom_index = 0;      // index of the slice, gate or component that became empty
   Interval empty_time = Interval::empty();  // time of the slice or gate; CtcEval: also its [t]
+  // Inconsistent input (a tube's gate, empty_atom, disjoint from a
+  // neighbouring slice: no continuous trajectory through it): the gate's
+  // value; empty otherwise.
+  Interval empty_atom_value = Interval::empty();
+  std::string disjoint_atom;                    // the slice that gate misses: "slice", or "" (not that case)
+  std::size_t disjoint_atom_index = 0;          // its index
+  Interval disjoint_time = Interval::empty();   // its time interval
+  Interval disjoint_value = Interval::empty();  // its value
 };
 
 class ContractorNetwork {
@@ -166,6 +177,12 @@ class ContractorNetwork {
   // by `by` (a node's describe(); "" for empty on input).
   void explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
                      const Interval& time) const;
+  // The fields of s naming domain d, atom a and `by`; the place of a.
+  AtomPlace name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const;
+  // Fills s if domain d holds no value before the propagation (Domain::empty_on_input).
+  void explain_empty_on_input(ContractStats& s, std::size_t d) const;
+  // Domain d's `gate` misses its neighbouring `slice`: both named, with their values and times.
+  void explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const;
   // A contractor (a Python one may) that resized a domain or sampled its
   // TDomain during contract() made the nodes' layouts stale: DimensionError
   // rather than a result computed on the wrong atoms.

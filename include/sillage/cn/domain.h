@@ -26,6 +26,18 @@ struct AtomPlace {
   std::string str() const;
 };
 
+// "No atom" (NodeRun::empty_at, EmptyOnInput).
+inline constexpr std::size_t kNoAtom = static_cast<std::size_t>(-1);
+
+// Why a domain holds no value before any contraction: an empty atom, or an
+// atom that misses another one (a tube's gate disjoint from a neighbouring
+// slice: no continuous trajectory goes through it).
+struct EmptyOnInput {
+  bool empty = false;            // the domain holds no value
+  std::size_t atom = kNoAtom;    // the empty atom (kNoAtom: none named), or the gate that misses `misses`
+  std::size_t misses = kNoAtom;  // the slice the gate does not meet; kNoAtom if `atom` is empty
+};
+
 class Domain {
  public:
   virtual ~Domain() = default;
@@ -34,6 +46,10 @@ class Domain {
   // Replaces atom i (the network only ever narrows it).
   virtual void set_atom(std::size_t i, const Interval& x) = 0;
   virtual bool is_empty() const = 0;
+  // Checked by contract() before the propagation: why the domain holds no
+  // value (by default its first empty atom; a tube also finds a gate
+  // disjoint from a neighbouring slice, the first flaw in time order).
+  virtual EmptyOnInput empty_on_input() const;
   // The wrapped object: two domains with the same key are the same variable.
   virtual const void* key() const = 0;
   // "Interval", "IntervalVector(3)", ...

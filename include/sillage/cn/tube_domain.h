@@ -25,6 +25,9 @@ class TubeDomain : public Domain, public TubeAtoms {
   Interval atom(std::size_t i) const override;
   void set_atom(std::size_t i, const Interval& x) override;
   bool is_empty() const override { return x_->is_empty(); }
+  // One pass over the tube: its first empty slice or gate, or gate disjoint
+  // from a neighbouring slice (a tube that holds no continuous trajectory).
+  EmptyOnInput empty_on_input() const override;
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;

@@ -39,9 +39,10 @@ class Tube {
   // Slice codomains given (size N, DimensionError otherwise); gate k is the
   // intersection of the two slices around t_k, the end gates the end slices.
   Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices);
-  // Slices (size N) and gates (size N+1) given. Error if a non-empty gate k
-  // is disjoint from a non-empty slice k-1 or k (no continuous trajectory
-  // could cross it: the message names the gate, the slice and their values).
+  // Slices (size N) and gates (size N+1) given, DimensionError otherwise. A
+  // gate disjoint from a neighbouring slice is taken as given: such a tube
+  // holds no continuous trajectory, which CtcDeriv and a ContractorNetwork
+  // report as no solution (is_empty() looks at each slice and gate alone).
   Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices,
        const std::vector<Interval>& gates);
   // From an expression of the single variable t, e.g.

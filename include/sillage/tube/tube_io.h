@@ -9,15 +9,16 @@
 //
 // Loading checks everything: magic, version, kind, sizes, time points (finite
 // and increasing: an error gives the first bad one, its byte and its value),
-// bound pairs, gates meeting their neighbouring slices; a truncated or
-// foreign file throws Error saying what and at which byte offset, and naming
-// the file. A file holds one object: trailing bytes are an Error (giving the
-// byte where they start), a directory, a device, an unreadable path or a
-// file larger than max_file_bytes() (read_file.h: 2 GiB by default) too. A
-// stream is read up to the end of the object only. When a TDomain is passed,
-// the stored time points must equal its own (DimensionError otherwise, naming
-// the first that differs) and the result is attached to it; otherwise a new
-// TDomain is created.
+// bound pairs; a truncated or foreign file throws Error saying what and at
+// which byte offset, and naming the file. A gate disjoint from a neighbouring
+// slice is loaded as saved (a tube that holds no trajectory, as
+// Tube(td, slices, gates) takes it). A file holds one object: trailing bytes
+// are an Error (giving the byte where they start), a directory, a device, an
+// unreadable path or a file larger than max_file_bytes() (read_file.h: 2 GiB
+// by default) too. A stream is read up to the end of the object only. When a
+// TDomain is passed, the stored time points must equal its own
+// (DimensionError otherwise, naming the first that differs) and the result is
+// attached to it; otherwise a new TDomain is created.
 #include <iosfwd>
 #include <memory>
 #include <string>

@@ -75,6 +75,12 @@ void init_cn(py::module_& m) {
       .def_readonly("empty_atom_index", &ContractStats::empty_atom_index,
                     DOC(ContractStats, empty_atom_index))
       .def_readonly("empty_time", &ContractStats::empty_time, DOC(ContractStats, empty_time))
+      .def_readonly("empty_atom_value", &ContractStats::empty_atom_value, DOC(ContractStats, empty_atom_value))
+      .def_readonly("disjoint_atom", &ContractStats::disjoint_atom, DOC(ContractStats, disjoint_atom))
+      .def_readonly("disjoint_atom_index", &ContractStats::disjoint_atom_index,
+                    DOC(ContractStats, disjoint_atom_index))
+      .def_readonly("disjoint_time", &ContractStats::disjoint_time, DOC(ContractStats, disjoint_time))
+      .def_readonly("disjoint_value", &ContractStats::disjoint_value, DOC(ContractStats, disjoint_value))
       .def("__repr__", [](const ContractStats& s) {
         return "ContractStats(iterations=" + std::to_string(s.iterations) +
                ", contractor_calls=" + std::to_string(s.contractor_calls) + ", time=" + std::to_string(s.time) +

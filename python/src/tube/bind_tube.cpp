@@ -251,7 +251,8 @@ void init_tube_class(py::module_& m) {
         "points, degenerate slices); gates (optional) of shape (N+1, 2). Without gates, gate k is the\n"
         "intersection of the two slices around t_k and the end gates are the end slices. [inf, -inf] is\n"
         "the empty interval (what slices_array() gives).\n"
-        "DimensionError for a wrong shape; sillage.Error for NaN, lb > ub, or a gate disjoint from a slice.")
+        "DimensionError for a wrong shape; sillage.Error for NaN or lb > ub. A gate disjoint from a\n"
+        "neighbouring slice is kept: that tube holds no trajectory, which a network reports as empty.")
       .def(py::init<TD, const std::string&>(), py::arg("tdomain"), py::arg("expr"),
            DOC(Tube, Tube, TDomain_string))
       .def(py::init<TD, const Function&>(), py::arg("tdomain"), py::arg("f"),

@@ -223,8 +223,7 @@ std::size_t ContractorNetwork::first_empty_atom(std::size_t d, std::size_t first
   return kNoAtom;
 }
 
-void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
-                                      const Interval& time) const {
+AtomPlace ContractorNetwork::name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const {
   s.empty = true;
   s.empty_domain = label(d);
   s.empty_domain_index = d;
@@ -234,6 +233,12 @@ void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size
   s.empty_atom = place.kind;
   s.empty_atom_index = place.index;
   s.empty_time = place.time;
+  return place;
+}
+
+void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
+                                      const Interval& time) const {
+  const AtomPlace place = name_empty(s, d, a, by);
   const std::string at = place.kind.empty() ? "" : " at " + place.str();
   if (by.empty()) {
     s.emptiness = noun(d) + " was empty on input" + at;
@@ -243,6 +248,41 @@ void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size
   if (!time.is_empty()) {
     s.emptiness += " for t in " + time.str();
     if (place.kind.empty()) s.empty_time = time;
+  }
+}
+
+namespace {
+
+// "gate 3 [5, 6] at t = 1.5", "slice 2 [0, 1] ([1, 1.5])": an atom with its value, then its time.
+std::string with_value(const AtomPlace& p, const Interval& value) {
+  const std::string s = p.kind + " " + std::to_string(p.index) + " " + value.str();
+  if (p.kind == "gate") return s + " at t = " + number_text(p.time.lb());
+  if (p.kind == "slice") return s + " (" + p.time.str() + ")";
+  return s;
+}
+
+}  // namespace
+
+void ContractorNetwork::explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const {
+  const Domain& dom = *domains_[d];
+  const AtomPlace g = name_empty(s, d, gate, ""), x = dom.place(slice);
+  s.empty_atom_value = dom.atom(gate);
+  s.disjoint_atom = x.kind;
+  s.disjoint_atom_index = x.index;
+  s.disjoint_time = x.time;
+  s.disjoint_value = dom.atom(slice);
+  s.emptiness = noun(d) + ": " + with_value(g, s.empty_atom_value) + " does not meet " +
+                with_value(x, s.disjoint_value) + ": no continuous trajectory through it (inconsistent input)";
+}
+
+// The domains are left as given, as for an empty domain: the report says why.
+void ContractorNetwork::explain_empty_on_input(ContractStats& s, std::size_t d) const {
+  const EmptyOnInput e = domains_[d]->empty_on_input();
+  if (!e.empty) return;
+  if (e.misses == kNoAtom) {
+    explain_empty(s, d, e.atom, "", Interval::empty());
+  } else {
+    explain_disjoint(s, d, e.atom, e.misses);
   }
 }
 
@@ -309,11 +349,11 @@ ContractStats ContractorNetwork::contract() {
     stats.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   };
+  // One pass over each domain: an empty one, or a tube with a gate off its
+  // slices, is no solution before any contractor runs.
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     check_layout(d);
-    if (domains_[d]->is_empty() && !stats.empty) {
-      explain_empty(stats, d, first_empty_atom(d, 0, domains_[d]->nb_atoms()), "", Interval::empty());
-    }
+    if (!stats.empty) explain_empty_on_input(stats, d);
   }
   if (stats.empty) return finish();
 

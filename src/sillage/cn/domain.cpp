@@ -4,6 +4,14 @@
 
 namespace sillage {
 
+EmptyOnInput Domain::empty_on_input() const {
+  if (!is_empty()) return {};
+  for (std::size_t a = 0; a < nb_atoms(); ++a) {
+    if (atom(a).is_empty()) return {true, a};
+  }
+  return {true};
+}
+
 IntervalDomain::IntervalDomain(std::shared_ptr<Interval> x) : x_(std::move(x)) {
   if (!x_) throw Error("ContractorNetwork: null Interval domain");
 }

@@ -66,21 +66,6 @@ std::shared_ptr<TubeData> copy_data(const TubeData& x) {
   return d;
 }
 
-// A continuous trajectory through gate k stays in the closed slices around
-// t_k: a non-empty gate disjoint from a non-empty neighbouring slice is an
-// inconsistent input, not an empty tube (that one has an empty slice or gate).
-void check_gates(const std::vector<Interval>& slices, const std::vector<Interval>& gates, const char* where) {
-  for (std::size_t k = 0; k < gates.size(); ++k) {
-    for (std::size_t s = k > 0 ? k - 1 : 0; s <= k && s < slices.size(); ++s) {
-      const Interval &g = gates[k], &x = slices[s];
-      if (!g.is_empty() && !x.is_empty() && !g.intersects(x)) {
-        throw Error(std::string(where) + ": gate " + std::to_string(k) + " = " + g.str() + " does not meet slice " +
-                    std::to_string(s) + " = " + x.str() + " (a gate must meet its neighbouring slices)");
-      }
-    }
-  }
-}
-
 }  // namespace
 
 Tube::Tube(std::shared_ptr<TDomain> td, const Interval& x)
@@ -111,7 +96,6 @@ Tube::Tube(std::shared_ptr<TDomain> td, const std::vector<Interval>& slices, con
                          std::to_string(gates.size()) + " gates given, the TDomain needs " + std::to_string(n) +
                          " and " + std::to_string(n + 1));
   }
-  check_gates(slices, gates, "Tube(td, slices, gates)");
   data_ = std::make_shared<TubeData>();
   data_->slices.assign(slices.begin(), slices.end());
   data_->gates.assign(gates.begin(), gates.end());
