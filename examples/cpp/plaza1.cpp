@@ -11,6 +11,9 @@
 // 0: none), which keeps the heading bounded, even from an unknown start. The
 // gyro's bias is one unknown b0 of the run (--gyro-turn-on-bias) plus a small
 // in-run drift (--gyro-in-run-drift; CtcBiasedIncrement), printed at the end.
+// From an unknown start (--unknown-start 1) the start heading [−π, π] is cut into
+// --start-heading-pieces N pieces (default 2), one network each: a piece is proven
+// empty or contracted, and the answer is the hull of the non-empty pieces' tubes.
 // The stated error bounds (plaza1_bounds.h, each one an option) are the model; the check is that
 // every ground-truth sample lies in the position tube. The network is in
 // plaza1_network.h (shared with bench/bench_plaza1.cpp).
@@ -40,17 +43,21 @@ struct Result {
   std::size_t nb_ranges = 0;
   std::shared_ptr<Tube> psi;
   Interval b0;  // the gyro's turn-on bias
+  std::vector<plaza1::Piece> pieces;  // one per piece of the start heading
 };
 
-Result solve_timed(const Plaza1Data& d, const Bounds& b, bool with_ranges, int q, double heading_window) {
+// The network once per piece of the start heading (plaza1::solve_pieces), the hull of the
+// non-empty ones.
+Result solve_timed(const Plaza1Data& d, const Bounds& b, bool with_ranges, int q, double heading_window, int pieces) {
   const double start = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-  const plaza1::Solution sol = plaza1::solve(d, b, with_ranges, q, heading_window);
+  plaza1::PieceSolution sol = plaza1::solve_pieces(d, b, with_ranges, q, heading_window, pieces);
   Result res;
-  res.p = sol.p;
-  res.stats = sol.stats;
-  res.nb_ranges = sol.nb_ranges;
-  res.psi = sol.psi;
-  res.b0 = *sol.b0;
+  res.p = sol.hull.p;
+  res.stats = sol.hull.stats;
+  res.nb_ranges = sol.hull.nb_ranges;
+  res.psi = sol.hull.psi;
+  res.b0 = *sol.hull.b0;
+  res.pieces = std::move(sol.pieces);
   res.cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
   return res;
 }
@@ -106,22 +113,51 @@ int example_main(int argc, char** argv) {
     std::fprintf(stderr, "plaza1: --heading-window takes a length >= 0 in seconds, got %g\n", heading_window);
     return 2;
   }
+  // --start-heading-pieces N: the start heading cut into N pieces, one network each, their hull the
+  // answer (default: 2 from an unknown start, any heading; 1 otherwise).
+  const bool unknown = example::option_number(argc, argv, "--unknown-start", 0) != 0;
+  const double pieces = example::option_number(argc, argv, "--start-heading-pieces", unknown ? 2 : 1);
+  if (!(pieces >= 1) || pieces != std::floor(pieces) || pieces > 1000) {
+    std::fprintf(stderr, "plaza1: --start-heading-pieces takes a whole number from 1 to 1000, got %g\n", pieces);
+    return 2;
+  }
   std::vector<int> runs = {-2, -1};  // -2: odometry only, -1: strict ranges, q >= 0: q-relaxed ranges
   if (q_ranges >= 0) runs.push_back(static_cast<int>(q_ranges));
   double strict_mean = NAN, strict_cpu = NAN;
   for (const int run : runs) {
     const bool with_ranges = run != -2;
-    const Result r = solve_timed(d, b, with_ranges, run, heading_window);
+    const Result r = solve_timed(d, b, with_ranges, run, heading_window, static_cast<int>(pieces));
     const std::size_t n = d.t.size();
     const std::string qlabel = "odometry + ranges, at most " + std::to_string(run) + " wrong";
     const char* label = run >= 0 ? qlabel.c_str() : with_ranges ? "odometry + ranges" : "odometry only";
     std::printf("%s: %zu ranges, %zu rounds, %zu contractor runs, %.2f s CPU, empty = %d\n", label, r.nb_ranges,
                 r.stats.iterations, r.stats.contractor_calls, r.cpu, r.stats.empty);
+    if (r.pieces.size() > 1) {  // each piece of the start heading: empty (and why) or kept in the hull
+      for (const plaza1::Piece& piece : r.pieces) {
+        std::printf("  start heading piece [%.4f, %.4f] rad: %s, %zu rounds, %.2f s CPU\n", piece.start.lb(),
+                    piece.start.ub(), piece.sol.stats.empty ? example::empty_text(piece.sol.stats).c_str() : "not empty",
+                    piece.sol.stats.iterations, piece.cpu);
+      }
+      if (!r.stats.empty) std::printf("  the tubes below: the hull of the non-empty pieces\n");
+    }
     if (run == -1) {
       // GOMNE over the ranges stops at the first q that leaves a trajectory: here q = 0 if the strict network is not empty.
       std::printf("  smallest number of wrong ranges consistent with the data: %s\n", r.stats.empty ? "> 0" : "0");
     }
     // No solution, or an unbounded tube: an answer without truth or box figures, and a failed check.
+    // Every piece of the start heading empty: inconsistent, with each piece's explanation.
+    if (r.stats.empty && r.pieces.size() > 1) {
+      std::string why = "INCONSISTENT: every piece of the start heading is empty";
+      for (const plaza1::Piece& piece : r.pieces) {
+        char start[80];
+        std::snprintf(start, sizeof start, " [%.4f, %.4f] rad: ", piece.start.lb(), piece.start.ub());
+        why += start + example::empty_text(piece.sol.stats) + ";";
+      }
+      std::printf("  INCONSISTENT: every piece of the start heading is empty (each piece says why above)\n");
+      summary += std::string(label) + ": " + why + " ";
+      ok = false;
+      continue;
+    }
     if (!example::check_stats(r.stats, label) || !example::enclosure_ok(*r.p)) {
       const std::string why = r.stats.empty ? example::empty_text(r.stats) : "UNBOUNDED: the position tube is unbounded";
       if (!r.stats.empty) std::printf("  %s\n", why.c_str());

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <vector>
@@ -66,10 +67,12 @@ constexpr double kHeadingWindow = 40.0;
 // The network (with the ranges if `with_ranges`; q >= 0: at most q of them
 // wrong, one CtcQEval; CtcHeadingWindow over windows of `heading_window`
 // seconds if > 0) at its fixed point.
+// td: the time domain (nullptr: a new one on d.t); the pieces of solve_pieces share one, so that
+// their tubes can be joined.
 inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_ranges, int q = -1,
-                      double heading_window = kHeadingWindow) {
+                      double heading_window = kHeadingWindow, std::shared_ptr<TDomain> td = nullptr) {
   using example::slice_tube;
-  const auto td = TDomain::create(d.t);
+  if (!td) td = TDomain::create(d.t);
   const std::size_t n = td->nb_slices();
   std::vector<Interval> dpsi(n), dist(n), measured(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -126,6 +129,8 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   cn.set_name(s.p, "p");
   cn.set_name(v, "v");
   cn.set_name(psi, "psi");
+  // The gyro's turn-on bias, when in the network: what empties a wrong piece of the start heading.
+  if (b.gyro_drift < b.gyro_bias) cn.set_name(s.b0, "b0");
 
   if (with_ranges) {
     std::vector<TubeObservation> obs;
@@ -158,6 +163,70 @@ inline Solution solve(const example::Plaza1Data& d, const Bounds& b, bool with_r
   s.v = v;
   s.stats = cn.contract();
   return s;
+}
+
+// The start heading cut into pieces (--start-heading-pieces N): [start_heading ± heading0] as N
+// equal intervals, each given as its centre and half-width. An unknown start heading [−π, π] is
+// one interval of the network, whose gates grow wider than a turn with the gyro's increments: a
+// window whose cells lie a turn apart then keeps the whole gate and learns nothing. Pieces
+// narrower than a turn keep their gates apart until the windows learn (docs/plaza1.md).
+inline std::vector<Bounds> start_heading_pieces(const Bounds& b, int pieces) {
+  std::vector<Bounds> r;
+  const double lb = b.start_heading - b.heading0, w = 2 * b.heading0 / pieces;
+  for (int i = 0; i < pieces; ++i) {
+    Bounds piece = b;
+    piece.start_heading = lb + (i + 0.5) * w;
+    piece.heading0 = w / 2;
+    r.push_back(piece);
+  }
+  return r;
+}
+
+// One piece of the start heading: its start interval, its network at the fixed point, its CPU time.
+struct Piece {
+  Interval start;
+  Solution sol;
+  double cpu = 0;
+};
+
+// The network once per piece of the start heading (start_heading_pieces), one after the other,
+// on one time domain. `hull` is the hull of the non-empty pieces, gate by gate and slice by
+// slice: every solution starts in some piece, so it is a guaranteed enclosure. Its stats add up
+// all the pieces' rounds and runs; if every piece is empty, hull.stats is the first piece's
+// (empty) and each piece's explanation is in `pieces`.
+struct PieceSolution {
+  Solution hull;
+  std::vector<Piece> pieces;
+};
+
+inline PieceSolution solve_pieces(const example::Plaza1Data& d, const Bounds& b, bool with_ranges, int q = -1,
+                                  double heading_window = kHeadingWindow, int pieces = 1) {
+  const auto td = TDomain::create(d.t);
+  PieceSolution r;
+  for (const Bounds& piece : start_heading_pieces(b, pieces)) {
+    const double start = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+    Solution s = solve(d, piece, with_ranges, q, heading_window, td);
+    const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC - start;
+    r.pieces.push_back({Interval(piece.start_heading) + Interval(-piece.heading0, piece.heading0), s, cpu});
+  }
+  Solution& h = r.hull;
+  ContractStats total;
+  for (const Piece& piece : r.pieces) {
+    const Solution& s = piece.sol;
+    total.iterations += s.stats.iterations, total.contractor_calls += s.stats.contractor_calls;
+    total.time += s.stats.time;
+    if (s.stats.empty) continue;
+    if (!h.p) {  // the first non-empty piece: copies, joined with the next ones
+      h = s;
+      h.p = std::make_shared<TubeVector>(*s.p), h.psi = std::make_shared<Tube>(*s.psi);
+      h.v = std::make_shared<TubeVector>(*s.v), h.b0 = std::make_shared<Interval>(*s.b0);
+    } else {
+      *h.p |= *s.p, *h.psi |= *s.psi, *h.v |= *s.v, *h.b0 |= *s.b0;
+    }
+  }
+  if (!h.p) h = r.pieces.front().sol;  // every piece empty: no solution (each piece says why)
+  h.stats.iterations = total.iterations, h.stats.contractor_calls = total.contractor_calls, h.stats.time = total.time;
+  return r;
 }
 
 }  // namespace plaza1

@@ -5,7 +5,9 @@ beacons, each at an uncertain time (CtcEval; all of them one CtcEvalList node);
 with --q-ranges Q also the ranges q-relaxed, at most Q of them wrong (one CtcQEval). The odometry increments tie
 positions and heading both ways, over each period (CtcHeading) and over windows of
 40 s (CtcHeadingWindow, --heading-window S; 0: none), which keeps the heading
-bounded, even from an unknown start. The gyro's bias is one unknown b0 of the run
+bounded, even from an unknown start, whose start heading [-pi, pi] is cut into
+--start-heading-pieces N pieces (default 2), one network each: a piece is proven empty or
+contracted, and the answer is the hull of the non-empty pieces' tubes. The gyro's bias is one unknown b0 of the run
 (--gyro-turn-on-bias) plus a small in-run drift (--gyro-in-run-drift;
 CtcBiasedIncrement), printed at the end. The same network and stated error
 bounds (plaza1_bounds.py, the table of examples/cpp/plaza1_bounds.h; each one an
@@ -15,6 +17,7 @@ import bisect
 import math
 import sys
 import time
+from types import SimpleNamespace
 
 import sillage
 import plaza1_bounds
@@ -38,14 +41,15 @@ def slice_tube(td, slices):
 HEADING_WINDOW = 40.0
 
 
-def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None, bias=None):
+def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, velocity=None, bias=None, td=None):
     """The position tube at the fixed point with the bounds b (default: the table); q >= 0: at most q
     ranges wrong (one CtcQEval instead of the CtcEvalList of all of them); window > 0: CtcHeadingWindow over windows
     of that many seconds. heading, velocity, bias: lists that receive the heading tube, the velocity tube,
-    the gyro's turn-on bias b0 (an Interval, rad/s)."""
+    the gyro's turn-on bias b0 (an Interval, rad/s). td: the time domain (None: a new one on d["t"]; the
+    pieces of solve_pieces share one, so that their tubes can be joined)."""
     b = b or plaza1_bounds.bounds(None, d)
     t0 = time.process_time()
-    td = TDomain(list(d["t"]))
+    td = td or TDomain(list(d["t"]))
     n = td.nb_slices()
     widths = [td.slice_width(k) for k in range(n)]
     dpsi = [Interval(d["dpsi"][k]) + widths[k] * Interval(-b.gyro_bias, b.gyro_bias) for k in range(n)]
@@ -83,6 +87,8 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
     cn.set_name(p, "p")
     cn.set_name(v, "v")
     cn.set_name(psi, "psi")
+    if b.gyro_drift < b.gyro_bias:  # the gyro's turn-on bias: what empties a wrong piece of the start heading
+        cn.set_name(b0, "b0")
     obs = []  # the ranges: x(t) in z, |z - beacon| in the range, t within the stamp's error
     if with_ranges:
         dist_to = {}  # per beacon, parsed once: the ranges to one beacon share it
@@ -106,10 +112,53 @@ def solve(d, with_ranges, b=None, q=-1, window=HEADING_WINDOW, heading=None, vel
         velocity.append(v)
     if bias is not None:
         bias.append(b0)
+    return (p, stats, cpu, *truth_and_boxes(d, p), len(obs))
+
+
+def truth_and_boxes(d, p):
+    """The number of time points whose ground truth lies in the position tube p, and the mean and max
+    diameter of its boxes."""
     gx, gy = p[0].gates_array(), p[1].gates_array()
-    inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n + 1))
-    diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n + 1)]
-    return p, stats, cpu, inside, sum(diam) / len(diam), max(diam), len(obs)
+    n = len(gx)
+    inside = sum(gx[k, 0] <= d["x"][k] <= gx[k, 1] and gy[k, 0] <= d["y"][k] <= gy[k, 1] for k in range(n))
+    diam = [max(gx[k, 1] - gx[k, 0], gy[k, 1] - gy[k, 0]) for k in range(n)]
+    return inside, sum(diam) / len(diam), max(diam)
+
+
+def start_heading_pieces(b, pieces):
+    """The start heading [start_heading +- heading0] cut into `pieces` equal intervals, each as bounds
+    with its centre and half-width (plaza1::start_heading_pieces in C++). An unknown start heading
+    [-pi, pi] as one interval learns nothing with the stated gyro class: its gates grow wider than a
+    turn and a window whose cells lie a turn apart keeps the whole gate (docs/plaza1.md)."""
+    lb, w = b.start_heading - b.heading0, 2 * b.heading0 / pieces
+    return [SimpleNamespace(**dict(vars(b), start_heading=lb + (i + 0.5) * w, heading0=w / 2)) for i in range(pieces)]
+
+
+def solve_pieces(d, with_ranges, b, q=-1, window=HEADING_WINDOW, pieces=1, heading=None, bias=None):
+    """solve() once per piece of the start heading (start_heading_pieces), one after the other, on one
+    time domain; the answer is the hull of the non-empty pieces' tubes, gate by gate and slice by
+    slice (every solution starts in some piece: a guaranteed enclosure). Returns (p, stats, cpu,
+    inside, mean, max, ranges, kept, parts): stats of the first non-empty piece (of the first piece if
+    every piece is empty: then p is None, no solution), cpu of all of them, kept the number of
+    non-empty pieces, parts a list of (start heading Interval, stats, cpu) per piece."""
+    td = TDomain(list(d["t"]))
+    parts, hull, cpu, nr = [], None, 0.0, 0
+    for piece in start_heading_pieces(b, pieces):
+        psi, b0 = [], []
+        p, stats, t, _, _, _, nr = solve(d, with_ranges, piece, q, window, psi, bias=b0, td=td)
+        cpu += t
+        parts.append((Interval(piece.start_heading - piece.heading0, piece.start_heading + piece.heading0), stats, t))
+        if not stats.empty:
+            hull = (p, psi[0], b0[0], stats) if hull is None else (
+                hull[0] | p, hull[1] | psi[0], hull[2] | b0[0], hull[3])
+    if hull is None:
+        return None, parts[0][1], cpu, 0, math.nan, math.nan, nr, 0, parts
+    if heading is not None:
+        heading.append(hull[1])
+    if bias is not None:
+        bias.append(hull[2])
+    kept = sum(not s.empty for _, s, _ in parts)
+    return (hull[0], hull[3], cpu, *truth_and_boxes(d, hull[0]), nr, kept, parts)
 
 
 def times_after(t, n):
@@ -123,6 +172,9 @@ def add_options(ap):
     plaza1_bounds.add_options(ap)
     ap.add_argument("--q-ranges", type=int, default=-1, metavar="Q",
                     help="Q >= 0: also solve with at most Q ranges wrong (CtcQEval), against the strict intersection")
+    ap.add_argument("--start-heading-pieces", type=int, default=None, metavar="N",
+                    help="the start heading cut into N pieces, one network each, the answer their hull "
+                         "(default: 2 with --unknown-start 1, any heading; 1 otherwise)")
     ap.add_argument("--heading-window", type=float, default=HEADING_WINDOW, metavar="S",
                     help=f"CtcHeadingWindow over windows of S seconds (default {HEADING_WINDOW:g}; 0: none)")
 
@@ -135,6 +187,10 @@ def main():
     if not args.heading_window >= 0 or not math.isfinite(args.heading_window):
         print(f"plaza1: --heading-window takes a length >= 0 in seconds, got {args.heading_window}", file=sys.stderr)
         sys.exit(2)
+    pieces = args.start_heading_pieces if args.start_heading_pieces is not None else 2 if args.unknown_start else 1
+    if not 1 <= pieces <= 1000:
+        print(f"plaza1: --start-heading-pieces takes a whole number from 1 to 1000, got {pieces}", file=sys.stderr)
+        sys.exit(2)
     d = load(folder)
     b = plaza1_bounds.bounds(args, d)
     # The audit reports; it changes no bound. A bound the truth violates voids the guarantee,
@@ -146,18 +202,30 @@ def main():
     for run in runs:
         with_ranges = run != -2
         heading, bias = [], []
-        p, stats, cpu, inside, mean_d, max_d, nr = solve(d, with_ranges, b, run, args.heading_window, heading,
-                                                         bias=bias)
+        p, stats, cpu, inside, mean_d, max_d, nr, kept, parts = solve_pieces(
+            d, with_ranges, b, run, args.heading_window, pieces, heading, bias)
         n = len(d["t"])
         label = (f"odometry + ranges, at most {run} wrong" if run >= 0
                  else "odometry + ranges" if with_ranges else "odometry only")
-        print(f"{label}: {nr} ranges, {stats.iterations} rounds, {stats.contractor_calls} contractor runs, "
-              f"{cpu:.2f} s CPU")
+        print(f"{label}: {nr} ranges, {sum(s.iterations for _, s, _ in parts)} rounds, "
+              f"{sum(s.contractor_calls for _, s, _ in parts)} contractor runs, {cpu:.2f} s CPU")
+        if len(parts) > 1:  # each piece of the start heading: empty (and why) or kept in the hull
+            for start, s, t in parts:
+                print(f"  start heading piece [{start.lb():.4f}, {start.ub():.4f}] rad: "
+                      f"{empty_text(s) if s.empty else 'not empty'}, {s.iterations} rounds, {t:.2f} s CPU")
+            if kept == 0:  # every piece empty: inconsistent, with each piece's explanation
+                why = "INCONSISTENT: every piece of the start heading is empty" + "".join(
+                    f" [{start.lb():.4f}, {start.ub():.4f}] rad: {empty_text(s)};" for start, s, _ in parts)
+                print("  INCONSISTENT: every piece of the start heading is empty (each piece says why above)")
+                summary += f"{label}: {why} "
+                ok = False
+                continue
+            print("  the tubes below: the hull of the non-empty pieces")
         # No solution, or an unbounded tube: an answer without truth or box figures, and a failed check.
         if not check_stats(stats, label) or not enclosure_ok(p):
             why = empty_text(stats) if stats.empty else "UNBOUNDED: the position tube is unbounded"
             if not stats.empty:
-                print(f"  {why}")
+                print("  INCONSISTENT: every piece of the start heading is empty (each piece says why above)")
             summary += f"{label}: {why}; "
             ok = False
             continue

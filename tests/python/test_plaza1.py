@@ -77,7 +77,9 @@ def test_a_turn_on_bias_over_the_old_class_bound_stays_inside():
 @pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
 def test_unknown_start_keeps_the_truth(tmp_path):
     """--unknown-start 1: anywhere within 10 m of the beacons' bounding box, any heading. The truth
-    stays inside, in Python and in C++ (where CtcHeading gives the heading from the positions)."""
+    stays inside, in Python and in C++ (where CtcHeading gives the heading from the positions), as
+    one network (the start heading one interval) and as the example solves it, its start heading in
+    halves."""
     import argparse
     import subprocess
     import plaza1_bounds
@@ -96,6 +98,11 @@ def test_unknown_start_keeps_the_truth(tmp_path):
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stdout[-2000:]
     assert r.stdout.count("ground truth inside at 9658 / 9658") == 2
+    # The start heading in its two halves (--start-heading-pieces, 2 by default from an unknown start):
+    # with the ranges, [0, pi] is proven empty and the hull is the other half's tubes.
+    assert "start heading piece [0.0000, 3.1416] rad: EMPTY: CtcBiasedIncrement emptied interval 'b0'" in r.stdout
+    assert "start heading piece [-3.1416, 0.0000] rad: not empty" in r.stdout
+    assert "mean/max box diameter 19.30/78.13 m" in r.stdout
     # The maps show the 4 beacons as landmarks, inside the plot's frame.
     for tag in ("odometry", "ranges"):
         assert landmarks_in_frame(tmp_path / f"plaza1_map_{tag}.svg") == 4
@@ -154,7 +161,7 @@ def test_heading_windows_bound_the_heading_from_an_unknown_start():
     window's cells lie a turn apart, and learns nothing on this run (docs/plaza1.md, "Left for
     later"); the half that does not hold the start heading is proven empty."""
     import argparse
-    import types
+    import bisect
     import plaza1_bounds
     d = plaza1.load(DATA)
     ap = argparse.ArgumentParser()
@@ -171,17 +178,42 @@ def test_heading_windows_bound_the_heading_from_an_unknown_start():
         assert not stats.empty and inside == n
         if window == 0:
             assert min(heading[0].gate(k).diam() for k in late) > 6.28  # a full turn and more: nothing learned
-    # Its two halves, with the windows: one is empty, the other holds the truth and learns the heading.
-    kept = []
-    for centre in (-math.pi / 2, math.pi / 2):
-        half = types.SimpleNamespace(**dict(vars(b), start_heading=centre, heading0=math.pi / 2))
-        heading = []
-        _, stats, _, inside, mean, _, _ = plaza1.solve(d, True, half, heading=heading)
-        if not stats.empty:
-            assert inside == n
-            kept.append(([heading[0].gate(k).diam() for k in range(n)], mean))
-    assert len(kept) == 1
-    windowed, mean = kept[0]
+    # Its two halves, with the windows (solve_pieces, as the example runs --unknown-start): one is
+    # empty, the other holds the truth and learns the heading; the answer is their hull.
+    heading = []
+    _, stats, _, inside, mean, _, _, kept, parts = plaza1.solve_pieces(d, True, b, pieces=2, heading=heading)
+    assert [(s.empty, round(start.lb(), 4), round(start.ub(), 4)) for start, s, _ in parts] == [
+        (False, -3.1416, 0.0), (True, 0.0, 3.1416)]
+    assert kept == 1 and not stats.empty and inside == n
+    windowed = [heading[0].gate(k).diam() for k in range(n)]
+    assert windowed[bisect.bisect_left(d["t"], d["t"][0] + 60)] / 2 < 0.7  # +-0.65 rad at 60 s
     assert max(windowed[k] for k in middle) < 3.0  # within +-1.5 rad from 60 s to 1200 s
     assert max(windowed[k] for k in late) < 5.0  # less than a full turn to the end (docs/plaza1.md)
     assert mean < means[0] - 1.0 and mean <= means[plaza1.HEADING_WINDOW]
+
+
+@pytest.mark.skipif(not (DATA / "odometry.csv").exists(), reason="no plaza1 data")
+def test_every_piece_of_the_start_heading_empty_is_inconsistent(tmp_path):
+    """Ranges stated exact (--range-long 0 --range-short 0) from an unknown start: every piece of the
+    start heading is proven empty; the example says INCONSISTENT with each piece's explanation and
+    fails (exit 1), in Python and in C++."""
+    import argparse
+    import subprocess
+    import plaza1_bounds
+    import sillage
+    d = plaza1.load(DATA)
+    ap = argparse.ArgumentParser()
+    plaza1_bounds.add_options(ap)
+    b = plaza1_bounds.bounds(ap.parse_args(["--unknown-start", "1", "--range-long", "0", "--range-short", "0"]), d)
+    p, stats, _, _, _, _, _, kept, parts = plaza1.solve_pieces(d, True, b, pieces=2)
+    assert p is None and stats.empty and kept == 0 and len(parts) == 2 and all(s.empty for _, s, _ in parts)
+    args = ["--out", str(tmp_path), "--unknown-start", "1", "--range-long", "0", "--range-short", "0"]
+    runs = [[sys.executable, str(ROOT / "examples" / "python" / "plaza1.py")] + args]
+    exe = Path(sillage.__file__).resolve().parents[2] / "examples" / "example_plaza1"
+    if exe.exists():
+        runs.append([str(exe)] + args)
+    for cmd in runs:
+        r = subprocess.run(cmd + ["--data", str(DATA)], capture_output=True, text=True, timeout=600)
+        assert r.returncode == 1, r.stdout[-2000:] + r.stderr[-2000:]
+        assert "INCONSISTENT: every piece of the start heading is empty" in r.stdout
+        assert r.stdout.count("rad: EMPTY: ") >= 2
