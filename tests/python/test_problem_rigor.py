@@ -90,3 +90,17 @@ def test_a_named_contractor_is_named_in_the_emptiness():
         cn.set_ctc_name(1, "none")
     s = cn.contract()
     assert s.emptiness == "CtcFunction(a - b) (ranges line 12) emptied interval 'x'"
+
+
+def test_a_truth_in_time_order_and_a_solve_that_fits(tmp_path):
+    write(tmp_path, "truth.csv", "t,x\n0,0\n1,1\n0.5,2\n")
+    path = write(tmp_path, "p.toml", "[data.truth]\nfile = \"truth.csv\"\n[time]\ndomain = [0, 1]\ndelta = 0.5\n"
+                                     "[var.x]\nkind = \"tube\"\n[[constraint]]\nkind = \"expr\"\nexpr = \"x\"\n"
+                                     "[output]\ntruth = { data = \"truth\", time = \"t\", columns = { x = \"x\" } }\n")
+    with pytest.raises(sillage.Error, match=r"found the stamps 1 at .*truth.csv:3 and 0.5 at line 4 of 'truth', "
+                                            r"not increasing, expected a truth with strictly increasing times"):
+        sillage.load_problem(path)
+    huge = write(tmp_path, "huge.toml", "[time]\ndomain = [0, 1]\ndelta = 2.5e-8\n[var.x]\nkind = \"tube_vector\"\n"
+                                        "dim = 1000\n[[constraint]]\nkind = \"expr\"\nexpr = \"x[0]\"\n")
+    with pytest.raises(sillage.Error, match=r"gives 40000000 slices: about 5587.9 GiB of memory at the peak"):
+        sillage.solve(huge)
