@@ -424,6 +424,11 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         const auto whole = [](const VarDomain& y) {
           return y.spec->kind == VarKind::Tube ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
         };
+        // y' = v is stated with the eval: enforced over the whole tube when no
+        // deriv constraint does it, so that the rows' fronts are left to it (each
+        // CtcEval sweeping its own over the tube was quadratic in the rows).
+        for (const std::size_t j : detail::implied_derivs(p, c))
+          cn.add(std::make_shared<CtcDeriv>(), {whole(*ys[j]), whole(b.var(c.vs[j]))});
         const RewrittenExpr r = detail::eval_observation(p, c);
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();

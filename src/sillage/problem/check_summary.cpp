@@ -49,9 +49,9 @@ std::string check_summary(const Problem& p) {
   for (const ConstraintSpec& c : p.constraints) {
     std::size_t n = 1;
     if (c.kind == ConstraintKind::Eval) {
-      // One CtcEvalList holding the rows, or per row a CtcEval and its observation.
+      // One CtcEvalList holding the rows, or per row a CtcEval and its observation; the CtcDeriv it implies.
       const bool listed = detail::eval_rows_listed(p, c, detail::eval_observation(p, c));
-      n = listed ? 1 : 2 * p.table(c.data)->table.nb_rows();
+      n = (listed ? 1 : 2 * p.table(c.data)->table.nb_rows()) + detail::implied_derivs(p, c).size();
       if (!listed) domains += 3 * p.table(c.data)->table.nb_rows();
       bytes += 6 * 16 * p.table(c.data)->table.nb_rows();
     }

@@ -86,6 +86,17 @@ RewrittenExpr eval_observation(const Problem& p, const ConstraintSpec& c) {
   return rewrite_refs(c.expr, c.expr_pos, dims, vec, "");
 }
 
+std::vector<std::size_t> implied_derivs(const Problem& p, const ConstraintSpec& c) {
+  std::vector<std::size_t> out;
+  for (std::size_t j = 0; j < c.ys.size(); ++j) {
+    const bool written = std::any_of(p.constraints.begin(), p.constraints.end(), [&](const ConstraintSpec& d) {
+      return d.kind == ConstraintKind::Deriv && d.x == c.ys[j] && d.v == c.vs[j];
+    });
+    if (!c.vs[j].empty() && !written) out.push_back(j);
+  }
+  return out;
+}
+
 bool eval_rows_listed(const Problem& p, const ConstraintSpec& c, const RewrittenExpr& r) {
   return c.ys.size() == 1 && !c.vs[0].empty() && std::all_of(r.refs.begin(), r.refs.end(), [&](const VarRef& ref) {
            return evaluated(c, ref.var) || eval_has_column(p, c, ref.var);

@@ -40,6 +40,10 @@ Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, std::span
 // problem's other variables (ProblemError for an unknown name).
 RewrittenExpr eval_observation(const Problem& p, const ConstraintSpec& c);
 
+// The tubes j of eval c whose y' = vs[j] no deriv constraint of p states: the
+// eval adds a CtcDeriv for each (build_network), which `sillage check` counts.
+std::vector<std::size_t> implied_derivs(const Problem& p, const ConstraintSpec& c);
+
 // True when the rows of c are one CtcEvalList (build_network, and `sillage
 // check`'s count): one tube with its derivative, and an observation r over
 // that tube and the row's columns only.

@@ -77,3 +77,22 @@ TEST(LoadRefusals, ASolveThatCannotFitIsRefusedWithItsFigure) {
   EXPECT_NE(check_summary(p).find("memory: about 5722054.0 MiB at the peak of a solve (an estimate)"), std::string::npos)
       << check_summary(p);
 }
+
+// An eval's v states y' = v: without a deriv constraint the eval adds it, and
+// the sets are those of the file that writes it just before (each CtcEval
+// swept its fronts over the whole tube: quadratic in the rows).
+TEST(LoadRefusals, AnEvalsDerivativeHoldsOverTheTube) {
+  std::ofstream(data_dir() + "/fixes.csv") << "t,a\n0.5,0\n1,0.4\n1.5,0.1\n";
+  const std::string head = table("m", "fixes.csv") + "[time]\ndomain = [0, 2]\ndelta = 0.1\n[var.x]\nkind = \"tube\"\n"
+                           "[var.v]\nkind = \"tube\"\nvalue = \"[-1, 1]\"\n";
+  const std::string eval = "[[constraint]]\nkind = \"eval\"\ndata = \"m\"\ny = \"x\"\nv = \"v\"\ntime = \"t\"\n"
+                           "expr = \"x - a + [-0.01, 0.01]\"\n";
+  const SolveResult implied = problem_test::solve_text(head + eval);
+  const SolveResult written =
+      problem_test::solve_text(head + "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"v\"\n" + eval);
+  ASSERT_FALSE(implied.empty) << implied.why_empty;
+  EXPECT_EQ(implied.built.cn->nb_ctc(), 2u);  // CtcDeriv, then the rows' CtcEvalList
+  const Tube &a = (*implied.built.var("x").tubes)[0], &b = (*written.built.var("x").tubes)[0];
+  for (std::size_t k = 0; k <= a.nb_slices(); ++k) ASSERT_EQ(a.gate(k), b.gate(k)) << "gate " << k;
+  EXPECT_LT(a.gate(0).diam(), 1.1);  // 0 +- 0.01 at 0.5, |x'| <= 1: bounded at t = 0
+}
