@@ -28,6 +28,8 @@ struct VarDomain {
   std::shared_ptr<Interval> interval;      // interval
   std::shared_ptr<IntervalVector> box;     // box
   DomainRef component(std::size_t i) const;
+  // A tube variable as one domain: the Tube of a scalar tube, else the TubeVector.
+  DomainRef whole() const;
   std::size_t memory_bytes() const;
 };
 

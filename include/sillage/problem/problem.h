@@ -196,6 +196,8 @@ struct Problem {
 
   const VarSpec* var(const std::string& name) const;
   const DataSpec* table(const std::string& name) const;
+  // The first deriv constraint x' = v on the tube x, or null.
+  const ConstraintSpec* deriv_of(const std::string& x) const;
 };
 
 const char* kind_name(VarKind k);

@@ -178,6 +178,10 @@ Tube tube_of(const std::shared_ptr<TDomain>& td, const BoundSpec& b) {
 
 }  // namespace
 
+DomainRef VarDomain::whole() const {
+  return spec->kind == VarKind::Tube ? DomainRef(tubes->shared_component(0)) : DomainRef(tubes);
+}
+
 DomainRef VarDomain::component(std::size_t i) const {
   if (tubes) return spec->kind == VarKind::Tube ? DomainRef(tubes->shared_component(0)) : DomainRef::component(tubes, i);
   if (interval) return DomainRef(interval);
@@ -282,19 +286,17 @@ namespace {
 // the whole line (none: a value at a time between two doubles then bounds no
 // gate, only the slices around it).
 void add_time_fixes(BuiltProblem& b, const Problem& p, const VarDomain& v, std::vector<TubeObservation> fixes) {
-  std::shared_ptr<TubeVector> w;
-  for (const ConstraintSpec& c : p.constraints)
-    if (c.kind == ConstraintKind::Deriv && c.x == v.spec->name) {
-      w = b.var(c.v).tubes;
-      break;
-    }
-  if (!w) w = std::make_shared<TubeVector>(std::vector<Tube>(v.spec->dim, Tube(b.td, Interval())));
-  const auto whole = [&](const std::shared_ptr<TubeVector>& x) {
-    return v.spec->kind == VarKind::Tube ? DomainRef(x->shared_component(0)) : DomainRef(x);
-  };
+  const ConstraintSpec* d = p.deriv_of(v.spec->name);
+  VarDomain w;  // the derivative, or the whole line
+  if (d) {
+    w = b.var(d->v);
+  } else {
+    w.spec = v.spec;
+    w.tubes = std::make_shared<TubeVector>(std::vector<Tube>(v.spec->dim, Tube(b.td, Interval())));
+  }
   b.value_nodes.push_back("the values of " + v.spec->name + " at times between two doubles (" +
                           (v.spec->at.empty() ? v.spec->pos.str() : v.spec->at[0].pos.str()) + ")");
-  b.cn->add(std::make_shared<CtcEvalList>(std::move(fixes)), {whole(v.tubes), whole(w)});
+  b.cn->add(std::make_shared<CtcEvalList>(std::move(fixes)), {v.whole(), w.whole()});
 }
 
 BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
@@ -382,8 +384,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         if (c.kind == ConstraintKind::Deriv) ctc = std::make_shared<CtcDeriv>();
         else if (c.kind == ConstraintKind::SecondDeriv) ctc = std::make_shared<CtcSecondDeriv>();
         else ctc = std::make_shared<CtcIncrement>();
-        if (x.spec->kind == VarKind::Tube) cn.add(ctc, {x.tubes->shared_component(0), v.tubes->shared_component(0)});
-        else cn.add(ctc, {x.tubes, v.tubes});
+        cn.add(ctc, {x.whole(), v.whole()});
         break;
       }
       case ConstraintKind::Heading: {
@@ -421,14 +422,11 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             if (c.ys[j] == n) return j;
           return c.ys.size();
         };
-        const auto whole = [](const VarDomain& y) {
-          return y.spec->kind == VarKind::Tube ? DomainRef(y.tubes->shared_component(0)) : DomainRef(y.tubes);
-        };
         // y' = v is stated with the eval: enforced over the whole tube when no
         // deriv constraint does it, so that the rows' fronts are left to it (each
         // CtcEval sweeping its own over the tube was quadratic in the rows).
         for (const std::size_t j : detail::implied_derivs(p, c))
-          cn.add(std::make_shared<CtcDeriv>(), {whole(*ys[j]), whole(b.var(c.vs[j]))});
+          cn.add(std::make_shared<CtcDeriv>(), {ys[j]->whole(), b.var(c.vs[j]).whole()});
         const RewrittenExpr r = detail::eval_observation(p, c);
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();
@@ -493,8 +491,8 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             const VarDomain& y = *ys[j];
             if (y.spec->kind == VarKind::Tube) z1[j] = std::make_shared<Interval>(direct ? measured(values, (*direct)[j]) : Interval());
             else zn[j] = std::make_shared<IntervalVector>(y.spec->dim);
-            std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), whole(y)};
-            if (!c.vs[j].empty()) eval_args.push_back(whole(b.var(c.vs[j])));
+            std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), y.whole()};
+            if (!c.vs[j].empty()) eval_args.push_back(b.var(c.vs[j]).whole());
             cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
             cn.set_ctc_name(cn.nb_ctc() - 1, row_name);  // it may empty y itself: the row is named then too
             cn.set_name(eval_args[1], y.spec->name + "(t)" + of_row);
@@ -518,7 +516,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           cn.set_ctc_name(cn.nb_ctc() - 1, row_name);
         }
         if (!fixes.empty()) {
-          cn.add(std::make_shared<CtcEvalList>(std::move(fixes)), {whole(*ys[0]), whole(b.var(c.vs[0]))});
+          cn.add(std::make_shared<CtcEvalList>(std::move(fixes)), {ys[0]->whole(), b.var(c.vs[0]).whole()});
         }
         break;
       }
@@ -528,8 +526,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
   for (std::size_t i = 0; i < b.vars.size(); ++i)
     if (!time_fixes[i].empty()) add_time_fixes(b, p, b.vars[i], std::move(time_fixes[i]));
   for (const VarDomain& v : b.vars) {
-    if (v.tubes && v.spec->kind == VarKind::Tube) cn.set_name(v.tubes->shared_component(0), v.spec->name);
-    else if (v.tubes) cn.set_name(v.tubes, v.spec->name);
+    if (v.tubes) cn.set_name(v.whole(), v.spec->name);
     else if (v.interval) cn.set_name(v.interval, v.spec->name);
     else cn.set_name(v.box, v.spec->name);
   }

@@ -8,6 +8,12 @@ const VarSpec* Problem::var(const std::string& name) const {
   return nullptr;
 }
 
+const ConstraintSpec* Problem::deriv_of(const std::string& x) const {
+  for (const ConstraintSpec& c : constraints)
+    if (c.kind == ConstraintKind::Deriv && c.x == x) return &c;
+  return nullptr;
+}
+
 const DataSpec* Problem::table(const std::string& name) const {
   for (const DataSpec& d : data)
     if (d.name == name) return &d;

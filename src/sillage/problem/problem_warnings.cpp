@@ -6,15 +6,6 @@
 
 namespace sillage {
 
-namespace {
-
-bool has_derivative(const Problem& p, const std::string& var) {
-  return std::any_of(p.constraints.begin(), p.constraints.end(),
-                     [&](const ConstraintSpec& c) { return c.kind == ConstraintKind::Deriv && c.x == var; });
-}
-
-}  // namespace
-
 std::vector<std::string> problem_warnings(const Problem& p) {
   std::vector<std::string> out;
   for (const ConstraintSpec& c : p.constraints) {
@@ -30,7 +21,7 @@ std::vector<std::string> problem_warnings(const Problem& p) {
     out.push_back(why + ": " + c.label + " (" + c.pos.str() + ") states nothing, and the problem is solved without it");
   }
   for (const VarSpec& v : p.vars) {
-    if (!v.is_tube() || has_derivative(p, v.name)) continue;
+    if (!v.is_tube() || p.deriv_of(v.name)) continue;
     const bool between = v.gates || std::any_of(v.at.begin(), v.at.end(), [](const GateSpec& g) { return g.t_lo != g.t_hi; });
     if (!between) continue;
     const SourcePos& at = v.gates ? v.gates->value.pos : v.pos;
