@@ -45,6 +45,7 @@ void init_cn(py::module_& m);
 void init_tube_node(py::module_& m);
 void init_paving(py::module_& m);
 void init_trajectory(py::module_& m);
+void init_tdomain(py::module_& m);  // called by init_tube, first
 void init_tube(py::module_& m);
 void init_tube_analysis(py::module_& m);
 void init_tube_ctc(py::module_& m);
