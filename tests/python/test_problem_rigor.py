@@ -104,3 +104,23 @@ def test_a_truth_in_time_order_and_a_solve_that_fits(tmp_path):
                                         "dim = 1000\n[[constraint]]\nkind = \"expr\"\nexpr = \"x[0]\"\n")
     with pytest.raises(sillage.Error, match=r"gives 40000000 slices: about 5587.9 GiB of memory at the peak"):
         sillage.solve(huge)
+
+
+def test_memory_estimate_and_stopped_stats(tmp_path):
+    path = write(tmp_path, "p.toml", "[time]\ndomain = [0, 1]\ndelta = 0.5\n[var.x]\nkind = \"tube_vector\"\ndim = 1000\n"
+                                     "[[constraint]]\nkind = \"expr\"\nexpr = \"x[0]\"\n")
+    p = sillage.load_problem(path)
+    assert sillage.peak_memory_estimate(p, 40_000_000) > 5e12
+    sillage.check_memory(p, 2, "delta = 0.5")  # fits
+    with pytest.raises(sillage.Error, match="--delta 1e-9 gives 40000000 slices"):
+        sillage.check_memory(p, 40_000_000, "--delta 1e-9")
+    cn = sillage.ContractorNetwork()
+    x = cn.create_dom(sillage.Interval(0, 1e6), "x")
+    y = cn.create_dom(sillage.Interval(0, 1e6), "y")
+    cn.add(sillage.CtcFunction(sillage.Function(["a", "b"], "a - b")), [x, y])
+    cn.add(sillage.CtcFunction(sillage.Function(["a", "b"], "b - 0.99999*a")), [x, y])
+    cn.set_ratio(0)
+    cn.set_budget(sillage.Budget(max_boxes=5))
+    with pytest.raises(sillage.BudgetExceeded):
+        cn.contract()
+    assert cn.stopped_stats().contractor_calls == 5

@@ -153,6 +153,7 @@ void init_cn(py::module_& m) {
            DOC(ContractorNetwork, ratio))
       .def("budget", &ContractorNetwork::budget,
            DOC(ContractorNetwork, budget))
+      .def("stopped_stats", &ContractorNetwork::stopped_stats, DOC(ContractorNetwork, stopped_stats))
       .def("set_budget", &ContractorNetwork::set_budget, py::arg("budget"),
            DOC(ContractorNetwork, set_budget))
       .def("set_ratio", &ContractorNetwork::set_ratio, py::arg("ratio"),

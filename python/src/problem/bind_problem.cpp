@@ -183,6 +183,9 @@ void init_problem(py::module_& m) {
       py::arg("problem"), py::arg("result"),
       DOC(find_loops));
   m.def("problem_warnings", &problem_warnings, py::arg("problem"), DOC(problem_warnings));
+  m.def("peak_memory_estimate", &peak_memory_estimate, py::arg("problem"), py::arg("slices"),
+        DOC(peak_memory_estimate));
+  m.def("check_memory", &check_memory, py::arg("problem"), py::arg("slices"), py::arg("what"), DOC(check_memory));
   m.def("output_names", &output_names, py::arg("problem"), py::arg("tube_files") = false, DOC(output_names));
   m.def("check_output_dir", &check_output_dir, py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false,
         DOC(check_output_dir));
