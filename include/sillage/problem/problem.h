@@ -156,8 +156,14 @@ struct LoopsSpec {
   SourcePos pos;
 };
 
+// A time of the results table as written: a decimal in [lo, hi], the doubles
+// around the one read (t); lo = hi = t when it is that double.
+struct OutputTime {
+  double t = 0, lo = 0, hi = 0;
+};
+
 struct OutputSpec {
-  std::vector<double> times;                             // results table rows
+  std::vector<OutputTime> times;                         // results table columns
   std::vector<std::pair<std::string, std::size_t>> plot_tubes;  // variable, component; empty: all
   std::vector<std::pair<std::string, std::pair<std::size_t, std::size_t>>> maps;  // variable, (i, j)
   std::optional<TruthSpec> truth;

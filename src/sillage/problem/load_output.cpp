@@ -1,6 +1,8 @@
 // [output]: the results table's times, the plots and maps, the landmarks, the truth to check.
 #include "sillage/problem/problem_loader.h"
 
+#include <algorithm>
+
 #include <cctype>
 
 namespace sillage::detail {
@@ -56,7 +58,8 @@ void ProblemLoader::read_output(const toml::table& t) {
       if (v < p_.time.t0 || v > p_.time.tf)
         throw ProblemError(doc_.pos(n), "the time " + doc_.raw(n) + " outside the domain",
                            "a time in [" + number_text(p_.time.t0) + ", " + number_text(p_.time.tf) + "]");
-      p_.output.times.push_back(v);
+      const auto [lo, hi] = f.number_as_written(n, "a time (number)");
+      p_.output.times.push_back({v, std::max(lo, p_.time.t0), std::min(hi, p_.time.tf)});
     }
   if (const toml::node* ps = f.find("plots"))
     for (const toml::node& n : f.array(*ps, "an array of tubes such as [\"x\", \"v[1]\"]"))

@@ -1,5 +1,6 @@
 #include "sillage/problem/report_html.h"
 
+#include <cfenv>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -22,12 +23,22 @@ std::string fmt(double x, const char* f = "%.6g") {
   return buf;
 }
 
+// x in 6 digits rounded toward `mode` (glibc's printf follows the rounding
+// mode): a lower bound printed down, an upper one up, so the text encloses the set.
+std::string fmt_directed(double x, int mode) {
+  const int saved = std::fegetround();
+  std::fesetround(mode);
+  const std::string s = fmt(x);
+  std::fesetround(saved);
+  return s;
+}
+
 std::string itv(const Interval& x) {
   if (x.is_empty()) return "∅";
   std::string s = "[";  // appended: "[" + a temporary is a false -Wrestrict of GCC 12
-  s += fmt(x.lb());
+  s += fmt_directed(x.lb(), FE_DOWNWARD);
   s += ", ";
-  s += fmt(x.ub());
+  s += fmt_directed(x.ub(), FE_UPWARD);
   s += ']';
   return s;
 }
@@ -171,17 +182,25 @@ std::string report_html(const Problem& p, const SolveResult& r) {
     << (r.scheduling == Scheduling::Priority ? " (each round by expected contraction over cost)" : " (each round in the order woken)")
     << ".</p>\n";
 
-  std::vector<double> times = p.output.times;
-  if (times.empty()) times = {b.td->t0(), (b.td->t0() + b.td->tf()) / 2, b.td->tf()};
+  std::vector<OutputTime> times = p.output.times;
+  if (times.empty())
+    for (const double t : {b.td->t0(), (b.td->t0() + b.td->tf()) / 2, b.td->tf()}) times.push_back({t, t, t});
   h << "<h2>Results</h2>\n<table id=\"results\"><tr><th>variable</th>";
-  for (double t : times) h << "<th>t = " << fmt(t) << "</th>";
+  for (const OutputTime& t : times) h << "<th>t = " << fmt(t.t) << "</th>";
   h << "</tr>\n";
   for (const VarDomain& v : b.vars) {
+    // A time as written may lie between two doubles: the tube over that interval,
+    // through its derivative when a deriv constraint gives one (the polygon, not the slice).
+    const ConstraintSpec* d = v.tubes ? p.deriv_of(v.spec->name) : nullptr;
     for (std::size_t i = 0; i < v.spec->dim; ++i) {
       h << "<tr><td>" << xml_escape(comp_name(v, i)) << "</td>";
-      for (double t : times) {
-        const Interval x = v.tubes ? (*v.tubes)[i](t) : v.interval ? *v.interval : (*v.box)[i];
-        h << "<td>" << itv(r.empty ? Interval::empty() : x) << "</td>";  // no solution: every set is empty
+      for (const OutputTime& t : times) {
+        const Interval at(t.lo, t.hi);
+        const Interval x = r.empty  ? Interval::empty()  // no solution: every set is empty
+                           : !v.tubes ? (v.interval ? *v.interval : (*v.box)[i])
+                           : d        ? (*v.tubes)[i].eval(at, (*b.var(d->v).tubes)[i])
+                                      : (*v.tubes)[i](at);
+        h << "<td>" << itv(x) << "</td>";
       }
       h << "</tr>\n";
     }

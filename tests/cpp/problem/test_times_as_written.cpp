@@ -10,6 +10,7 @@
 
 #include "problem_text.h"
 #include "sillage/problem/build_network.h"
+#include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 
 using namespace sillage;
@@ -132,4 +133,29 @@ TEST(TimesAsWritten, AnEmptyBoundIsABadInput) {
   problem_test::expect_error("[time]\ndomain = [0, 1]\ndelta = 0.5\n[var.x]\nkind = \"tube\"\nvalue = \"sqrt(t - 2)\"\n"
                              "[[constraint]]\nkind = \"expr\"\nexpr = \"x\"\n",
                              "found the bound \"sqrt(t - 2)\", which is empty (undefined at every t of the domain)");
+}
+
+// The results table at a time as written: x' = 1, x(1000000000) = -0.0999,
+// so x(1000000000.1) = 0.0001 exactly; the time point nearest to it is
+// 2.4e-8 s later (x = 0.000100024 there, the old cell). The cell is the tube
+// over the doubles around the decimal, through x', printed outward.
+TEST(TimesAsWritten, TheResultsTableAtATimeAsWritten) {
+  const Problem p = parse(
+      "[time]\ndomain = [1000000000, 1000000001]\ndelta = 0.25\n"
+      "[var.x]\nkind = \"tube\"\nat = [{ t = 1000000000, value = -0.0999 }]\n"
+      "[var.v]\nkind = \"tube\"\nvalue = 1\n"
+      "[[constraint]]\nkind = \"deriv\"\nx = \"x\"\nv = \"v\"\n"
+      "[output]\ntimes = [1000000000.1]\n");
+  const OutputTime& t = p.output.times.at(0);
+  EXPECT_LT(t.lo, t.hi);
+  const SolveResult r = solve_problem(p);
+  ASSERT_FALSE(r.empty) << r.why_empty;
+  const std::string html = report_html(p, r);
+  const std::size_t row = html.find("<tr><td>x</td><td>", html.find("id=\"results\""));
+  ASSERT_NE(row, std::string::npos);
+  const std::size_t open = html.find('[', row), comma = html.find(',', open), close = html.find(']', comma);
+  const double lb = std::stod(html.substr(open + 1, comma - open - 1)), ub = std::stod(html.substr(comma + 1, close - comma - 1));
+  EXPECT_LE(lb, 0.0001) << html.substr(row, close - row);
+  EXPECT_GE(ub, 0.0001) << html.substr(row, close - row);
+  EXPECT_LT(ub - lb, 1e-6);
 }
