@@ -47,7 +47,7 @@ CLI::Validator whole_number(const std::string& what, unsigned long long min, uns
       [=](std::string& v) {
         unsigned long long n = 0;
         const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-        const bool ok = !v.empty() && v[0] != '-' && ec == std::errc() && end == v.data() + v.size() && n >= min && n <= max;
+        const bool ok = ec == std::errc() && end == v.data() + v.size() && n >= min && n <= max;  // no sign, no wrap
         const std::string shown = v.size() > 40 ? v.substr(0, 40) + "..." : v;
         return ok ? std::string() : "found \"" + shown + "\", expected " + what + " from " + range;
       },
