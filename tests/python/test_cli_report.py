@@ -239,6 +239,10 @@ def test_show_and_plot_a_tube_file(tmp_path):
     assert r.returncode == 0 and "Tube of 1 component(s), 20 slices over [0, 10]" in r.stdout
     r = run("plot", tmp_path / "x.tube", "--out", tmp_path / "x.svg")
     assert r.returncode == 0 and (tmp_path / "x.svg").read_text().count("<svg") == 1
+    before = (tmp_path / "x.tube").read_bytes()
+    over = run("plot", tmp_path / "x.tube", "--out", tmp_path / "x.tube")  # never overwrites its input
+    assert over.returncode == 2 and "is the tube file read" in over.stderr
+    assert (tmp_path / "x.tube").read_bytes() == before
     assert run("show", tmp_path / "missing.tube").returncode == 2
     bad = run("show", PROBLEMS / "causal_chain.toml")  # not a tube file: the message names it
     assert bad.returncode == 2

@@ -169,6 +169,9 @@ int show(const std::string& path) {
 }
 
 int plot(const std::string& path, const std::string& out) {
+  std::error_code ec;  // false with an error when out does not exist yet
+  if (std::filesystem::equivalent(out, path, ec))
+    throw Error("--out " + out + " is the tube file read: choose another file for the figure");
   const TubeVector x = load_any(path);
   const std::string title = std::filesystem::path(path).filename().string();
   // A tube file holds no variable name: its stem names the axes (v.tube: v, or v[0] and v[1]).
