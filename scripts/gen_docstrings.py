@@ -198,7 +198,8 @@ class Scanner:
             if ch == "{":
                 head = " ".join(buf.split())
                 m_ns = re.match(r"^(inline\s+)?namespace\s*(\w*)", head)
-                m_cls = re.match(r"^(template\s*<.*>\s*)?(class|struct)\s+(?:\[\[.*?\]\]\s*)?(\w+)\b(?!.*\()", head)
+                # no "(" before a base clause: `struct S f(...) {` is a function; a base's template arguments may hold one
+                m_cls = re.match(r"^(template\s*<.*>\s*)?(class|struct)\s+(?:\[\[.*?\]\]\s*)?(\w+)\b(?![^:]*\()", head)
                 m_enum = re.match(r"^enum\s+(class\s+|struct\s+)?(\w+)", head)
                 if m_ns and "(" not in head:
                     scopes.append(("ns", m_ns.group(2), "public"))

@@ -65,10 +65,10 @@
 #include "sillage/cn/network_ctc.h"
 #include "sillage/cn/scheduling.h"
 #include "sillage/cn/tube_changes.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/cn/tube_node.h"
-#include "sillage/cn/tube_pair_node.h"
 #include "sillage/cn/watchers.h"
 
 #include "sillage/dynamics/ctc_biased_increment.h"

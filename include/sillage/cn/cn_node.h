@@ -8,7 +8,8 @@
 // Atoms of a node are numbered by position: the concatenation of its ranges.
 // CtcNode binds a box contractor (Ctc) on few atoms; nodes on tubes derive
 // from TubeNode (tube_node.h): TubeCtcNode applies a box contractor at every
-// slice and gate, TubePairNode runs CtcDeriv and CtcIncrement, and
+// slice and gate, TubeContractor's node runs a contractor on whole tubes
+// (CtcDeriv, CtcIncrement, ...), and
 // dynamics/ adds the CtcEval node.
 #include <cstddef>
 #include <memory>

@@ -6,13 +6,14 @@
 //    write nothing tube-specific. A box contractor (Ctc, CtcFunction) given
 //    tubes, cn.add(ctc, {x, y, p}), is applied at every slice and gate
 //    (TubeCtcNode, a TubeNode).
-//  - A constraint between two tubes of one kind, x and v in pairs (x' = v,
-//    increments): give the contractor `bool contract(Tube& x, const Tube& v)
-//    const` and make_node() { return make_tube_pair_node(*this, args); }
-//    (tube_pair_node.h). CtcDeriv and CtcIncrement are written so.
-//  - Anything else on whole tubes (CtcEval: t, z, y, w): a NetworkCtc whose
-//    make_node() returns a subclass of TubeNode, whose run() contracts the
-//    domains and reports through changes() (see docs/extending.md).
+//  - A contractor on whole tubes (x' = v, increments, a bias, a loop
+//    implication): write its own contract(...) on its argument types and
+//    derive TubeContractor (tube_contractor.h), which makes the node.
+//    CtcDeriv, CtcIncrement, CtcBiasedIncrement, CtcPImpliesZ are written so.
+//  - A contractor that works only where the tubes changed (CtcEval: around
+//    [t]): a NetworkCtc whose make_node() returns a subclass of TubeNode,
+//    whose run() contracts the domains and reports through changes() (see
+//    docs/extending.md).
 //  - A prototype in Python: subclass sillage.TubeCtc and override
 //    contract(self, domains); cn.add(MyCtc(), [x, v]) calls it.
 //

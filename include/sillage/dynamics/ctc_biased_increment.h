@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/interval/interval.h"
 #include "sillage/tube/tube.h"
 
@@ -39,14 +39,15 @@ namespace sillage {
 // increments [i](k) over i..j - b0 (t_j - t_i) + [-d_max, d_max] (t_j - t_i) for every
 // pair of gates, contracted both ways (b0 from the spans, the gates from b0) in
 // O(N log N). ContractorNetwork.add(CtcBiasedIncrement(d_max), [x, b0, i]).
-class CtcBiasedIncrement : public NetworkCtc {
+class CtcBiasedIncrement
+    : public TubeContractor<CtcBiasedIncrement, bool(Tube&, Interval&, const Tube&),
+                            bool(Tube&, Interval&, const Tube&, Tube&)> {
  public:
   // The bias contractor; drift = d_max >= 0 (units of x per unit of time), finite; Error otherwise.
   explicit CtcBiasedIncrement(double drift = 0.0);
   // The bound d_max on the in-run variation of the bias.
   double drift() const { return drift_; }
   std::string name() const override { return "CtcBiasedIncrement"; }
-  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // Contracts the gates of x and the bias b0; i is read only.
   // DimensionError if x and i are not on one TDomain.

@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/interval/interval.h"
 #include "sillage/tube/tube.h"
@@ -54,13 +54,12 @@ namespace sillage {
 // contracts the tube (or tube vector) x in place and returns false if it is now empty; v is not
 // changed. Optional restrictions: a slice range (first, last) or a time interval t. In a
 // ContractorNetwork: cn.add(ctc, {x, v}) (dynamics/tube_nodes.h).
-class CtcDeriv : public NetworkCtc {
+class CtcDeriv : public TubeContractor<CtcDeriv, bool(Tube&, const Tube&)> {
  public:
   // The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4,
   // (4.17)) or FWD_BWD (Alg. 5, the default).
   explicit CtcDeriv(TimePropag propag = TimePropag::FWD_BWD) : propag_(propag) {}
   std::string name() const override { return "CtcDeriv"; }
-  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // The direction of the sweeps.
   TimePropag time_propag() const { return propag_; }

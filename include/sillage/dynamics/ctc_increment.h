@@ -15,18 +15,17 @@
 #include <string>
 #include <vector>
 
-#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {
 
-class CtcIncrement : public NetworkCtc {
+class CtcIncrement : public TubeContractor<CtcIncrement, bool(Tube&, const Tube&)> {
  public:
   // The increment contractor.
   CtcIncrement() = default;
   std::string name() const override { return "CtcIncrement"; }
-  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // DimensionError if x and i are not on one TDomain.
   bool contract(Tube& x, const Tube& i) const;

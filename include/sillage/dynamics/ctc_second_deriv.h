@@ -16,17 +16,16 @@
 #include <string>
 #include <vector>
 
-#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/tube/tube.h"
 
 namespace sillage {
 
-class CtcSecondDeriv : public NetworkCtc {
+class CtcSecondDeriv : public TubeContractor<CtcSecondDeriv, bool(Tube&, const Tube&)> {
  public:
   // The second-derivative contractor.
   CtcSecondDeriv() = default;
   std::string name() const override { return "CtcSecondDeriv"; }
-  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;
 
   // DimensionError if x and a are not on one TDomain. Tube vectors: in a
   // network, cn.add(ctc, {x, a}), component by component.

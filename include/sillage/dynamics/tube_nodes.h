@@ -12,7 +12,7 @@
 // CtcDeriv propagates further) and never samples the TDomain while it runs;
 // the bounds of [t] become gates at the next contract() when the CtcEval has
 // gates_at_time_bounds (CtcEval::gates_for). CtcDeriv and CtcIncrement use
-// the generic TubePairNode (cn/tube_pair_node.h).
+// TubeContractor (cn/tube_contractor.h).
 #include <memory>
 #include <vector>
 

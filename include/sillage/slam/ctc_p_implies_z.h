@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "sillage/budget.h"
-#include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_contractor.h"
 #include "sillage/slam/slam_row.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_vector.h"
@@ -39,7 +39,8 @@ namespace sillage {
 // p(t1) = p(t2) => z(t1) = z(t2), p' = w. contract(p, w, z) contracts the 2-D (or 1-D) TubeVector p
 // to a fixed point and returns one SlamRow per iteration; ContractorNetwork.add(CtcPImpliesZ(eps), [p, w, z])
 // binds it.
-class CtcPImpliesZ : public NetworkCtc {
+class CtcPImpliesZ
+    : public TubeContractor<CtcPImpliesZ, std::vector<SlamRow>(TubeVector&, const TubeVector&, const TubeVector&)> {
  public:
   // eps > 0: the width of the t-boxes (seconds; below the time step δ it
   // gains nothing, thesis footnote 5). Error otherwise.

@@ -7,7 +7,6 @@
 #include <span>
 #include <vector>
 
-#include "sillage/cn/tube_node.h"
 #include "sillage/ctc/shrink.h"
 #include "sillage/error.h"
 #include "sillage/interval/rounding.h"
@@ -144,37 +143,6 @@ bool fail(Tube& x, Interval& b) {
   return false;
 }
 
-// cn.add(ctc, {x, b0, i}).
-class BiasedIncrementNode : public TubeNode {
- public:
-  BiasedIncrementNode(const CtcBiasedIncrement& ctc, const std::vector<BoundDomain>& args)
-      : TubeNode(ctc.name(), args), ctc_(ctc) {
-    if ((args.size() != 3 && args.size() != 4) || tube(1) || args[1].range.count != 1) {
-      throw DimensionError(where() + ": expects (x, b0, i) or (x, b0, i, j) with x, i, j tubes and b0 an Interval");
-    }
-    x_ = whole_tubes(0, 1, "x").front();
-    i_ = whole_tubes(2, 1, "i").front();
-    if (args.size() == 4) j_ = whole_tubes(3, 1, "j").front();
-  }
-  bool run(NodeRun& r) const override {
-    Domain& bd = *r.domains[ranges()[1].domain];
-    const Interval was = bd.atom(ranges()[1].first);
-    Interval b = was;
-    const Tube& inc = i_->tube();
-    bool ok = contract_tube(r, 0, [&](Tube& x) { return ctc_.contract(x, b, inc); });
-    if (ok && j_) ok = contract_tube(r, 3, [&](Tube& j) { return narrow_increments(j, inc, b, ctc_.drift()); });
-    const Interval now = was & b;
-    if (now != was) bd.set_atom(ranges()[1].first, now);
-    if (shrank(was, now, r.ratio)) r.changed.push_back(offset(1));
-    if (!ok && now.is_empty()) r.empty_at = offset(1);  // no bias left: say so rather than a gate of x
-    return ok;
-  }
-
- private:
-  CtcBiasedIncrement ctc_;
-  std::shared_ptr<TubeDomain> x_, i_, j_;
-};
-
 }  // namespace
 
 CtcBiasedIncrement::CtcBiasedIncrement(double drift) : drift_(drift) {
@@ -223,10 +191,6 @@ bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i, Tube& j)
   j.set(Interval::empty());
   b0 = Interval::empty();
   return false;
-}
-
-std::shared_ptr<const CnNode> CtcBiasedIncrement::make_node(const std::vector<BoundDomain>& args) const {
-  return std::make_shared<BiasedIncrementNode>(*this, args);
 }
 
 }  // namespace sillage

@@ -6,7 +6,6 @@
 #include <string>
 #include <type_traits>
 
-#include "sillage/cn/tube_pair_node.h"
 #include "sillage/interval/rounding_policies.h"
 #include "sillage/dynamics/slice_rule_x4.h"
 #include "sillage/dynamics/polygon_hull_x8.h"
@@ -259,10 +258,6 @@ bool each_component(TubeVector& x, F f) {
 }
 
 }  // namespace
-
-std::shared_ptr<const CnNode> CtcDeriv::make_node(const std::vector<BoundDomain>& args) const {
-  return make_tube_pair_node(*this, args);
-}
 
 bool CtcDeriv::contract(Tube& x, const Tube& v) const {
   check_pair(x, v, "CtcDeriv::contract(x, v)");

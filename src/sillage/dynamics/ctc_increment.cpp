@@ -1,6 +1,5 @@
 #include "sillage/dynamics/ctc_increment.h"
 
-#include "sillage/cn/tube_pair_node.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -35,10 +34,6 @@ bool CtcIncrement::contract(TubeVector& x, const TubeVector& i) const {
   for (std::size_t c = 0; c < x.size() && ok; ++c) ok = contract(x[c], i[c]);
   if (!ok) x.set(IntervalVector(x.size(), Interval::empty()));  // no trajectory: every component empty
   return ok;
-}
-
-std::shared_ptr<const CnNode> CtcIncrement::make_node(const std::vector<BoundDomain>& args) const {
-  return make_tube_pair_node(*this, args);
 }
 
 }  // namespace sillage

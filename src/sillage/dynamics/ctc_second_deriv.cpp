@@ -1,6 +1,5 @@
 #include "sillage/dynamics/ctc_second_deriv.h"
 
-#include "sillage/cn/tube_pair_node.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -23,10 +22,6 @@ bool CtcSecondDeriv::contract(Tube& x, const Tube& a) const {
   if (!ok) x.set(Interval::empty());  // no trajectory
   else if (changed) x.touch();
   return ok;
-}
-
-std::shared_ptr<const CnNode> CtcSecondDeriv::make_node(const std::vector<BoundDomain>& args) const {
-  return make_tube_pair_node(*this, args);
 }
 
 }  // namespace sillage

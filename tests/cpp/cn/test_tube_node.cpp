@@ -1,6 +1,6 @@
 // TubeNode, the base of tube contractor nodes: atom encoding, dirty atoms to
 // slices, change reporting (TubeChanges), argument checks naming the
-// contractor; TubePairNode through CtcIncrement, and a new contractor
+// contractor; TubeContractor's node through CtcIncrement, and a new contractor
 // written on the base in a few lines.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,6 @@
 
 #include "sillage/cn/contractor_network.h"
 #include "sillage/cn/tube_node.h"
-#include "sillage/cn/tube_pair_node.h"
 #include "sillage/dynamics/ctc_increment.h"
 
 using namespace sillage;
