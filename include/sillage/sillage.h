@@ -83,7 +83,6 @@
 #include "sillage/dynamics/ctc_second_deriv.h"
 #include "sillage/dynamics/gomne_tube.h"
 #include "sillage/dynamics/time_propag.h"
-#include "sillage/dynamics/tube_nodes.h"
 #include "sillage/dynamics/tube_observation.h"
 
 #include "sillage/io/csv.h"
@@ -123,7 +122,6 @@
 #include "sillage/figures/loop_style.h"
 #include "sillage/figures/loops_map_figure.h"
 #include "sillage/figures/style.h"
-#include "sillage/figures/text_width.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tplane_figure.h"
 #include "sillage/figures/tube_figure.h"
