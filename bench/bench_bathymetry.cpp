@@ -7,9 +7,9 @@
 
 #include <vector>
 
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_rng.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 using namespace sillage;
 

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "sillage/expr/function.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
 #include "sillage/slam/temporal_slam.h"
 
 using namespace sillage;

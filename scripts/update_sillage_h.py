@@ -8,7 +8,7 @@ import pathlib
 
 ROOT = pathlib.Path(__file__).resolve().parents[1] / "include"
 LAYERS = ["interval", "expr", "ctc", "paving", "tube", "cn", "dynamics", "io", "loops", "slam",
-          "problem", "figures"]
+          "problem", "figures", "missions"]
 
 
 def main():

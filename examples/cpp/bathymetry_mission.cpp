@@ -16,9 +16,9 @@
 #include "example_args.h"
 #include "example_check.h"
 #include "sillage/figures/thickness_figure.h"
-#include "sillage/slam/bathymetry_figures.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_figures.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 using namespace sillage;
 

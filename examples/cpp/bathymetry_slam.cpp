@@ -30,10 +30,10 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/expr/function.h"
 #include "sillage/figures/thickness_figure.h"
-#include "sillage/slam/bathymetry_figures.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
-#include "sillage/slam/slam_figures.h"
+#include "sillage/missions/bathymetry_figures.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
+#include "sillage/missions/slam_figures.h"
 #include "sillage/slam/temporal_slam.h"
 
 using namespace sillage;

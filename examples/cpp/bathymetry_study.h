@@ -13,8 +13,8 @@
 
 #include "sillage/loops/tplane.h"
 #include "sillage/paving/sivia.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 namespace example {
 

@@ -27,7 +27,7 @@
 #include "plaza1_network.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
-#include "sillage/slam/bathymetry_range_observation.h"
+#include "sillage/missions/bathymetry_range_observation.h"
 #include "sillage/slam/ctc_p_implies_z.h"
 
 using namespace sillage;

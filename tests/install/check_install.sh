@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the build tree into a temporary prefix, then builds and runs a
-# downstream program with find_package(sillage) and with pkg-config.
+# downstream program with find_package(sillage) (sillage::sillage, and
+# sillage::core alone) and with pkg-config.
 set -euo pipefail
 build_dir=$1
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,9 +20,10 @@ cmake -S "$here/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix"
   > "$work/configure.log" || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 "$work/consumer/consumer"
+"$work/consumer/consumer_core"
 
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
 g++ -O1 "$here/consumer/main.cpp" -o "$work/consumer_pc" $(pkg-config --cflags --libs sillage)
 "$work/consumer_pc"
-echo "install: find_package and pkg-config consumers ok"
+echo "install: find_package (umbrella and core) and pkg-config consumers ok"

@@ -140,13 +140,14 @@ def test_cpp_blocks_compile_and_run(name, source, tmp_path):
     bdir = build_dir()
     if bdir is None:
         pytest.skip("no build tree next to the compiled module")
-    lib = os.path.join(bdir, "libsillage.a")
-    if not os.path.isfile(lib):
-        pytest.skip("libsillage.a not built")
+    # The umbrella's static libraries, in link order (CMakeLists.txt).
+    libs = [os.path.join(bdir, f"libsillage_{t}.a") for t in ("problem", "missions", "figures", "core")]
+    if not all(os.path.isfile(lib) for lib in libs):
+        pytest.skip("the libsillage_*.a are not built")
     cpp = tmp_path / "block.cpp"
     cpp.write_text(source)
     exe = tmp_path / "block"
-    cmd = ["g++", "-O0", *compile_flags(bdir), str(cpp), "-o", str(exe), lib, "-ltbb", "-lpthread"]
+    cmd = ["g++", "-O0", *compile_flags(bdir), str(cpp), "-o", str(exe), *libs, "-ltbb", "-lpthread"]
     r = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp_path)
     assert r.returncode == 0, f"{name} does not compile:\n{r.stderr[-4000:]}"
     run = subprocess.run([str(exe)], capture_output=True, text=True, cwd=tmp_path, timeout=120)

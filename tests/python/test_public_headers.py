@@ -2,7 +2,10 @@
 
 Public headers live in include/sillage/ and are installed; internal ones live
 beside the sources in src/sillage/, are never installed and declare their names
-in namespace sillage::detail. sillage.h brings in every public header.
+in namespace sillage::detail. sillage.h brings in every public header. The
+folders are grouped into library targets (the sillage_add_layers() lines of
+CMakeLists.txt); a file includes only headers of its target and of the targets
+below it.
 """
 import pathlib
 import re
@@ -66,3 +69,49 @@ def test_one_detail_namespace():
                 if ns not in ("sillage", "detail", "rounding"):
                     bad.append(f"{p.relative_to(ROOT)}: namespace {ns}")
     assert bad == []
+
+
+LAYERS_RE = re.compile(r"^sillage_add_layers\((\w+) FOLDERS ([^)]*?)(?: DEPENDS ([^)]*))?\)", re.M)
+
+
+def targets():
+    """{target: (folders, names of the targets it depends on)}, from CMakeLists.txt."""
+    found = LAYERS_RE.findall((ROOT / "CMakeLists.txt").read_text())
+    return {name: (folders.split(), deps.split()) for name, folders, deps in found}
+
+
+def folder_of(path):
+    """The layer folder of sillage/<folder>/x.h, "." for sillage/x.h."""
+    parts = pathlib.PurePosixPath(path).parts
+    return parts[1] if len(parts) > 2 else "."
+
+
+def test_every_layer_folder_belongs_to_one_target():
+    owners = [f for folders, _ in targets().values() for f in folders]
+    assert len(owners) == len(set(owners)), f"a folder in two targets: {owners}"
+    on_disk = {"."} | {p.name for base in (INCLUDE, SRC) for p in (base / "sillage").iterdir() if p.is_dir()}
+    assert sorted(on_disk - set(owners)) == [], "folders of no target (not built): add them to CMakeLists.txt"
+
+
+def test_includes_follow_the_targets():
+    """A header or source of a lower target includes no header of a higher one (file:line)."""
+    table = targets()
+    target_of = {f: name for name, (folders, _) in table.items() for f in folders}
+
+    def allowed(name):  # the target and everything it depends on, transitively
+        out = {name}
+        for dep in table[name][1]:
+            out |= allowed(dep)
+        return out
+
+    bad = []
+    for base in (INCLUDE, SRC):
+        for p in sorted((base / "sillage").rglob("*")):
+            if p.suffix not in (".h", ".cpp") or p == INCLUDE / "sillage" / "sillage.h":
+                continue  # sillage.h: the umbrella header, of every target
+            own = target_of[folder_of(p.relative_to(base))]
+            for n, line in enumerate(p.read_text().splitlines(), 1):
+                m = INCLUDE_RE.match(line)
+                if m and target_of.get(folder_of(m.group(1))) not in allowed(own):
+                    bad.append(f"{p.relative_to(ROOT)}:{n}: {own} includes {m.group(1)}")
+    assert bad == [], "includes against the layering:\n  " + "\n  ".join(bad)

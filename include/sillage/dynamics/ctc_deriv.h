@@ -53,7 +53,7 @@ namespace sillage {
 // The differential contractor C_d/dt of x' = v (thesis 4.2, (4.4), Alg. 3-5): contract(x, v)
 // contracts the tube (or tube vector) x in place and returns false if it is now empty; v is not
 // changed. Optional restrictions: a slice range (first, last) or a time interval t. In a
-// ContractorNetwork: cn.add(ctc, {x, v}) (dynamics/tube_nodes.h).
+// ContractorNetwork: cn.add(ctc, {x, v}) (cn/tube_contractor.h).
 class CtcDeriv : public TubeContractor<CtcDeriv, bool(Tube&, const Tube&)> {
  public:
   // The contractor with the sweeps of time_propag: FORWARD (Alg. 3, (4.16)), BACKWARD (Alg. 4,

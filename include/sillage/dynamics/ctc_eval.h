@@ -37,7 +37,7 @@
 // Without a derivative only [t], [z] and, for a t that is a time point, its
 // gate are contracted.
 //
-// In a ContractorNetwork: cn.add(ctc, {t, z, y, w}) (dynamics/tube_nodes.h).
+// In a ContractorNetwork: cn.add(ctc, {t, z, y, w}) (src/sillage/dynamics/tube_nodes.h).
 #include <memory>
 #include <string>
 #include <vector>

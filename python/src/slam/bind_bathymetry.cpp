@@ -1,4 +1,4 @@
-// Python bindings of the synthetic bathymetric mission (slam/bathymetry_*.h):
+// Python bindings of the synthetic bathymetric mission (missions/bathymetry_*.h):
 // seabed DEM, mission, sensors and bounds, tide model, tube builders, figures.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -10,14 +10,14 @@
 
 #include "bindings.h"
 #include "docstrings.h"
-#include "sillage/slam/bathymetry_dem.h"
-#include "sillage/slam/bathymetry_figures.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_range_observation.h"
-#include "sillage/slam/bathymetry_seabed.h"
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_dem.h"
+#include "sillage/missions/bathymetry_figures.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_range_observation.h"
+#include "sillage/missions/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_sensors.h"
 #include "sillage/slam/bathymetry_tide.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 namespace sillage::python {
 

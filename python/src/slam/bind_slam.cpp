@@ -13,7 +13,7 @@
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/slam/ctc_t1t2.h"
 #include "sillage/slam/observation.h"
-#include "sillage/slam/slam_figures.h"
+#include "sillage/missions/slam_figures.h"
 #include "sillage/slam/temporal_slam.h"
 
 namespace sillage::python {

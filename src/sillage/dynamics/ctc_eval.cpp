@@ -421,7 +421,7 @@ std::vector<T*> pointers(V& y) {
 }  // namespace
 
 std::shared_ptr<const CnNode> CtcEval::make_node(const std::vector<BoundDomain>& args) const {
-  return make_eval_node(*this, args);
+  return detail::make_eval_node(*this, args);
 }
 
 NetworkCtc::Gates CtcEval::gates_for(const std::vector<DomainRef>& args) const {

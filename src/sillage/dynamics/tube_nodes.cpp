@@ -108,7 +108,7 @@ class EvalNode : public TubeNode {
 
 }  // namespace
 
-std::shared_ptr<const CnNode> make_eval_node(const CtcEval& ctc, const std::vector<BoundDomain>& args) {
+std::shared_ptr<const CnNode> detail::make_eval_node(const CtcEval& ctc, const std::vector<BoundDomain>& args) {
   return std::make_shared<EvalNode>(ctc, args);
 }
 

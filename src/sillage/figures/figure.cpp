@@ -100,8 +100,8 @@ double Figure::py(double y) const { return kTop + (vy_.ub() - y) / (vy_.ub() - v
 double Figure::svg_width() const { return kLeft + width_ + kRight; }
 
 double Figure::plot_top() const {
-  const double lines = kTitleLine * static_cast<double>(wrap_text(title_, kTitleFont, svg_width() - 12).size()) +
-                       kNoteLine * static_cast<double>(wrap_text(note_, kNoteFont, svg_width() - 12).size());
+  const double lines = kTitleLine * static_cast<double>(detail::wrap_text(title_, kTitleFont, svg_width() - 12).size()) +
+                       kNoteLine * static_cast<double>(detail::wrap_text(note_, kNoteFont, svg_width() - 12).size());
   return std::max(kTop, lines + 18);
 }
 
@@ -228,12 +228,12 @@ std::string Figure::svg() const {
      << "<rect x=\"0\" y=\"0\" width=\"" << fmt(w) << "\" height=\"" << fmt(h) << "\" fill=\"white\" class=\"background\"/>\n";
   // Title and note lines, centred on the whole width so that they never pass its sides.
   double y = 4;
-  for (const std::string& line : wrap_text(title_, kTitleFont, w - 12)) {
+  for (const std::string& line : detail::wrap_text(title_, kTitleFont, w - 12)) {
     y += kTitleLine;
     os << "<text x=\"" << fmt(w / 2) << "\" y=\"" << fmt(y) << "\" text-anchor=\"middle\" font-size=\"" << fmt(kTitleFont)
        << "\" class=\"title\">" << xml_escape(line) << "</text>\n";
   }
-  for (const std::string& line : wrap_text(note_, kNoteFont, w - 12)) {
+  for (const std::string& line : detail::wrap_text(note_, kNoteFont, w - 12)) {
     y += kNoteLine;
     os << "<text x=\"" << fmt(w / 2) << "\" y=\"" << fmt(y) << "\" text-anchor=\"middle\" font-size=\"" << fmt(kNoteFont)
        << "\" fill=\"#555555\" class=\"note\">" << xml_escape(line) << "</text>\n";

@@ -18,7 +18,7 @@ std::string fmt(double v) {
   return buf;
 }
 
-double entry_width(const LegendEntry& e) { return kSwatch + kGap + text_width_px(e.text, kFont); }
+double entry_width(const LegendEntry& e) { return kSwatch + kGap + detail::text_width_px(e.text, kFont); }
 
 // The (x offset, row) of each entry: entries fill a row until the next would pass max_px.
 std::vector<std::pair<double, int>> layout(const std::vector<LegendEntry>& entries, double max_px) {

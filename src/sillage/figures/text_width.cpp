@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-namespace sillage {
+namespace sillage::detail {
 
 namespace {
 
@@ -60,4 +60,4 @@ std::vector<std::string> wrap_text(const std::string& text, double size_px, doub
   return lines;
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -10,6 +10,8 @@
 
 using namespace sillage;
 using namespace sillage::test;
+using sillage::detail::text_width_px;
+using sillage::detail::wrap_text;
 
 namespace {
 

@@ -1,8 +1,16 @@
-// Uses every layer of an installed sillage; exits 0 when the results are right.
+// Uses the core of an installed sillage (through sillage.h, or its own headers
+// with SILLAGE_CONSUMER_CORE); exits 0 when the results are right.
 #include <iostream>
 #include <memory>
 
+#ifdef SILLAGE_CONSUMER_CORE
+#include "sillage/cn/contractor_network.h"
+#include "sillage/ctc/ctc_function.h"
+#include "sillage/interval/elementary.h"
+#include "sillage/paving/sivia_function.h"
+#else
 #include "sillage/sillage.h"
+#endif
 
 using namespace sillage;
 

@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_dem.h"
+#include "sillage/missions/bathymetry_dem.h"
 
 #include <algorithm>
 #include <cmath>

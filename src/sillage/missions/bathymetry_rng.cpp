@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_rng.h"
 
 namespace sillage::detail {
 

@@ -1,12 +1,12 @@
-#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_mission.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_plan.h"
-#include "sillage/slam/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_plan.h"
+#include "sillage/missions/bathymetry_rng.h"
 
 namespace sillage {
 

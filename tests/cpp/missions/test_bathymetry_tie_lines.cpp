@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_mission.h"
 
 using namespace sillage;
 

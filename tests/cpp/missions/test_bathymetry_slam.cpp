@@ -10,9 +10,9 @@
 
 #include "sillage/error.h"
 #include "sillage/expr/function.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
-#include "sillage/slam/slam_figures.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
+#include "sillage/missions/slam_figures.h"
 #include "sillage/slam/temporal_slam.h"
 
 using namespace sillage;

@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_sensors.h"
 
 #include <cmath>
 #include <cstdio>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace sillage {
+namespace sillage::detail {
 
 // Estimated width in pixels of `text` (UTF-8) at the font size size_px.
 double text_width_px(const std::string& text, double size_px);
@@ -16,4 +16,4 @@ double text_width_px(const std::string& text, double size_px);
 // text gives no line.
 std::vector<std::string> wrap_text(const std::string& text, double size_px, double max_px);
 
-}  // namespace sillage
+}  // namespace sillage::detail

@@ -9,9 +9,9 @@
 
 #include "bathymetry_test_util.h"
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_seabed.h"
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_sensors.h"
 
 using namespace sillage;
 using sillage::test::local_spread;

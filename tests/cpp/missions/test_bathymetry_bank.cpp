@@ -12,8 +12,8 @@
 
 #include "bathymetry_test_util.h"
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_seabed.h"
 
 using namespace sillage;
 

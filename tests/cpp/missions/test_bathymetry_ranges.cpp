@@ -8,7 +8,7 @@
 
 #include "sillage/error.h"
 #include "sillage/io/csv.h"
-#include "sillage/slam/bathymetry_range_observation.h"
+#include "sillage/missions/bathymetry_range_observation.h"
 
 using namespace sillage;
 

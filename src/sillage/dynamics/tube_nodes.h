@@ -19,8 +19,8 @@
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/ctc_eval.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 std::shared_ptr<const CnNode> make_eval_node(const CtcEval& ctc, const std::vector<BoundDomain>& args);
 
-}  // namespace sillage
+}  // namespace sillage::detail

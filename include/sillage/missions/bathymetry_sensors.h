@@ -26,8 +26,8 @@
 
 #include "sillage/interval/interval.h"
 #include "sillage/interval/interval_vector.h"
-#include "sillage/slam/bathymetry_dem.h"
-#include "sillage/slam/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_dem.h"
+#include "sillage/missions/bathymetry_seabed.h"
 
 namespace sillage {
 

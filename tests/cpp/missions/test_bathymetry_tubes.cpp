@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 using namespace sillage;
 

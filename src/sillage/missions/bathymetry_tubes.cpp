@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_rng.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 using namespace sillage;
 

@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_plan.h"
+#include "sillage/missions/bathymetry_plan.h"
 
 #include <cmath>
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "sillage/interval/interval_vector.h"
-#include "sillage/slam/bathymetry_dem.h"
+#include "sillage/missions/bathymetry_dem.h"
 
 namespace sillage {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "sillage/figures/figure.h"
-#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_mission.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_vector.h"
 

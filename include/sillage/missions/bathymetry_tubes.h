@@ -21,7 +21,7 @@
 #include <memory>
 
 #include "sillage/interval/interval_vector.h"
-#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_mission.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/trajectory_arithmetic.h"
 #include "sillage/tube/tube.h"

@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_seabed.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_rng.h"
 
 namespace sillage {
 

@@ -8,10 +8,10 @@
 
 #include "bathymetry_test_util.h"
 #include "sillage/error.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_rng.h"
-#include "sillage/slam/bathymetry_seabed.h"
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_rng.h"
+#include "sillage/missions/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_sensors.h"
 #include "sillage/slam/bathymetry_tide.h"
 
 using namespace sillage;

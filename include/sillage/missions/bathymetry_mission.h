@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "sillage/slam/bathymetry_seabed.h"
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_seabed.h"
+#include "sillage/missions/bathymetry_sensors.h"
 #include "sillage/slam/bathymetry_tide.h"
 #include "sillage/tube/tdomain.h"
 

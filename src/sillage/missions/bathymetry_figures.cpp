@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_figures.h"
+#include "sillage/missions/bathymetry_figures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "sillage/error.h"
 #include "sillage/figures/tube_figure.h"
-#include "sillage/slam/bathymetry_tubes.h"
+#include "sillage/missions/bathymetry_tubes.h"
 
 namespace sillage {
 

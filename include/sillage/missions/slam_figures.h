@@ -9,7 +9,7 @@
 
 #include "sillage/figures/figure.h"
 #include "sillage/interval/interval_vector.h"
-#include "sillage/slam/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_mission.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sillage/slam/bathymetry_dem.h"
-#include "sillage/slam/bathymetry_mission.h"
-#include "sillage/slam/bathymetry_sensors.h"
+#include "sillage/missions/bathymetry_dem.h"
+#include "sillage/missions/bathymetry_mission.h"
+#include "sillage/missions/bathymetry_sensors.h"
 
 namespace sillage::test {
 

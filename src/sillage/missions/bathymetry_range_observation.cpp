@@ -1,4 +1,4 @@
-#include "sillage/slam/bathymetry_range_observation.h"
+#include "sillage/missions/bathymetry_range_observation.h"
 
 #include <algorithm>
 #include <cmath>
