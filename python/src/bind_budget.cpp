@@ -6,7 +6,7 @@
 
 namespace sillage::python {
 
-void init_budget(py::module_& m) {
+SILLAGE_BINDING(budget) {
   py::class_<CancelToken>(m, "CancelToken", DOC(CancelToken))
       .def("__repr__", [](const CancelToken& c) { return std::string("CancelToken(cancelled=") + (c.cancelled() ? "True" : "False") + ")"; })
       .def(py::init<>(), DOC(CancelToken, CancelToken))

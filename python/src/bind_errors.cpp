@@ -33,7 +33,7 @@ void raise(py::handle type, const char* what) {
 // TypeError and an IndexError, BudgetExceeded a sillage.Error, Cancelled a
 // KeyboardInterrupt (not an Error: the input was fine). Other standard
 // exceptions map as pybind11 maps them; every message is made valid UTF-8.
-void init_errors(py::module_& m) {
+SILLAGE_BINDING(errors) {
   static py::handle error, dimension, parse, type, range, budget, cancelled;
   error = new_exception(m, "Error", py::make_tuple(py::handle(PyExc_ValueError)),
                         "Invalid input (a ValueError); the message says what is wrong and where.\n"

@@ -7,7 +7,7 @@
 
 namespace sillage::python {
 
-void init_read_file(py::module_& m) {
+SILLAGE_BINDING(read_file) {
   m.def("max_file_bytes", &max_file_bytes, DOC(max_file_bytes));
   m.def("set_max_file_bytes", &set_max_file_bytes, py::arg("bytes"), DOC(set_max_file_bytes));
   m.attr("DEFAULT_MAX_FILE_BYTES") = kDefaultMaxFileBytes;

@@ -19,7 +19,7 @@ struct ScopedThreadLimit {
 
 }  // namespace
 
-void init_threads(py::module_& m) {
+SILLAGE_BINDING(threads) {
   py::class_<ScopedThreadLimit>(m, "ThreadLimit",
                                 "At most `threads` threads for sillage's parallel work inside the `with` block "
                                 "(SIVIA, the t-plane, the SLAM's loops, the pointwise work on large tubes); "

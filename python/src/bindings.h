@@ -1,9 +1,13 @@
 #pragma once
-// One function per library layer registers its classes in the module;
-// each lives in bind_<layer>.cpp.
+// What the binding files share: the registration of a binding file
+// (SILLAGE_BINDING, below) and helpers. The files live in
+// python/src/<layer>/bind_<name>.cpp, compiled into the module itself (so
+// that the linker keeps their static registrars).
 #include <pybind11/pybind11.h>
 
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace sillage {
 class Interval;
@@ -34,35 +38,44 @@ void def_copy(Class& cls) {
 // def_readwrite / def_readonly fields), for option and result structs.
 std::string fields_repr(const py::object& self);
 
-void init_errors(py::module_& m);
-void init_budget(py::module_& m);
-void init_threads(py::module_& m);
-void init_read_file(py::module_& m);
-void init_interval(py::module_& m);
-void init_expr(py::module_& m);
-void init_ctc(py::module_& m);
-void init_cn(py::module_& m);
-void init_tube_node(py::module_& m);
-void init_paving(py::module_& m);
-void init_trajectory(py::module_& m);
-void init_tdomain(py::module_& m);  // called by init_tube, first
-void init_tube(py::module_& m);
-void init_tube_analysis(py::module_& m);
-void init_tube_ctc(py::module_& m);
-void init_dynamics(py::module_& m);
-void init_ctc_eval(py::module_& m);
-void init_io(py::module_& m);
-void init_loops(py::module_& m);
-void init_tube_figures(py::module_& m);
-void init_figures(py::module_& m);
-void init_loop_figures(py::module_& m);
-void init_problem(py::module_& m);
-void init_qinter(py::module_& m);
-void init_bathymetry(py::module_& m);
-void init_ctc_heading(py::module_& m);
-void init_ivp(py::module_& m);
-void init_slam(py::module_& m);
-void init_ctc_second_deriv(py::module_& m);
-void init_scalar_loops(py::module_& m);
-void init_ctc_biased_increment(py::module_& m);
+// Each binding file registers itself, declaratively (module.cpp calls them all):
+//
+//   SILLAGE_BINDING(tube, "expr", "interval", "tdomain", "trajectory") {
+//     py::class_<Tube, std::shared_ptr<Tube>>(m, "Tube") ...;
+//   }
+//
+// The first argument names the binding (the file's bind_<name>.cpp); the
+// strings after it name the bindings it comes after: those whose classes it
+// uses (as a base class, an argument or return type, a default value, or
+// m.attr("...")) and those whose module functions or methods it adds
+// overloads to (pybind11 tries overloads in the order they were bound). The
+// module calls every registered binding once, each after the ones it names. A
+// name that no binding registers, a name registered twice or a cycle is an
+// ImportError naming the binding. tests/python/test_bindings_registry.py
+// checks the declarations against the classes each file names.
+struct Binding {
+  std::string name;
+  std::vector<std::string> after;
+  void (*init)(py::module_&);
+  std::string file;  // python/src/...
+};
+// Every binding of the module, in the order of the static initializers.
+std::vector<Binding>& binding_registry();
+// The bindings in an order where each comes after the ones it names (depth
+// first, in name order: the same order whatever the link order);
+// std::runtime_error on an unknown name, a name registered twice or a cycle.
+std::vector<const Binding*> binding_order(const std::vector<Binding>& bindings);
+
+// Adds a binding to the registry (a static object of SILLAGE_BINDING).
+struct BindingRegistrar {
+  BindingRegistrar(const char* name, std::initializer_list<const char*> after, void (*init)(py::module_&),
+                   const char* file);
+};
+
+#define SILLAGE_BINDING(name, ...)                                                   \
+  static void sillage_binding_##name(::pybind11::module_& m);                        \
+  static const ::sillage::python::BindingRegistrar sillage_binding_registrar_##name( \
+      #name, {__VA_ARGS__}, &sillage_binding_##name, __FILE__);                      \
+  static void sillage_binding_##name(::pybind11::module_& m)
+
 }  // namespace sillage::python

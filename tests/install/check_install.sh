@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the build tree into a temporary prefix, then builds and runs a
 # downstream program with find_package(sillage) (sillage::sillage, and
-# sillage::core alone) and with pkg-config.
+# sillage::core alone) and with pkg-config, and the downstream project's own
+# contractor tested with the installed contractor test kit
+# (consumer/test_ctc_double.cpp, GoogleTest).
 set -euo pipefail
 build_dir=$1
 here=$(cd "$(dirname "$0")" && pwd)
@@ -21,9 +23,10 @@ cmake -S "$here/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix"
 cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 "$work/consumer/consumer"
 "$work/consumer/consumer_core"
+"$work/consumer/ctc_double_test" > "$work/kit.log" 2>&1 || { cat "$work/kit.log"; exit 1; }
 
 export PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
 g++ -O1 "$here/consumer/main.cpp" -o "$work/consumer_pc" $(pkg-config --cflags --libs sillage)
 "$work/consumer_pc"
-echo "install: find_package (umbrella and core) and pkg-config consumers ok"
+echo "install: find_package (umbrella and core) and pkg-config consumers and the installed test kit ok"

@@ -23,4 +23,25 @@ x = sillage.IntervalVector([[-10, 10], [-10, 10]])
 sillage.CtcFunction(sillage.Function(["a", "b"], "a^2 + b^2"), sillage.Interval(0, 1)).contract(x)
 assert x[0].ub() <= 1.0000001, x
 print("pip: installed package works:", x)
+
+# The contractor test kit, installed with the package, on a toy contractor: y = 2 x.
+import random
+from sillage import Interval, testing as kit
+assert "venv" in kit.__file__, kit.__file__
+
+def double_case(rng):
+    t = rng.uniform(-3, 3)
+    return kit.Case([kit.around(Interval(t), rng), kit.around(Interval(2 * t), rng)], [Interval(t), Interval(2 * t)])
+
+def contract(d):
+    d[1] &= 2 * d[0]
+    d[0] &= d[1] / 2
+
+kit.check_laws(contract, double_case, cases=5)
+try:
+    kit.check_laws(lambda d: d.__setitem__(1, Interval(1e6, 1e7)), double_case, cases=5)
+    raise SystemExit("pip: the test kit missed a contractor that grows a domain")
+except AssertionError as e:
+    assert "contraction" in str(e), e
+print("pip: sillage.testing checks a contractor")
 PY

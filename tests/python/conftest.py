@@ -1,6 +1,6 @@
-"""pytest configuration of the Python tests: the contractor test kit
-(contractor_kit.py, beside this file) is importable by every test module,
-whatever pytest's import mode."""
+"""pytest configuration of the Python tests: the helpers beside this file
+(turning_vehicle.py, itf1788_adapter.py) are importable by every test module,
+whatever pytest's import mode. The contractor test kit is sillage.testing."""
 import os
 import signal
 import sys

@@ -15,7 +15,7 @@ import pytest
 import sillage
 from sillage import CtcDeriv, CtcPImpliesZ, Interval, IntervalVector, TDomain, TubeVector
 
-import contractor_kit as kit
+from sillage import testing as kit
 
 MASS = 6.3
 EPS = 1.0 / 64

@@ -1,4 +1,4 @@
-"""The generic contractor laws (contractor_kit.py) on the Python API: CtcFunction,
+"""The generic contractor laws (sillage.testing) on the Python API: CtcFunction,
 CtcQInter, CtcDeriv, CtcEval, CtcIncrement, CtcQEval and a ContractorNetwork
 of tubes. The exact thesis values stay in each contractor's own tests."""
 import math
@@ -8,7 +8,7 @@ import sillage
 from sillage import (CtcDeriv, CtcEval, CtcFunction, CtcIncrement, CtcQEval, CtcQInter, ContractorNetwork,
                      Function, Interval, IntervalVector, TimePropag, Tube, TubeObservation, TubeVector)
 
-import contractor_kit as kit
+from sillage import testing as kit
 
 F = Function(["x", "y", "z"], "x*y + sin(z) - exp(x/4)")
 

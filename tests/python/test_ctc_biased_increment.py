@@ -1,10 +1,10 @@
 """CtcBiasedIncrement (increments with one unknown constant bias b0 and an in-run drift d) in
-Python: the contractor laws (contractor_kit.py) on sums of sines measured with a bias, exact
+Python: the contractor laws (sillage.testing) on sums of sines measured with a bias, exact
 values, a brute force over every pair of gates, the network form and errors."""
 import pytest
 from sillage import ContractorNetwork, CtcBiasedIncrement, Interval, TDomain, Tube
 
-import contractor_kit as kit
+from sillage import testing as kit
 
 
 def measured(rng, f, td, b, drift, noise):

@@ -1,5 +1,5 @@
 """CtcHeading (the displacement over each slice from distance and heading, both ways) and the
-network form of CtcQEval in Python: the contractor laws (contractor_kit.py) with an exact turning
+network form of CtcQEval in Python: the contractor laws (sillage.testing) with an exact turning
 vehicle, exact one-slice values, the network forms and errors."""
 import math
 
@@ -8,7 +8,7 @@ import sillage
 from sillage import (ContractorNetwork, CtcDeriv, CtcHeading, CtcQEval, Interval, IntervalVector, TDomain, Tube,
                      TubeObservation, TubeVector)
 
-import contractor_kit as kit
+from sillage import testing as kit
 from turning_vehicle import turning
 from test_contractor_laws import qeval_case
 

@@ -1,5 +1,5 @@
 """CtcHeadingWindow (the displacement over windows of slices against the heading at the window's
-middle, both ways) in Python: the contractor laws (contractor_kit.py) with an exact turning
+middle, both ways) in Python: the contractor laws (sillage.testing) with an exact turning
 vehicle, alone and in a network, exact straight windows, emptiness named and errors."""
 import math
 
@@ -8,7 +8,7 @@ import sillage
 from sillage import (ContractorNetwork, CtcDeriv, CtcHeadingWindow, CtcIncrement, Interval, IntervalVector, TDomain,
                      Tube, TubeVector)
 
-import contractor_kit as kit
+from sillage import testing as kit
 from turning_vehicle import turning
 
 TRACK, WINDOW, ACCEL = 0.05, 2.0, 1.0

@@ -6,7 +6,7 @@ import pytest
 import sillage
 from sillage import CtcDeriv, CtcIvp, Function, Interval, IntervalVector, TDomain, Tube, TubeVector
 
-import contractor_kit as kit
+from sillage import testing as kit
 
 
 def sin_flow(x0, t):

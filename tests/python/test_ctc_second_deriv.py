@@ -1,11 +1,11 @@
 """CtcSecondDeriv (x'' in [a]: each slice within the chord of its gates, bowed by at most
-|[a]| delta^2 / 8) in Python: the contractor laws (contractor_kit.py) on sums of sines, the exact
+|[a]| delta^2 / 8) in Python: the contractor laws (sillage.testing) on sums of sines, the exact
 bow of a parabola, the network form and errors."""
 import pytest
 import sillage
 from sillage import ContractorNetwork, CtcSecondDeriv, Interval, TDomain, Tube
 
-import contractor_kit as kit
+from sillage import testing as kit
 
 
 def second_case(rng):

@@ -2,7 +2,8 @@
 
 Public headers live in include/sillage/ and are installed; internal ones live
 beside the sources in src/sillage/, are never installed and declare their names
-in namespace sillage::detail. sillage.h brings in every public header. The
+in namespace sillage::detail. sillage.h brings in every public header but the
+contractor test kit (include/sillage/testing/, which needs GoogleTest). The
 folders are grouped into library targets (the sillage_add_layers() lines of
 CMakeLists.txt); a file includes only headers of its target and of the targets
 below it.
@@ -13,6 +14,7 @@ import re
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 INCLUDE = ROOT / "include"
 SRC = ROOT / "src"
+TESTING = "sillage/testing/"  # installed, not in sillage.h (scripts/update_sillage_h.py)
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s+"(sillage/[^"]+)"', re.M)
 
 
@@ -21,10 +23,17 @@ def headers(base):
 
 
 def test_umbrella_header_includes_every_public_header():
-    public = set(headers(INCLUDE)) - {"sillage/sillage.h"}
+    public = {h for h in headers(INCLUDE) if not h.startswith(TESTING)} - {"sillage/sillage.h"}
     umbrella = set(INCLUDE_RE.findall((INCLUDE / "sillage" / "sillage.h").read_text()))
     assert sorted(public - umbrella) == [], "missing from sillage.h: run scripts/update_sillage_h.py"
-    assert sorted(umbrella - public) == [], "sillage.h includes headers that are not public"
+    assert sorted(umbrella - public) == [], "sillage.h includes headers that are not public (or the test kit)"
+
+
+def test_the_test_kit_is_public_and_left_out_of_sillage_h():
+    kit = [h for h in headers(INCLUDE) if h.startswith(TESTING)]
+    assert "sillage/testing/contractor_kit.h" in kit
+    umbrella = (INCLUDE / "sillage" / "sillage.h").read_text()
+    assert "gtest" not in umbrella and TESTING not in umbrella
 
 
 def test_public_headers_include_only_public_headers():
@@ -66,7 +75,8 @@ def test_one_detail_namespace():
             if p.suffix not in (".h", ".cpp"):
                 continue
             for ns in re.findall(r"namespace (?:sillage::)?(\w+) \{", p.read_text()):
-                if ns not in ("sillage", "detail", "rounding"):
+                # kit: the contractor test kit's namespace (sillage::kit)
+                if ns not in ("sillage", "detail", "rounding") and not (ns == "kit" and TESTING in str(p)):
                     bad.append(f"{p.relative_to(ROOT)}: namespace {ns}")
     assert bad == []
 
@@ -77,7 +87,10 @@ LAYERS_RE = re.compile(r"^sillage_add_layers\((\w+) FOLDERS ([^)]*?)(?: DEPENDS 
 def targets():
     """{target: (folders, names of the targets it depends on)}, from CMakeLists.txt."""
     found = LAYERS_RE.findall((ROOT / "CMakeLists.txt").read_text())
-    return {name: (folders.split(), deps.split()) for name, folders, deps in found}
+    table = {name: (folders.split(), deps.split()) for name, folders, deps in found}
+    # The contractor test kit: header-only (no library), installed, on the core.
+    table["testing"] = (["testing"], ["core"])
+    return table
 
 
 def folder_of(path):

@@ -34,7 +34,7 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
 
 }  // namespace
 
-void init_cn(py::module_& m) {
+SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
   py::class_<NetworkCtc, std::shared_ptr<NetworkCtc>>(
       m, "NetworkCtc", DOC(NetworkCtc))
       .def("name", &NetworkCtc::name, DOC(NetworkCtc, name))

@@ -116,7 +116,7 @@ std::shared_ptr<const NetworkCtc> bind_tube_ctc(const py::handle& ctc, const py:
   return std::make_shared<PyTubeBinding>(name, keep(ctc), keep(domains));
 }
 
-void init_tube_node(py::module_& m) {
+SILLAGE_BINDING(tube_node, "cn", "interval") {
   py::class_<TubeCtc, PyTubeCtc, std::shared_ptr<TubeCtc>>(
       m, "TubeCtc",
       "A contractor on whole tubes written in Python (the face of the C++ TubeNode).\n\n"

@@ -103,10 +103,9 @@ std::vector<std::shared_ptr<const T>> hold_list(const py::iterable& list, const 
 // Also used by bind_cn.cpp.
 std::shared_ptr<const Ctc> hold_ctc(const py::handle& h) { return hold<Ctc>(h, "contractor"); }
 
-void init_ctc(py::module_& m) {
-  py::class_<Ctc, PyCtc, std::shared_ptr<Ctc>>(m, "Ctc",
-                                               DOC(Ctc))
-      .def(py::init<std::size_t>(), py::arg("nb_vars"),
+SILLAGE_BINDING(ctc, "expr", "interval") {
+  py::class_<Ctc, PyCtc, std::shared_ptr<Ctc>> ctc(m, "Ctc", DOC(Ctc));
+  ctc.def(py::init<std::size_t>(), py::arg("nb_vars"),
            "A contractor on nb_vars variables (for a Python subclass, which overrides contract).")
       .def(
           "contract",
@@ -119,12 +118,6 @@ void init_ctc(py::module_& m) {
       .def("nb_vars", &Ctc::nb_vars, DOC(Ctc, nb_vars))
       .def("name", &Ctc::name, DOC(Ctc, name))
       .def("describe", &Ctc::describe, DOC(Ctc, describe))
-      .def("__and__", [](const py::object& a, const py::object& b) {
-        return std::make_shared<CtcInter>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
-      })
-      .def("__or__", [](const py::object& a, const py::object& b) {
-        return std::make_shared<CtcUnion>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
-      })
       .def("__repr__", [](const Ctc& c) { return "<" + c.name() + " on " + std::to_string(c.nb_vars()) + " variables>"; });
 
   py::class_<CtcBox, Ctc, std::shared_ptr<CtcBox>>(m, "CtcBox", DOC(CtcBox))
@@ -186,6 +179,14 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
                                                        DOC(CtcUnion))
       .def(list_ctor(std::type_identity<CtcUnion>{}), py::arg("list"),
            "The union of a non-empty list of contractors on the same variables (else Error / DimensionError).");
+  // After CtcInter and CtcUnion, so that the signatures name them.
+  ctc.def("__and__",
+          [](const py::object& a, const py::object& b) {
+            return std::make_shared<CtcInter>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
+          })
+      .def("__or__", [](const py::object& a, const py::object& b) {
+        return std::make_shared<CtcUnion>(std::vector<CtcPtr>{hold_ctc(a), hold_ctc(b)});
+      });
   py::class_<CtcCompo, Ctc, std::shared_ptr<CtcCompo>>(m, "CtcCompo",
                                                        "Applies the contractors of the list in order, first to last.")
       .def(list_ctor(std::type_identity<CtcCompo>{}), py::arg("list"),
@@ -198,9 +199,8 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def("ratio", &CtcFixPoint::ratio, DOC(CtcFixPoint, ratio));
 
   // ---- separators ----
-  py::class_<Sep, PySep, std::shared_ptr<Sep>>(
-      m, "Sep", DOC(Sep))
-      .def(py::init<std::size_t>(), py::arg("nb_vars"),
+  py::class_<Sep, PySep, std::shared_ptr<Sep>> sep(m, "Sep", DOC(Sep));
+  sep.def(py::init<std::size_t>(), py::arg("nb_vars"),
            "A separator on nb_vars variables (for a Python subclass, which overrides separate).")
       .def(
           "separate",
@@ -212,13 +212,6 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
           py::arg("x_in"), py::arg("x_out"), DOC(Sep, separate))
       .def("nb_vars", &Sep::nb_vars, DOC(Sep, nb_vars))
       .def("name", &Sep::name, DOC(Sep, name))
-      .def("__and__", [](const py::object& a, const py::object& b) {
-        return std::make_shared<SepInter>(std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
-      })
-      .def("__or__", [](const py::object& a, const py::object& b) {
-        return std::make_shared<SepUnion>(std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
-      })
-      .def("__invert__", [](const py::object& a) { return std::make_shared<SepNot>(hold<Sep>(a, "separator")); })
       .def("__repr__", [](const Sep& s) { return "<" + s.name() + " on " + std::to_string(s.nb_vars()) + " variables>"; });
 
   py::class_<SepCtcPair, Sep, std::shared_ptr<SepCtcPair>>(m, "SepCtcPair",
@@ -245,6 +238,18 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
                                                    DOC(SepNot))
       .def(py::init([](const py::object& s) { return std::make_shared<SepNot>(hold<Sep>(s, "separator")); }),
            py::arg("sep"), "The complement of the separator sep.");
+  // After SepInter, SepUnion and SepNot, so that the signatures name them.
+  sep.def("__and__",
+          [](const py::object& a, const py::object& b) {
+            return std::make_shared<SepInter>(
+                std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
+          })
+      .def("__or__",
+           [](const py::object& a, const py::object& b) {
+             return std::make_shared<SepUnion>(
+                 std::vector<SepPtr>{hold<Sep>(a, "separator"), hold<Sep>(b, "separator")});
+           })
+      .def("__invert__", [](const py::object& a) { return std::make_shared<SepNot>(hold<Sep>(a, "separator")); });
 }
 
 }  // namespace sillage::python

@@ -30,7 +30,7 @@ std::vector<CtcPtr> hold_ctcs(const py::iterable& list) {
 
 }  // namespace
 
-void init_qinter(py::module_& m) {
+SILLAGE_BINDING(qinter, "cn", "ctc", "interval", "tube") {
   m.def("q_inter", py::overload_cast<const std::vector<Interval>&, int>(&q_inter), py::arg("xs"), py::arg("q"),
         R"doc(The hull of the points lying in at least m - q of the m intervals xs
 (an empty interval contains no point). Exact; the whole line when q >= m.)doc");

@@ -9,7 +9,7 @@
 
 namespace sillage::python {
 
-void init_ctc_biased_increment(py::module_& m) {
+SILLAGE_BINDING(ctc_biased_increment, "cn", "interval", "tube") {
   py::class_<CtcBiasedIncrement, NetworkCtc, std::shared_ptr<CtcBiasedIncrement>>(m, "CtcBiasedIncrement",
                                                                                   DOC(CtcBiasedIncrement))
       .def(py::init<double>(), py::arg("drift") = 0.0, DOC(CtcBiasedIncrement, CtcBiasedIncrement))

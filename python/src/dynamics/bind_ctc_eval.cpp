@@ -8,7 +8,7 @@
 
 namespace sillage::python {
 
-void init_ctc_eval(py::module_& m) {
+SILLAGE_BINDING(ctc_eval, "cn", "interval", "tube") {
   py::class_<CtcEval, NetworkCtc, std::shared_ptr<CtcEval>>(
       m, "CtcEval",
       DOC(CtcEval))

@@ -14,7 +14,7 @@
 
 namespace sillage::python {
 
-void init_ctc_heading(py::module_& m) {
+SILLAGE_BINDING(ctc_heading, "cn", "tube") {
   py::class_<CtcHeading, NetworkCtc, std::shared_ptr<CtcHeading>>(m, "CtcHeading", R"doc(
 p(t_{k+1}) - p(t_k) = integral over slice k of s (cos, sin)(psi + e), with d_k the
 distance (slice k of the tube d, s >= 0), |e| <= track (direction of travel vs

@@ -9,7 +9,7 @@
 
 namespace sillage::python {
 
-void init_ctc_second_deriv(py::module_& m) {
+SILLAGE_BINDING(ctc_second_deriv, "cn", "tube") {
   py::class_<CtcSecondDeriv, NetworkCtc, std::shared_ptr<CtcSecondDeriv>>(m, "CtcSecondDeriv", R"doc(
 x'' in [a](k) on every slice k: x(t) lies within the chord of its two gates, bowed by
 -[a](k) tau (delta - tau) / 2 <= |[a]| delta^2 / 8, so the slices of x are contracted to

@@ -15,7 +15,7 @@
 
 namespace sillage::python {
 
-void init_dynamics(py::module_& m) {
+SILLAGE_BINDING(dynamics, "cn", "interval", "tube") {
   py::enum_<TimePropag>(m, "TimePropag", DOC(TimePropag))
       .value("FORWARD", TimePropag::FORWARD)
       .value("BACKWARD", TimePropag::BACKWARD)
@@ -90,7 +90,6 @@ void init_dynamics(py::module_& m) {
 
   // Tube.eval(t, v) and Tube.inverse(y, v): overloads added to the class of
   // bind_tube.cpp (def chains them with the existing "inverse").
-  if (!py::hasattr(m, "Tube")) return;
   auto tube = py::reinterpret_borrow<py::class_<Tube, std::shared_ptr<Tube>>>(m.attr("Tube"));
   tube.def("eval", &Tube::eval, py::arg("t"), py::arg("v"),
            "Hull of x over the time (interval) t, read through the derivative tube v: in each slice the\n"

@@ -15,7 +15,7 @@
 
 namespace sillage::python {
 
-void init_ivp(py::module_& m) {
+SILLAGE_BINDING(ivp, "budget", "cn", "dynamics", "expr", "tube") {
   using C = CtcIvp;
   py::class_<C, NetworkCtc, std::shared_ptr<C>>(
       m, "CtcIvp",

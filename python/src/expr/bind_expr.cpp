@@ -196,7 +196,7 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
 
 }  // namespace
 
-void init_expr(py::module_& m) {
+SILLAGE_BINDING(expr, "interval") {
   init_builder(m);
   py::class_<Function>(m, "Function", R"doc(
 A real function f: R^n -> R^m given by variable names and an expression text,

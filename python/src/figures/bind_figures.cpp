@@ -21,7 +21,7 @@ std::string num(double x) {
 std::string quoted(const std::string& x) { return py::repr(py::str(x)).cast<std::string>(); }
 }  // namespace
 
-void init_figures(py::module_& m) {
+SILLAGE_BINDING(figures, "interval", "paving") {
   py::class_<Style>(m, "Style", DOC(Style))
       .def(py::init([](std::string fill, std::string stroke, double stroke_width, double opacity,
                        std::string css_class, std::string label) {

@@ -22,7 +22,7 @@ const T* ptr(const std::optional<T>& x) {
 
 }  // namespace
 
-void init_loop_figures(py::module_& m) {
+SILLAGE_BINDING(loop_figures, "interval", "loops", "tube") {
   py::enum_<LoopStatus>(m, "LoopStatus", DOC(LoopStatus))
       .value("Proven", LoopStatus::Proven)
       .value("Unproven", LoopStatus::Unproven)

@@ -12,7 +12,7 @@
 
 namespace sillage::python {
 
-void init_tube_figures(py::module_& m) {
+SILLAGE_BINDING(tube_figures, "trajectory", "tube") {
   py::class_<TubeStyle>(m, "TubeStyle", DOC(TubeStyle))
       .def(py::init([](bool show_gates, double merge_px) {
              TubeStyle s;

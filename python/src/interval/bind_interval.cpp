@@ -584,7 +584,7 @@ void init_functions(py::module_& m) {
 
 }  // namespace
 
-void init_interval(py::module_& m) {
+SILLAGE_BINDING(interval) {
   init_interval_class(m);
   init_vector_class(m);
   init_matrix_class(m);

@@ -23,7 +23,7 @@ std::size_t row_index(const CsvTable& t, py::ssize_t i, const char* what) {
 
 }  // namespace
 
-void init_io(py::module_& m) {
+SILLAGE_BINDING(io) {
   py::class_<CsvTable>(m, "CsvTable",
                        DOC(CsvTable))
       .def("__repr__",

@@ -73,7 +73,7 @@ std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? 
 
 }  // namespace
 
-void init_loops(py::module_& m) {
+SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
   py::class_<Loop>(m, "Loop", DOC(Loop))
       .def("boxes", &Loop::boxes, DOC(Loop, boxes))
       .def("boxes_array", [](const Loop& l) { return boxes_array(l.boxes()); },

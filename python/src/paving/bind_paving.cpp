@@ -73,7 +73,7 @@ py::array_t<double> boxes_array(const Paving& p, PavingTag tag) {
 
 }  // namespace
 
-void init_paving(py::module_& m) {
+SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
   py::enum_<PavingTag>(m, "PavingTag", DOC(PavingTag))
       .value("Inner", PavingTag::Inner, DOC(PavingTag, Inner))
       .value("Boundary", PavingTag::Boundary, DOC(PavingTag, Boundary))

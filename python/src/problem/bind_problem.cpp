@@ -92,7 +92,7 @@ std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delt
 
 }  // namespace
 
-void init_problem(py::module_& m) {
+SILLAGE_BINDING(problem, "budget", "cn", "tube") {
   py::enum_<DeltaRefinement>(m, "DeltaRefinement", DOC(DeltaRefinement))
       .value("Halving", DeltaRefinement::Halving)
       .value("Regions", DeltaRefinement::Regions);

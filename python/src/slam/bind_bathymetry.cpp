@@ -286,7 +286,7 @@ void init_range_observation(py::module_& m) {
 
 }  // namespace
 
-void init_bathymetry(py::module_& m) {
+SILLAGE_BINDING(bathymetry, "figures", "interval", "tdomain", "trajectory", "tube") {
   init_bathymetry_data(m);
   init_bathymetry_mission(m);
   init_range_observation(m);

@@ -8,7 +8,7 @@
 
 namespace sillage::python {
 
-void init_scalar_loops(py::module_& m) {
+SILLAGE_BINDING(scalar_loops, "tube") {
   py::class_<ScalarLoop>(m, "ScalarLoop", DOC(ScalarLoop))
       .def(py::init<>(), "An empty piece, not proven.")
       .def_readwrite("boxes", &ScalarLoop::boxes, DOC(ScalarLoop, boxes))

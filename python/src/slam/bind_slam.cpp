@@ -18,7 +18,7 @@
 
 namespace sillage::python {
 
-void init_slam(py::module_& m) {
+SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
   py::class_<CtcT1T2>(m, "CtcT1T2",
                       DOC(CtcT1T2))
       .def(py::init<double, std::size_t>(), py::arg("ratio") = 1e-3, py::arg("max_passes") = 100,
@@ -45,6 +45,29 @@ void init_slam(py::module_& m) {
         return "CtcT1T2(ratio=" + py::repr(py::float_(c.ratio())).cast<std::string>() + ", max_passes=" + std::to_string(c.max_passes()) + ")";
       });
 
+  // OmegaHull before CtcOmega, whose hull() returns one.
+  py::class_<OmegaHull::Atom>(m, "OmegaHullAtom", DOC(Atom))
+      .def_readonly("component", &OmegaHull::Atom::component, DOC(Atom, component))
+      .def_readonly("atom", &OmegaHull::Atom::atom, DOC(Atom, atom))
+      .def_readonly("value", &OmegaHull::Atom::value, DOC(Atom, value))
+      .def("__repr__", [](const OmegaHull::Atom& a) {
+        return "OmegaHullAtom(component=" + std::to_string(a.component) + ", " + (a.atom % 2 ? "slice " : "gate ") +
+               std::to_string(a.atom / 2) + ", " + a.value.str() + ")";
+      });
+  py::class_<OmegaHull>(m, "OmegaHull", DOC(OmegaHull))
+      .def_readonly("empty", &OmegaHull::empty, DOC(OmegaHull, empty))
+      .def_readonly("atoms", &OmegaHull::atoms, DOC(OmegaHull, atoms))
+      .def_readonly("nb_boxes", &OmegaHull::nb_boxes, DOC(OmegaHull, nb_boxes))
+      .def_readonly("nb_consistent", &OmegaHull::nb_consistent, DOC(OmegaHull, nb_consistent))
+      .def_readonly("nb_touched", &OmegaHull::nb_touched, DOC(OmegaHull, nb_touched))
+      .def(
+          "apply_to", [](const OmegaHull& h, TubeVector& q) { return h.apply_to(q); }, py::arg("q"),
+          DOC(OmegaHull, apply_to))
+      .def("__repr__", [](const OmegaHull& h) {
+        return "OmegaHull(empty=" + std::string(h.empty ? "True" : "False") + ", " + std::to_string(h.atoms.size()) +
+               " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
+      });
+
   py::class_<CtcOmega>(m, "CtcOmega",
                        DOC(CtcOmega))
       .def(py::init([](const CtcT1T2& c) { return CtcOmega(c); }), py::arg("t1t2") = CtcT1T2(),
@@ -67,28 +90,6 @@ void init_slam(py::module_& m) {
           py::arg("boxes"), py::arg("p"), py::arg("w"),
           DOC(CtcOmega, hull))
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
-
-  py::class_<OmegaHull::Atom>(m, "OmegaHullAtom", DOC(Atom))
-      .def_readonly("component", &OmegaHull::Atom::component, DOC(Atom, component))
-      .def_readonly("atom", &OmegaHull::Atom::atom, DOC(Atom, atom))
-      .def_readonly("value", &OmegaHull::Atom::value, DOC(Atom, value))
-      .def("__repr__", [](const OmegaHull::Atom& a) {
-        return "OmegaHullAtom(component=" + std::to_string(a.component) + ", " + (a.atom % 2 ? "slice " : "gate ") +
-               std::to_string(a.atom / 2) + ", " + a.value.str() + ")";
-      });
-  py::class_<OmegaHull>(m, "OmegaHull", DOC(OmegaHull))
-      .def_readonly("empty", &OmegaHull::empty, DOC(OmegaHull, empty))
-      .def_readonly("atoms", &OmegaHull::atoms, DOC(OmegaHull, atoms))
-      .def_readonly("nb_boxes", &OmegaHull::nb_boxes, DOC(OmegaHull, nb_boxes))
-      .def_readonly("nb_consistent", &OmegaHull::nb_consistent, DOC(OmegaHull, nb_consistent))
-      .def_readonly("nb_touched", &OmegaHull::nb_touched, DOC(OmegaHull, nb_touched))
-      .def(
-          "apply_to", [](const OmegaHull& h, TubeVector& q) { return h.apply_to(q); }, py::arg("q"),
-          DOC(OmegaHull, apply_to))
-      .def("__repr__", [](const OmegaHull& h) {
-        return "OmegaHull(empty=" + std::string(h.empty ? "True" : "False") + ", " + std::to_string(h.atoms.size()) +
-               " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
-      });
 
   py::class_<SlamRow>(m, "SlamRow", DOC(SlamRow))
       .def(py::init<>(), "An empty row.")

@@ -13,7 +13,7 @@
 
 namespace sillage::python {
 
-void init_tdomain(py::module_& m) {
+SILLAGE_BINDING(tdomain, "interval") {
   py::class_<TDomain, std::shared_ptr<TDomain>>(m, "TDomain",
                           DOC(TDomain))
       .def(py::init<double, double, double>(), py::arg("t0"), py::arg("tf"), py::arg("dt"),

@@ -18,7 +18,7 @@
 
 namespace sillage::python {
 
-void init_trajectory(py::module_& m) {
+SILLAGE_BINDING(trajectory, "expr", "interval") {
   py::class_<Trajectory, std::shared_ptr<Trajectory>> tc(
       m, "Trajectory",
       DOC(Trajectory));

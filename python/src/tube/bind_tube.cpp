@@ -567,8 +567,7 @@ void init_tube_vector(py::module_& m) {
 
 }  // namespace
 
-void init_tube(py::module_& m) {
-  init_tdomain(m);
+SILLAGE_BINDING(tube, "expr", "interval", "tdomain", "trajectory") {
   init_tube_class(m);
   init_tube_vector(m);    // before the functions, so their signatures name TubeVector
   init_tube_functions(m);

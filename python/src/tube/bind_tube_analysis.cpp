@@ -37,7 +37,7 @@ void add_method(py::object& cls, const char* name, py::cpp_function f) { py::set
 
 }  // namespace
 
-void init_tube_analysis(py::module_& m) {
+SILLAGE_BINDING(tube_analysis, "interval", "tube") {
   py::class_<TubeAnalysis>(m, "TubeAnalysis",
                            DOC(TubeAnalysis))
       .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>(), DOC(TubeAnalysis, TubeAnalysis))
@@ -75,7 +75,6 @@ void init_tube_analysis(py::module_& m) {
         py::arg("noise") = Interval(0.0),
         DOC(primitive_taylor));
 
-  if (!py::hasattr(m, "Tube")) return;  // the tube layer is not bound (yet)
   py::object cls = m.attr("Tube");
   add_method(cls, "integral",
              py::cpp_function(
@@ -99,7 +98,6 @@ void init_tube_analysis(py::module_& m) {
                               kPrimitiveDoc));
 
   // The same for TubeVector, component by component (IntervalVector results).
-  if (!py::hasattr(m, "TubeVector")) return;
   py::object vcls = m.attr("TubeVector");
   add_method(vcls, "integral",
              py::cpp_function(

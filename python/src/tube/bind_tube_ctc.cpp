@@ -25,8 +25,7 @@ constexpr const char* kContractDoc =
 
 }  // namespace
 
-void init_tube_ctc(py::module_& m) {
-  if (!py::hasattr(m, "Ctc") || !py::hasattr(m, "Tube")) return;  // a layer is not bound
+SILLAGE_BINDING(tube_ctc, "ctc", "tube") {
   py::object cls = m.attr("Ctc");
   py::object box_contract = py::getattr(cls, "contract");
   py::object tube_type = m.attr("Tube"), tv_type = m.attr("TubeVector");

@@ -1,4 +1,4 @@
-// The generic contractor laws (tests/cpp/kit/contractor_kit.h) on a
+// The generic contractor laws (sillage/testing/contractor_kit.h) on a
 // ContractorNetwork of tubes built with ContractorNetwork::add: x' = v
 // (CtcDeriv), two uncertain fixes z_i = x(t_i) (CtcEval), and a pointwise
 // constraint y = x^2 (CtcFunction applied at every time), and on a network of
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"

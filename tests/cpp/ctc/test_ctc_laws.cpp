@@ -1,4 +1,4 @@
-// The generic contractor laws (tests/cpp/kit/contractor_kit.h) on the box
+// The generic contractor laws (sillage/testing/contractor_kit.h) on the box
 // contractors: CtcFunction (one HC4 pass), CtcFixPoint of it, CtcQInter with
 // an outlier. The exact thesis values stay in the contractors' own tests.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/ctc/ctc_algebra.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/ctc/ctc_qinter.h"

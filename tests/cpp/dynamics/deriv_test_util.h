@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/interval/rounding_policies.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/tube/tube.h"
@@ -35,7 +35,7 @@ class BothRoundings : public ::testing::TestWithParam<bool> {
 inline std::string rounding_name(const ::testing::TestParamInfo<bool>& p) { return p.param ? "Hardware" : "Software"; }
 
 // A true trajectory and its derivative, and random time domains: the
-// contractor test kit's (kit/contractor_kit.h).
+// contractor test kit's (sillage/testing/contractor_kit.h).
 using kit::random_tdomain;
 using kit::SineSum;
 

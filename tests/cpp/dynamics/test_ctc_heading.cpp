@@ -8,7 +8,7 @@
 #include <memory>
 #include <random>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_heading.h"

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/dynamics/ctc_ivp.h"
 #include "sillage/dynamics/ivp_memory.h"
 #include "sillage/error.h"

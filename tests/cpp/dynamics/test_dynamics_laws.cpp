@@ -1,4 +1,4 @@
-// The generic contractor laws (tests/cpp/kit/contractor_kit.h) on the tube
+// The generic contractor laws (sillage/testing/contractor_kit.h) on the tube
 // contractors: CtcDeriv (each sweep, scalar and vector, restricted), CtcEval,
 // CtcIncrement, CtcQEval, CtcEvalList. True trajectories: sums of sines with their exact
 // derivative (kit::SineSum). The thesis values stay in each
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "deriv_test_util.h"
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "sillage/cn/contractor_network.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"

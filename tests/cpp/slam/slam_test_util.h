@@ -4,7 +4,7 @@
 // every d; g' = f'(t) - f'(2m - t). Enclosures in interval arithmetic.
 #include <random>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 
 namespace sillage::slam_test {
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "kit/contractor_kit.h"
+#include "sillage/testing/contractor_kit.h"
 #include "slam_test_util.h"
 #include "sillage/error.h"
 #include "sillage/slam/ctc_t1t2.h"

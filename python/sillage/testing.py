@@ -1,4 +1,9 @@
-"""The contractor test kit, Python twin of tests/cpp/kit/contractor_kit.h.
+"""The contractor test kit: the generic laws every contractor obeys, checked on
+random problems whose true solution is known. Pure Python, installed with the
+package (``from sillage import testing as kit``), for the tests of sillage and
+of contractors written outside it; its C++ twin is the header
+``sillage/testing/contractor_kit.h`` (namespace ``sillage::kit``, same names).
+docs/extending.md ("Testing your contractor") says how to use it.
 
 A contractor's test gives the kit
 
@@ -14,19 +19,21 @@ and calls ``check_laws(contract, generate, ...)``, which raises AssertionError
 naming the law, the case and seed, the domain, the slice / gate and the values
 when one of these fails on ``cases`` random cases:
 
-(a) contraction: every output inside its input, component by component, slice
-    by slice and gate by gate, no NaN bound;
-(b) truth kept: the true value meets every output (at every gate and at
-    ``samples`` + 2 times of every slice);
-(c) idempotence: a second call changes nothing bit for bit ("exact"), or only
-    contracts and keeps the truth ("contraction"), or is not checked (None);
-(e) concurrent calls: two Python threads contracting independent copies of
-    the same case get the serial result bit for bit (the C++ kit also runs
-    oneTBB with 1 and 2 threads: no thread-count control in Python);
-(f) empty and unbounded inputs: each domain in turn set empty (then every
-    domain of ``outputs``, default all, comes out empty -- or one of them,
-    ``empty_any``, for a network that stops at the first empty domain) or set
-    to all reals (no exception, no NaN, contraction and the truth kept).
+(a) contraction (``check_contracted``): every output inside its input,
+    component by component, slice by slice and gate by gate, no NaN bound;
+(b) truth kept (``check_truth``): the true value meets every output (at every
+    gate and at ``samples`` + 2 times of every slice);
+(c) idempotence (``check_idempotent``): a second call changes nothing bit for
+    bit ("exact"), or only contracts and keeps the truth ("contraction"), or
+    is not checked (None);
+(e) threads (``check_threads``): two Python threads contracting independent
+    copies of the same case get the serial result bit for bit (the C++ kit
+    also runs oneTBB with 1 and 2 threads: no thread-count control in Python);
+(f) empty and unbounded inputs (``check_special_inputs``): each domain in turn
+    set empty (then every domain of ``outputs``, default all, comes out empty
+    -- or one of them, ``empty_any``, for a network that stops at the first
+    empty domain) or set to all reals (no exception, no NaN, contraction and
+    the truth kept).
 
 (d) order independence is checked by ``check_order_independent`` on a
 contract that takes an insertion order, and (g) monotonicity by
@@ -44,6 +51,7 @@ class Case:
     """Input domains and the truth (one entry per domain)."""
 
     def __init__(self, domains, truth):
+        """domains: the input domains; truth: one true value per domain (None: unknown)."""
         assert len(domains) == len(truth), "one truth per domain (None: unknown)"
         self.domains = domains
         self.truth = truth
@@ -52,6 +60,7 @@ class Case:
 # ------------------------------------------------------------------ helpers
 
 def copy_domains(domains):
+    """Copies of the domains (a Tube copy shares the TDomain)."""
     return [d.copy() for d in domains]
 
 
@@ -60,6 +69,7 @@ def _bits(v):
 
 
 def same_bits(a, b):
+    """Bit-for-bit equality of two intervals (all empty intervals alike)."""
     if a.is_empty() and b.is_empty():
         return True
     return _bits(a.lb()) == _bits(b.lb()) and _bits(a.ub()) == _bits(b.ub())
@@ -82,7 +92,7 @@ def atoms(dom):
         for i in range(len(dom)):
             out += _tube_atoms(dom[i], f"component {i}, ")
         return out
-    raise TypeError(f"contractor_kit: unsupported domain {type(dom).__name__}")
+    raise TypeError(f"sillage.testing: unsupported domain {type(dom).__name__}")
 
 
 def _tube_atoms(x, pre):
@@ -105,6 +115,7 @@ def _at(where):
 
 
 def check_contracted(after, before, law="contraction"):
+    """(a) Every atom of `after` inside the same atom of `before`, no NaN bound."""
     for d, (x, y) in enumerate(zip(after, before)):
         for (where, a), (_, b) in _paired(x, y, law, d):
             if _has_nan(a):
@@ -114,6 +125,7 @@ def check_contracted(after, before, law="contraction"):
 
 
 def check_identical(a, b, law, name_a="second", name_b="first"):
+    """Bit-for-bit equality of two lists of domains; the message names them name_a and name_b."""
     for d, (x, y) in enumerate(zip(a, b)):
         for (where, p), (_, q) in _paired(x, y, law, d):
             if not same_bits(p, q):
@@ -184,6 +196,7 @@ def filled(dom, y):
 # ------------------------------------------------------------------ the laws
 
 def check_idempotent(contract, once, truth, mode, samples=3):
+    """(c) Idempotence from the contracted state `once`: mode "exact", "contraction" or None."""
     if mode is None:
         return
     twice = copy_domains(once)
@@ -198,7 +211,8 @@ def check_idempotent(contract, once, truth, mode, samples=3):
         raise ValueError(f"idempotence: 'exact', 'contraction' or None, not {mode!r}")
 
 
-def check_concurrent(contract, generate, seed):
+def check_threads(contract, generate, seed):
+    """(e) Two threads contracting copies of the case of `seed` get the serial result bit for bit."""
     serial = generate(random.Random(seed)).domains
     _run(contract, serial, "serial call")
     copies = [generate(random.Random(seed)).domains for _ in range(2)]
@@ -223,6 +237,7 @@ def check_concurrent(contract, generate, seed):
 
 def check_special_inputs(contract, case, *, samples=3, empty_inputs=True, unbounded_inputs=True, outputs=None,
                          empty_any=False, skip_empty=(), skip_unbounded=()):
+    """(f) Each domain of the case in turn empty, then all reals."""
     n = len(case.domains)
     for d in range(n):
         if empty_inputs and d not in skip_empty:
@@ -270,7 +285,7 @@ def check_laws(contract, generate, *, cases=20, samples=3, seed=20170101, idempo
             check_truth(out, case.truth, samples)
             check_idempotent(contract, out, case.truth, idempotence, samples)
             if threads:
-                check_concurrent(contract, generate, s)
+                check_threads(contract, generate, s)
             check_special_inputs(contract, case, samples=samples, empty_inputs=empty_inputs,
                                  unbounded_inputs=unbounded_inputs, outputs=outputs, empty_any=empty_any,
                                  skip_empty=skip_empty, skip_unbounded=skip_unbounded)
@@ -371,6 +386,7 @@ def tube_around(td, f, rng, w, p_unknown=0.0):
 
 
 def random_tdomain(rng, n, t0=0.0):
+    """Random increasing time points from t0: n slices of widths in [0.05, 0.5]."""
     ts = [t0]
     for _ in range(n):
         ts.append(ts[-1] + rng.uniform(0.05, 0.5))
@@ -382,11 +398,13 @@ class SineSum:
     arithmetic: x(t), v(t) enclose the true values (ranges for an interval t)."""
 
     def __init__(self, rng, terms=3):
+        """`terms` sines of random amplitudes, pulsations and phases drawn from rng."""
         self.a = [rng.uniform(-1.5, 1.5) for _ in range(terms)]
         self.w = [rng.uniform(0.3, 3.0) for _ in range(terms)]
         self.p = [rng.uniform(-3.0, 3.0) for _ in range(terms)]
 
     def x(self, t):
+        """An enclosure of x over the Interval t."""
         from sillage import sin
         r = Interval(0)
         for a, w, p in zip(self.a, self.w, self.p):
@@ -394,8 +412,19 @@ class SineSum:
         return r
 
     def v(self, t):
+        """An enclosure of x' over the Interval t."""
         from sillage import cos
         r = Interval(0)
         for a, w, p in zip(self.a, self.w, self.p):
             r = r + Interval(a) * Interval(w) * cos(Interval(w) * t + Interval(p))
         return r
+
+
+def position(f):
+    """The trajectory t -> x(t) of a SineSum, for a Case's truth (f.x itself)."""
+    return f.x
+
+
+def velocity(f):
+    """The trajectory t -> x'(t) of a SineSum, for a Case's truth (f.v itself)."""
+    return f.v

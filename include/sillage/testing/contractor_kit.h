@@ -1,7 +1,9 @@
 #pragma once
-// The contractor test kit: the generic laws every contractor of sillage obeys,
-// checked on random problems whose true solution is known. A contractor's test
-// gives the kit
+// The contractor test kit: the generic laws every contractor obeys, checked on
+// random problems whose true solution is known. Installed with the headers (not
+// part of sillage.h: it needs GoogleTest and oneTBB headers), header only, for
+// the tests of sillage and of contractors written outside it; its Python twin
+// is the module sillage.testing (same names). A contractor's test gives the kit
 //   - a Contract: a callable that contracts a list of domains in place (each an
 //     Interval, an IntervalVector, a Tube or a TubeVector), a few lines around
 //     the contractor's own contract call or around ContractorNetwork::add;
@@ -11,29 +13,30 @@
 //     in the input domains;
 // and calls check_laws(contract, generator, options), which runs, on
 // options.cases random cases:
-//   (a) contraction: every output ⊆ its input, component by component, slice
-//       by slice and gate by gate;
-//   (b) truth kept: the true value meets every output (at every gate and at
-//       options.samples times in each slice of a tube);
-//   (c) idempotence: a second call changes nothing, bit for bit
-//       (Idempotence::Exact), or only contracts and keeps the truth
+//   (a) contraction (check_contracted): every output ⊆ its input, component by
+//       component, slice by slice and gate by gate;
+//   (b) truth kept (check_truth): the true value meets every output (at every
+//       gate and at options.samples times in each slice of a tube);
+//   (c) idempotence (check_idempotent): a second call changes nothing, bit for
+//       bit (Idempotence::Exact), or only contracts and keeps the truth
 //       (Idempotence::ContractionOnly, for one-pass contractors such as HC4);
-//   (e) thread-count independence: the same case contracted under
-//       tbb::global_control with 1 and 2 threads, and concurrently from two
-//       threads on copies (contract must be const and stateless), gives the
-//       same result bit for bit;
-//   (f) empty and unbounded inputs: each domain in turn replaced by the empty
-//       set (then every domain in options.outputs must come out empty -- or
-//       one domain, options.empty_any, for a network -- and no exception) or
-//       by all the reals (no exception, no NaN bound, contraction and the
-//       truth kept).
+//   (e) thread-count independence (check_threads): the same case contracted
+//       under tbb::global_control with 1 and 2 threads, and concurrently from
+//       two threads on copies (contract must be const and stateless), gives
+//       the same result bit for bit;
+//   (f) empty and unbounded inputs (check_special_inputs): each domain in turn
+//       replaced by the empty set (then every domain in options.outputs must
+//       come out empty -- or one domain, options.empty_any, for a network --
+//       and no exception) or by all the reals (no exception, no NaN bound,
+//       contraction and the truth kept).
 // (d) order independence is a property of a composition: check_order_independent
 // runs a Contract that takes an insertion order with two orders and compares.
 // (g) monotonicity (X ⊆ Y ⇒ C(X) ⊆ C(Y)) is not a law of every contractor:
 // check_monotone tests it for those that have it.
-// docs/contractors.md ("Testing a contractor") says how to use the kit.
-// Every failure names the law, the case, the domain, the slice/gate index and
-// the values (GoogleTest AssertionResult messages).
+// docs/extending.md ("Testing your contractor") and docs/contractors.md
+// ("Testing a contractor") say how to use the kit. Every failure names the
+// law, the case, the domain, the slice/gate index and the values (GoogleTest
+// AssertionResult messages): EXPECT_TRUE(kit::check_laws(contract, gen, o)).
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -99,17 +102,20 @@ struct Options {
 
 // ---------------------------------------------------------------- helpers
 
+// Bit-for-bit equality of two intervals (all empty intervals alike).
+inline bool same_bits(const Interval& a, const Interval& b) {
+  if (a.is_empty() && b.is_empty()) return true;
+  return std::bit_cast<std::uint64_t>(a.lb()) == std::bit_cast<std::uint64_t>(b.lb()) &&
+         std::bit_cast<std::uint64_t>(a.ub()) == std::bit_cast<std::uint64_t>(b.ub());
+}
+
+namespace detail {
+
 inline std::string str(const Interval& x) {
   std::ostringstream os;
   os.precision(17);
   os << x;
   return os.str();
-}
-
-inline bool same_bits(const Interval& a, const Interval& b) {
-  if (a.is_empty() && b.is_empty()) return true;
-  return std::bit_cast<std::uint64_t>(a.lb()) == std::bit_cast<std::uint64_t>(b.lb()) &&
-         std::bit_cast<std::uint64_t>(a.ub()) == std::bit_cast<std::uint64_t>(b.ub());
 }
 
 inline bool has_nan(const Interval& a) { return std::isnan(a.lb()) || std::isnan(a.ub()); }
@@ -164,6 +170,8 @@ template <class F>
   }
 }
 
+}  // namespace detail
+
 inline bool dom_is_empty(const Dom& d) {
   return std::visit([](const auto& x) { return x.is_empty(); }, d);
 }
@@ -191,16 +199,17 @@ inline Dom filled(const Dom& d, const Interval& y) {
 // ---------------------------------------------------------------- the laws
 
 // (a) every atom of `after` inside the same atom of `before`, no NaN.
-inline ::testing::AssertionResult contracted(const Domains& after, const Domains& before,
+inline ::testing::AssertionResult check_contracted(const Domains& after, const Domains& before,
                                              const std::string& law = "contraction") {
   for (std::size_t d = 0; d < after.size(); ++d) {
-    auto r = for_atoms(after[d], before[d], [&](const std::string& where, const Interval& a, const Interval& b) {
+    auto r = detail::for_atoms(after[d], before[d], [&](const std::string& where, const Interval& a,
+                                                        const Interval& b) {
       const std::string at = where.empty() ? "" : " " + where;
-      if (has_nan(a))
-        return ::testing::AssertionFailure() << law << ": NaN bound in domain " << d << at << ": " << str(a);
+      if (detail::has_nan(a))
+        return ::testing::AssertionFailure() << law << ": NaN bound in domain " << d << at << ": " << detail::str(a);
       if (a.is_subset(b)) return ::testing::AssertionSuccess();
       return ::testing::AssertionFailure()
-             << law << ": domain " << d << at << " grew from " << str(b) << " to " << str(a);
+             << law << ": domain " << d << at << " grew from " << detail::str(b) << " to " << detail::str(a);
     });
     if (!r) return r;
   }
@@ -209,13 +218,14 @@ inline ::testing::AssertionResult contracted(const Domains& after, const Domains
 
 // Bit-for-bit equality of two lists of domains; the message shows both,
 // named name_b and name_a.
-inline ::testing::AssertionResult identical(const Domains& a, const Domains& b, const std::string& law,
+inline ::testing::AssertionResult check_identical(const Domains& a, const Domains& b, const std::string& law,
                                             const std::string& name_a = "second", const std::string& name_b = "first") {
   for (std::size_t d = 0; d < a.size(); ++d) {
-    auto r = for_atoms(a[d], b[d], [&](const std::string& where, const Interval& x, const Interval& y) {
+    auto r = detail::for_atoms(a[d], b[d], [&](const std::string& where, const Interval& x, const Interval& y) {
       if (same_bits(x, y)) return ::testing::AssertionSuccess();
       return ::testing::AssertionFailure() << law << ": domain " << d << (where.empty() ? "" : " ") << where << ": "
-                                           << name_b << " " << str(y) << ", " << name_a << " " << str(x);
+                                           << name_b << " " << detail::str(y) << ", " << name_a << " "
+                                           << detail::str(x);
     });
     if (!r) return r;
   }
@@ -225,12 +235,12 @@ inline ::testing::AssertionResult identical(const Domains& a, const Domains& b, 
 // (b) the truth meets every domain: at every gate and at `samples` + 2 times
 // of each slice for tubes. The truth is an enclosure: it must meet the domain
 // (a disjoint enclosure proves the true value lost).
-inline ::testing::AssertionResult keeps_truth(const Domains& doms, const std::vector<Truth>& truth, int samples) {
+inline ::testing::AssertionResult check_truth(const Domains& doms, const std::vector<Truth>& truth, int samples) {
   auto meets = [](const Interval& t, const Interval& y, std::size_t d,
                   const std::string& where) -> ::testing::AssertionResult {
     if (t.intersects(y)) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "truth kept: domain " << d << (where.empty() ? "" : " ") << where
-                                         << ": true value " << str(t) << " not in " << str(y);
+                                         << ": true value " << detail::str(t) << " not in " << detail::str(y);
   };
   auto tube = [&](const Tube& x, const Trajectory1& f, std::size_t d,
                   const std::string& pre) -> ::testing::AssertionResult {
@@ -281,6 +291,8 @@ inline ::testing::AssertionResult keeps_truth(const Domains& doms, const std::ve
 // the TDomain (a Tube copy is attached to the same TDomain).
 inline Domains copy(const Domains& d) { return d; }
 
+namespace detail {
+
 // Runs contract on a copy; an exception becomes a failure naming the law.
 inline ::testing::AssertionResult run(const Contract& contract, Domains& d, const std::string& law) {
   try {
@@ -291,24 +303,27 @@ inline ::testing::AssertionResult run(const Contract& contract, Domains& d, cons
   return ::testing::AssertionSuccess();
 }
 
+}  // namespace detail
+
 // (c) idempotence of one case, from its contracted state `once`.
-inline ::testing::AssertionResult idempotent(const Contract& contract, const Domains& once,
+inline ::testing::AssertionResult check_idempotent(const Contract& contract, const Domains& once,
                                              const std::vector<Truth>& truth, Idempotence mode, int samples) {
   if (mode == Idempotence::None) return ::testing::AssertionSuccess();
   Domains twice = copy(once);
-  auto r = run(contract, twice, "idempotence");
+  auto r = detail::run(contract, twice, "idempotence");
   if (!r) return r;
   if (mode == Idempotence::Exact) {
-    return identical(twice, once, "idempotence (a second call changed the result)", "after 2 calls", "after 1 call");
+    return check_identical(twice, once, "idempotence (a second call changed the result)", "after 2 calls",
+                           "after 1 call");
   }
-  r = contracted(twice, once, "idempotence (contraction on a second call)");
+  r = check_contracted(twice, once, "idempotence (contraction on a second call)");
   if (!r) return r;
-  return keeps_truth(twice, truth, samples);
+  return check_truth(twice, truth, samples);
 }
 
 // (e) 1 thread vs 2 threads (tbb::global_control), and two concurrent calls
 // on independent copies of the same case (regenerated from `seed`).
-inline ::testing::AssertionResult thread_independent(const Contract& contract, const Generator& gen,
+inline ::testing::AssertionResult check_threads(const Contract& contract, const Generator& gen,
                                                      std::uint64_t seed) {
   auto fresh = [&] {
     std::mt19937_64 rng(seed);
@@ -317,64 +332,68 @@ inline ::testing::AssertionResult thread_independent(const Contract& contract, c
   Domains one = fresh(), two = fresh(), c1 = fresh(), c2 = fresh();
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    auto r = run(contract, one, "threads (1)");
+    auto r = detail::run(contract, one, "threads (1)");
     if (!r) return r;
   }
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    auto r = run(contract, two, "threads (2)");
+    auto r = detail::run(contract, two, "threads (2)");
     if (!r) return r;
   }
-  auto r = identical(two, one, "thread count", "2 threads", "1 thread");
+  auto r = check_identical(two, one, "thread count", "2 threads", "1 thread");
   if (!r) return r;
   ::testing::AssertionResult r1 = ::testing::AssertionSuccess(), r2 = ::testing::AssertionSuccess();
-  std::thread a([&] { r1 = run(contract, c1, "concurrent calls"); });
-  std::thread b([&] { r2 = run(contract, c2, "concurrent calls"); });
+  std::thread a([&] { r1 = detail::run(contract, c1, "concurrent calls"); });
+  std::thread b([&] { r2 = detail::run(contract, c2, "concurrent calls"); });
   a.join();
   b.join();
   if (!r1) return r1;
   if (!r2) return r2;
-  r = identical(c1, one, "concurrent calls", "thread A", "serial");
+  r = check_identical(c1, one, "concurrent calls", "thread A", "serial");
   if (!r) return r;
-  return identical(c2, one, "concurrent calls", "thread B", "serial");
+  return check_identical(c2, one, "concurrent calls", "thread B", "serial");
 }
+
+namespace detail {
 
 inline bool listed(const std::vector<std::size_t>& v, std::size_t i) {
   return std::find(v.begin(), v.end(), i) != v.end();
 }
 
+}  // namespace detail
+
 // (f) each domain in turn empty / all reals.
-inline ::testing::AssertionResult special_inputs(const Contract& contract, const Case& c, const Options& o) {
+inline ::testing::AssertionResult check_special_inputs(const Contract& contract, const Case& c, const Options& o) {
   const std::size_t n = c.domains.size();
   for (std::size_t d = 0; d < n; ++d) {
-    if (o.empty_inputs && !listed(o.skip_empty, d)) {
+    if (o.empty_inputs && !detail::listed(o.skip_empty, d)) {
       Domains in = copy(c.domains);
       in[d] = filled(in[d], Interval::empty());
       Domains out = copy(in);
       const std::string law = "empty input (domain " + std::to_string(d) + " empty)";
-      auto r = run(contract, out, law);
-      if (r) r = contracted(out, in, law);
+      auto r = detail::run(contract, out, law);
+      if (r) r = check_contracted(out, in, law);
       if (r && o.empty_any) {
         if (std::none_of(out.begin(), out.end(), dom_is_empty)) {
           r = ::testing::AssertionFailure() << law << ": no domain is empty after the call";
         }
       }
       for (std::size_t e = 0; e < n && r && !o.empty_any; ++e) {
-        const bool is_output = o.outputs.empty() || listed(o.outputs, e);
+        const bool is_output = o.outputs.empty() || detail::listed(o.outputs, e);
         if (is_output && !dom_is_empty(out[e])) {
           r = ::testing::AssertionFailure() << law << ": domain " << e << " is not empty after the call";
         }
       }
       if (!r) return r;
     }
-    if (o.unbounded_inputs && !listed(o.skip_unbounded, d)) {
+    if (o.unbounded_inputs && !detail::listed(o.skip_unbounded, d)) {
       Domains in = copy(c.domains);
       in[d] = filled(in[d], Interval());
       Domains out = copy(in);
       const std::string law = "unbounded input (domain " + std::to_string(d) + " all reals)";
-      auto r = run(contract, out, law);
-      if (r) r = contracted(out, in, law);
-      if (r) r = keeps_truth(out, c.truth, o.samples);
+      auto r = detail::run(contract, out, law);
+      if (r) r = check_contracted(out, in, law);
+      if (r) r = check_truth(out, c.truth, o.samples);
       if (!r) return ::testing::AssertionFailure() << law << ": " << r.message();
     }
   }
@@ -385,6 +404,8 @@ inline ::testing::AssertionResult special_inputs(const Contract& contract, const
 // (nor claims), but what makes the fixed point of a network independent of
 // the order. Y is the case's input, X a random sub-domain (each bounded atom
 // shrunk by up to 30% on each side, independently: gates and slices too).
+namespace detail {
+
 inline Interval shrink_atom(const Interval& y, std::mt19937_64& rng) {
   if (y.is_empty() || y.is_unbounded()) return y;
   std::uniform_real_distribution<double> u(0.0, 0.3);
@@ -393,20 +414,23 @@ inline Interval shrink_atom(const Interval& y, std::mt19937_64& rng) {
 }
 
 inline void shrink_tube(Tube& x, std::mt19937_64& rng) {
-  for (auto& y : x.data().slices) y = shrink_atom(y, rng);
-  for (auto& y : x.data().gates) y = shrink_atom(y, rng);
-  x.touch();
+  std::vector<Interval> s(x.nb_slices()), g(x.nb_slices() + 1);
+  for (std::size_t k = 0; k < s.size(); ++k) s[k] = shrink_atom(x.slice(k), rng);
+  for (std::size_t k = 0; k < g.size(); ++k) g[k] = shrink_atom(x.gate(k), rng);
+  x = Tube(x.tdomain(), s, g);  // a gate disjoint from a slice is kept as drawn
 }
+
+}  // namespace detail
 
 inline Dom shrunk(const Dom& d, std::mt19937_64& rng) {
   Dom r = d;
-  if (auto* x = std::get_if<Interval>(&r)) *x = shrink_atom(*x, rng);
+  if (auto* x = std::get_if<Interval>(&r)) *x = detail::shrink_atom(*x, rng);
   if (auto* x = std::get_if<IntervalVector>(&r)) {
-    for (auto& y : *x) y = shrink_atom(y, rng);
+    for (auto& y : *x) y = detail::shrink_atom(y, rng);
   }
-  if (auto* x = std::get_if<Tube>(&r)) shrink_tube(*x, rng);
+  if (auto* x = std::get_if<Tube>(&r)) detail::shrink_tube(*x, rng);
   if (auto* x = std::get_if<TubeVector>(&r)) {
-    for (std::size_t i = 0; i < x->size(); ++i) shrink_tube((*x)[i], rng);
+    for (std::size_t i = 0; i < x->size(); ++i) detail::shrink_tube((*x)[i], rng);
   }
   return r;
 }
@@ -420,9 +444,9 @@ inline ::testing::AssertionResult check_monotone(const Contract& contract, const
     Domains big = copy(c.domains), small;
     std::mt19937_64 srng(seed ^ 0x5eed);
     for (const auto& d : c.domains) small.push_back(shrunk(d, srng));
-    auto r = run(contract, big, "monotonicity (C(Y))");
-    if (r) r = run(contract, small, "monotonicity (C(X))");
-    if (r) r = contracted(small, big, "monotonicity: X ⊆ Y but C(X) ⊄ C(Y)");
+    auto r = detail::run(contract, big, "monotonicity (C(Y))");
+    if (r) r = detail::run(contract, small, "monotonicity (C(X))");
+    if (r) r = check_contracted(small, big, "monotonicity: X ⊆ Y but C(X) ⊄ C(Y)");
     if (!r) return ::testing::AssertionFailure() << "case " << i << " (seed " << seed << "): " << r.message();
   }
   return ::testing::AssertionSuccess();
@@ -438,15 +462,15 @@ inline ::testing::AssertionResult check_laws(const Contract& contract, const Gen
     auto fail = [&](const ::testing::AssertionResult& r) {
       return ::testing::AssertionFailure() << "case " << i << " (seed " << seed << "): " << r.message();
     };
-    auto r = keeps_truth(c.domains, c.truth, o.samples);
+    auto r = check_truth(c.domains, c.truth, o.samples);
     if (!r) return fail(::testing::AssertionFailure() << "generator: the truth is not in the input: " << r.message());
     Domains out = copy(c.domains);
-    r = run(contract, out, "contract");
-    if (r) r = contracted(out, c.domains);
-    if (r) r = keeps_truth(out, c.truth, o.samples);
-    if (r) r = idempotent(contract, out, c.truth, o.idempotence, o.samples);
-    if (r && o.threads) r = thread_independent(contract, gen, seed);
-    if (r) r = special_inputs(contract, c, o);
+    r = detail::run(contract, out, "contract");
+    if (r) r = check_contracted(out, c.domains);
+    if (r) r = check_truth(out, c.truth, o.samples);
+    if (r) r = check_idempotent(contract, out, c.truth, o.idempotence, o.samples);
+    if (r && o.threads) r = check_threads(contract, gen, seed);
+    if (r) r = check_special_inputs(contract, c, o);
     if (!r) return fail(r);
   }
   return ::testing::AssertionSuccess();
@@ -467,13 +491,13 @@ inline ::testing::AssertionResult check_order_independent(const OrderedContract&
     std::mt19937_64 rng(seed);
     const Case c = gen(rng);
     Domains a = copy(c.domains), b = copy(c.domains);
-    auto r = run([&](Domains& d) { contract(d, order1); }, a, "order 1");
-    if (r) r = run([&](Domains& d) { contract(d, order2); }, b, "order 2");
-    if (r) r = contracted(a, c.domains, "order 1, contraction");
-    if (r) r = contracted(b, c.domains, "order 2, contraction");
-    if (r) r = keeps_truth(a, c.truth, o.samples);
-    if (r) r = keeps_truth(b, c.truth, o.samples);
-    if (r && same_fixed_point) r = identical(b, a, "order independence", "order 2", "order 1");
+    auto r = detail::run([&](Domains& d) { contract(d, order1); }, a, "order 1");
+    if (r) r = detail::run([&](Domains& d) { contract(d, order2); }, b, "order 2");
+    if (r) r = check_contracted(a, c.domains, "order 1, contraction");
+    if (r) r = check_contracted(b, c.domains, "order 2, contraction");
+    if (r) r = check_truth(a, c.truth, o.samples);
+    if (r) r = check_truth(b, c.truth, o.samples);
+    if (r && same_fixed_point) r = check_identical(b, a, "order independence", "order 2", "order 1");
     if (!r) return ::testing::AssertionFailure() << "case " << i << " (seed " << seed << "): " << r.message();
   }
   return ::testing::AssertionSuccess();
