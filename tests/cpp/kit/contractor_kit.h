@@ -393,9 +393,9 @@ inline Interval shrink_atom(const Interval& y, std::mt19937_64& rng) {
 }
 
 inline void shrink_tube(Tube& x, std::mt19937_64& rng) {
-  for (auto& y : x.data().slices) y = shrink_atom(y, rng);
-  for (auto& y : x.data().gates) y = shrink_atom(y, rng);
-  x.touch();
+  const Tube::Writer w = x.write();
+  for (auto& y : w.slices()) y = shrink_atom(y, rng);
+  for (auto& y : w.gates()) y = shrink_atom(y, rng);
 }
 
 inline Dom shrunk(const Dom& d, std::mt19937_64& rng) {
