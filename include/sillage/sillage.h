@@ -69,7 +69,6 @@
 #include "sillage/cn/tube_ctc_node.h"
 #include "sillage/cn/tube_domain.h"
 #include "sillage/cn/tube_node.h"
-#include "sillage/cn/watchers.h"
 
 #include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"

@@ -51,10 +51,8 @@
 // reported with both atoms and left as given. Name the domains (set_name,
 // create_dom) to read "tube 'x'" rather than "domain 3 (Tube(100 slices))".
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "sillage/budget.h"
@@ -62,12 +60,11 @@
 #include "sillage/cn/domain_ref.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/cn/scheduling.h"
-#include "sillage/cn/watchers.h"
 
 namespace sillage {
 
 namespace detail {
-class DirtyAtoms;
+class ContractorNetworkImpl;
 }
 
 // What contract() did. An empty network is an answer (no solution), explained by
@@ -119,7 +116,7 @@ class ContractorNetwork {
   // tube vector's components become name[0], name[1], ... Error if empty.
   void set_name(const DomainRef& d, const std::string& name);
   // The name of domain number d ("" if none).
-  const std::string& domain_name(std::size_t d) const { return names_.at(d); }
+  const std::string& domain_name(std::size_t d) const;
 
   // Names contractor i (in add order: nb_ctc() - 1 is the last added) for the
   // reports, e.g. the measurement it stands for: "CtcEval (ranges line 12)
@@ -143,91 +140,34 @@ class ContractorNetwork {
   ContractStats contract();
 
   // Number of contractors added.
-  std::size_t nb_ctc() const { return nodes_.size(); }
+  std::size_t nb_ctc() const;
   // Number of domains known to the network.
-  std::size_t nb_dom() const { return domains_.size(); }
+  std::size_t nb_dom() const;
   // The shrink ratio above which a contracted atom wakes its other contractors (default 0.01).
-  double ratio() const { return ratio_; }
+  double ratio() const;
   // Sets ratio(): a component that shrank by more than ratio wakes the contractors acting on
   // it; 0 <= ratio < 1 (else Error).
   void set_ratio(double ratio);
   // The order of the contractors within a round (scheduling.h; default Fifo).
-  Scheduling scheduling() const { return scheduling_; }
+  Scheduling scheduling() const;
   // Sets scheduling(): Fifo or Priority (by expected contraction over cost).
-  void set_scheduling(Scheduling s) { scheduling_ = s; }
+  void set_scheduling(Scheduling s);
   // Limits of contract(): max_boxes counts contractor calls (10^7 by
   // default), max_seconds the wall-clock time, cancel stops it from another
   // thread (Python: Ctrl-C), between contractor calls and within the long
   // ones (CtcIvp, CtcPImpliesZ). Exceeded: BudgetExceeded (cancelled: Cancelled),
   // the domains left contracted as far as they got (still enclosures).
-  const Budget& budget() const { return budget_; }
+  const Budget& budget() const;
   // Sets budget(); contract() then raises BudgetExceeded past it (the domains stay enclosures).
   void set_budget(const Budget& budget);
   // What the last contract() that raised BudgetExceeded did before it stopped
   // (its rounds and contractor runs, the time).
-  const ContractStats& stopped_stats() const { return stopped_stats_; }
+  const ContractStats& stopped_stats() const;
 
  private:
-  std::string label(std::size_t d) const;
-  // DimensionError naming domain d when its object lost the layout it was registered with.
-  void check_layout(std::size_t d) const;
-  // "tube 'x'" when named, else label(d).
-  std::string noun(std::size_t d) const;
-  // Fills the emptiness fields of s: domain d, atom a (kNoAtom: none), found
-  // by `by` (a node's describe(); "" for empty on input).
-  void explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
-                     const Interval& time) const;
-  // The fields of s naming domain d, atom a and `by`; the place of a.
-  AtomPlace name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const;
-  // Fills s if domain d holds no value before the propagation (Domain::empty_on_input).
-  void explain_empty_on_input(ContractStats& s, std::size_t d) const;
-  // Domain d's `gate` misses its neighbouring `slice`: both named, with their values and times.
-  void explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const;
-  // A contractor (a Python one may) that resized a domain or sampled its
-  // TDomain during contract() made the nodes' layouts stale: DimensionError
-  // rather than a result computed on the wrong atoms.
-  void check_layouts_after(const CnNode& node) const;
-  // Same for a node whose run() returned false.
-  void explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const;
-  // Node i's describe(), with its name (set_ctc_name) if it has one.
-  std::string describe_node(std::size_t i) const;
-  // The first empty atom of domain d in [first, first + count), or kNoAtom.
-  std::size_t first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const;
-  // Registers the parts of the references; validates first, so that a failed
-  // add leaves the network unchanged.
-  std::vector<BoundDomain> bind(const std::vector<DomainRef>& domains);
-  // Binds the domains, then adds the node `make` builds on them; if `make`
-  // throws, the domains this call registered are forgotten.
-  void add_bound(const std::vector<DomainRef>& domains,
-                 const std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>& make);
-
-  std::vector<std::shared_ptr<Domain>> domains_;
-  std::vector<std::string> names_;  // per domain, "" if unnamed
-  std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
-  std::vector<Watchers> watchers_;  // per domain
-  // Per node, its watched atoms that shrank since it last ran (contract()).
-  std::unique_ptr<detail::DirtyAtoms> dirty_;
-  std::vector<std::shared_ptr<const CnNode>> nodes_;
-  // Per node, how to build it again on a new layout (make empty: add_node).
-  struct Record {
-    std::vector<DomainRef> refs;
-    std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)> make;
-  };
-  std::vector<Record> records_;
-  std::vector<NetworkCtc::Gates> pending_gates_;
-  // Samples the pending gates, re-lays out the tube domains and rebuilds the
-  // nodes (see "Gates"); at the start of contract().
-  void add_pending_gates();
-  bool acts_on(const CnNode& node, const TDomain& td) const;
-  double ratio_ = 0.01;
-  Scheduling scheduling_ = Scheduling::Fifo;
-  Budget budget_;
-  ContractStats stopped_stats_;
-  std::vector<std::string> ctc_names_;  // per node, "" if unnamed (set_ctc_name)
-  // True during contract(): a contractor calling back into the network (a
-  // Python one may) must not grow the arrays contract() is walking.
-  bool contracting_ = false;
-  void check_not_contracting(const char* where) const;
+  // The machinery (src/sillage/cn/network_impl.h): domains, nodes, watchers,
+  // the propagation. Kept out of this header, which holds the contract.
+  std::unique_ptr<detail::ContractorNetworkImpl> impl_;
 };
 
 }  // namespace sillage

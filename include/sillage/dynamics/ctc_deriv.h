@@ -67,7 +67,7 @@ class CtcDeriv : public TubeContractor<CtcDeriv, bool(Tube&, const Tube&)> {
   // in a network, other nodes then leave that propagation to this one.
   bool enforces_derivative() const { return propag_ == TimePropag::FWD_BWD; }
 
-  // Contracts x in place with x' ∈ v (touch()es x if it changed). Returns
+  // Contracts x in place with x' ∈ v (x.version() steps if it changed). Returns
   // false if x is now empty. DimensionError if x and v are not on the same
   // TDomain.
   bool contract(Tube& x, const Tube& v) const;

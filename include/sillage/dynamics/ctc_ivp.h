@@ -71,7 +71,7 @@ class CtcIvp : public NetworkCtc {
   // that fails is retried as the two halves of its box. Error if m is 0.
   void set_max_pieces(std::size_t m);
 
-  // Contracts x in place (touch()es what changed); false if x is now empty
+  // Contracts x in place (the versions of what changed step); false if x is now empty
   // (then every slice and gate is empty). DimensionError on wrong sizes or
   // TDomains. `cancel` is checked at every integration step (a few
   // microseconds): once cancelled, Cancelled is thrown and x is still an

@@ -414,10 +414,9 @@ inline Interval shrink_atom(const Interval& y, std::mt19937_64& rng) {
 }
 
 inline void shrink_tube(Tube& x, std::mt19937_64& rng) {
-  std::vector<Interval> s(x.nb_slices()), g(x.nb_slices() + 1);
-  for (std::size_t k = 0; k < s.size(); ++k) s[k] = shrink_atom(x.slice(k), rng);
-  for (std::size_t k = 0; k < g.size(); ++k) g[k] = shrink_atom(x.gate(k), rng);
-  x = Tube(x.tdomain(), s, g);  // a gate disjoint from a slice is kept as drawn
+  const Tube::Writer w = x.write();
+  for (auto& y : w.slices()) y = shrink_atom(y, rng);
+  for (auto& y : w.gates()) y = shrink_atom(y, rng);
 }
 
 }  // namespace detail

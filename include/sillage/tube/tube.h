@@ -13,6 +13,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sillage/interval/interval.h"
@@ -144,11 +145,12 @@ class Tube {
   // The same restricted to t ∈ [t] (the slices meeting [t]): ⊆ [t].
   Interval inverse(const Interval& y, const Tube& v, const Interval& t) const;
 
-  // Low-level access for algorithms of this layer (contractors, arithmetic).
-  // Callers that modify must keep sizes and call touch().
-  TubeData& data() { return *data_; }
+  // Writing the slices and gates in place (contractors, extensions): see
+  // Tube::Writer below. The version increases once when the writer ends.
+  class Writer;
+  Writer write();
+  // The storage, read only (algorithms of this layer).
   const TubeData& data() const { return *data_; }
-  void touch() { data_->touch(); }
 
  private:
   friend std::vector<Tube> detail::tubes_of_function(const std::shared_ptr<TDomain>& td, const Function& f);
@@ -159,6 +161,56 @@ class Tube {
   std::shared_ptr<TDomain> td_;
   std::shared_ptr<TubeData> data_;
 };
+
+// Write access to a tube's slices and gates in place (Tube::write()). It
+// holds the storage's invariant: the spans cannot change the number of
+// slices or gates, and the tube's version increases once when the writer
+// ends (its scope, or commit()), which tells the caches (synthesis tree) and
+// the networks (TubeChanges) that the tube changed.
+//
+//   {
+//     Tube::Writer w = x.write();
+//     const auto s = w.slices();
+//     for (std::size_t k = 0; k < s.size(); ++k) s[k] &= y.slice(k);
+//   }  // x.version() increased once
+//
+// Until the writer ends, x's cached synthesis tree is the one of before: read
+// what is being written through the spans.
+class Tube::Writer {
+ public:
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+  Writer(Writer&& w) noexcept : d_(std::exchange(w.d_, nullptr)) {}
+  Writer& operator=(Writer&& w) noexcept {
+    if (this != &w) {
+      commit();
+      d_ = std::exchange(w.d_, nullptr);
+    }
+    return *this;
+  }
+  ~Writer() { commit(); }
+
+  // The N slice codomains and the N+1 gates, in place.
+  std::span<Interval> slices() const { return d_->slices; }
+  std::span<Interval> gates() const { return d_->gates; }
+  // Time element a (tube_atoms.h): gate a/2 if a is even, slice a/2 if odd.
+  Interval& atom(std::size_t a) const { return (a & 1) != 0 ? d_->slices[a / 2] : d_->gates[a / 2]; }
+
+  // Ends the write: the version increases once if `changed`; commit(false)
+  // when the caller saw every value stay as it was (the caches stay valid).
+  // The spans are not to be used after. The destructor calls commit().
+  void commit(bool changed = true) {
+    if (d_ && changed) d_->touch();
+    d_ = nullptr;
+  }
+
+ private:
+  friend class Tube;
+  explicit Writer(TubeData& d) : d_(&d) {}
+  TubeData* d_;
+};
+
+inline Tube::Writer Tube::write() { return Writer(*data_); }
 
 std::ostream& operator<<(std::ostream& os, const Tube& x);
 

@@ -14,7 +14,6 @@ struct TubeAtoms {
   static constexpr std::size_t slice_atom(std::size_t k) { return 2 * k + 1; }
   static constexpr bool is_slice(std::size_t a) { return (a & 1) != 0; }
   static constexpr std::size_t time_index(std::size_t a) { return a / 2; }  // the slice or gate number
-  static Interval& time_atom(TubeData& d, std::size_t a) { return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2]; }
   static const Interval& time_atom(const TubeData& d, std::size_t a) {
     return is_slice(a) ? d.slices[a / 2] : d.gates[a / 2];
   }

@@ -28,7 +28,7 @@
 namespace sillage {
 
 // Contracts the tubes x (x[i] is variable i of ctc.function()) in place and
-// touch()es those that changed. Returns false if the tubes are (now) empty.
+// marks those that changed (their version steps). Returns false if the tubes are (now) empty.
 // DimensionError if x.size() != ctc.nb_vars() or the tubes are not on the
 // same TDomain; Error if a pointer is null or the same tube appears twice.
 bool contract(const CtcFunction& ctc, const std::vector<Tube*>& x);

@@ -5,6 +5,7 @@
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -101,12 +102,13 @@ std::vector<std::vector<Interval>> components_from_array(const py::handle& h, st
 }
 
 // A tube with exactly these slices and gates (no consistency check: used to
-// restore a pickled tube bit for bit).
+// restore a pickled tube bit for bit). Their sizes are the TDomain's (the
+// callers read them with intervals_from_array).
 Tube tube_with(const TD& td, const std::vector<Interval>& slices, const std::vector<Interval>& gates) {
   Tube x(td);
-  x.data().slices.assign(slices.begin(), slices.end());
-  x.data().gates.assign(gates.begin(), gates.end());
-  x.touch();
+  const Tube::Writer w = x.write();
+  std::copy(slices.begin(), slices.end(), w.slices().begin());
+  std::copy(gates.begin(), gates.end(), w.gates().begin());
   return x;
 }
 
@@ -156,9 +158,11 @@ py::array_t<double> component_values(const TubeVector& v, int what) {
 Tube inflated(const Tube& x, double r) {
   if (!(r >= 0.0)) throw Error("Tube.inflate: the radius must be >= 0, got " + std::to_string(r));
   Tube y(x);
-  for (auto& s : y.data().slices) s = s.inflate(r);
-  for (auto& g : y.data().gates) g = g.inflate(r);
-  y.touch();
+  {
+    const Tube::Writer w = y.write();
+    for (auto& s : w.slices()) s = s.inflate(r);
+    for (auto& g : w.gates()) g = g.inflate(r);
+  }
   return y;
 }
 

@@ -1,19 +1,12 @@
+// ContractorNetwork forwards to its implementation (network_impl.h): the
+// public header stays free of the machinery, and contract() pays one call.
 #include "sillage/cn/contractor_network.h"
 
-#include <algorithm>
-#include <chrono>
-#include <functional>
-
-#include "sillage/cn/dirty_atoms.h"
-#include "sillage/cn/round_order.h"
-#include "sillage/cn/tube_ctc_node.h"
-#include "sillage/cn/tube_domain.h"
-#include "sillage/ctc/shrink.h"
-#include "sillage/error.h"
+#include "sillage/cn/network_impl.h"
 
 namespace sillage {
 
-ContractorNetwork::ContractorNetwork() : dirty_(std::make_unique<detail::DirtyAtoms>()) {}
+ContractorNetwork::ContractorNetwork() : impl_(std::make_unique<detail::ContractorNetworkImpl>()) {}
 
 ContractorNetwork::~ContractorNetwork() = default;
 
@@ -31,394 +24,42 @@ std::shared_ptr<IntervalVector> ContractorNetwork::create_dom(const IntervalVect
   return p;
 }
 
-void ContractorNetwork::set_name(const DomainRef& d, const std::string& name) {
-  if (name.empty()) throw Error("ContractorNetwork::set_name: empty name");
-  const auto& parts = d.parts();
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    names_[add_domain(parts[i].domain)] = parts.size() == 1 ? name : name + "[" + std::to_string(i) + "]";
-  }
-}
+void ContractorNetwork::set_name(const DomainRef& d, const std::string& name) { impl_->set_name(d, name); }
 
-void ContractorNetwork::check_not_contracting(const char* where) const {
-  if (contracting_) throw Error(std::string("ContractorNetwork::") + where + ": called during contract()");
-}
+const std::string& ContractorNetwork::domain_name(std::size_t d) const { return impl_->domain_name(d); }
 
-std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain) {
-  check_not_contracting("add_domain");
-  if (!domain) throw Error("ContractorNetwork: null domain");
-  const auto it = index_.find(domain->key());
-  if (it != index_.end()) {
-    check_layout(it->second);
-    return it->second;
-  }
-  const std::size_t d = domains_.size();
-  domains_.push_back(domain);
-  names_.emplace_back();
-  watchers_.emplace_back(domain->nb_atoms());
-  index_.emplace(domain->key(), d);
-  return d;
-}
-
-std::vector<BoundDomain> ContractorNetwork::bind(const std::vector<DomainRef>& domains) {
-  for (const auto& r : domains) {
-    for (const auto& p : r.parts()) {
-      const auto it = index_.find(p.domain->key());
-      if (it != index_.end()) check_layout(it->second);
-    }
-  }
-  std::vector<BoundDomain> bound;
-  for (const auto& r : domains) {
-    for (const auto& p : r.parts()) {
-      // A whole tube referred to before its TDomain gained time points: the
-      // whole tube as it is now.
-      std::shared_ptr<Domain> dom = p.domain;
-      std::size_t count = p.count;
-      if (dom->layout_changed() && p.first == 0 && p.count == dom->nb_atoms()) {
-        if (auto now = dom->relaid()) {
-          dom = now;
-          count = dom->nb_atoms();
-        }
-      }
-      const std::size_t d = add_domain(dom);
-      bound.push_back({domains_[d], {d, p.first, count}});
-    }
-  }
-  return bound;
-}
+void ContractorNetwork::set_ctc_name(std::size_t i, const std::string& name) { impl_->set_ctc_name(i, name); }
 
 void ContractorNetwork::add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains) {
-  check_not_contracting("add");
-  if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  add_bound(domains, [ctc](const std::vector<BoundDomain>& bound) -> std::shared_ptr<const CnNode> {
-    std::vector<AtomRange> ranges;
-    bool any_tube = false;
-    for (const auto& b : bound) {
-      ranges.push_back(b.range);
-      any_tube = any_tube || std::dynamic_pointer_cast<TubeDomain>(b.domain);
-    }
-    // The node constructors check the arguments (DimensionError naming ctc).
-    if (any_tube) return std::make_shared<TubeCtcNode>(ctc, bound);
-    return std::make_shared<CtcNode>(ctc, std::move(ranges));
-  });
+  impl_->add(std::move(ctc), domains);
 }
 
 void ContractorNetwork::add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains) {
-  check_not_contracting("add");
-  if (!ctc) throw Error("ContractorNetwork::add: null contractor");
-  add_bound(domains,
-            [ctc, domains](const std::vector<BoundDomain>& bound) { return ctc->make_node_for(domains, bound); });
-  NetworkCtc::Gates g = ctc->gates_for(domains);
-  if (g.tdomain && !g.times.empty()) pending_gates_.push_back(std::move(g));
+  impl_->add(std::move(ctc), domains);
 }
 
-void ContractorNetwork::add_bound(
-    const std::vector<DomainRef>& domains,
-    const std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>& make) {
-  // The node validates its arguments: on an error, forget the domains this
-  // call registered, so that a failed add leaves the network unchanged.
-  const std::size_t nb_before = domains_.size();
-  try {
-    add_node(make(bind(domains)));
-    records_.back() = {domains, make};
-  } catch (...) {
-    if (records_.size() > nodes_.size()) records_.pop_back();
-    while (domains_.size() > nb_before) {
-      index_.erase(domains_.back()->key());
-      domains_.pop_back();
-      names_.pop_back();
-      watchers_.pop_back();
-    }
-    throw;
-  }
-}
+void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) { impl_->add_node(std::move(node)); }
 
-void ContractorNetwork::add_node(std::shared_ptr<const CnNode> node) {
-  check_not_contracting("add_node");
-  if (!node) throw Error("ContractorNetwork::add_node: null node");
-  for (const auto& a : node->ranges()) {
-    if (a.domain >= domains_.size() || a.first > domains_[a.domain]->nb_atoms() ||
-        a.count > domains_[a.domain]->nb_atoms() - a.first) {
-      throw DimensionError("ContractorNetwork::add_node: " + node->name() + " refers to unknown domain atoms");
-    }
-  }
-  const std::size_t id = nodes_.size();
-  std::vector<std::size_t> bit_of;
-  dirty_->add_node(*node, bit_of);
-  for (std::size_t g = 0; g < node->ranges().size(); ++g) {
-    const AtomRange& a = node->ranges()[g];
-    const AtomRange& w = node->watched()[g];
-    if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first), bit_of[g]});
-  }
-  nodes_.push_back(std::move(node));
-  records_.emplace_back();
-}
+std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain) { return impl_->add_domain(domain); }
 
-bool ContractorNetwork::acts_on(const CnNode& node, const TDomain& td) const {
-  for (const auto& a : node.ranges()) {
-    const auto* t = dynamic_cast<const TubeDomain*>(domains_[a.domain].get());
-    if (t && t->tube().tdomain().get() == &td) return true;
-  }
-  return false;
-}
+ContractStats ContractorNetwork::contract() { return impl_->contract(); }
 
-void ContractorNetwork::add_pending_gates() {
-  if (pending_gates_.empty()) return;
-  const auto pending = std::move(pending_gates_);
-  pending_gates_.clear();
-  bool sampled = false;
-  const bool laid_out = std::none_of(domains_.begin(), domains_.end(), [](const auto& d) { return d->layout_changed(); });
-  for (const auto& g : pending) {
-    const bool rebuildable = std::none_of(nodes_.begin(), nodes_.end(), [&](const auto& n) {
-      return !records_[static_cast<std::size_t>(&n - nodes_.data())].make && acts_on(*n, *g.tdomain);
-    });
-    if (!rebuildable || !laid_out) continue;
-    for (const double t : g.times) {
-      if (t > g.tdomain->t0() && t < g.tdomain->tf() && !g.tdomain->is_time_point(t)) {
-        g.tdomain->sample(t);
-        sampled = true;
-      }
-    }
-  }
-  if (!sampled) return;
-  for (auto& d : domains_) {
-    if (!d->layout_changed()) continue;
-    if (auto now = d->relaid()) d = now;
-  }
-  // Every node again, in the same order (the watchers name nodes by index).
-  auto old = std::move(nodes_);
-  auto records = std::move(records_);
-  nodes_.clear();
-  records_.clear();
-  for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
-  dirty_->clear_nodes();
-  for (std::size_t i = 0; i < old.size(); ++i) {
-    add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
-    records_.back() = std::move(records[i]);
-  }
-}
+std::size_t ContractorNetwork::nb_ctc() const { return impl_->nb_ctc(); }
 
-void ContractorNetwork::set_ratio(double ratio) {
-  check_ratio(ratio, "ContractorNetwork::set_ratio");
-  ratio_ = ratio;
-}
+std::size_t ContractorNetwork::nb_dom() const { return impl_->nb_dom(); }
 
-// The label is built only for the error: bind() checks every domain it meets
-// (on plaza1.toml the labels of the 3529 rows' domains were 23 % of the build).
-void ContractorNetwork::check_layout(std::size_t d) const {
-  if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d));
-}
+double ContractorNetwork::ratio() const { return impl_->ratio(); }
 
-std::string ContractorNetwork::label(std::size_t d) const {
-  return "domain " + std::to_string(d) + " (" + domains_[d]->kind() + ")";
-}
+void ContractorNetwork::set_ratio(double ratio) { impl_->set_ratio(ratio); }
 
-std::string ContractorNetwork::noun(std::size_t d) const {
-  return names_[d].empty() ? label(d) : domains_[d]->noun() + " '" + names_[d] + "'";
-}
+Scheduling ContractorNetwork::scheduling() const { return impl_->scheduling(); }
 
-std::size_t ContractorNetwork::first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const {
-  for (std::size_t a = first; a < first + count; ++a) {
-    if (domains_[d]->atom(a).is_empty()) return a;
-  }
-  return kNoAtom;
-}
+void ContractorNetwork::set_scheduling(Scheduling s) { impl_->set_scheduling(s); }
 
-AtomPlace ContractorNetwork::name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const {
-  s.empty = true;
-  s.empty_domain = label(d);
-  s.empty_domain_index = d;
-  s.empty_domain_name = names_[d];
-  s.empty_contractor = by;
-  const AtomPlace place = a == kNoAtom ? AtomPlace{} : domains_[d]->place(a);
-  s.empty_atom = place.kind;
-  s.empty_atom_index = place.index;
-  s.empty_time = place.time;
-  return place;
-}
+const Budget& ContractorNetwork::budget() const { return impl_->budget(); }
 
-void ContractorNetwork::explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
-                                      const Interval& time) const {
-  const AtomPlace place = name_empty(s, d, a, by);
-  const std::string at = place.kind.empty() ? "" : " at " + place.str();
-  if (by.empty()) {
-    s.emptiness = noun(d) + " was empty on input" + at;
-    return;
-  }
-  s.emptiness = by + " emptied " + noun(d) + at;
-  if (!time.is_empty()) {
-    s.emptiness += " for t in " + time.str();
-    if (place.kind.empty()) s.empty_time = time;
-  }
-}
+void ContractorNetwork::set_budget(const Budget& budget) { impl_->set_budget(budget); }
 
-namespace {
-
-// "gate 3 [5, 6] at t = 1.5", "slice 2 [0, 1] ([1, 1.5])": an atom with its value, then its time.
-std::string with_value(const AtomPlace& p, const Interval& value) {
-  const std::string s = p.kind + " " + std::to_string(p.index) + " " + value.str();
-  if (p.kind == "gate") return s + " at t = " + number_text(p.time.lb());
-  if (p.kind == "slice") return s + " (" + p.time.str() + ")";
-  return s;
-}
-
-}  // namespace
-
-void ContractorNetwork::explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const {
-  const Domain& dom = *domains_[d];
-  const AtomPlace g = name_empty(s, d, gate, ""), x = dom.place(slice);
-  s.empty_atom_value = dom.atom(gate);
-  s.disjoint_atom = x.kind;
-  s.disjoint_atom_index = x.index;
-  s.disjoint_time = x.time;
-  s.disjoint_value = dom.atom(slice);
-  s.emptiness = noun(d) + ": " + with_value(g, s.empty_atom_value) + " does not meet " +
-                with_value(x, s.disjoint_value) + ": no continuous trajectory through it (inconsistent input)";
-}
-
-// The domains are left as given, as for an empty domain: the report says why.
-void ContractorNetwork::explain_empty_on_input(ContractStats& s, std::size_t d) const {
-  const EmptyOnInput e = domains_[d]->empty_on_input();
-  if (!e.empty) return;
-  if (e.misses == kNoAtom) {
-    explain_empty(s, d, e.atom, "", Interval::empty());
-  } else {
-    explain_disjoint(s, d, e.atom, e.misses);
-  }
-}
-
-void ContractorNetwork::check_layouts_after(const CnNode& node) const {
-  for (const auto& a : node.ranges()) {
-    const Domain& d = *domains_[a.domain];
-    if (d.layout_changed()) d.check_layout(label(a.domain) + ", changed during contract() (" + node.describe() + "),");
-  }
-}
-
-void ContractorNetwork::set_ctc_name(std::size_t i, const std::string& name) {
-  if (i >= nodes_.size())
-    throw Error("ContractorNetwork::set_ctc_name: no contractor " + std::to_string(i) + " (" +
-                std::to_string(nodes_.size()) + " added)");
-  if (name.empty()) throw Error("ContractorNetwork::set_ctc_name: empty name");
-  if (ctc_names_.size() <= i) ctc_names_.resize(i + 1);
-  ctc_names_[i] = name;
-}
-
-std::string ContractorNetwork::describe_node(std::size_t i) const {
-  const std::string d = nodes_[i]->describe();
-  return i < ctc_names_.size() && !ctc_names_[i].empty() ? d + " (" + ctc_names_[i] + ")" : d;
-}
-
-void ContractorNetwork::explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const {
-  const CnNode& node = *nodes_[i];
-  if (node.ranges().empty()) {
-    s.empty = true;
-    s.empty_contractor = describe_node(i);
-    s.emptiness = s.empty_contractor + " found no solution";
-    return;
-  }
-  // The atom the node names, else its first empty atom, else its first domain.
-  std::size_t g = 0, a = kNoAtom;
-  if (run.empty_at < node.nb_atoms()) {
-    g = node.range_of(run.empty_at);
-    a = node.ranges()[g].first + run.empty_at - node.offset(g);
-  } else {
-    for (g = 0; g < node.ranges().size(); ++g) {
-      const AtomRange& r = node.ranges()[g];
-      if ((a = first_empty_atom(r.domain, r.first, r.count)) != kNoAtom) break;
-    }
-    if (g == node.ranges().size()) g = 0;
-  }
-  explain_empty(s, node.ranges()[g].domain, a, describe_node(i), run.empty_time);
-}
-
-void ContractorNetwork::set_budget(const Budget& budget) {
-  check_budget(budget, "ContractorNetwork::set_budget");
-  budget_ = budget;
-}
-
-ContractStats ContractorNetwork::contract() {
-  check_not_contracting("contract");
-  add_pending_gates();
-  const auto start = std::chrono::steady_clock::now();
-  struct Running {
-    bool& flag;
-    explicit Running(bool& f) : flag(f) { flag = true; }
-    ~Running() { flag = false; }
-  } running(contracting_);
-  ContractStats stats;
-  const auto finish = [&] {
-    stats.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
-  };
-  // One pass over each domain: an empty one, or a tube with a gate off its
-  // slices, is no solution before any contractor runs.
-  for (std::size_t d = 0; d < domains_.size(); ++d) {
-    check_layout(d);
-    if (!stats.empty) explain_empty_on_input(stats, d);
-  }
-  if (stats.empty) return finish();
-
-  BudgetMeter meter(budget_, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
-                    "contractor calls");
-  for (auto& w : watchers_) w.index();
-  dirty_->reset();
-  std::vector<DerivativePair> derivatives;
-  for (const auto& node : nodes_) node->derivative_pairs(derivatives);
-  // Buffers reused by every run: the round, the next one, what a node shrank, what woke it.
-  std::vector<std::size_t> round(nodes_.size()), next, changed, dirty;
-  for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
-  std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
-  detail::RoundOrder order(scheduling_, nodes_.size());
-  while (!round.empty()) {
-    ++stats.iterations;
-    order.order(round, *dirty_);
-    for (const std::size_t i : round) {
-      queued[i] = 0;
-      changed.clear();
-      const CnNode& node = *nodes_[i];
-      dirty_->take(i, dirty);
-      NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
-      run.derivatives = derivatives;
-      run.cancel = &budget_.cancel;
-      fresh[i] = 0;
-      try {
-        meter.add();
-      } catch (const BudgetExceeded&) {
-        stopped_stats_ = finish();  // the runs done: the summary of a stopped solve
-        throw;
-      }
-      ++stats.contractor_calls;
-      const bool ok = node.run(run);
-      order.ran(i, changed.size(), node.nb_atoms());
-      check_layouts_after(node);
-      if (!ok) {
-        explain_node_empty(stats, i, run);
-        stats.empty_node = i;
-        return finish();
-      }
-      for (const std::size_t k : changed) {
-        // The range holding position k, then the atom it is.
-        const std::size_t g = node.range_of(k);
-        const AtomRange& a = node.ranges()[g];
-        watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t, std::size_t bit) {
-          // A node never wakes itself; one already recorded for this atom is queued.
-          if (w != i && dirty_->mark(w, bit) && !queued[w]) {
-            queued[w] = 1;
-            next.push_back(w);
-          }
-        });
-      }
-      if (run.again && !queued[i]) {
-        queued[i] = 1;
-        next.push_back(i);
-      }
-    }
-    round.swap(next);
-    next.clear();
-  }
-  for (std::size_t d = 0; d < domains_.size(); ++d) {
-    if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d) + ", changed during contract(),");
-  }
-  return finish();
-}
+const ContractStats& ContractorNetwork::stopped_stats() const { return impl_->stopped_stats(); }
 
 }  // namespace sillage

@@ -1,7 +1,5 @@
 #include "sillage/cn/empty_prefix.h"
 
-#include "sillage/tube/tube_atoms.h"
-
 namespace sillage::detail {
 
 std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& contract) {
@@ -9,9 +7,10 @@ std::size_t first_empty_prefix(const Tube& x, const std::function<bool(Tube&)>& 
   // Atoms after `last` released to the whole line.
   const auto empty_up_to = [&](std::size_t last) {
     Tube y = x;
-    TubeData& d = y.data();
-    for (std::size_t a = last + 1; a < nb_atoms; ++a) TubeAtoms::time_atom(d, a) = Interval();
-    y.touch();
+    {
+      Tube::Writer w = y.write();
+      for (std::size_t a = last + 1; a < nb_atoms; ++a) w.atom(a) = Interval();
+    }
     return !contract(y);
   };
   if (!empty_up_to(nb_atoms - 1)) return nb_atoms;

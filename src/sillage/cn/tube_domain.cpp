@@ -18,9 +18,7 @@ Interval TubeDomain::atom(std::size_t i) const {
 }
 
 void TubeDomain::set_atom(std::size_t i, const Interval& x) {
-  TubeData& d = x_->data();
-  time_atom(d, i) = x;
-  d.touch();
+  x_->write().atom(i) = x;  // the writer ends with the statement: one version step
 }
 
 namespace {

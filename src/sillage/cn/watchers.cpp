@@ -1,6 +1,6 @@
 #include "sillage/cn/watchers.h"
 
-namespace sillage {
+namespace sillage::detail {
 
 void Watchers::add(const Watch& w) {
   if (w.first == 0 && w.count == nb_atoms_) {
@@ -25,4 +25,4 @@ void Watchers::index() {
   }
 }
 
-}  // namespace sillage
+}  // namespace sillage::detail

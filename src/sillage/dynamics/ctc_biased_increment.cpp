@@ -121,7 +121,8 @@ bool narrow_increments(Tube& j, const Tube& i, const Interval& b, double drift) 
     throw DimensionError("CtcBiasedIncrement::contract(x, b0, i, j): i and j are not on one TDomain");
   }
   const TDomain& td = *i.tdomain();
-  auto& js = j.data().slices;
+  Tube::Writer w = j.write();
+  const std::span<Interval> js = w.slices();
   const auto& is = i.data().slices;
   bool changed = false;
   for (std::size_t k = 0; k < js.size(); ++k) {
@@ -129,11 +130,12 @@ bool narrow_increments(Tube& j, const Tube& i, const Interval& b, double drift) 
     changed = changed || now != js[k];
     js[k] = now;
     if (now.is_empty()) {
+      w.commit();
       j.set(Interval::empty());
       return false;
     }
   }
-  if (changed) j.touch();
+  w.commit(changed);
   return true;
 }
 
@@ -167,18 +169,19 @@ bool CtcBiasedIncrement::contract(Tube& x, Interval& b0, const Tube& i) const {
     inc[k] = slices[k] + Interval(-drift_, drift_) * width[k];
   }
   const Prefix prefix(inc);
-  TubeData& d = x.data();
-  const TubeArray before = d.gates;
+  Tube::Writer w = x.write();
+  const std::span<Interval> gates = w.gates();
+  const std::vector<Interval> before(gates.begin(), gates.end());
   for (int round = 0; round < kMaxRounds; ++round) {
-    const Interval b = b0 & bias_from_spans(td, d.gates, prefix);
+    const Interval b = b0 & bias_from_spans(td, gates, prefix);
     if (b.is_empty()) return fail(x, b0);
     const bool moved = b != b0;
     b0 = b;
     if (round > 0 && !moved) break;  // the gates are already swept with this bias
     for (std::size_t k = 0; k < n; ++k) step[k] = inc[k] - b0 * width[k];
-    if (!sweep(d.gates, step)) return fail(x, b0);
+    if (!sweep(gates, step)) return fail(x, b0);
   }
-  if (d.gates != before) x.touch();
+  w.commit(!std::equal(gates.begin(), gates.end(), before.begin()));
   return true;
 }
 

@@ -216,8 +216,8 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
       return false;
     }
   }
-  TubeData& dx = x.data();
-  const Arrays d{x.tdomain()->times().data(), dx.slices.data(), dx.gates.data(), v.data().slices.data()};
+  Tube::Writer w = x.write();
+  const Arrays d{x.tdomain()->times().data(), w.slices().data(), w.gates().data(), v.data().slices.data()};
   bool changed = false;
 #if SILLAGE_HARD_ROUNDING
   const bool ok = detail::hardware_rounding() ? sweeps<detail::HardRounding>(p, d, first, last, changed)
@@ -225,11 +225,11 @@ bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t la
 #else
   const bool ok = sweeps<detail::SoftRounding>(p, d, first, last, changed);
 #endif
+  w.commit(ok && changed);
   if (!ok) {
     x.set(Interval::empty());
     return false;
   }
-  if (changed) x.touch();
   return true;
 }
 

@@ -47,8 +47,17 @@ struct Region {
   std::size_t first = 0, last = 0;
 };
 
+// A tube being written, through its caller's Tube::Writer (the caller knows
+// whether it changed, and says so when the writer ends): its TDomain, and its
+// slices and gates in place.
+struct Written {
+  Written(const Tube& y, const Tube::Writer& w) : tube(y), slices(w.slices()), gates(w.gates()) {}
+  const Tube& tube;
+  std::span<Interval> slices, gates;
+};
+
 // Narrows gate i to h (h ⊆ the gate); false if it is now empty.
-bool narrow_gate(TubeData& d, std::size_t i, const Interval& h, bool& changed) {
+bool narrow_gate(const Written& d, std::size_t i, const Interval& h, bool& changed) {
   Interval& g = d.gates[i];
   if (h == g) return !g.is_empty();
   g = h;
@@ -71,11 +80,10 @@ struct SweepBuffers {
   std::vector<Interval> part, hull, front, step;
 };
 
-bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, Region r, bool& changed,
+bool sweep_region(const Interval& t, const Interval& z, const Written& d, const Tube& w, Region r, bool& changed,
                   SweepBuffers& buf) {
-  const TDomain& td = *y.tdomain();
+  const TDomain& td = *d.tube.tdomain();
   const auto ts = td.times();
-  TubeData& d = y.data();
   const auto& ws = w.data().slices;
   const double ta = t.lb(), tb = t.ub();
   const auto in_t = [&](std::size_t i) { return ta <= ts[i] && ts[i] <= tb; };
@@ -94,8 +102,8 @@ bool sweep_region(const Interval& t, const Interval& z, Tube& y, const Tube& w, 
     if (!(ts[k] < tb && ts[k + 1] > ta)) continue;  // no time of [t] strictly inside
     part[j] = Interval::from_bounds_unchecked(std::max(ta, ts[k]), std::min(tb, ts[k + 1]));  // [t] ∩ slice k
     const bool whole = part[j].lb() == ts[k] && part[j].ub() == ts[k + 1];
-    hull[j] = (whole ? d.slices[k]
-                     : detail::eval_in_slice(d, w.data(), ts, k, part[j].lb(), part[j].ub()) & d.slices[k]) &
+    const TubeData& y = d.tube.data();  // the same storage, read
+    hull[j] = (whole ? d.slices[k] : detail::eval_in_slice(y, w.data(), ts, k, part[j].lb(), part[j].ub()) & d.slices[k]) &
               z;
   }
   front.assign(m + 1, Interval::empty());
@@ -140,7 +148,7 @@ bool narrow_bounds(Interval& x, double lo, double hi, bool& changed, Tell tell) 
 }
 
 // Gate i ∩= [lo, hi] on raw bounds, logged; false if it is now empty.
-bool narrow_raw(TubeData& d, std::size_t i, double lo, double hi, bool& changed, const TubeChanges& log) {
+bool narrow_raw(const Written& d, std::size_t i, double lo, double hi, bool& changed, const TubeChanges& log) {
   return narrow_bounds(d.gates[i], lo, hi, changed, [&](const Interval& x, const Interval& h) { log.gate(i, x, h); });
 }
 
@@ -184,10 +192,9 @@ class FrontScale {
 // the region, B backward from its first gate. On raw bounds with the
 // rounding policy of CtcDeriv. False if a gate or a slice of [w] is empty.
 template <class R>
-bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed, Reached& out,
+bool sweep_outward(const Written& d, const Tube& w, Region r, bool& changed, Reached& out,
                    const TubeChanges& log) {
-  const auto ts = y.tdomain()->times();
-  TubeData& d = y.data();
+  const auto ts = d.tube.tdomain()->times();
   const auto& ws = w.data().slices;
   const std::size_t n = ts.size() - 1;
   out = {r.first, r.last + 1};
@@ -219,10 +226,9 @@ bool sweep_outward(Tube& y, const Tube& w, Region r, bool& changed, Reached& out
 // their gates as they are: the gates are not changed, so that the result does
 // not depend on the order of the slices. Logged. False if something is empty.
 template <class R>
-bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& changed,
+bool hull_slices(const Written& d, const Tube& w, std::size_t a, std::size_t b, bool& changed,
                  const TubeChanges& log = TubeChanges()) {
-  const auto ts = y.tdomain()->times();
-  TubeData& d = y.data();
+  const auto ts = d.tube.tdomain()->times();
   const auto& ws = w.data().slices;
   // By blocks: on the portable path with AVX2 the hulls of a block are
   // computed 4 at a time first (the same bits), its tail one at a time.
@@ -259,8 +265,8 @@ bool hull_slices(Tube& y, const Tube& w, std::size_t a, std::size_t b, bool& cha
 }
 
 // The fronts outside the region, and the slices next to the gates they changed.
-bool outward(Tube& y, const Tube& w, Region r, bool& changed, const TubeChanges& log = TubeChanges()) {
-  const std::size_t n = y.nb_slices();
+bool outward(const Written& y, const Tube& w, Region r, bool& changed, const TubeChanges& log = TubeChanges()) {
+  const std::size_t n = y.slices.size();
   return detail::with_policy([&]<class R>() {
     Reached g;
     if (!sweep_outward<R>(y, w, r, changed, g, log)) return false;
@@ -279,11 +285,11 @@ bool contract_t_z(Interval& t, Interval& z, const Tube& y, const Tube* w, bool i
 }
 
 // The gate at a degenerate t that is a time point: ∩= [z].
-bool contract_gate(const Interval& t, const Interval& z, Tube& y, bool& changed) {
+bool contract_gate(const Interval& t, const Interval& z, const Written& y, bool& changed) {
   if (!t.is_degenerate()) return true;
-  const std::ptrdiff_t i = y.tdomain()->time_index(t.lb());
+  const std::ptrdiff_t i = y.tube.tdomain()->time_index(t.lb());
   if (i < 0) return true;
-  return narrow_gate(y.data(), static_cast<std::size_t>(i), y.data().gates[static_cast<std::size_t>(i)] & z, changed);
+  return narrow_gate(y, static_cast<std::size_t>(i), y.gates[static_cast<std::size_t>(i)] & z, changed);
 }
 
 // What the region held before, to report what shrank over the whole call
@@ -364,12 +370,14 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
       bool moved = false;
       ok = contract_t_z(t, z[i], *y[i], w.empty() ? nullptr : w[i], t != given[i]);
-      if (ok && w.empty()) ok = contract_gate(t, z[i], *y[i], moved);
-      if (ok && !w.empty()) ok = sweep_region(t, z[i], *y[i], *w[i], r, moved, scratch.sweep);
+      Tube::Writer yw = y[i]->write();
+      const Written yi(*y[i], yw);
+      if (ok && w.empty()) ok = contract_gate(t, z[i], yi, moved);
+      if (ok && !w.empty()) ok = sweep_region(t, z[i], yi, *w[i], r, moved, scratch.sweep);
       if (ok && !w.empty()) {
-        ok = detail::with_policy([&]<class R>() { return hull_slices<R>(*y[i], *w[i], r.first, r.last, moved); });
+        ok = detail::with_policy([&]<class R>() { return hull_slices<R>(yi, *w[i], r.first, r.last, moved); });
       }
-      if (moved) y[i]->touch();
+      yw.commit(moved);
       changed = changed || moved;
     }
     if (changed || t != t0 || z != z0) {
@@ -384,13 +392,16 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
     bool moved_any = false;
     for (std::size_t i = 0; ok && i < y.size(); ++i) {
       bool moved = false;
-      ok = outward(*y[i], *w[i], r, moved);
+      {
+        Tube::Writer yw = y[i]->write();
+        ok = outward(Written(*y[i], yw), *w[i], r, moved);
+        yw.commit(moved);
+      }
       if (ok) {
         const std::uint64_t v0 = y[i]->version();  // CtcDeriv touches y when it shrinks it
         ok = CtcDeriv().contract(*y[i], *w[i]);
         if (ok && y[i]->version() != v0) moved = true;
       }
-      if (moved) y[i]->touch();
       moved_any = moved_any || moved;
     }
     if (!moved_any) break;
@@ -399,8 +410,9 @@ bool contract_all(Interval& t, IntervalVector& z, const std::vector<Tube*>& y, c
   // (unless the caller's network runs CtcDeriv on y and w, which does it).
   for (std::size_t i = 0; ok && beyond && !whole_tube && !w.empty() && i < y.size(); ++i) {
     bool moved = false;
-    ok = outward(*y[i], *w[i], r, moved, logs ? (*logs)[i] : TubeChanges());
-    if (moved) y[i]->touch();
+    Tube::Writer yw = y[i]->write();
+    ok = outward(Written(*y[i], yw), *w[i], r, moved, logs ? (*logs)[i] : TubeChanges());
+    yw.commit(moved);
   }
   for (std::size_t i = 0; ok && i < nb_before; ++i) before[i].report(*y[i], r, (*logs)[i]);
   if (!ok) {

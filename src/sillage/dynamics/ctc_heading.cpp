@@ -14,8 +14,8 @@ namespace sillage {
 namespace {
 
 // One forward and backward sweep of the positions; false with `at` when empty.
-bool sweep_positions(TubeData& px, TubeData& py, const std::vector<Interval>& ix, const std::vector<Interval>& iy,
-                     detail::HeadingEmptyAt& at) {
+bool sweep_positions(const detail::HeadingTube& px, const detail::HeadingTube& py, const std::vector<Interval>& ix,
+                     const std::vector<Interval>& iy, detail::HeadingEmptyAt& at) {
   const std::size_t n = ix.size();
   for (std::size_t k = 0; k < n; ++k) {
     if (!detail::narrow(px.gates[k + 1], px.gates[k] + ix[k])) return at = {0, 2 * (k + 1)}, false;
@@ -47,7 +47,7 @@ bool contract_heading(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, cons
   const std::size_t n = px_t.nb_slices();
   // An empty distance or turn rate anywhere: no trajectory.
   bool ok = !d_t.is_empty() && !w_t.is_empty();
-  TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
+  detail::HeadingTube px(px_t), py(py_t), psi(psi_t);
   const Interval tr = Interval(-1, 1) * Interval(track);
   const Interval pi = Interval::pi();
   std::vector<Interval> ix(n), iy(n), dir(n);

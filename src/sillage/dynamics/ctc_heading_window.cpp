@@ -66,7 +66,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
   if (d_t.is_empty() || dpsi_t.is_empty() || w_t.is_empty() || px_t.is_empty() || py_t.is_empty() || psi_t.is_empty()) {
     return detail::finish_heading(false, px_t, py_t, psi_t);
   }
-  TubeData &px = px_t.data(), &py = py_t.data(), &psi = psi_t.data();
+  detail::HeadingTube px(px_t), py(py_t), psi(psi_t);
   bool ok = in.update(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(), ctc.track());
   std::size_t b = 0;
   for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {

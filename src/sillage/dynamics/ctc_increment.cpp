@@ -6,7 +6,8 @@ namespace sillage {
 
 bool CtcIncrement::contract(Tube& x, const Tube& i) const {
   if (x.tdomain() != i.tdomain()) throw DimensionError("CtcIncrement::contract(x, i): x and i are not on one TDomain");
-  TubeData& d = x.data();
+  Tube::Writer w = x.write();
+  const std::span<Interval> g = w.gates();
   const auto& inc = i.data().slices;
   const std::size_t n = x.nb_slices();
   bool changed = false, ok = true;
@@ -18,10 +19,10 @@ bool CtcIncrement::contract(Tube& x, const Tube& i) const {
     }
     ok = ok && !r.is_empty();
   };
-  for (std::size_t k = 0; k < n && ok; ++k) narrow(d.gates[k + 1], d.gates[k] + inc[k]);
-  for (std::size_t k = n; k-- > 0 && ok;) narrow(d.gates[k], d.gates[k + 1] - inc[k]);
+  for (std::size_t k = 0; k < n && ok; ++k) narrow(g[k + 1], g[k] + inc[k]);
+  for (std::size_t k = n; k-- > 0 && ok;) narrow(g[k], g[k + 1] - inc[k]);
+  w.commit(ok && changed);
   if (!ok) x.set(Interval::empty());  // no trajectory
-  else if (changed) x.touch();
   return ok;
 }
 

@@ -76,20 +76,21 @@ void set_empty(TubeVector& x) {
 }
 
 // Intersects gates and slices of x with enclosures, remembering which
-// components changed; touches them when it goes, a cancelled sweep too.
-class TubeWriter {
+// components changed; marks them modified when it goes, a cancelled sweep too.
+class VectorWriter {
  public:
-  explicit TubeWriter(TubeVector& x) : x_(x), changed_(x.size(), false) {}
-  ~TubeWriter() {
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-      if (changed_[i]) x_[i].touch();
-    }
+  explicit VectorWriter(TubeVector& x) : changed_(x.size(), false) {
+    w_.reserve(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) w_.push_back(x[i].write());
   }
-  TubeWriter(const TubeWriter&) = delete;
-  TubeWriter& operator=(const TubeWriter&) = delete;
+  ~VectorWriter() {
+    for (std::size_t i = 0; i < w_.size(); ++i) w_[i].commit(changed_[i]);
+  }
+  VectorWriter(const VectorWriter&) = delete;
+  VectorWriter& operator=(const VectorWriter&) = delete;
   void write(bool gate, std::size_t k, const IntervalVector& v) {
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-      Interval& cur = gate ? x_[i].data().gates[k] : x_[i].data().slices[k];
+    for (std::size_t i = 0; i < w_.size(); ++i) {
+      Interval& cur = gate ? w_[i].gates()[k] : w_[i].slices()[k];
       const Interval nv = cur & v[i];
       if (nv != cur) {
         cur = nv;
@@ -98,7 +99,7 @@ class TubeWriter {
     }
   }
  private:
-  TubeVector& x_;
+  std::vector<Tube::Writer> w_;
   std::vector<bool> changed_;
 };
 
@@ -143,7 +144,7 @@ bool CtcIvp::sweep(TubeVector& x, const TubeVector* u, double sign, detail::IvpM
   const std::size_t n = x.size(), N = x.nb_slices();
   const TDomain& td = *x.tdomain();
   const IvpStepper stepper(*ode_, order_);
-  TubeWriter writer(x);
+  VectorWriter writer(x);
   auto write = [&](bool gate, std::size_t k, const IntervalVector& v) { writer.write(gate, k, v); };
   detail::LohnerSet set;
   bool active = false;
@@ -260,7 +261,7 @@ bool CtcIvp::sweep_pieces(TubeVector& x, const TubeVector* u, double sign, const
   }
   // Gates start..limit and the slices between them: every solution lies in
   // the hull of the pieces (empty: none passes, the tube is empty).
-  TubeWriter writer(x);
+  VectorWriter writer(x);
   for (std::size_t j = start; j <= limit; ++j) {
     const std::size_t k = gate_index(j);
     writer.write(true, k, gates[j]);

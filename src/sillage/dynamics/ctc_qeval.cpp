@@ -39,7 +39,6 @@ bool contract_alone(const TubeObservation& o, const Interval& domain, Eval eval)
 }
 
 // Atom a of a tube: gate a / 2 when a is even, slice a / 2 when odd.
-Interval& atom_of(TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
 const Interval& atom_of(const TubeData& d, std::size_t a) { return a % 2 == 0 ? d.gates[a / 2] : d.slices[a / 2]; }
 
 }  // namespace
@@ -84,9 +83,8 @@ std::vector<std::size_t> CtcQEval::contract(TubeVector& x, const TubeVector& v,
   }
   const int allowed = q_ - static_cast<int>(violated.size());
   for (std::size_t j = 0; j < n; ++j) {
-    TubeData& d = x[j].data();  // intersected in place, as Tube::operator&= does
-    for (std::size_t a = 0; a < atoms; ++a) atom_of(d, a) &= columns.hull(j * atoms + a, allowed);
-    x[j].touch();
+    const Tube::Writer w = x[j].write();  // intersected in place, as Tube::operator&= does
+    for (std::size_t a = 0; a < atoms; ++a) w.atom(a) &= columns.hull(j * atoms + a, allowed);
   }
   if (x.is_empty()) x.set(IntervalVector::empty(n));  // no trajectory left anywhere
   return violated;
@@ -137,20 +135,19 @@ class QEvalNode : public TubeNode {
         return eval.contract(t, z, y, w, logs);
       });
       for (std::size_t j = 0; j < n; ++j) {
-        TubeData& d = work[j].data();
         const TubeData& x = x_[j]->tube().data();
         if (!live) {  // CtcEval emptied the copy: start again from x
           work[j] = x_[j]->tube();
           continue;
         }
+        const Tube::Writer d = work[j].write();
         for (const std::size_t a : changed[j]) {
           const std::size_t col = j * atoms + a;
           if (seen_by[col] == i) continue;  // logged again by a later pass of the same observation
           seen_by[col] = i;
-          columns.add(col, atom_of(d, a));
-          atom_of(d, a) = atom_of(x, a);
+          columns.add(col, d.atom(a));
+          d.atom(a) = atom_of(x, a);
         }
-        work[j].touch();
       }
       violated += !live;
     }
@@ -161,12 +158,13 @@ class QEvalNode : public TubeNode {
     // that is, at most q - violated of those c may exclude it.
     const int allowed = ctc_.q() - static_cast<int>(violated);
     bool ok = true;
+    std::vector<Tube::Writer> xw;  // every x is marked modified, as before the writers
+    for (auto& x : x_) xw.push_back(x->tube().write());
     for (std::size_t j = 0; j < n && ok; ++j) {
-      TubeData& xd = x_[j]->tube().data();
       for (std::size_t a = 0; a < atoms; ++a) {
         const std::size_t col = j * atoms + a;
         if (columns.count(col) <= static_cast<std::size_t>(allowed)) continue;
-        Interval& atom = atom_of(xd, a);
+        Interval& atom = xw[j].atom(a);
         const Interval before = atom;
         atom &= columns.hull(col, allowed);
         changes(r, j).atom(a, before, atom);
@@ -177,7 +175,7 @@ class QEvalNode : public TubeNode {
         }
       }
     }
-    for (auto& x : x_) x->tube().touch();
+    xw.clear();
     if (!ok) return empty_tubes(r, 0, x_.size());
     return true;
   }

@@ -31,7 +31,6 @@ bool finish_heading(bool ok, Tube& px, Tube& py, Tube& psi) {
     px.set(Interval::empty()), py.set(Interval::empty()), psi.set(Interval::empty());
     return false;
   }
-  px.touch(), py.touch(), psi.touch();
   return true;
 }
 

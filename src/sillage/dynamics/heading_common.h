@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,8 +36,16 @@ inline bool narrow(Interval& x, const Interval& y) {
   return !x.is_empty();
 }
 
-// The end of a contraction of (px, py, psi): all three set empty when !ok,
-// else marked modified. Returns ok.
+// A tube written by a heading contraction: its slices and gates in place;
+// its version steps when this ends (after finish_heading).
+struct HeadingTube {
+  explicit HeadingTube(Tube& x) : w(x.write()), slices(w.slices()), gates(w.gates()) {}
+  Tube::Writer w;
+  std::span<Interval> slices, gates;
+};
+
+// The end of a contraction of (px, py, psi): all three set empty when !ok
+// (their HeadingTube writers mark them modified). Returns ok.
 bool finish_heading(bool ok, Tube& px, Tube& py, Tube& psi);
 
 // The network node of a heading contractor on whole tubes {px, py, psi, ...}

@@ -111,7 +111,8 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
   const std::vector<std::size_t> read = read_vars(f);
   for (std::size_t c : read)
     if (c < table.columns().size()) table.check_numeric(c);  // the loader checked them; a row holds NaN in text
-  TubeArray& slices = x.data().slices;
+  Tube::Writer w = x.write();
+  const std::span<Interval> slices = w.slices();
   std::size_t row = 0, evaluated = table.nb_rows();
   Interval value;
   for (std::size_t k = 0; k < slices.size(); ++k) {
@@ -126,10 +127,9 @@ void set_slices(Tube& x, const Problem& p, const SliceDataSpec& s) {
     }
     slices[k] &= value;
   }
-  TubeArray& gates = x.data().gates;
+  const std::span<Interval> gates = w.gates();
   const std::size_t n = slices.size();
   for (std::size_t k = 0; k <= n; ++k) gates[k] = (k > 0 ? slices[k - 1] : slices[k]) | (k < n ? slices[k] : slices[k - 1]);
-  x.touch();
 }
 
 // The value at each stamp of the table (gates = {data, value}), from its

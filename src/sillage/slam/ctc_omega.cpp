@@ -13,9 +13,6 @@ namespace sillage {
 
 namespace {
 
-Interval& atom_ref(Tube& x, std::size_t a) {
-  return a % 2 == 0 ? x.data().gates[a / 2] : x.data().slices[a / 2];
-}
 const Interval& atom_of(const Tube& x, std::size_t a) { return a % 2 == 0 ? x.gate(a / 2) : x.slice(a / 2); }
 
 void check_boxes(const std::vector<IntervalVector>& boxes, const char* where) {
@@ -36,8 +33,10 @@ bool OmegaHull::apply_to(TubeVector& p, std::size_t* nb_shrunk, double ratio) co
     return false;
   }
   std::vector<bool> touched(p.size(), false);
+  std::vector<Tube::Writer> w;
+  for (std::size_t i = 0; i < p.size(); ++i) w.push_back(p[i].write());
   for (const Atom& a : atoms) {
-    Interval& x = atom_ref(p[a.component], a.atom);
+    Interval& x = w[a.component].atom(a.atom);
     const Interval y = x & a.value;
     if (y != x) {
       if (nb_shrunk && shrank(x, y, ratio)) ++*nb_shrunk;
@@ -45,9 +44,7 @@ bool OmegaHull::apply_to(TubeVector& p, std::size_t* nb_shrunk, double ratio) co
       touched[a.component] = true;
     }
   }
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (touched[i]) p[i].touch();
-  }
+  for (std::size_t i = 0; i < p.size(); ++i) w[i].commit(touched[i]);
   return !p.is_empty();
 }
 
@@ -96,11 +93,11 @@ OmegaHull CtcOmega::hull(const std::vector<IntervalVector>& boxes, const TubeVec
       std::sort(l.begin(), l.end());
       l.erase(std::unique(l.begin(), l.end()), l.end());
       out.nb_touched += l.size();
+      const Tube::Writer back = work[i].write();
       for (std::size_t a : l) {
-        if (ok) met.emplace_back(i * atoms_per_tube + a, atom_of(work[i], a));
-        atom_ref(work[i], a) = atom_of(p[i], a);  // back to the reference
+        if (ok) met.emplace_back(i * atoms_per_tube + a, back.atom(a));
+        back.atom(a) = atom_of(p[i], a);  // back to the reference
       }
-      work[i].touch();
     }
     // An inconsistent contraction empties the whole working tube (CtcEval,
     // Lemma 5.1): put all of it back.

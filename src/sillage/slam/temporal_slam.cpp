@@ -19,27 +19,28 @@ IntervalVector concat(const IntervalVector& a, const IntervalVector& b) {
   return c;
 }
 
-// Slice k (or gate k) of every component of y ∩= b.
-void intersect_atom(TubeVector& y, std::size_t k, bool gate, const IntervalVector& b) {
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    Interval& a = gate ? y[i].data().gates[k] : y[i].data().slices[k];
-    a &= b[i];
-  }
+// The components of y written in place: their versions step once, when these go.
+std::vector<Tube::Writer> writers(TubeVector& y) {
+  std::vector<Tube::Writer> w;
+  w.reserve(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) w.push_back(y[i].write());
+  return w;
 }
 
-void touch(TubeVector& y) {
-  for (std::size_t i = 0; i < y.size(); ++i) y[i].touch();
+// Slice k (or gate k) of every component of y ∩= b.
+void intersect_atom(const std::vector<Tube::Writer>& y, std::size_t k, bool gate, const IntervalVector& b) {
+  for (std::size_t i = 0; i < y.size(); ++i) (gate ? y[i].gates() : y[i].slices())[k] &= b[i];
 }
 
 // Every slice and gate of y ∩= g(arguments at that slice / gate).
 template <class Args>
 void eval_into(TubeVector& y, const Function& g, const Args& args) {
   const std::size_t n = y.nb_slices();
+  const auto w = writers(y);
   for (std::size_t k = 0; k <= n; ++k) {
-    intersect_atom(y, k, true, g.eval_vector(args(k, true)));
-    if (k < n) intersect_atom(y, k, false, g.eval_vector(args(k, false)));
+    intersect_atom(w, k, true, g.eval_vector(args(k, true)));
+    if (k < n) intersect_atom(w, k, false, g.eval_vector(args(k, false)));
   }
-  touch(y);
 }
 
 // C_f on every slice and gate: v ∩= f(x, u), then x ∩= the x-part of
@@ -47,25 +48,24 @@ void eval_into(TubeVector& y, const Function& g, const Args& args) {
 // empties x and v.
 void evolution(TubeVector& x, TubeVector& v, const TubeVector& u, const Function& f) {
   const std::size_t n = x.nb_slices(), nx = x.size();
+  const auto wx = writers(x), wv = writers(v);
   bool empty = false;
   for (std::size_t k = 0; k <= n && !empty; ++k) {
     for (bool gate : {true, false}) {
       if (!gate && k == n) continue;
       const auto at = [&](const TubeVector& y) { return gate ? y.gate(k) : y.slice(k); };
       IntervalVector args = u.size() ? concat(at(x), at(u)) : at(x);
-      intersect_atom(v, k, gate, f.eval_vector(args));
+      intersect_atom(wv, k, gate, f.eval_vector(args));
       if (!f.hc4_revise(args, at(v))) {
         empty = true;
         break;
       }
-      intersect_atom(x, k, gate, args.subvector(0, nx - 1));
+      intersect_atom(wx, k, gate, args.subvector(0, nx - 1));
     }
   }
   if (empty) {
     for (std::size_t i = 0; i < nx; ++i) x[i].set(Interval::empty()), v[i].set(Interval::empty());
   }
-  touch(x);
-  touch(v);
 }
 
 void check(const TubeVector& x, const TubeVector& v, const TubeVector& u, const Function& f, const Function& h,
@@ -137,15 +137,17 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         if (!shrunk || p.is_empty()) break;
       }
       // 5. Back to the states: x ∩= h⁻¹(p).
-      for (std::size_t k = 0; k <= n; ++k) {
-        for (bool gate : {true, false}) {
-          if (!gate && k == n) continue;
-          IntervalVector b = gate ? x.gate(k) : x.slice(k);
-          h.hc4_revise(b, gate ? p.gate(k) : p.slice(k));
-          intersect_atom(x, k, gate, b);
+      {
+        const auto wx = writers(x);
+        for (std::size_t k = 0; k <= n; ++k) {
+          for (bool gate : {true, false}) {
+            if (!gate && k == n) continue;
+            IntervalVector b = gate ? x.gate(k) : x.slice(k);
+            h.hc4_revise(b, gate ? p.gate(k) : p.slice(k));
+            intersect_atom(wx, k, gate, b);
+          }
         }
       }
-      touch(x);
       if (p.is_empty()) {
         for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
         return rows;

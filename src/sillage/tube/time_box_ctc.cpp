@@ -74,9 +74,10 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
                                    std::span<const std::size_t> atoms, IntervalVector& params,
                                    const TimeChange& changed) {
   const std::size_t n = vars.size();
-  // Each tube's slices and gates (null for a constant), read in place: the
+  // Each tube's slices and gates (null for a constant), written in place: the
   // storage does not move during the contraction.
   std::vector<Interval*> slices(n, nullptr), gates(n, nullptr);
+  std::vector<std::optional<Tube::Writer>> writers(n);
   bool constants = false;
   std::size_t nb_slices = 0;
   for (std::size_t v = 0; v < n; ++v) {
@@ -84,10 +85,10 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
       constants = true;
       continue;
     }
-    TubeData& d = vars[v].tube->data();
-    slices[v] = d.slices.data();
-    gates[v] = d.gates.data();
-    nb_slices = d.slices.size();
+    const Tube::Writer& w = writers[v].emplace(vars[v].tube->write());
+    slices[v] = w.slices().data();
+    gates[v] = w.gates().data();
+    nb_slices = w.slices().size();
   }
   const std::size_t chunk = ChunkBoxes::chunk(constants);
   ChunkBoxes boxes(ctc, chunk);  // the tubes keep the values before contraction
@@ -95,7 +96,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
   std::vector<char> touched(n, 0);
   const auto touch = [&] {
     for (std::size_t v = 0; v < n; ++v)
-      if (touched[v]) vars[v].tube->touch();
+      if (writers[v]) writers[v]->commit(touched[v] != 0);
   };
   // now by value and the callback out of line: an interval whose address is
   // taken goes through memory, two 8-byte stores read back as one 16-byte

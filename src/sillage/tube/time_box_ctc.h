@@ -41,7 +41,7 @@ inline constexpr std::size_t kNoTimeAtom = static_cast<std::size_t>(-1);
 // Contracts the time elements `atoms` (sorted, tube_atoms.h encoding) of the
 // tubes of `vars` (one per variable of ctc, all tubes on one TDomain, at
 // least one tube) and the constants `params`. Tubes that changed are
-// touch()ed. A box proven empty stops there: its time elements and the
+// marked modified (version). A box proven empty stops there: its time elements and the
 // constants are set empty and its atom is returned; else kNoTimeAtom.
 std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& vars,
                                    std::span<const std::size_t> atoms, IntervalVector& params,

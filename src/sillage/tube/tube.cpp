@@ -242,7 +242,7 @@ void Tube::set(const Interval& y, std::size_t k) {
   data_->slices[k] = y;
   data_->gates[k] = k > 0 ? y & data_->slices[k - 1] : y;
   data_->gates[k + 1] = k + 1 < n ? y & data_->slices[k + 1] : y;
-  touch();
+  data_->touch();
 }
 
 void Tube::set_gate(std::size_t k, const Interval& y) {
@@ -251,13 +251,13 @@ void Tube::set_gate(std::size_t k, const Interval& y) {
                 std::to_string(nb_slices()) + "]");
   }
   data_->gates[k] = y;
-  touch();
+  data_->touch();
 }
 
 void Tube::set(const Interval& y) {
   std::fill(data_->slices.begin(), data_->slices.end(), y);
   std::fill(data_->gates.begin(), data_->gates.end(), y);
-  touch();
+  data_->touch();
 }
 
 bool Tube::is_empty() const {
@@ -330,7 +330,7 @@ Tube& Tube::operator&=(const Tube& y) {
   check_same_tdomain(y, "Tube::operator&=");
   for (std::size_t k = 0; k < nb_slices(); ++k) data_->slices[k] &= y.data_->slices[k];
   for (std::size_t k = 0; k <= nb_slices(); ++k) data_->gates[k] &= y.data_->gates[k];
-  touch();
+  data_->touch();
   return *this;
 }
 
@@ -338,7 +338,7 @@ Tube& Tube::operator|=(const Tube& y) {
   check_same_tdomain(y, "Tube::operator|=");
   for (std::size_t k = 0; k < nb_slices(); ++k) data_->slices[k] |= y.data_->slices[k];
   for (std::size_t k = 0; k <= nb_slices(); ++k) data_->gates[k] |= y.data_->gates[k];
-  touch();
+  data_->touch();
   return *this;
 }
 

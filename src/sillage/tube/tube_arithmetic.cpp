@@ -17,12 +17,11 @@ namespace {
 // same bits for any number of threads.
 template <class Run>
 void each_chunk(Tube& x, std::size_t parallel_from, const Run& run) {
-  TubeData& d = x.data();
-  for (TubeArray* v : {&d.slices, &d.gates}) {
-    Interval* y = v->data();
-    detail::for_chunks(v->size(), [&](std::size_t b, std::size_t e) { run(y, b, e); }, parallel_from);
+  Tube::Writer w = x.write();
+  for (const std::span<Interval> v : {w.slices(), w.gates()}) {
+    Interval* y = v.data();
+    detail::for_chunks(v.size(), [&](std::size_t b, std::size_t e) { run(y, b, e); }, parallel_from);
   }
-  x.touch();
 }
 
 // x := f(x) slice- and gate-wise.
@@ -55,11 +54,11 @@ template <class F>
   if (x.tdomain() != y.tdomain()) {
     throw DimensionError(std::string(where) + ": the two tubes are not on the same TDomain");
   }
-  TubeData& d = x.data();
+  Tube::Writer w = x.write();
+  const std::span<Interval> s = w.slices(), g = w.gates();
   const TubeData& e = y.data();
-  for (std::size_t k = 0; k < d.slices.size(); ++k) d.slices[k] = f(d.slices[k], e.slices[k]);
-  for (std::size_t k = 0; k < d.gates.size(); ++k) d.gates[k] = f(d.gates[k], e.gates[k]);
-  x.touch();
+  for (std::size_t k = 0; k < s.size(); ++k) s[k] = f(s[k], e.slices[k]);
+  for (std::size_t k = 0; k < g.size(); ++k) g[k] = f(g[k], e.gates[k]);
 }
 
 // binary_inplace with the operation `op` of the rounding policy in use

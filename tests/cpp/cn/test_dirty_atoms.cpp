@@ -94,12 +94,12 @@ TEST(Watchers, IndexMatchesEveryWatchCoveringTheAtom) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 30; ++trial) {
     const std::size_t n = 1 + rng() % 200;
-    Watchers ws(n);
-    std::vector<Watchers::Watch> all;
+    detail::Watchers ws(n);
+    std::vector<detail::Watchers::Watch> all;
     for (int k = 0; k < 25; ++k) {
       const bool whole = rng() % 4 == 0;
       const std::size_t first = whole ? 0 : rng() % n, count = whole ? n : 1 + rng() % (n - first);
-      const Watchers::Watch w{static_cast<std::size_t>(k), first, count, rng() % 1000, rng() % 1000};
+      const detail::Watchers::Watch w{static_cast<std::size_t>(k), first, count, rng() % 1000, rng() % 1000};
       all.push_back(w);
       ws.add(w);
       if (rng() % 5 == 0) ws.index();  // an index built early is rebuilt after more adds

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <span>
 #include <utility>
 
 #include "sillage/cn/contractor_network.h"
@@ -34,15 +35,15 @@ class CtcGatesBelow : public NetworkCtc {
     bool run(NodeRun& r) const override {
       std::size_t first = 0, last = 0;
       if (!dirty_slices(r, 0, first, last)) return true;
-      TubeData& d = x_->tube().data();
+      const Tube::Writer w = x_->tube().write();  // x's version steps once, when it ends
+      const std::span<Interval> g = w.gates();
       const TubeChanges out = changes(r, 0);
       for (std::size_t k = first; k <= last + 1; ++k) {
-        const Interval before = d.gates[k];
-        d.gates[k] &= Interval(-1e300, c_);
-        out.gate(k, before, d.gates[k]);
-        if (d.gates[k].is_empty()) return false;
+        const Interval before = g[k];
+        g[k] &= Interval(-1e300, c_);
+        out.gate(k, before, g[k]);
+        if (g[k].is_empty()) return false;
       }
-      x_->tube().touch();
       return true;
     }
     // For the test: what the base makes of a run.

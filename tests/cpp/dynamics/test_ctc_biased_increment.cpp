@@ -27,11 +27,11 @@ struct Biased {
   Biased(std::mt19937_64& rng, double drift, int n, double noise)
       : td(kit::random_tdomain(rng, n)), f(rng), b(std::uniform_real_distribution<double>(-1, 1)(rng)), inc(td) {
     std::uniform_real_distribution<double> u(-drift, drift);
+    const Tube::Writer w = inc.write();
     for (std::size_t k = 0; k < td->nb_slices(); ++k) {
       const Interval dx = f.x(Interval(td->t(k + 1))) - f.x(Interval(td->t(k)));
-      inc.data().slices[k] = kit::around(dx + (Interval(b) - Interval(u(rng))) * td->slice_width(k), rng, noise);
+      w.slices()[k] = kit::around(dx + (Interval(b) - Interval(u(rng))) * td->slice_width(k), rng, noise);
     }
-    inc.touch();
   }
 };
 
@@ -230,10 +230,12 @@ TEST(CtcBiasedIncrement, FourArgumentLaws) {
         const Tube& inc = std::get<Tube>(c.domains[2]);
         // j around the true increments: the measured ones minus the bias class [−3, 3] per unit time
         Tube j(inc.tdomain());
-        for (std::size_t k = 0; k < inc.nb_slices(); ++k) {
-          j.data().slices[k] = inc.slice(k) + Interval(-3, 3) * inc.tdomain()->slice_width(k);
+        {
+          const Tube::Writer w = j.write();
+          for (std::size_t k = 0; k < inc.nb_slices(); ++k) {
+            w.slices()[k] = inc.slice(k) + Interval(-3, 3) * inc.tdomain()->slice_width(k);
+          }
         }
-        j.touch();
         c.domains.push_back(j);
         c.truth.push_back(std::monostate{});
         return c;

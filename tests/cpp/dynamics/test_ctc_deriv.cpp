@@ -136,7 +136,7 @@ TEST_P(CtcDerivHand, EmptyInputsGiveEmpty) {
     if (which == 0) v.set(Interval::empty());
     if (which == 1) x.set_gate(0, Interval::empty());
     if (which == 2) x.set_gate(1, Interval::empty());
-    if (which == 3) x.data().slices[0] = Interval::empty();
+    if (which == 3) x.write().slices()[0] = Interval::empty();
     EXPECT_FALSE(CtcDeriv().contract(x, v)) << which;
     EXPECT_TRUE(x.slice(0).is_empty() && x.gate(0).is_empty() && x.gate(1).is_empty()) << which;
   }

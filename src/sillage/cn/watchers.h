@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace sillage {
+namespace sillage::detail {
 
 class Watchers {
  public:
@@ -45,4 +45,4 @@ class Watchers {
   std::vector<Entry> at_;
 };
 
-}  // namespace sillage
+}  // namespace sillage::detail

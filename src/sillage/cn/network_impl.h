@@ -1,0 +1,105 @@
+#pragma once
+// The machinery behind ContractorNetwork (its public header holds only the
+// contract): the domains and their names, the nodes and how to rebuild them,
+// who watches which atom, and the propagation. ContractorNetwork forwards
+// each call here; the methods mean what they mean there.
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "sillage/cn/contractor_network.h"
+#include "sillage/cn/dirty_atoms.h"
+#include "sillage/cn/watchers.h"
+
+namespace sillage::detail {
+
+class ContractorNetworkImpl {
+ public:
+  void set_name(const DomainRef& d, const std::string& name);
+  const std::string& domain_name(std::size_t d) const { return names_.at(d); }
+  void set_ctc_name(std::size_t i, const std::string& name);
+  void add(std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& domains);
+  void add(std::shared_ptr<const NetworkCtc> ctc, const std::vector<DomainRef>& domains);
+  void add_node(std::shared_ptr<const CnNode> node);
+  std::size_t add_domain(const std::shared_ptr<Domain>& domain);
+  ContractStats contract();
+
+  std::size_t nb_ctc() const { return nodes_.size(); }
+  std::size_t nb_dom() const { return domains_.size(); }
+  double ratio() const { return ratio_; }
+  void set_ratio(double ratio);
+  Scheduling scheduling() const { return scheduling_; }
+  void set_scheduling(Scheduling s) { scheduling_ = s; }
+  const Budget& budget() const { return budget_; }
+  void set_budget(const Budget& budget);
+  const ContractStats& stopped_stats() const { return stopped_stats_; }
+
+ private:
+  // How to build a node: from its domains as bound (add, add_pending_gates).
+  using Make = std::function<std::shared_ptr<const CnNode>(const std::vector<BoundDomain>&)>;
+
+  std::string label(std::size_t d) const;
+  // DimensionError naming domain d when its object lost the layout it was registered with.
+  void check_layout(std::size_t d) const;
+  // "tube 'x'" when named, else label(d).
+  std::string noun(std::size_t d) const;
+  // Fills the emptiness fields of s: domain d, atom a (kNoAtom: none), found
+  // by `by` (a node's describe(); "" for empty on input).
+  void explain_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by,
+                     const Interval& time) const;
+  // The fields of s naming domain d, atom a and `by`; the place of a.
+  AtomPlace name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const;
+  // Fills s if domain d holds no value before the propagation (Domain::empty_on_input).
+  void explain_empty_on_input(ContractStats& s, std::size_t d) const;
+  // Domain d's `gate` misses its neighbouring `slice`: both named, with their values and times.
+  void explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const;
+  // A contractor (a Python one may) that resized a domain or sampled its
+  // TDomain during contract() made the nodes' layouts stale: DimensionError
+  // rather than a result computed on the wrong atoms.
+  void check_layouts_after(const CnNode& node) const;
+  // Same for a node whose run() returned false.
+  void explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const;
+  // Node i's describe(), with its name (set_ctc_name) if it has one.
+  std::string describe_node(std::size_t i) const;
+  // The first empty atom of domain d in [first, first + count), or kNoAtom.
+  std::size_t first_empty_atom(std::size_t d, std::size_t first, std::size_t count) const;
+  // Registers the parts of the references; validates first, so that a failed
+  // add leaves the network unchanged.
+  std::vector<BoundDomain> bind(const std::vector<DomainRef>& domains);
+  // Binds the domains, then adds the node `make` builds on them; if `make`
+  // throws, the domains this call registered are forgotten.
+  void add_bound(const std::vector<DomainRef>& domains, const Make& make);
+  // Samples the pending gates, re-lays out the tube domains and rebuilds the
+  // nodes (see "Gates" in contractor_network.h); at the start of contract().
+  void add_pending_gates();
+  bool acts_on(const CnNode& node, const TDomain& td) const;
+  void check_not_contracting(const char* where) const;
+
+  std::vector<std::shared_ptr<Domain>> domains_;
+  std::vector<std::string> names_;  // per domain, "" if unnamed
+  std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
+  std::vector<Watchers> watchers_;  // per domain
+  // Per node, its watched atoms that shrank since it last ran (contract()).
+  DirtyAtoms dirty_;
+  std::vector<std::shared_ptr<const CnNode>> nodes_;
+  // Per node, how to build it again on a new layout (make empty: add_node).
+  struct Record {
+    std::vector<DomainRef> refs;
+    Make make;
+  };
+  std::vector<Record> records_;
+  std::vector<NetworkCtc::Gates> pending_gates_;
+  double ratio_ = 0.01;
+  Scheduling scheduling_ = Scheduling::Fifo;
+  Budget budget_;
+  ContractStats stopped_stats_;
+  std::vector<std::string> ctc_names_;  // per node, "" if unnamed (set_ctc_name)
+  // True during contract(): a contractor calling back into the network (a
+  // Python one may) must not grow the arrays contract() is walking.
+  bool contracting_ = false;
+};
+
+}  // namespace sillage::detail
