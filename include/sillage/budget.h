@@ -14,14 +14,19 @@
 //  - cancel: a CancelToken that another thread may set (Python sets it on
 //    Ctrl-C); checked at every box, across the oneTBB tasks too.
 // Exceeding a budget throws BudgetExceeded; a cancelled token throws Cancelled.
+// The computations that return a Summary (outcome.h: sivia_run, ...) keep
+// their result so far instead, with Status::Stopped or Status::Cancelled.
+// Budget::progress, if set, is called every progress_every units of work.
 #include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "sillage/error.h"
+#include "sillage/outcome.h"
 
 namespace sillage {
 
@@ -49,6 +54,10 @@ struct Budget {
   // Wall-clock time in seconds; 0 (the default): no limit.
   double max_seconds = 0;
   CancelToken cancel;
+  // Called every progress_every units of work with the counters so far (outcome.h); none by default.
+  ProgressHook progress;
+  // Units of work (boxes, contractor calls) between two calls of progress; 0: never called.
+  std::size_t progress_every = 65536;
 };
 
 // A budget exceeded: the message names the algorithm, the budget, the value
@@ -64,6 +73,11 @@ class Cancelled : public std::runtime_error {
  public:
   explicit Cancelled(const std::string& where) : std::runtime_error(where + ": cancelled") {}
 };
+
+// Throws what the throwing form of a computation throws for a Summary that
+// did not finish: BudgetExceeded(reason) for Stopped, Cancelled for Cancelled
+// (same message); does nothing otherwise.
+void throw_unfinished(const Summary& summary);
 
 // Throws Cancelled(where) once `token` is cancelled: for the loops that
 // check a token alone, without a BudgetMeter (CtcIvp, CtcOmega).
@@ -82,6 +96,15 @@ class BudgetMeter {
               const char* hint = "", std::size_t bytes_per_box = 0, const char* unit = "boxes");
   // Counts one more box; throws BudgetExceeded or Cancelled.
   void add();
+  // Counts one more box; false once the budget is spent or the token
+  // cancelled (then for good: status() and reason() say why), for the
+  // computations that keep their result so far. Calls Budget::progress.
+  bool try_add();
+  // True once try_add or add found the budget spent or the token cancelled.
+  bool stopped() const { return stopped_.load(std::memory_order_acquire); }
+  // The counters and, once stopped, the status and reason of the run so far
+  // (status Converged while it runs on).
+  Summary summary() const;
   std::size_t boxes() const { return boxes_.load(std::memory_order_relaxed); }
   // The budget's token, for the work between two boxes that checks it alone.
   const CancelToken& cancel() const { return budget_.cancel; }
@@ -96,6 +119,16 @@ class BudgetMeter {
   std::size_t max_boxes_in_memory_;  // max_bytes / bytes_per_box; 0: no limit
   std::chrono::steady_clock::time_point start_;
   std::atomic<std::size_t> boxes_{0};
+  std::atomic<bool> stopped_{false};
+  mutable std::mutex mutex_;  // guards status_, reason_, rounds_ and the progress calls
+  Status status_ = Status::Converged;
+  std::string reason_;
+  std::size_t rounds_ = 0;
+
+  double seconds() const;
+  // Records the first reason to stop; returns false.
+  bool stop(Status status, std::string reason);
+  void report_progress();
 };
 
 // Throws Error for a negative or NaN max_seconds.

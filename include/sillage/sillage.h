@@ -5,6 +5,7 @@
 
 #include "sillage/budget.h"
 #include "sillage/error.h"
+#include "sillage/outcome.h"
 #include "sillage/read_file.h"
 #include "sillage/threads.h"
 

@@ -10,12 +10,22 @@
 // x0 must be bounded, eps > 0 (else sillage::Error); an empty x0 gives an
 // empty paving. See paving_builder.h for the bisection rule, and
 // sivia_function.h for expression Functions (with a definition check).
+//
+// Each variant has two forms: sivia(...) returns the Paving and throws
+// BudgetExceeded or Cancelled when options.budget is spent or cancelled;
+// sivia_run(...) (kernel_sivia_run, sivia_separator_run, ...) returns a
+// SiviaResult instead: the paving so far, whose boxes not yet classified are
+// Boundary leaves, so that it is still an outer (and inner) approximation of
+// X ∩ x0, with a Summary (outcome.h) saying how the run ended. A stopped or
+// cancelled run in parallel depends on the scheduling (which boxes were
+// refined first); a finished one never does.
 #include <functional>
 #include <utility>
 
 #include "sillage/ctc/ctc.h"
 #include "sillage/budget.h"
 #include "sillage/ctc/sep.h"
+#include "sillage/outcome.h"
 #include "sillage/paving/paving.h"
 
 namespace sillage {
@@ -36,6 +46,20 @@ struct SiviaOptions {
   // Boxes (paving nodes), time and cancellation (budget.h): BudgetExceeded
   // or Cancelled is thrown when exhausted; 10^7 boxes by default.
   Budget budget;
+};
+
+// A SIVIA run: the paving and how the run ended.
+struct SiviaResult {
+  // The paving of x0, complete for Converged and NoSolution; for Stopped and
+  // Cancelled the boxes not yet classified are Boundary leaves: still
+  // inner() ⊂ X ∩ x0 ⊂ outer().
+  Paving paving;
+  // Converged; NoSolution when no leaf is Inner or Boundary (X ∩ x0 proven
+  // empty, or x0 empty); Stopped (the budget in reason) or Cancelled.
+  Summary summary;
+  // The paving of a finished run; throws BudgetExceeded (Stopped) or
+  // Cancelled (Cancelled), as sivia does.
+  Paving take() &&;
 };
 
 // Alg. 1: X = f^-1(Y). A box is Outside when [f]([x]) ∩ Y = ∅, Inner when
@@ -70,5 +94,25 @@ Paving sivia_contractor(const IntervalVector& x0, const ContractFunction& ctc, d
 // and [f^c] = [ub f-, lb f+] (2.43): 0 ∉ [f^d]([x]) => Outside (the thesis'
 // (2.46) writes f^c, a typo: only f^d proves exclusion); 0 ∈ [f^c]([x]) => Inner.
 Paving kernel_sivia(const IntervalVector& x0, const KernelBounds& f, double eps, const SiviaOptions& options = {});
+
+// The same variants keeping the paving so far when the budget is spent or
+// the run cancelled (SiviaResult).
+SiviaResult sivia_run(const IntervalVector& x0, const InclusionFunction& f, const IntervalVector& y, double eps,
+                      const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const InclusionFunction& f, const Interval& y, double eps,
+                      const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const InclusionFunction& f, const IntervalVector& y,
+                      const ContractFunction& ctc, double eps, const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const InclusionFunction& f, const IntervalVector& y, const Ctc& ctc,
+                      double eps, const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& options = {});
+SiviaResult sivia_separator_run(const IntervalVector& x0, const SeparateFunction& sep, double eps,
+                                const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& options = {});
+SiviaResult sivia_contractor_run(const IntervalVector& x0, const ContractFunction& ctc, double eps,
+                                 const SiviaOptions& options = {});
+// Kernel SIVIA (Alg. 2) keeping the paving so far (SiviaResult).
+SiviaResult kernel_sivia_run(const IntervalVector& x0, const KernelBounds& f, double eps,
+                             const SiviaOptions& options = {});
 
 }  // namespace sillage

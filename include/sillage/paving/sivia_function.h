@@ -27,4 +27,15 @@ Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& 
 Paving kernel_sivia(const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
                     const SiviaOptions& options = {});
 
+// The same keeping the paving so far when the budget is spent or the run
+// cancelled (SiviaResult, sivia.h).
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
+                      const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const Interval& y, double eps,
+                      const SiviaOptions& options = {});
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc,
+                      double eps, const SiviaOptions& options = {});
+SiviaResult kernel_sivia_run(const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
+                             const SiviaOptions& options = {});
+
 }  // namespace sillage

@@ -46,8 +46,17 @@ IntervalVector call_box_function(const py::function& f, const IntervalVector& x)
 
 // Runs sivia with the options on a worker thread that Ctrl-C stops.
 template <class Run>
-Paving interruptible(const SiviaOptions& o, Run run) {
+SiviaResult interruptible(const SiviaOptions& o, Run run) {
   return run_interruptible(o.budget.cancel, [&](const CancelToken& t) { return run(with_token(o, t)); });
+}
+
+// Registers one variant twice: `name` returns the paving (raising
+// BudgetExceeded or Cancelled, as in C++), `run_name` the SiviaResult.
+template <class... Args, class... Extra>
+void def_sivia(py::module_& m, const char* name, const char* run_name, SiviaResult (*run)(Args...),
+               const char* doc, const char* run_doc, const Extra&... extra) {
+  m.def(name, [run](Args... a) { return run(std::forward<Args>(a)...).take(); }, extra..., doc);
+  m.def(run_name, run, extra..., run_doc);
 }
 
 // Python callables need the GIL: one thread (Ctrl-C works through them).
@@ -172,79 +181,99 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
         return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") +
                ", budget=" + py::repr(py::cast(o.budget)).cast<std::string>() + ")";
       });
+  py::class_<SiviaResult>(m, "SiviaResult", DOC(SiviaResult))
+      .def_readonly("paving", &SiviaResult::paving, DOC(SiviaResult, paving))
+      .def_readonly("summary", &SiviaResult::summary, DOC(SiviaResult, summary))
+      .def("take", [](const SiviaResult& r) { return SiviaResult(r).take(); }, DOC(SiviaResult, take))
+      .def("__iter__",
+           [](const py::object& self) {
+             return py::iter(py::make_tuple(self.attr("paving"), self.attr("summary")));
+           },
+           "paving, summary = result")
+      .def("__repr__", [](const SiviaResult& r) {
+        return "SiviaResult(paving=" + r.paving.str() + ", summary=" + r.summary.str() + ")";
+      });
+
   // Every overload takes options=SiviaOptions() last, as in C++. Calls with a
   // Python callable always run sequentially (they need the GIL), whatever options.parallel.
   const auto opts = [] { return py::arg("options") = SiviaOptions{}; };
 
   // ---- sivia: Function first, so that a Function never goes to the callable overload ----
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia_run(x0, f, y, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
-      "SIVIA (thesis Alg. 1): paving of x0 for X = f^-1(Y).");
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Function& f, const Interval& y, double eps, const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, eps, io); });
+      "SIVIA (thesis Alg. 1): paving of x0 for X = f^-1(Y).", DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Function& f, const Interval& y, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia_run(x0, f, y, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
-      DOC(sivia, IntervalVector_Function_Interval_double_SiviaOptions));
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
-         const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, y, ctc, eps, io); });
+      DOC(sivia, IntervalVector_Function_Interval_double_SiviaOptions), DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia_run(x0, f, y, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
-      DOC(sivia, IntervalVector_Function_IntervalVector_Ctc_double_SiviaOptions));
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps,
-         const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, f, IntervalVector{y}, ctc, eps, io); });
+      DOC(sivia, IntervalVector_Function_IntervalVector_Ctc_double_SiviaOptions), DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Function& f, const Interval& y, const Ctc& ctc, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return interruptible(
+            o, [&](const SiviaOptions& io) { return sivia_run(x0, f, IntervalVector{y}, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts(),
-      DOC(sivia));
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps, const SiviaOptions& o) {
-        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
+      DOC(sivia), DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("ctc"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const py::function& f, const IntervalVector& y, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return sivia_run(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
-      "SIVIA with a Python inclusion function f(box) -> box (or Interval); always sequential.");
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const py::function& f, const Interval& y, double eps, const SiviaOptions& o) {
-        return sivia(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
+      "SIVIA with a Python inclusion function f(box) -> box (or Interval); always sequential.", DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const py::function& f, const Interval& y, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return sivia_run(x0, [&f](const IntervalVector& x) { return call_box_function(f, x); }, y, eps, sequential(o));
       },
-      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts(),
-      "SIVIA with a Python inclusion function f(box) -> Interval for X = f^-1([y]); always sequential.");
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, sep, eps, io); });
+      "SIVIA with a Python inclusion function f(box) -> Interval for X = f^-1([y]); always sequential.", DOC(sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("y"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Sep& sep, double eps, const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia_run(x0, sep, eps, io); });
       },
-      py::arg("x0"), py::arg("sep"), py::arg("eps"), opts(),
-      DOC(sivia, IntervalVector_Sep_double_SiviaOptions));
-  m.def(
-      "sivia",
-      [](const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return sivia(x0, ctc, eps, io); });
+      DOC(sivia, IntervalVector_Sep_double_SiviaOptions), DOC(sivia_run),
+      py::arg("x0"), py::arg("sep"), py::arg("eps"), opts());
+  def_sivia(
+      m, "sivia", "sivia_run",
+      +[](const IntervalVector& x0, const Ctc& ctc, double eps, const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return sivia_run(x0, ctc, eps, io); });
       },
-      py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts(), DOC(sivia, IntervalVector_Ctc_double_SiviaOptions));
+      DOC(sivia, IntervalVector_Ctc_double_SiviaOptions), DOC(sivia_run),
+      py::arg("x0"), py::arg("ctc"), py::arg("eps"), opts());
 
-  m.def(
-      "kernel_sivia",
-      [](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps, const SiviaOptions& o) {
-        return interruptible(o, [&](const SiviaOptions& io) { return kernel_sivia(x0, f_lo, f_hi, eps, io); });
+  def_sivia(
+      m, "kernel_sivia", "kernel_sivia_run",
+      +[](const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
+         const SiviaOptions& o) -> SiviaResult {
+        return interruptible(o, [&](const SiviaOptions& io) { return kernel_sivia_run(x0, f_lo, f_hi, eps, io); });
       },
-      py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"), opts(),
-      DOC(kernel_sivia, IntervalVector_Function_Function_double_SiviaOptions));
-  m.def(
-      "kernel_sivia",
-      [](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions& o) {
+      DOC(kernel_sivia, IntervalVector_Function_Function_double_SiviaOptions), DOC(kernel_sivia_run),
+      py::arg("x0"), py::arg("f_lo"), py::arg("f_hi"), py::arg("eps"), opts());
+  def_sivia(
+      m, "kernel_sivia", "kernel_sivia_run",
+      +[](const IntervalVector& x0, const py::function& f, double eps, const SiviaOptions& o) -> SiviaResult {
         auto bounds = [&f](const IntervalVector& x) {
           const py::object r = f(x);
           if (!py::isinstance<py::tuple>(r) && !py::isinstance<py::list>(r)) {
@@ -254,10 +283,11 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
           if (t.size() != 2) throw Error("kernel_sivia: f must return a pair ([f-]([x]), [f+]([x]))");
           return std::pair{as_box(t[0], "kernel_sivia: f"), as_box(t[1], "kernel_sivia: f")};
         };
-        return kernel_sivia(x0, bounds, eps, sequential(o));
+        return kernel_sivia_run(x0, bounds, eps, sequential(o));
       },
-      py::arg("x0"), py::arg("f"), py::arg("eps"), opts(),
-      "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions; always sequential.");
+      "Kernel SIVIA with a Python f(box) -> (lower, upper) enclosures of the bound functions; always sequential.",
+      DOC(kernel_sivia_run),
+      py::arg("x0"), py::arg("f"), py::arg("eps"), opts());
 }
 
 }  // namespace sillage::python

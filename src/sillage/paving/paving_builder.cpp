@@ -55,10 +55,14 @@ class Builder {
       Item it = std::move(stack.back());
       stack.pop_back();
       if (it.is_right) c.nodes[it.parent].right = offset(it.parent_pos, c.total, where_);
+      if (meter_.stopped()) {  // budget spent or cancelled: the box is left undetermined
+        push(c, it.x, PavingTag::Boundary);
+        continue;
+      }
       IntervalVector r;
       if (!settle(c, it.x, r)) continue;
       const std::size_t k = widest(r);
-      if (r[k].diam() < eps_ || r[k].is_degenerate()) {
+      if (r[k].diam() < eps_ || r[k].is_degenerate() || meter_.stopped()) {
         push(c, r, PavingTag::Boundary);
         continue;
       }
@@ -84,9 +88,11 @@ class Builder {
   }
 
  private:
-  // Appends a node; returns its local index.
+  // Appends a node; returns its local index. Counted against the budget, but
+  // never refused: once the budget is spent, the boxes being processed end
+  // as Boundary leaves (grow), so that the paving stays an enclosure.
   std::size_t push(Chunk& c, const IntervalVector& x, std::uint8_t kind) const {
-    meter_.add();
+    meter_.try_add();
     c.nodes.push_back({0, kind});
     c.bounds.insert(c.bounds.end(), x.begin(), x.end());
     ++c.total;
@@ -214,20 +220,48 @@ void kernel_test(const IntervalVector& lo, const IntervalVector& hi, bool may_be
   }
 }
 
-Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
-                    const Budget& budget, const char* where, const char* option) {
+namespace {
+
+// Emptiness of X ∩ x0 proven: no leaf of the paving is Inner or Boundary.
+bool proven_empty(Paving& p) {
+  for (const Paving::Node& n : p.raw_nodes()) {
+    if (n.kind == static_cast<std::uint8_t>(PavingTag::Inner) ||
+        n.kind == static_cast<std::uint8_t>(PavingTag::Boundary)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+SiviaResult run_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
+                       const Budget& budget, const char* where, const char* option) {
   check_sivia_input(x0, eps, where);
   // What a node costs: its tag and offset, and its box (kept once per node).
   const std::size_t bytes_per_box = sizeof(Paving::Node) + x0.size() * sizeof(Interval);
   BudgetMeter meter(budget, where, option, " or use a larger eps", bytes_per_box);
-  Paving p(x0.size());
-  if (x0.is_empty()) return p;
-  Chunk root;
-  Builder(separate, eps, x0.size(), parallel, meter, where).grow(root, x0, 0);
-  p.raw_nodes().reserve(root.total);
-  p.raw_bounds().reserve(root.total * x0.size());
-  flatten(root, p.raw_nodes(), p.raw_bounds(), x0.size());
-  return p;
+  SiviaResult result{Paving(x0.size()), {}};
+  if (!x0.is_empty()) {
+    Chunk root;
+    Builder(separate, eps, x0.size(), parallel, meter, where).grow(root, x0, 0);
+    result.paving.raw_nodes().reserve(root.total);
+    result.paving.raw_bounds().reserve(root.total * x0.size());
+    flatten(root, result.paving.raw_nodes(), result.paving.raw_bounds(), x0.size());
+  }
+  result.summary = meter.summary();
+  if (result.summary.finished() && proven_empty(result.paving)) {
+    result.summary.status = Status::NoSolution;
+    result.summary.reason = std::string(where) + (x0.is_empty() ? ": the initial box is empty"
+                                                                : ": every box of the initial box is proven "
+                                                                  "outside X (X ∩ x0 is empty)");
+  }
+  return result;
+}
+
+Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
+                    const Budget& budget, const char* where, const char* option) {
+  return run_paving(x0, eps, separate, parallel, budget, where, option).take();
 }
 
 }  // namespace sillage::detail

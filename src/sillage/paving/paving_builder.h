@@ -19,11 +19,14 @@
 // pre-order. The tree therefore never depends on the number of threads.
 //
 // Budget (budget.h): every node stored counts as a box; the tasks share one
-// BudgetMeter, so exceeding the budget or a cancellation stops them all.
+// BudgetMeter, so exceeding the budget or a cancellation stops them all: the
+// boxes they were about to separate or bisect become Boundary leaves (the
+// paving so far stays an enclosure), and run_paving says so in its Summary.
 #include <functional>
 
 #include "sillage/budget.h"
 #include "sillage/paving/paving.h"
+#include "sillage/paving/sivia.h"
 
 namespace sillage::detail {
 
@@ -35,8 +38,11 @@ inline constexpr int kParallelDepth = 12;
 void check_sivia_input(const IntervalVector& x0, double eps, const char* where);
 
 // The paving of x0 by `separate` at precision eps (an empty paving if x0 is
-// empty). `where` names the caller in error messages, `option` the setting
-// that holds the budget (see BudgetMeter).
+// empty), with how the run ended (SiviaResult). `where` names the caller in
+// error messages, `option` the setting that holds the budget (see BudgetMeter).
+SiviaResult run_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
+                       const Budget& budget, const char* where, const char* option = "options.budget");
+// The same, throwing BudgetExceeded or Cancelled unless the run finished.
 Paving build_paving(const IntervalVector& x0, double eps, const Separation& separate, bool parallel,
                     const Budget& budget, const char* where, const char* option = "options.budget");
 

@@ -10,7 +10,7 @@ namespace sillage {
 namespace {
 
 // Alg. 1 with [f] = f.eval_vector; `ctc`, if given, contracts the undetermined boxes.
-Paving sivia_impl(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc* ctc,
+SiviaResult sivia_impl(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc* ctc,
                   double eps, const SiviaOptions& options) {
   check_same_size(f.nb_vars(), x0.size(), "sivia (nb_vars of f vs initial box)");
   check_same_size(f.image_dim(), y.size(), "sivia (image_dim of f vs Y)");
@@ -23,28 +23,28 @@ Paving sivia_impl(const IntervalVector& x0, const Function& f, const IntervalVec
     detail::image_test(fx, y, inner, x_in, x_out, "sivia");
     if (ctc && !x_in.is_empty() && !x_out.is_empty()) ctc->contract(x_out);
   };
-  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "sivia");
+  return detail::run_paving(x0, eps, test, options.parallel, options.budget, "sivia");
 }
 
 }  // namespace
 
-Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
-             const SiviaOptions& options) {
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
+                      const SiviaOptions& options) {
   return sivia_impl(x0, f, y, nullptr, eps, options);
 }
 
-Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
-             const SiviaOptions& options) {
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc,
+                      double eps, const SiviaOptions& options) {
   return sivia_impl(x0, f, y, &ctc, eps, options);
 }
 
-Paving sivia(const IntervalVector& x0, const Function& f, const Interval& y, double eps,
-             const SiviaOptions& options) {
-  return sivia(x0, f, IntervalVector{y}, eps, options);
+SiviaResult sivia_run(const IntervalVector& x0, const Function& f, const Interval& y, double eps,
+                      const SiviaOptions& options) {
+  return sivia_run(x0, f, IntervalVector{y}, eps, options);
 }
 
-Paving kernel_sivia(const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
-                    const SiviaOptions& options) {
+SiviaResult kernel_sivia_run(const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
+                             const SiviaOptions& options) {
   check_same_size(f_lo.nb_vars(), x0.size(), "kernel_sivia (nb_vars of f_lo vs initial box)");
   check_same_size(f_hi.nb_vars(), x0.size(), "kernel_sivia (nb_vars of f_hi vs initial box)");
   check_same_size(f_lo.image_dim(), f_hi.image_dim(), "kernel_sivia (image_dim of f_lo vs f_hi)");
@@ -54,7 +54,29 @@ Paving kernel_sivia(const IntervalVector& x0, const Function& f_lo, const Functi
     const bool inner = lo_defined.defined_on(x_in) && hi_defined.defined_on(x_in);
     detail::kernel_test(lo, hi, inner, x_in, x_out, "kernel_sivia");
   };
-  return detail::build_paving(x0, eps, test, options.parallel, options.budget, "kernel_sivia");
+  return detail::run_paving(x0, eps, test, options.parallel, options.budget, "kernel_sivia");
+}
+
+// The throwing forms: the paving of a finished run.
+
+Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& y, double eps,
+             const SiviaOptions& options) {
+  return sivia_run(x0, f, y, eps, options).take();
+}
+
+Paving sivia(const IntervalVector& x0, const Function& f, const IntervalVector& y, const Ctc& ctc, double eps,
+             const SiviaOptions& options) {
+  return sivia_run(x0, f, y, ctc, eps, options).take();
+}
+
+Paving sivia(const IntervalVector& x0, const Function& f, const Interval& y, double eps,
+             const SiviaOptions& options) {
+  return sivia_run(x0, f, y, eps, options).take();
+}
+
+Paving kernel_sivia(const IntervalVector& x0, const Function& f_lo, const Function& f_hi, double eps,
+                    const SiviaOptions& options) {
+  return kernel_sivia_run(x0, f_lo, f_hi, eps, options).take();
 }
 
 }  // namespace sillage
