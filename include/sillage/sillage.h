@@ -7,6 +7,7 @@
 #include "sillage/error.h"
 #include "sillage/outcome.h"
 #include "sillage/read_file.h"
+#include "sillage/run_result.h"
 #include "sillage/threads.h"
 
 #include "sillage/interval/backward.h"

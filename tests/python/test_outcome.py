@@ -113,3 +113,95 @@ def test_progress_hook_raises():
     b = sl.Budget(progress=stop)
     b.progress = None
     assert b.progress is None
+
+
+# ---- the loops and the temporal SLAM (loops.md, slam.md) ----
+
+LIMACON_V = "(-sin(t) - 2*sin(2*t) + [-0.01,0.01], cos(t) + 2*cos(2*t) + [-0.01,0.01])"
+
+
+def limacon():
+    td = sl.TDomain(0.3, 2 * math.pi - 0.3, 0.001)
+    return td, sl.TubeVector(td, LIMACON_V)
+
+
+def holds_loop(tp, t1=2 * math.pi / 3, t2=4 * math.pi / 3):
+    point = sl.IntervalVector([[t1, t1], [t2, t2]])
+    return any(point.is_subset(b) for d in tp.detections() for b in d.boxes())
+
+
+def test_detections_run_keeps_an_enclosure_of_the_loop():
+    td, v = limacon()
+    tp = sl.TPlane(td)
+    s = tp.compute_detections_run(0.05, v)
+    assert s.status == sl.Status.Converged and tp.nb_detections() == 1
+    s = tp.compute_detections_run(1e-9, v, sl.Budget(max_boxes=500))
+    assert s.status == sl.Status.Stopped
+    assert s.reason == ("TPlane::compute_detections: budget exceeded: 501 boxes > max_boxes = 500; raise "
+                        "budget.max_boxes (0: no limit) or use a larger eps")
+    assert holds_loop(tp)
+    token = sl.CancelToken()
+    token.cancel()
+    s = tp.compute_detections_run(0.05, v, sl.Budget(cancel=token))
+    assert s.status == sl.Status.Cancelled and s.reason == "TPlane::compute_detections: cancelled"
+    assert tp.nb_detections() == 1 and holds_loop(tp)
+
+
+def test_degree_count_split_runs_have_no_value_once_stopped():
+    td, v = limacon()
+    tp = sl.TPlane(td)
+    tp.compute_detections(0.05, v)
+    boxes, f = tp.detections()[0].boxes(), sl.LoopFunction(v)
+    r = sl.topological_degree_run(boxes, f)
+    assert r.summary.status == sl.Status.Converged and r.value.degree == 1
+    assert r.take().degree == sl.topological_degree(boxes, f).degree
+    o = sl.DegreeOptions()
+    o.budget = sl.Budget(max_boxes=3)
+    r = sl.topological_degree_run(boxes, f, o)
+    value, summary = r
+    assert value is None and summary.status == sl.Status.Stopped
+    assert summary.reason.startswith("topological_degree: budget exceeded: 4 boxes > max_boxes = 3")
+    with pytest.raises(sl.BudgetExceeded):
+        r.take()
+    c = sl.count_zeros_run(boxes, 1, f)
+    assert c.summary.status == sl.Status.Converged and c.value.count == 1
+    o = sl.CountOptions()
+    o.budget = sl.Budget(max_boxes=1)
+    assert sl.count_zeros_run(boxes, 1, f, o).value is None
+    s = sl.split_region_run(boxes, f)
+    assert s.summary.status == sl.Status.Converged and s.value.count() == 1
+    o = sl.SplitOptions()
+    o.budget = sl.Budget(max_boxes=1)
+    s = sl.split_region_run(boxes, f, o)
+    assert s.summary.status == sl.Status.Stopped and s.value is None
+    assert "SplitRun(value=None, summary=stopped" in repr(s)
+    # A Python f too.
+    r = sl.topological_degree_run([sl.IntervalVector([[-1, 1], [-1, 1]])], lambda b: b)
+    assert r.value.degree == 1
+
+
+def test_temporal_slam_run_summary_and_progress():
+    from test_slam import mission
+    x, v, u, z, f, h, truth = mission()
+    o = sl.TemporalSlamOptions()
+    o.eps = 0.01
+    seen = []
+    o.progress = lambda p: seen.append((p.where, p.round, p.work))
+    r = sl.temporal_slam_run(x, v, u, z, f, h, o)
+    rows, summary = r
+    assert summary.status == sl.Status.Converged and summary.work == len(rows) == summary.rounds
+    assert seen == [("temporal_slam", i, i) for i in range(1, len(rows) + 1)]
+    assert x.contains(truth)
+    x, v, u, z, f, h, truth = mission()
+    o = sl.TemporalSlamOptions()
+    o.eps, o.fast, o.max_rounds = 0.01, False, 1
+    r = sl.temporal_slam_run(x, v, u, z, f, h, o)
+    assert r.summary.status == sl.Status.Stopped
+    assert r.summary.reason.startswith("temporal_slam: the accurate algorithm ran max_rounds = 1 rounds")
+    x, v, u, z, f, h, truth = mission()
+    o.cancel.cancel()
+    r = sl.temporal_slam_run(x, v, u, z, f, h, o)
+    assert (r.summary.status, r.summary.reason, r.rows) == (sl.Status.Cancelled, "temporal_slam: cancelled", [])
+    assert x.contains(truth)
+    with pytest.raises(sl.Cancelled):
+        sl.temporal_slam(x, v, u, z, f, h, o)

@@ -28,6 +28,7 @@
 #include "sillage/budget.h"
 #include "sillage/loops/plane_function.h"
 #include "sillage/loops/zero_tests.h"
+#include "sillage/run_result.h"
 
 namespace sillage {
 
@@ -87,6 +88,13 @@ struct SplitResult {
 // count_zeros; BudgetExceeded / Cancelled from options.budget.
 SplitResult split_region(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                          const PlaneJacobian& jacobian, const SplitOptions& options = {});
+
+// A split with how it ended (run_result.h), instead of BudgetExceeded or
+// Cancelled from options.budget: Converged with the SplitResult, or Stopped /
+// Cancelled with no value: the pieces assessed so far do not cover the region.
+using SplitRun = RunResult<SplitResult>;
+SplitRun split_region_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                          const PlaneJacobian& jacobian, const SplitOptions& options = {});
 
 namespace detail {
 // The same, counting against a meter shared with the caller (options.budget

@@ -33,16 +33,22 @@ namespace sillage {
 // budget) are those of sivia.h.
 Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps,
                   const SiviaOptions& options = {});
+// The same keeping the paving so far when the budget is spent or the run
+// cancelled (SiviaResult, sivia.h): the t-boxes not yet classified are
+// Boundary leaves, so its outer approximation still encloses every feasible
+// loop. NoSolution: every t-box is proven outside (no loop at all).
+SiviaResult loop_sivia_run(const LoopFunction& f, const IntervalVector& square, double eps,
+                           const SiviaOptions& options = {});
 
 namespace detail {
 // (6.10), velocity form only: t1 < t2 surely and, on both components, the
 // range of ∫v^- is <= 0 and that of ∫v^+ is >= 0, so that every (t1, t2) of
 // the box is a feasible loop. Always false with positions (see above).
 bool is_inner_box(const LoopFunction& f, const IntervalVector& t);
-// loop_sivia in parallel for a caller named `where` whose budget argument is
-// called "budget" (error messages).
-Paving build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps, const Budget& budget,
-                         const char* where);
+// loop_sivia_run in parallel for a caller named `where` whose budget
+// argument is called "budget" (error messages).
+SiviaResult run_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps, const Budget& budget,
+                            const char* where);
 }  // namespace detail
 
 }  // namespace sillage

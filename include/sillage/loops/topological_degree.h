@@ -16,6 +16,7 @@
 #include "sillage/budget.h"
 #include "sillage/loops/plane_function.h"
 #include "sillage/paving/contour.h"
+#include "sillage/run_result.h"
 
 namespace sillage {
 
@@ -58,6 +59,16 @@ DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const Pla
 // Same over a union of 2-D boxes with disjoint interiors (its contour()).
 DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                 const DegreeOptions& options = {});
+
+// A degree with how its computation ended (run_result.h), instead of
+// BudgetExceeded or Cancelled from options.budget: Converged with the
+// DegreeResult (which may still be inconclusive, as above), or Stopped /
+// Cancelled with no value: the degree of part of the boundary is no answer.
+using DegreeRun = RunResult<DegreeResult>;
+DegreeRun topological_degree_run(const std::vector<ContourLoop>& loops, const PlaneFunction& f,
+                                 const DegreeOptions& options = {});
+DegreeRun topological_degree_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                                 const DegreeOptions& options = {});
 
 namespace detail {
 // The same, counting against a meter shared with the caller (options.budget unused).

@@ -39,6 +39,7 @@
 
 #include "sillage/budget.h"
 #include "sillage/interval/interval_vector.h"
+#include "sillage/outcome.h"
 #include "sillage/paving/paving.h"
 #include "sillage/tube/tdomain.h"
 #include "sillage/tube/tube_vector.h"
@@ -144,6 +145,17 @@ class TPlane {
   void compute_detections(double eps, const TubeVector& v, const Budget& budget = {});
   // Alg. 6 with the tighter function (7.28) from positions and velocities.
   void compute_detections(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget = {});
+  // The same two, keeping the detections so far instead of throwing when the
+  // budget is spent or the run cancelled, and saying how it ended (outcome.h):
+  //  - Converged: the detections of compute_detections;
+  //  - Stopped / Cancelled: the t-boxes not yet classified are Boundary
+  //    leaves of paving(), so the detections (its components, always
+  //    computed, even once cancelled) still enclose every loop; they are
+  //    coarser, and may reach the diagonal or merge (fewer complete ones);
+  //  - NoSolution: every t-box is proven outside 𝕋: no detection, no loop.
+  // The previous results are replaced in every case; errors are still thrown.
+  Summary compute_detections_run(double eps, const TubeVector& v, const Budget& budget = {});
+  Summary compute_detections_run(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget = {});
   // Degree test, Newton test and loop count on each complete detection, and
   // the map box of every detection, with the inclusion function of v (or of
   // (p, w)): normally the tubes given to compute_detections. Any tubes
@@ -169,7 +181,11 @@ class TPlane {
 
  private:
   void check_tube(const TubeVector& x, const char* what, const char* where) const;
-  void detect(double eps, const LoopFunction& f, const Budget& budget);
+  // The loop function of the tubes, after checking them and eps (Error).
+  LoopFunction checked_function(double eps, const TubeVector& v) const;
+  LoopFunction checked_function(double eps, const TubeVector& p, const TubeVector& w) const;
+  // keep_partial: the run form (above); else throws before replacing anything.
+  Summary detect(double eps, const LoopFunction& f, const Budget& budget, bool keep_partial);
   void prove(const LoopFunction& f, const ProofOptions& options);
   std::vector<IntervalVector> newton_boxes(const Loop& l, double inflation) const;
 

@@ -9,6 +9,7 @@
 
 #include "sillage/loops/plane_function.h"
 #include "sillage/loops/topological_degree.h"
+#include "sillage/run_result.h"
 
 namespace sillage {
 
@@ -57,6 +58,14 @@ struct CountResult {
 // hold no zero). nullopt when this cannot be shown.
 CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                         const PlaneJacobian& jacobian, const CountOptions& options = {});
+
+// A count with how its computation ended (run_result.h), instead of
+// BudgetExceeded or Cancelled from options.budget: Converged with the
+// CountResult (its count may still be nullopt, as above), or Stopped /
+// Cancelled with no value: the boxes examined so far count nothing.
+using CountRun = RunResult<CountResult>;
+CountRun count_zeros_run(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
+                         const PlaneJacobian& jacobian, const CountOptions& options = {});
 
 namespace detail {
 // The same, counting against a meter shared with the caller (options.budget unused).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sillage/budget.h"
+#include "sillage/outcome.h"
 #include "sillage/slam/slam_row.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -37,8 +38,25 @@ struct TemporalSlamOptions {
   // callable(row, p), or None.
   SlamIterationCallback on_iteration;
   // Another thread may cancel it: temporal_slam then throws Cancelled within
-  // tens of milliseconds, x and v left as enclosures (Python: Ctrl-C).
+  // tens of milliseconds, x and v left as enclosures (Python: Ctrl-C), and
+  // temporal_slam_run returns Cancelled.
   CancelToken cancel;
+  // Called after every iteration of C_{p⇒z} (outcome.h: round and work are
+  // the iterations so far), for tracing and progress; none by default.
+  ProgressHook progress;
+};
+
+// A temporal SLAM run: its rows and how it ended. x and v, contracted in
+// place, are enclosures of the trajectory whatever the status: every step
+// only shrinks them.
+struct TemporalSlamResult {
+  // One row per iteration of C_{p⇒z} done.
+  std::vector<SlamRow> rows;
+  // Converged: every algorithm run reached its fixed point. Stopped: one
+  // ran max_rounds rounds without reaching it (reason names it). Cancelled:
+  // options.cancel was set. NoSolution: x emptied (reason says at which step:
+  // the data contradict the model). work counts the iterations of C_{p⇒z}.
+  Summary summary;
 };
 
 // x (n-D) and v (n-D) are contracted in place; u the inputs (any size, may
@@ -48,7 +66,13 @@ struct TemporalSlamOptions {
 // iteration of C_{p⇒z}, numbered over the whole run; contractions of p(t_f)
 // and p(t_0) relative to dead reckoning (h(x) after the first C_d/dt). DimensionError / Error on sizes,
 // TDomains, eps or an option with nothing to run.
+// Throws Cancelled when cancelled; a run stopped by max_rounds returns its
+// rows, as one that converged.
 std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
                                    const Function& f, const Function& h, const TemporalSlamOptions& options = {});
+// The same, saying how it ended instead of throwing Cancelled (errors on the
+// input are still thrown).
+TemporalSlamResult temporal_slam_run(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
+                                     const Function& f, const Function& h, const TemporalSlamOptions& options = {});
 
 }  // namespace sillage

@@ -71,6 +71,25 @@ std::string loop_repr(const Loop& l) {
 
 std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? std::to_string(*x) : "None"; }
 
+// A RunResult<T> (run_result.h) as `name`: value (None unless finished), summary, take().
+template <class T>
+void bind_run_result(py::module_& m, const char* name, const char* what) {
+  using Run = RunResult<T>;
+  py::class_<Run>(m, name, (std::string("A ") + what + " with how its computation ended (Summary): the value of a "
+                            "finished run, None once stopped or cancelled (a partial one is no answer).").c_str())
+      .def_readonly("value", &Run::value, "The result of a finished run; None for Stopped and Cancelled.")
+      .def_readonly("summary", &Run::summary, "Converged, Stopped (the budget in reason) or Cancelled.")
+      .def("take", [](const Run& r) { return Run(r).take(); },
+           "The value of a finished run; raises BudgetExceeded (Stopped) or Cancelled (Cancelled).")
+      .def("__iter__",
+           [](const py::object& self) { return py::iter(py::make_tuple(self.attr("value"), self.attr("summary"))); },
+           "value, summary = run")
+      .def("__repr__", [name](const py::object& self) {
+        return std::string(name) + "(value=" + py::repr(self.attr("value")).cast<std::string>() +
+               ", summary=" + self.attr("summary").attr("__str__")().cast<std::string>() + ")";
+      });
+}
+
 }  // namespace
 
 SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
@@ -142,6 +161,23 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
           },
           py::arg("eps"), py::arg("p"), py::arg("w"), py::arg("budget") = Budget{},
           DOC(TPlane, compute_detections, double_TubeVector_TubeVector_Budget))
+      .def(
+          "compute_detections_run",
+          [](TPlane& tp, double eps, const TubeVector& v, const Budget& b) {
+            return run_interruptible(
+                b.cancel, [&](const CancelToken& t) { return tp.compute_detections_run(eps, v, with_token(b, t)); });
+          },
+          py::arg("eps"), py::arg("v"), py::arg("budget") = Budget{},
+          DOC(TPlane, compute_detections_run))
+      .def(
+          "compute_detections_run",
+          [](TPlane& tp, double eps, const TubeVector& p, const TubeVector& w, const Budget& b) {
+            return run_interruptible(b.cancel, [&](const CancelToken& t) {
+              return tp.compute_detections_run(eps, p, w, with_token(b, t));
+            });
+          },
+          py::arg("eps"), py::arg("p"), py::arg("w"), py::arg("budget") = Budget{},
+          "compute_detections_run from positions p and velocities w (7.28).")
       .def(
           "compute_proofs",
           [](TPlane& tp, const TubeVector& v, const ProofOptions& o) {
@@ -255,6 +291,24 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
       "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
+  bind_run_result<DegreeResult>(m, "DegreeRun", "DegreeResult");
+  m.def(
+      "topological_degree_run",
+      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const DegreeOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return topological_degree_run(boxes, f.memoized_function(), with_token(o, t));
+        });
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
+      "topological_degree of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (DegreeRun).");
+  m.def(
+      "topological_degree_run",
+      [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
+        return topological_degree_run(boxes, plane_function(f), o);
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
+      "topological_degree of a Python f(box) -> box with a Summary instead of BudgetExceeded / Cancelled.");
+
   py::class_<NewtonOptions>(m, "NewtonOptions", DOC(NewtonOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_iterations 20.")
@@ -313,6 +367,17 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
       "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
 
+  bind_run_result<CountResult>(m, "CountRun", "CountResult");
+  m.def(
+      "count_zeros_run",
+      [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return count_zeros_run(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
+        });
+      },
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
+      "count_zeros of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (CountRun).");
+
   py::class_<SplitOptions>(m, "SplitOptions", DOC(SplitOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_levels 8, max_boxes 2^15, count on.")
@@ -366,6 +431,19 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       },
       py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
       "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
+
+  bind_run_result<SplitResult>(m, "SplitRun", "SplitResult");
+  m.def(
+      "split_region_run",
+      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          SplitOptions with = with_token(o, t);
+          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
+          return split_region_run(boxes, f.memoized_function(), f.jacobian_function(), with);
+        });
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
+      "split_region of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (SplitRun).");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
       .def_readonly("t1", &PathCrossing::t1, DOC(PathCrossing, t1))

@@ -151,6 +151,7 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
       .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, DOC(TemporalSlamOptions, max_rounds))
       .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration, DOC(TemporalSlamOptions, on_iteration))
       .def_readwrite("cancel", &TemporalSlamOptions::cancel, DOC(TemporalSlamOptions, cancel))
+      .def_readwrite("progress", &TemporalSlamOptions::progress, DOC(TemporalSlamOptions, progress))
       .def("__repr__", [](const py::object& self) { return fields_repr(self); });
 
   m.def(
@@ -166,6 +167,28 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
       py::arg("x"), py::arg("v"), py::arg("u"), py::arg("z"), py::arg("f"), py::arg("h"),
       py::arg("options") = TemporalSlamOptions(),
       DOC(temporal_slam));
+  py::class_<TemporalSlamResult>(m, "TemporalSlamResult", DOC(TemporalSlamResult))
+      .def_readonly("rows", &TemporalSlamResult::rows, DOC(TemporalSlamResult, rows))
+      .def_readonly("summary", &TemporalSlamResult::summary, DOC(TemporalSlamResult, summary))
+      .def("__iter__",
+           [](const py::object& self) { return py::iter(py::make_tuple(self.attr("rows"), self.attr("summary"))); },
+           "rows, summary = result")
+      .def("__repr__", [](const TemporalSlamResult& r) {
+        return "TemporalSlamResult(" + std::to_string(r.rows.size()) + " rows, summary=" + r.summary.str() + ")";
+      });
+  m.def(
+      "temporal_slam_run",
+      [](TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z, const Function& f, const Function& h,
+         const TemporalSlamOptions& o) {
+        TemporalSlamOptions with = o;  // copied with the GIL: it may hold Python callbacks
+        return run_interruptible(o.cancel, [&](const CancelToken& token) {
+          with.cancel = token;
+          return temporal_slam_run(x, v, u, z, f, h, with);
+        });
+      },
+      py::arg("x"), py::arg("v"), py::arg("u"), py::arg("z"), py::arg("f"), py::arg("h"),
+      py::arg("options") = TemporalSlamOptions(),
+      DOC(temporal_slam_run));
 
   py::class_<ThicknessCurve>(m, "ThicknessCurve", DOC(ThicknessCurve))
       .def(py::init<TubeVector, std::string, std::string>(), py::arg("p"), py::arg("label"), py::arg("colour"),

@@ -167,6 +167,13 @@ SplitResult split_region(const std::vector<IntervalVector>& boxes, const PlaneFu
   return detail::split_region(boxes, f, jacobian, options, meter, std::nullopt);
 }
 
+SplitRun split_region_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                          const PlaneJacobian& jacobian, const SplitOptions& options) {
+  BudgetMeter meter(options.budget, "split_region");
+  return detail::run_metered<SplitResult>(
+      meter, [&] { return detail::split_region(boxes, f, jacobian, options, meter, std::nullopt); });
+}
+
 SplitResult detail::split_region(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                  const PlaneJacobian& jacobian, const SplitOptions& options, BudgetMeter& meter,
                                  const std::optional<int>& degree, const std::vector<bool>& inside) {

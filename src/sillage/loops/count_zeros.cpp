@@ -25,6 +25,13 @@ CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, co
   return detail::count_zeros(boxes, degree, f, jacobian, options, meter);
 }
 
+CountRun count_zeros_run(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
+                         const PlaneJacobian& jacobian, const CountOptions& options) {
+  BudgetMeter meter(options.budget, "count_zeros");
+  return detail::run_metered<CountResult>(
+      meter, [&] { return detail::count_zeros(boxes, degree, f, jacobian, options, meter); });
+}
+
 CountResult detail::count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                                 const PlaneJacobian& jacobian, const CountOptions& options, BudgetMeter& meter) {
   if (boxes.empty()) throw Error("count_zeros: no box (the region is empty)");

@@ -75,8 +75,8 @@ void separate(const LoopFunction& f, IntervalVector& x_in, IntervalVector& x_out
 
 namespace {
 
-Paving paving_of(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel, const Budget& budget,
-                 const char* where, const char* option) {
+SiviaResult run_of(const LoopFunction& f, const IntervalVector& square, double eps, bool parallel,
+                   const Budget& budget, const char* where, const char* option) {
   detail::check_sivia_input(square, eps, where);
   if (square.size() != 2 || square.is_empty() || square[0] != square[1] || !(square[0].lb() < square[0].ub())) {
     throw Error(std::string(where) + ": the t-plane must be a square [a, b]^2 with a < b, got " + square.str());
@@ -86,13 +86,22 @@ Paving paving_of(const LoopFunction& f, const IntervalVector& square, double eps
                 f.time_domain().str() + " of the tubes");
   }
   auto test = [&f](IntervalVector& x_in, IntervalVector& x_out) { separate(f, x_in, x_out); };
-  return detail::build_paving(square, eps, test, parallel, budget, where, option);
+  SiviaResult r = detail::run_paving(square, eps, test, parallel, budget, where, option);
+  if (r.summary.status == Status::NoSolution) {
+    r.summary.reason = std::string(where) + ": no loop: every t-box is proven outside the feasible loops";
+  }
+  return r;
 }
 
 }  // namespace
 
+SiviaResult loop_sivia_run(const LoopFunction& f, const IntervalVector& square, double eps,
+                           const SiviaOptions& options) {
+  return run_of(f, square, eps, options.parallel, options.budget, kWhere, "options.budget");
+}
+
 Paving loop_sivia(const LoopFunction& f, const IntervalVector& square, double eps, const SiviaOptions& options) {
-  return paving_of(f, square, eps, options.parallel, options.budget, kWhere, "options.budget");
+  return loop_sivia_run(f, square, eps, options).take();
 }
 
 bool detail::is_inner_box(const LoopFunction& f, const IntervalVector& t) {
@@ -101,9 +110,9 @@ bool detail::is_inner_box(const LoopFunction& f, const IntervalVector& t) {
   return inner_bounds(lower, upper);
 }
 
-Paving detail::build_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps,
-                                 const Budget& budget, const char* where) {
-  return paving_of(f, square, eps, true, budget, where, "budget");
+SiviaResult detail::run_loop_paving(const LoopFunction& f, const IntervalVector& square, double eps,
+                                    const Budget& budget, const char* where) {
+  return run_of(f, square, eps, true, budget, where, "budget");
 }
 
 }  // namespace sillage

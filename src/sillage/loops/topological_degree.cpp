@@ -212,6 +212,19 @@ DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const 
   return degree_of(loops_of(boxes, meter.cancel()), f, options, meter);
 }
 
+DegreeRun topological_degree_run(const std::vector<ContourLoop>& loops, const PlaneFunction& f,
+                                 const DegreeOptions& options) {
+  BudgetMeter meter(options.budget, "topological_degree");
+  return detail::run_metered<DegreeResult>(meter, [&] { return degree_of(loops, f, options, meter); });
+}
+
+DegreeRun topological_degree_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
+                                 const DegreeOptions& options) {
+  BudgetMeter meter(options.budget, "topological_degree");
+  return detail::run_metered<DegreeResult>(
+      meter, [&] { return degree_of(loops_of(boxes, meter.cancel()), f, options, meter); });
+}
+
 DegreeResult detail::topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                         const DegreeOptions& options, BudgetMeter& meter) {
   return degree_of(loops_of(boxes, meter.cancel()), f, options, meter);

@@ -47,25 +47,45 @@ void TPlane::check_tube(const TubeVector& x, const char* what, const char* where
   }
 }
 
-void TPlane::compute_detections(double eps, const TubeVector& v, const Budget& budget) {
+LoopFunction TPlane::checked_function(double eps, const TubeVector& v) const {
   const char* where = "TPlane::compute_detections(eps, v)";
   check_tube(v, "velocity", where);
   if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + number_text(eps));
-  detect(eps, LoopFunction(v), budget);
+  return LoopFunction(v);
 }
 
-void TPlane::compute_detections(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget) {
+LoopFunction TPlane::checked_function(double eps, const TubeVector& p, const TubeVector& w) const {
   const char* where = "TPlane::compute_detections(eps, p, w)";
   check_tube(p, "position", where);
   check_tube(w, "velocity", where);
   if (!(eps > 0)) throw Error(std::string(where) + ": eps must be > 0, got " + number_text(eps));
-  detect(eps, LoopFunction(p, w), budget);
+  return LoopFunction(p, w);
 }
 
-void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
-  Paving paving = detail::build_loop_paving(f, domain_, eps, budget, "TPlane::compute_detections");
+void TPlane::compute_detections(double eps, const TubeVector& v, const Budget& budget) {
+  detect(eps, checked_function(eps, v), budget, false);
+}
+
+void TPlane::compute_detections(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget) {
+  detect(eps, checked_function(eps, p, w), budget, false);
+}
+
+Summary TPlane::compute_detections_run(double eps, const TubeVector& v, const Budget& budget) {
+  return detect(eps, checked_function(eps, v), budget, true);
+}
+
+Summary TPlane::compute_detections_run(double eps, const TubeVector& p, const TubeVector& w, const Budget& budget) {
+  return detect(eps, checked_function(eps, p, w), budget, true);
+}
+
+Summary TPlane::detect(double eps, const LoopFunction& f, const Budget& budget, bool keep_partial) {
+  SiviaResult run = detail::run_loop_paving(f, domain_, eps, budget, "TPlane::compute_detections");
+  if (!keep_partial) throw_unfinished(run.summary);
+  // The run form computes the components even once cancelled: without them
+  // the paving so far would enclose the loops, the detections would not.
+  const CancelToken cancel = keep_partial ? CancelToken{} : budget.cancel;
   std::vector<Loop> loops;
-  for (Component& c : paving.components(budget.cancel)) {
+  for (Component& c : run.paving.components(cancel)) {
     Loop l;
     l.boxes_ = std::move(c.boxes);
     l.nb_inner_ = c.count(PavingTag::Inner);
@@ -80,9 +100,10 @@ void TPlane::detect(double eps, const LoopFunction& f, const Budget& budget) {
     return a.t_box_[1].lb() < b.t_box_[1].lb();
   });
   // Only now, so that an exception leaves the previous results whole.
-  paving_ = std::move(paving);
+  paving_ = std::move(run.paving);
   detections_ = std::move(loops);
   eps_ = eps;
+  return run.summary;
 }
 
 std::size_t TPlane::nb_complete_detections() const {

@@ -80,7 +80,9 @@ IntervalVector hull_of(const std::vector<IntervalVector>& boxes) {
 std::vector<std::vector<IntervalVector>> planar_proofs(double eps, const TubeVector& p, const TubeVector& w,
                                                        SlamRow& row, const CancelToken& cancel) {
   TPlane tp(p.tdomain());
-  tp.compute_detections(eps, p, w, Budget{.cancel = cancel});
+  Budget budget;  // the caller's token alone
+  budget.cancel = cancel;
+  tp.compute_detections(eps, p, w, budget);
   ProofOptions po;
   po.newton = false;  // the degree test 𝒯 is the existence test of Alg. 13
   po.count = false;

@@ -76,7 +76,9 @@ std::vector<ScalarLoop> scalar_loops(double eps, const TubeVector& p, const Tube
   if (p.is_empty() || w.is_empty()) return {};
   const TubeVector p2 = planar(p), w2 = planar(w);
   TPlane tp(p.tdomain());
-  tp.compute_detections(eps, p2, w2, Budget{.cancel = cancel});
+  Budget budget;  // the caller's token alone
+  budget.cancel = cancel;
+  tp.compute_detections(eps, p2, w2, budget);
   // Columns of t1, eps wide, of the boxes strictly above the diagonal.
   const double t0 = p.tdomain()->t0();
   std::map<long, std::vector<IntervalVector>> columns;

@@ -88,9 +88,19 @@ void check(const TubeVector& x, const TubeVector& v, const TubeVector& u, const 
 
 }  // namespace
 
-std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
-                                   const Function& f, const Function& h, const TemporalSlamOptions& options) {
-  check(x, v, u, f, h, options);
+namespace {
+
+// Ends the summary as NoSolution, x emptied `where` (the provenance).
+void no_solution(TubeVector& x, Summary& s, bool fast, std::size_t round, const char* where) {
+  for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
+  s.status = Status::NoSolution;
+  s.reason = std::string("temporal_slam: x emptied ") + where + " in round " + std::to_string(round + 1) + " of the " +
+             (fast ? "fast" : "accurate") + " algorithm";
+}
+
+// The run; Cancelled from options.cancel is left to the caller.
+void run_rounds(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z, const Function& f,
+                const Function& h, const TemporalSlamOptions& options, TemporalSlamResult& result) {
   const auto td = x.tdomain();
   const std::size_t n = x.nb_slices();
   const auto at = [&](const TubeVector& y, std::size_t k, bool gate) { return gate ? y.gate(k) : y.slice(k); };
@@ -99,21 +109,25 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
   // The reference of the contractions: dead reckoning, p after the first C_d/dt.
   IntervalVector tf0(m), t00(m);
   bool reference = false;
-
-  std::vector<SlamRow> rows;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SlamRow>& rows = result.rows;
+  Summary& summary = result.summary;
   double cumulated = 0.0;
   for (bool fast : {true, false}) {
     if ((fast && !options.fast) || (!fast && !options.accurate)) continue;
     const CtcPImpliesZ cpz(options.eps, fast);
-    for (std::size_t round = 0; round < options.max_rounds; ++round) {
+    bool fixed_point = false;
+    for (std::size_t round = 0; round < options.max_rounds && !fixed_point; ++round) {
       check_cancel(options.cancel, "temporal_slam");
       // 1-2. Evolution: v = f(x, u) both ways (x from v too), x' = v.
       evolution(x, v, u, f);
+      if (x.is_empty()) return no_solution(x, summary, fast, round, "by the evolution f(x, u)");
       CtcDeriv().contract(x, v);
+      if (x.is_empty()) return no_solution(x, summary, fast, round, "by x' = v");
       // 3. Configurations p = h(x) and their derivative w = h(v).
       eval_into(p, h, [&](std::size_t k, bool g) { return at(x, k, g); });
       eval_into(w, h, [&](std::size_t k, bool g) { return at(v, k, g); });
-      if (x.is_empty() || p.is_empty()) return rows;
+      if (p.is_empty()) return no_solution(x, summary, fast, round, "by p = h(x)");
       if (!reference) {
         tf0 = p.gate(n);
         t00 = p.gate(0);
@@ -123,9 +137,9 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
       std::size_t nb_its = 0;
       for (std::size_t it = 0; it < cpz.max_iterations(); ++it) {
         SlamRow r;
-        const auto start = std::chrono::steady_clock::now();
+        const auto it_start = std::chrono::steady_clock::now();
         const bool shrunk = cpz.iterate(p, w, z, r, options.cancel);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - it_start).count();
         r.iteration = rows.size() + 1;
         cumulated += r.seconds;
         r.cumulated_seconds = cumulated;
@@ -133,7 +147,13 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
         r.contraction_t0 = detail::contraction(t00, p.gate(0));
         rows.push_back(r);
         ++nb_its;
+        summary.work = rows.size();
         if (options.on_iteration) options.on_iteration(rows.back(), p);
+        if (options.progress) {
+          summary.rounds = rows.size();
+          options.progress(Progress{"temporal_slam", rows.size(), rows.size(),
+                                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+        }
         if (!shrunk || p.is_empty()) break;
       }
       // 5. Back to the states: x ∩= h⁻¹(p).
@@ -148,14 +168,41 @@ std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVecto
           }
         }
       }
-      if (p.is_empty()) {
-        for (std::size_t i = 0; i < x.size(); ++i) x[i].set(Interval::empty());
-        return rows;
-      }
-      if (nb_its <= 1) break;  // C_{p⇒z} found nothing more: this algorithm's fixed point
+      if (p.is_empty()) return no_solution(x, summary, fast, round, "by the loops C_{p=>z}");
+      fixed_point = nb_its <= 1;  // C_{p⇒z} found nothing more: this algorithm's fixed point
+    }
+    if (!fixed_point && summary.status == Status::Converged) {
+      summary.status = Status::Stopped;
+      summary.reason = std::string("temporal_slam: the ") + (fast ? "fast" : "accurate") + " algorithm ran max_rounds = " +
+                       std::to_string(options.max_rounds) + " rounds without reaching its fixed point; raise "
+                       "options.max_rounds";
     }
   }
-  return rows;
+}
+
+}  // namespace
+
+TemporalSlamResult temporal_slam_run(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
+                                     const Function& f, const Function& h, const TemporalSlamOptions& options) {
+  check(x, v, u, f, h, options);
+  TemporalSlamResult result;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    run_rounds(x, v, u, z, f, h, options, result);
+  } catch (const Cancelled&) {
+    if (!options.cancel.cancelled()) throw;  // not ours (a callback's): not a cancellation of the run
+    result.summary.status = Status::Cancelled;
+    result.summary.reason = "temporal_slam: cancelled";
+  }
+  result.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::vector<SlamRow> temporal_slam(TubeVector& x, TubeVector& v, const TubeVector& u, const TubeVector& z,
+                                   const Function& f, const Function& h, const TemporalSlamOptions& options) {
+  TemporalSlamResult r = temporal_slam_run(x, v, u, z, f, h, options);
+  if (r.summary.status == Status::Cancelled) throw Cancelled("temporal_slam");
+  return std::move(r.rows);
 }
 
 }  // namespace sillage

@@ -129,3 +129,84 @@ TEST(TemporalSlam, EvolutionContractsTheStateBackward) {
   EXPECT_TRUE(x[0].gate(10).is_subset(Interval(0.5, 1)));  // x' = v = 0 carries it forward
   EXPECT_TRUE(x[1].contains(Trajectory("0.75", td->t0_tf())));
 }
+
+// temporal_slam_run (outcome.h): its Summary says how the run ended, the
+// tubes are enclosures of the truth whatever the status, and the progress
+// hook is called once per iteration of C_{p⇒z}.
+
+namespace {
+
+TemporalSlamResult run(Mission& m, const TemporalSlamOptions& o) {
+  return temporal_slam_run(m.x, m.v, m.u, m.s.z, m.f, m.h, o);
+}
+
+TemporalSlamOptions options() {
+  TemporalSlamOptions o;
+  o.eps = 0.01;
+  return o;
+}
+
+}  // namespace
+
+TEST(TemporalSlamRun, ConvergedWithAProgressRoundPerIteration) {
+  Mission m;
+  TemporalSlamOptions o = options();
+  std::size_t calls = 0;
+  o.progress = [&](const Progress& p) {
+    ++calls;
+    EXPECT_EQ(p.round, calls);
+    EXPECT_EQ(p.work, calls);
+    EXPECT_STREQ(p.where, "temporal_slam");
+  };
+  const TemporalSlamResult r = run(m, o);
+  EXPECT_EQ(r.summary.status, Status::Converged) << r.summary.str();
+  EXPECT_EQ(r.summary.reason, "");
+  EXPECT_EQ(r.summary.work, r.rows.size());
+  EXPECT_EQ(r.summary.rounds, r.rows.size());
+  EXPECT_EQ(calls, r.rows.size());
+  EXPECT_TRUE(m.x.contains(m.truth));
+  Mission again;
+  EXPECT_EQ(temporal_slam(again.x, again.v, again.u, again.s.z, again.f, again.h, options()).size(), r.rows.size());
+}
+
+TEST(TemporalSlamRun, MaxRoundsIsStopped) {
+  Mission m;
+  TemporalSlamOptions o = options();
+  o.fast = false;  // the accurate algorithm needs two rounds here
+  o.max_rounds = 1;
+  const TemporalSlamResult r = run(m, o);
+  EXPECT_EQ(r.summary.status, Status::Stopped);
+  EXPECT_EQ(r.summary.reason,
+            "temporal_slam: the accurate algorithm ran max_rounds = 1 rounds without reaching its fixed point; raise "
+            "options.max_rounds");
+  EXPECT_TRUE(m.x.contains(m.truth));
+  // The throwing form returns the rows of a stopped run, as before.
+  Mission again;
+  EXPECT_EQ(temporal_slam(again.x, again.v, again.u, again.s.z, again.f, again.h, o).size(), r.rows.size());
+}
+
+TEST(TemporalSlamRun, CancelledKeepsTheTubesSoFar) {
+  Mission m;
+  TemporalSlamOptions o = options();
+  o.progress = [&o](const Progress&) { o.cancel.cancel(); };  // after the first iteration
+  const TemporalSlamResult r = run(m, o);
+  EXPECT_EQ(r.summary.status, Status::Cancelled);
+  EXPECT_EQ(r.summary.reason, "temporal_slam: cancelled");
+  EXPECT_EQ(r.rows.size(), 1u);
+  EXPECT_TRUE(m.x.contains(m.truth));
+  Mission again;
+  TemporalSlamOptions c = options();
+  c.cancel.cancel();
+  EXPECT_THROW(temporal_slam(again.x, again.v, again.u, again.s.z, again.f, again.h, c), Cancelled);
+}
+
+TEST(TemporalSlamRun, EmptiedIsNoSolutionWithWhere) {
+  Mission m;
+  const std::size_t n = m.x.nb_slices();
+  m.x.set_gate(n, IntervalVector{Interval(100, 101), Interval(100, 101), Interval(-5, -5)});  // out of reach
+  const TemporalSlamResult r = run(m, options());
+  EXPECT_EQ(r.summary.status, Status::NoSolution);
+  EXPECT_EQ(r.summary.reason, "temporal_slam: x emptied by x' = v in round 1 of the fast algorithm");
+  EXPECT_TRUE(r.rows.empty());
+  EXPECT_TRUE(m.x.is_empty());
+}
