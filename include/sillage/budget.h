@@ -54,7 +54,8 @@ struct Budget {
   // Wall-clock time in seconds; 0 (the default): no limit.
   double max_seconds = 0;
   CancelToken cancel;
-  // Called every progress_every units of work with the counters so far (outcome.h); none by default.
+  // Called every progress_every units of work with the counters so far (outcome.h); a
+  // ContractorNetwork calls it once per round instead. None by default.
   ProgressHook progress;
   // Units of work (boxes, contractor calls) between two calls of progress; 0: never called.
   std::size_t progress_every = 65536;

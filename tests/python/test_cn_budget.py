@@ -65,3 +65,20 @@ def test_ctrl_c_interrupts_contract(sigint_raises):
     timer.join()
     assert time.monotonic() - start < 3.0
     assert repr(cn.budget()).startswith("Budget(")  # the caller's budget is back
+
+
+def test_contract_run_is_an_answer_with_its_summary_and_progress():
+    cn, x, _ = halving()
+    seen = []
+    cn.set_budget(s.Budget(progress=lambda p: seen.append(p.round)))
+    st = cn.contract_run()
+    assert st.summary.status == s.Status.Converged and st.summary.work == st.contractor_calls
+    assert seen == list(range(1, st.iterations + 1))  # the hook once per round
+    cn, x, _ = halving()
+    cn.set_budget(s.Budget(max_boxes=5))
+    st = cn.contract_run()
+    assert st.summary.status == s.Status.Stopped and st.contractor_calls == 5
+    assert st.summary.reason.startswith("ContractorNetwork::contract: budget exceeded: 6 contractor calls")
+    assert x.contains(0.0) and x.is_subset(s.Interval(-1, 1))
+    with pytest.raises(s.BudgetExceeded):
+        cn.contract()  # the throwing form: the same stop

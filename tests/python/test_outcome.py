@@ -205,3 +205,4 @@ def test_temporal_slam_run_summary_and_progress():
     assert x.contains(truth)
     with pytest.raises(sl.Cancelled):
         sl.temporal_slam(x, v, u, z, f, h, o)
+

@@ -97,6 +97,10 @@ struct ContractStats {
   std::size_t disjoint_atom_index = 0;          // its index
   Interval disjoint_time = Interval::empty();   // its time interval
   Interval disjoint_value = Interval::empty();  // its value
+  // How the propagation ended (outcome.h): Converged at the fixed point, NoSolution (reason: the
+  // emptiness above), or, from contract_run(), Stopped (a budget spent: which one) or Cancelled;
+  // its counters are the rounds, the contractor calls and the time above.
+  Summary summary;
 };
 
 class ContractorNetwork {
@@ -136,8 +140,12 @@ class ContractorNetwork {
   // Propagates to the fixed point (see the top of this header); the domains are contracted in
   // place. stats.empty means no solution, and stats.emptiness says which contractor emptied
   // which domain. budget() limits it (BudgetExceeded, Cancelled; Python: Ctrl-C raises
-  // KeyboardInterrupt).
+  // KeyboardInterrupt). Budget::progress, if set, is called once per round.
   ContractStats contract();
+  // The same, but a spent budget or a cancellation (of budget()'s token) is an answer rather
+  // than an exception: the stats so far with summary.status Stopped or Cancelled and its reason;
+  // the domains are contracted as far as the propagation got, still enclosures of every solution.
+  ContractStats contract_run();
 
   // Number of contractors added.
   std::size_t nb_ctc() const;

@@ -32,6 +32,21 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
               ", expected Interval, IntervalVector, Tube, TubeVector or DomainRef");
 }
 
+// cn.contract() or cn.contract_run() without the GIL, on a worker, so that
+// Ctrl-C stops it (interruptible.h); the user's budget is restored after.
+ContractStats interruptible(ContractorNetwork& cn, ContractStats (ContractorNetwork::*run)()) {
+  const Budget user = cn.budget();
+  return run_interruptible(user.cancel, [&cn, &user, run](const CancelToken& token) {
+    struct Restore {
+      ContractorNetwork& cn;
+      const Budget& b;
+      ~Restore() { cn.set_budget(b); }
+    } restore{cn, user};
+    cn.set_budget(with_token(user, token));
+    return (cn.*run)();
+  });
+}
+
 }  // namespace
 
 SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
@@ -81,6 +96,7 @@ SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
                     DOC(ContractStats, disjoint_atom_index))
       .def_readonly("disjoint_time", &ContractStats::disjoint_time, DOC(ContractStats, disjoint_time))
       .def_readonly("disjoint_value", &ContractStats::disjoint_value, DOC(ContractStats, disjoint_value))
+      .def_readonly("summary", &ContractStats::summary, DOC(ContractStats, summary))
       .def("__repr__", [](const ContractStats& s) {
         return "ContractStats(iterations=" + std::to_string(s.iterations) +
                ", contractor_calls=" + std::to_string(s.contractor_calls) + ", time=" + std::to_string(s.time) +
@@ -132,21 +148,11 @@ SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
           "(Interval, IntervalVector, Tube, TubeVector, DomainRef); their sizes must add up to ctc.nb_vars() "
           "(DimensionError otherwise).")
       .def(
-          "contract",
-          [](ContractorNetwork& cn) {
-            // Without the GIL, on a worker, so that Ctrl-C stops it (interruptible.h).
-            const Budget user = cn.budget();
-            return run_interruptible(user.cancel, [&cn, &user](const CancelToken& token) {
-              struct Restore {
-                ContractorNetwork& cn;
-                const Budget& b;
-                ~Restore() { cn.set_budget(b); }
-              } restore{cn, user};
-              cn.set_budget(with_token(user, token));
-              return cn.contract();
-            });
-          },
+          "contract", [](ContractorNetwork& cn) { return interruptible(cn, &ContractorNetwork::contract); },
           DOC(ContractorNetwork, contract))
+      .def(
+          "contract_run", [](ContractorNetwork& cn) { return interruptible(cn, &ContractorNetwork::contract_run); },
+          DOC(ContractorNetwork, contract_run))
       .def("nb_ctc", &ContractorNetwork::nb_ctc, DOC(ContractorNetwork, nb_ctc))
       .def("nb_dom", &ContractorNetwork::nb_dom, DOC(ContractorNetwork, nb_dom))
       .def("ratio", &ContractorNetwork::ratio,

@@ -44,6 +44,8 @@ std::size_t ContractorNetwork::add_domain(const std::shared_ptr<Domain>& domain)
 
 ContractStats ContractorNetwork::contract() { return impl_->contract(); }
 
+ContractStats ContractorNetwork::contract_run() { return impl_->contract_run(); }
+
 std::size_t ContractorNetwork::nb_ctc() const { return impl_->nb_ctc(); }
 
 std::size_t ContractorNetwork::nb_dom() const { return impl_->nb_dom(); }

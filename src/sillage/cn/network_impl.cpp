@@ -211,6 +211,15 @@ void ContractorNetworkImpl::set_budget(const Budget& budget) {
 }
 
 ContractStats ContractorNetworkImpl::contract() {
+  ContractStats stats = contract_run();
+  if (!stats.summary.finished()) {
+    stopped_stats_ = stats;  // the runs done: the summary of a stopped solve
+    throw_unfinished(stats.summary);
+  }
+  return stats;
+}
+
+ContractStats ContractorNetworkImpl::contract_run() {
   check_not_contracting("contract");
   add_pending_gates();
   const auto start = std::chrono::steady_clock::now();
@@ -222,6 +231,14 @@ ContractStats ContractorNetworkImpl::contract() {
   ContractStats stats;
   const auto finish = [&] {
     stats.time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Summary& s = stats.summary;
+    if (s.status == Status::Converged && stats.empty) {
+      s.status = Status::NoSolution;
+      s.reason = stats.emptiness;
+    }
+    s.rounds = stats.iterations;
+    s.work = stats.contractor_calls;
+    s.seconds = stats.time;
     return stats;
   };
   // One pass over each domain: an empty one, or a tube with a gate off its
@@ -232,7 +249,10 @@ ContractStats ContractorNetworkImpl::contract() {
   }
   if (stats.empty) return finish();
 
-  BudgetMeter meter(budget_, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
+  // The hook is called once per round (below), not per unit of work.
+  Budget metered = budget_;
+  metered.progress = nullptr;
+  BudgetMeter meter(metered, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
                     "contractor calls");
   for (auto& w : watchers_) w.index();
   dirty_.reset();
@@ -255,14 +275,22 @@ ContractStats ContractorNetworkImpl::contract() {
       run.derivatives = derivatives;
       run.cancel = &budget_.cancel;
       fresh[i] = 0;
-      try {
-        meter.add();
-      } catch (const BudgetExceeded&) {
-        stopped_stats_ = finish();  // the runs done: the summary of a stopped solve
-        throw;
+      if (!meter.try_add()) {  // a budget spent or cancelled: the domains so far are still enclosures
+        const Summary m = meter.summary();
+        stats.summary.status = m.status;
+        stats.summary.reason = m.reason;
+        return finish();
       }
       ++stats.contractor_calls;
-      const bool ok = node.run(run);
+      bool ok = true;
+      try {
+        ok = node.run(run);
+      } catch (const Cancelled& e) {  // within a long node (CtcIvp, CtcPImpliesZ): its writes are contractions
+        if (!budget_.cancel.cancelled()) throw;  // not the network's token: not a cancellation of this run
+        stats.summary.status = Status::Cancelled;
+        stats.summary.reason = e.what();
+        return finish();
+      }
       order.ran(i, changed.size(), node.nb_atoms());
       check_layouts_after(node);
       if (!ok) {
@@ -289,6 +317,10 @@ ContractStats ContractorNetworkImpl::contract() {
     }
     round.swap(next);
     next.clear();
+    if (budget_.progress) {
+      budget_.progress(Progress{"ContractorNetwork::contract", stats.iterations, stats.contractor_calls,
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    }
   }
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d) + ", changed during contract(),");

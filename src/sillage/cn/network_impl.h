@@ -26,6 +26,7 @@ class ContractorNetworkImpl {
   void add_node(std::shared_ptr<const CnNode> node);
   std::size_t add_domain(const std::shared_ptr<Domain>& domain);
   ContractStats contract();
+  ContractStats contract_run();
 
   std::size_t nb_ctc() const { return nodes_.size(); }
   std::size_t nb_dom() const { return domains_.size(); }
