@@ -10,6 +10,11 @@ namespace {
 
 bool is_tube_kind(ArgKind k) { return k == ArgKind::Tube || k == ArgKind::TubeVector; }
 
+// "a tube", "an interval".
+std::string with_article(const std::string& noun) {
+  return (noun.find_first_of("aeiou") == 0 ? "an " : "a ") + noun;
+}
+
 bool is_tube(const BoundDomain& b) { return static_cast<bool>(std::dynamic_pointer_cast<TubeDomain>(b.domain)); }
 
 const char* kind_word(ArgKind k) {
@@ -33,7 +38,7 @@ bool fits(const ArgSpec& s, std::size_t k, std::size_t first, std::size_t count,
   }
   for (std::size_t p = first; p < first + count; ++p) {
     if (is_tube_kind(s.kind) != is_tube(args[p])) {
-      why = arg + " must be a " + kind_word(s.kind) + ", got a " + args[p].domain->noun();
+      why = arg + " must be " + with_article(kind_word(s.kind)) + ", got " + with_article(args[p].domain->noun());
       return false;
     }
   }

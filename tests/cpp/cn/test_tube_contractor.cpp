@@ -136,7 +136,7 @@ TEST(TubeContractor, ArgumentsThatFitNoSignatureAreRefusedNamingTheForms) {
   } catch (const DimensionError& e) {
     EXPECT_EQ(std::string(e.what()),
               "ContractorNetwork::add(CtcOffset): expects (tube, const tube, interval) (argument 2 must be a tube, got "
-              "a interval); a tube argument takes a tube or a tube vector, the tubes with as many components; got "
+              "an interval); a tube argument takes a tube or a tube vector, the tubes with as many components; got "
               "(tube, interval, interval)");
   }
   // Vector form: the tubes with as many components.
