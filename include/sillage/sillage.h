@@ -135,3 +135,5 @@
 #include "sillage/missions/bathymetry_sensors.h"
 #include "sillage/missions/bathymetry_tubes.h"
 #include "sillage/missions/slam_figures.h"
+
+#include "sillage/online/online_estimator.h"

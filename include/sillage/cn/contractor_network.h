@@ -147,6 +147,34 @@ class ContractorNetwork {
   // the domains are contracted as far as the propagation got, still enclosures of every solution.
   ContractStats contract_run();
 
+  // Online use (docs/online.md): a network that changes between contractions.
+  //
+  // Contracts from what changed since the last contract() or update(): the
+  // contractors added since then run first (on their whole arguments), then
+  // the ones woken by the atoms marked with touched() and by what the runs
+  // shrink. A network at its fixed point that gained one measurement
+  // contracts only what that measurement reaches. Answers as contract_run()
+  // (a spent budget or a cancellation is a status, not an exception).
+  ContractStats update();
+  // Marks the atoms of d as narrowed from outside the network (new inputs
+  // written into a tube, a box set by hand), so that update() wakes the
+  // contractors acting on them: for a tube, its slices and gates meeting t
+  // (every atom when t is the whole line); for an Interval or box, all its
+  // components. Error if t is empty or d is not in the network.
+  void touched(const DomainRef& d, const Interval& t = Interval());
+  // After a TDomain of the network's tubes grew (TDomain::extend), forgot
+  // its past (forget_before) or gained time points: re-lays out those tubes
+  // and rebuilds every contractor on the new slices from its add(). A
+  // contractor given by add_node cannot be rebuilt: Error if one acts on a
+  // changed tube. Nothing is contracted.
+  void relayout();
+  // Removes the contractors numbered `nodes` (add() order; the ones after
+  // move down, and their names with them), then forgets the domains no
+  // remaining contractor uses (their objects keep their values) and lays
+  // the rest out anew, as relayout(). Error if an index is out of range or a
+  // remaining contractor was given by add_node.
+  void retire(std::vector<std::size_t> nodes);
+
   // Number of contractors added.
   std::size_t nb_ctc() const;
   // Number of domains known to the network.

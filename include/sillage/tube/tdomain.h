@@ -53,6 +53,10 @@ struct TubeData {
   void touch() { ++version; }
   // Splits slice k in two: both halves and the new gate copy the codomain.
   void split(std::size_t k);
+  // One more slice and gate at the end, both the whole line (nothing known yet).
+  void append();
+  // Drops the first m slices and gates: gate m becomes gate 0, its value kept.
+  void drop_front(std::size_t m);
 };
 
 class TDomain {
@@ -113,6 +117,23 @@ class TDomain {
   // Same threading rule as sample(double).
   void sample(const Interval& t);
 
+  // Online estimation (docs/online.md): the domain grows as time advances
+  // and forgets the past beyond a window. Same threading rule as sample().
+  //
+  // Appends the time point t > t_N: every attached tube gains a slice
+  // [t_N, t] and a gate at t, both the whole line (nothing is known of the
+  // future until a contractor says so). Returns the new N. Error if t is not
+  // finite or not after t_N.
+  std::size_t extend(double t);
+  // Drops the slices that end at or before t (never the last one): every
+  // attached tube loses them, and its gate at the new t_0 keeps its value, an
+  // enclosure proven with the past. Returns the number of slices dropped (0 if
+  // t <= t_1). Error if t is NaN.
+  std::size_t forget_before(double t);
+  // Slices dropped by forget_before since the domain was made: slice k of
+  // today was slice nb_forgotten() + k of the first day.
+  std::size_t nb_forgotten() const { return forgotten_; }
+
   // Number of tubes (scalar components) currently attached and alive.
   std::size_t nb_attached() const;
 
@@ -125,6 +146,10 @@ class TDomain {
   mutable std::mutex mutex_;  // guards attached_ (tubes may be copied concurrently)
   mutable std::vector<std::weak_ptr<TubeData>> attached_;
   std::size_t prune_at_ = 16;  // next size at which expired entries are purged
+  std::size_t forgotten_ = 0;  // forget_before
+  // Calls f(data) for every attached tube alive, purging the dead (mutex_ held).
+  template <class F>
+  void for_each_attached(F&& f);
 };
 
 // The slices k of td whose domain meets the interior of t (t non-empty, with

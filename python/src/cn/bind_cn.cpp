@@ -19,8 +19,8 @@ std::shared_ptr<const Ctc> hold_ctc(const py::handle& h);  // bind_ctc.cpp
 bool is_tube_ctc(const py::handle& h);                     // bind_tube_node.cpp
 std::shared_ptr<const NetworkCtc> bind_tube_ctc(const py::handle& ctc, const py::list& domains);
 
-namespace {
-
+// A Python domain (Interval, IntervalVector, Tube, TubeVector, DomainRef) as
+// a DomainRef; `index` names it in the error (bind_online.cpp uses it too).
 DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
   if (py::isinstance<Interval>(h)) return DomainRef(h.cast<std::shared_ptr<Interval>>());
   if (py::isinstance<IntervalVector>(h)) return DomainRef(h.cast<std::shared_ptr<IntervalVector>>());
@@ -31,6 +31,8 @@ DomainRef to_domain_ref(const py::handle& h, std::size_t index) {
               std::string(py::str(py::type::handle_of(h).attr("__name__"))) +
               ", expected Interval, IntervalVector, Tube, TubeVector or DomainRef");
 }
+
+namespace {
 
 // cn.contract() or cn.contract_run() without the GIL, on a worker, so that
 // Ctrl-C stops it (interruptible.h); the user's budget is restored after.
@@ -153,6 +155,16 @@ SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
       .def(
           "contract_run", [](ContractorNetwork& cn) { return interruptible(cn, &ContractorNetwork::contract_run); },
           DOC(ContractorNetwork, contract_run))
+      .def("update", &ContractorNetwork::update, py::call_guard<py::gil_scoped_release>(),
+           DOC(ContractorNetwork, update))
+      .def(
+          "touched",
+          [](ContractorNetwork& cn, const py::object& domain, const Interval& t) {
+            cn.touched(to_domain_ref(domain, 0), t);
+          },
+          py::arg("domain"), py::arg("t") = Interval(), DOC(ContractorNetwork, touched))
+      .def("relayout", &ContractorNetwork::relayout, DOC(ContractorNetwork, relayout))
+      .def("retire", &ContractorNetwork::retire, py::arg("nodes"), DOC(ContractorNetwork, retire))
       .def("nb_ctc", &ContractorNetwork::nb_ctc, DOC(ContractorNetwork, nb_ctc))
       .def("nb_dom", &ContractorNetwork::nb_dom, DOC(ContractorNetwork, nb_dom))
       .def("ratio", &ContractorNetwork::ratio,

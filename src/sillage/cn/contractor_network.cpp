@@ -46,6 +46,14 @@ ContractStats ContractorNetwork::contract() { return impl_->contract(); }
 
 ContractStats ContractorNetwork::contract_run() { return impl_->contract_run(); }
 
+ContractStats ContractorNetwork::update() { return impl_->update(); }
+
+void ContractorNetwork::touched(const DomainRef& d, const Interval& t) { impl_->touched(d, t); }
+
+void ContractorNetwork::relayout() { impl_->relayout(); }
+
+void ContractorNetwork::retire(std::vector<std::size_t> nodes) { impl_->retire(std::move(nodes)); }
+
 std::size_t ContractorNetwork::nb_ctc() const { return impl_->nb_ctc(); }
 
 std::size_t ContractorNetwork::nb_dom() const { return impl_->nb_dom(); }

@@ -34,6 +34,7 @@ std::size_t ContractorNetworkImpl::add_domain(const std::shared_ptr<Domain>& dom
   const std::size_t d = domains_.size();
   domains_.push_back(domain);
   names_.emplace_back();
+  checked_.push_back(0);
   watchers_.emplace_back(domain->nb_atoms());
   index_.emplace(domain->key(), d);
   return d;
@@ -104,6 +105,7 @@ void ContractorNetworkImpl::add_bound(const std::vector<DomainRef>& domains, con
       index_.erase(domains_.back()->key());
       domains_.pop_back();
       names_.pop_back();
+      checked_.pop_back();
       watchers_.pop_back();
     }
     throw;
@@ -129,6 +131,7 @@ void ContractorNetworkImpl::add_node(std::shared_ptr<const CnNode> node) {
   }
   nodes_.push_back(std::move(node));
   records_.emplace_back();
+  fresh_.push_back(1);
 }
 
 bool ContractorNetworkImpl::acts_on(const CnNode& node, const TDomain& td) const {
@@ -157,22 +160,7 @@ void ContractorNetworkImpl::add_pending_gates() {
       }
     }
   }
-  if (!sampled) return;
-  for (auto& d : domains_) {
-    if (!d->layout_changed()) continue;
-    if (auto now = d->relaid()) d = now;
-  }
-  // Every node again, in the same order (the watchers name nodes by index).
-  auto old = std::move(nodes_);
-  auto records = std::move(records_);
-  nodes_.clear();
-  records_.clear();
-  for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
-  dirty_.clear_nodes();
-  for (std::size_t i = 0; i < old.size(); ++i) {
-    add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
-    records_.back() = std::move(records[i]);
-  }
+  if (sampled) rebuild_nodes(false);
 }
 
 void ContractorNetworkImpl::set_ratio(double ratio) {
@@ -219,8 +207,12 @@ ContractStats ContractorNetworkImpl::contract() {
   return stats;
 }
 
-ContractStats ContractorNetworkImpl::contract_run() {
-  check_not_contracting("contract");
+ContractStats ContractorNetworkImpl::contract_run() { return propagate(true); }
+
+ContractStats ContractorNetworkImpl::update() { return propagate(false); }
+
+ContractStats ContractorNetworkImpl::propagate(bool all) {
+  check_not_contracting(all ? "contract" : "update");
   add_pending_gates();
   const auto start = std::chrono::steady_clock::now();
   struct Running {
@@ -243,9 +235,12 @@ ContractStats ContractorNetworkImpl::contract_run() {
   };
   // One pass over each domain: an empty one, or a tube with a gate off its
   // slices, is no solution before any contractor runs.
+  // update(): only the domains registered or touched since.
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     check_layout(d);
-    if (!stats.empty) explain_empty_on_input(stats, d);
+    if (stats.empty || (!all && checked_[d])) continue;
+    explain_empty_on_input(stats, d);
+    checked_[d] = !stats.empty;
   }
   if (stats.empty) return finish();
 
@@ -259,9 +254,17 @@ ContractStats ContractorNetworkImpl::contract_run() {
   std::vector<DerivativePair> derivatives;
   for (const auto& node : nodes_) node->derivative_pairs(derivatives);
   // Buffers reused by every run: the round, the next one, what a node shrank, what woke it.
-  std::vector<std::size_t> round(nodes_.size()), next, changed, dirty;
-  for (std::size_t i = 0; i < nodes_.size(); ++i) round[i] = i;
-  std::vector<char> queued(nodes_.size(), 1), fresh(nodes_.size(), 1);
+  std::vector<std::size_t> round, next, changed, dirty;
+  std::vector<char> queued(nodes_.size(), 0);
+  if (all) std::fill(fresh_.begin(), fresh_.end(), 1);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (fresh_[i]) {
+      round.push_back(i);
+      queued[i] = 1;
+    }
+  }
+  if (!all) wake_touched(round, queued);
+  touched_.clear();
   detail::RoundOrder order(scheduling_, nodes_.size());
   while (!round.empty()) {
     ++stats.iterations;
@@ -271,16 +274,16 @@ ContractStats ContractorNetworkImpl::contract_run() {
       changed.clear();
       const CnNode& node = *nodes_[i];
       dirty_.take(i, dirty);
-      NodeRun run{domains_, ratio_, fresh[i] != 0, dirty, changed};
+      NodeRun run{domains_, ratio_, fresh_[i] != 0, dirty, changed};
       run.derivatives = derivatives;
       run.cancel = &budget_.cancel;
-      fresh[i] = 0;
       if (!meter.try_add()) {  // a budget spent or cancelled: the domains so far are still enclosures
         const Summary m = meter.summary();
         stats.summary.status = m.status;
         stats.summary.reason = m.reason;
         return finish();
       }
+      fresh_[i] = 0;
       ++stats.contractor_calls;
       bool ok = true;
       try {

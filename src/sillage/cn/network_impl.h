@@ -27,6 +27,10 @@ class ContractorNetworkImpl {
   std::size_t add_domain(const std::shared_ptr<Domain>& domain);
   ContractStats contract();
   ContractStats contract_run();
+  ContractStats update();
+  void touched(const DomainRef& d, const Interval& t);
+  void relayout();
+  void retire(std::vector<std::size_t> nodes);
 
   std::size_t nb_ctc() const { return nodes_.size(); }
   std::size_t nb_dom() const { return domains_.size(); }
@@ -76,6 +80,15 @@ class ContractorNetworkImpl {
   // Samples the pending gates, re-lays out the tube domains and rebuilds the
   // nodes (see "Gates" in contractor_network.h); at the start of contract().
   void add_pending_gates();
+  // The propagation: every node first (contract) or only the fresh ones and
+  // those woken by touched_ (update).
+  ContractStats propagate(bool all);
+  // Marks the watchers of the touched atoms dirty and queues them (update()).
+  void wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued);
+  // Builds every node again from its record on the domains as they are now
+  // (relaid out), in the same order; from an empty network when `rebind`
+  // (retire: the domains no node uses are dropped).
+  void rebuild_nodes(bool rebind);
   bool acts_on(const CnNode& node, const TDomain& td) const;
   void check_not_contracting(const char* where) const;
 
@@ -98,6 +111,16 @@ class ContractorNetworkImpl {
   Budget budget_;
   ContractStats stopped_stats_;
   std::vector<std::string> ctc_names_;  // per node, "" if unnamed (set_ctc_name)
+  // Per node, added since the last propagation reached it (update() runs it first).
+  std::vector<char> fresh_;
+  // Per domain, checked for emptiness on input since registered or touched.
+  std::vector<char> checked_;
+  // Atoms narrowed from outside since the last propagation (touched()).
+  struct Touch {
+    DomainRef ref;
+    Interval t;
+  };
+  std::vector<Touch> touched_;
   // True during contract(): a contractor calling back into the network (a
   // Python one may) must not grow the arrays contract() is walking.
   bool contracting_ = false;

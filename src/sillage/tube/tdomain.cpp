@@ -23,6 +23,18 @@ void TubeData::split(std::size_t k) {
   touch();
 }
 
+void TubeData::append() {
+  slices.push_back(Interval());
+  gates.push_back(Interval());
+  touch();
+}
+
+void TubeData::drop_front(std::size_t m) {
+  slices.erase(slices.begin(), slices.begin() + static_cast<std::ptrdiff_t>(m));
+  gates.erase(gates.begin(), gates.begin() + static_cast<std::ptrdiff_t>(m));
+  touch();
+}
+
 TDomain::TDomain(double t0, double tf, double dt) {
   if (!std::isfinite(t0) || !std::isfinite(tf)) {
     throw Error("TDomain(t0, tf, dt): t0 and tf must be finite, got t0 = " + number_text(t0) + ", tf = " + number_text(tf));
@@ -124,11 +136,41 @@ std::size_t TDomain::sample(double t) {
   const std::size_t k = slice_index(t);
   std::lock_guard<std::mutex> lock(mutex_);
   times_.insert(times_.begin() + static_cast<std::ptrdiff_t>(k) + 1, t);
+  for_each_attached([k](TubeData& d) { d.split(k); });
+  return k + 1;
+}
+
+template <class F>
+void TDomain::for_each_attached(F&& f) {
   std::erase_if(attached_, [](const std::weak_ptr<TubeData>& w) { return w.expired(); });
   for (const auto& w : attached_) {
-    if (auto data = w.lock()) data->split(k);
+    if (auto data = w.lock()) f(*data);
   }
-  return k + 1;
+}
+
+std::size_t TDomain::extend(double t) {
+  if (!std::isfinite(t)) throw Error("TDomain::extend(t): t = " + number_text(t) + " is not finite");
+  if (!(t > times_.back())) {
+    throw Error("TDomain::extend(t): t = " + number_text(t) + " is not after the end of the domain t_N = " +
+                number_text(times_.back()));
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  times_.push_back(t);
+  for_each_attached([](TubeData& d) { d.append(); });
+  return nb_slices();
+}
+
+std::size_t TDomain::forget_before(double t) {
+  if (std::isnan(t)) throw Error("TDomain::forget_before(t): t is NaN");
+  if (t < times_.front()) return 0;
+  // Slices k < m end at t_{k+1} <= t; the last slice always stays.
+  const std::size_t m = std::min(detail::first_time_after(times_, t) - 1, nb_slices() - 1);
+  if (m == 0) return 0;
+  std::lock_guard<std::mutex> lock(mutex_);
+  times_.erase(times_.begin(), times_.begin() + static_cast<std::ptrdiff_t>(m));
+  for_each_attached([m](TubeData& d) { d.drop_front(m); });
+  forgotten_ += m;
+  return m;
 }
 
 void TDomain::sample(const Interval& t) {

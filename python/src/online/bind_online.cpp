@@ -1,0 +1,121 @@
+// OnlineEstimator: estimation while the robot moves (docs/online.md). The
+// updates run without the GIL (no worker thread: each is microseconds).
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.h"
+#include "docstrings.h"
+#include "sillage/online/online_estimator.h"
+
+namespace sillage::python {
+
+std::shared_ptr<const Ctc> hold_ctc(const py::handle& h);  // bind_ctc.cpp
+DomainRef to_domain_ref(const py::handle& h, std::size_t index);  // bind_cn.cpp
+
+namespace {
+
+// advance()'s inputs: a dict {name: box} or a list of (name, box) pairs.
+std::vector<std::pair<std::string, IntervalVector>> inputs_arg(const py::object& inputs) {
+  std::vector<std::pair<std::string, IntervalVector>> out;
+  if (inputs.is_none()) return out;
+  const py::iterable items = py::isinstance<py::dict>(inputs) ? py::iterable(inputs.attr("items")()) : py::iterable(inputs);
+  for (const auto& item : items) {
+    const auto pair = item.cast<py::tuple>();
+    if (pair.size() != 2) throw Error("OnlineEstimator.advance: an input is a (name, box) pair");
+    out.emplace_back(pair[0].cast<std::string>(), pair[1].cast<IntervalVector>());
+  }
+  return out;
+}
+
+}  // namespace
+
+SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
+  py::class_<OnlineOptions>(m, "OnlineOptions", DOC(OnlineOptions))
+      .def(py::init([](double window, double forget_every, double ratio) {
+             return OnlineOptions{window, forget_every, ratio};
+           }),
+           py::arg("window") = OnlineOptions().window, py::arg("forget_every") = 0.0, py::arg("ratio") = 0.01,
+           "window=inf (keep everything), forget_every=0 (window/8), ratio=0.01.")
+      .def_readwrite("window", &OnlineOptions::window, DOC(OnlineOptions, window))
+      .def_readwrite("forget_every", &OnlineOptions::forget_every, DOC(OnlineOptions, forget_every))
+      .def_readwrite("ratio", &OnlineOptions::ratio, DOC(OnlineOptions, ratio))
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
+
+  py::class_<OnlineStats>(m, "OnlineStats", DOC(OnlineStats))
+      .def_readonly("updates", &OnlineStats::updates, DOC(OnlineStats, updates))
+      .def_readonly("last_seconds", &OnlineStats::last_seconds, DOC(OnlineStats, last_seconds))
+      .def_readonly("total_seconds", &OnlineStats::total_seconds, DOC(OnlineStats, total_seconds))
+      .def_readonly("slices", &OnlineStats::slices, DOC(OnlineStats, slices))
+      .def_readonly("forgotten", &OnlineStats::forgotten, DOC(OnlineStats, forgotten))
+      .def_readonly("observations", &OnlineStats::observations, DOC(OnlineStats, observations))
+      .def_readonly("retired", &OnlineStats::retired, DOC(OnlineStats, retired))
+      .def_readonly("contractors", &OnlineStats::contractors, DOC(OnlineStats, contractors))
+      .def_readonly("contractor_runs", &OnlineStats::contractor_runs, DOC(OnlineStats, contractor_runs))
+      .def_readonly("relayouts", &OnlineStats::relayouts, DOC(OnlineStats, relayouts))
+      .def_readonly("layout_seconds", &OnlineStats::layout_seconds, DOC(OnlineStats, layout_seconds))
+      .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
+
+  py::class_<OnlineEstimator>(m, "OnlineEstimator", DOC(OnlineEstimator))
+      .def(py::init<double, OnlineOptions>(), py::arg("t0"), py::arg("options") = OnlineOptions(),
+           DOC(OnlineEstimator, OnlineEstimator))
+      .def("add_state", &OnlineEstimator::add_state, py::arg("name"), py::arg("dim"),
+           py::arg("x0") = IntervalVector(), DOC(OnlineEstimator, add_state))
+      .def("add_input", &OnlineEstimator::add_input, py::arg("name"), py::arg("dim"), DOC(OnlineEstimator, add_input))
+      .def("add_bounded", &OnlineEstimator::add_bounded, py::arg("name"), py::arg("value"),
+           DOC(OnlineEstimator, add_bounded))
+      .def("add_deriv", &OnlineEstimator::add_deriv, py::arg("x"), py::arg("v"), DOC(OnlineEstimator, add_deriv))
+      .def(
+          "add",
+          [](OnlineEstimator& est, const py::object& ctc, const std::vector<std::string>& tubes) {
+            if (py::isinstance<NetworkCtc>(ctc)) {
+              est.add(std::shared_ptr<const NetworkCtc>(ctc.cast<std::shared_ptr<NetworkCtc>>()), tubes);
+            } else {
+              est.add(hold_ctc(ctc), tubes);
+            }
+          },
+          py::arg("ctc"), py::arg("tubes"),
+          "Adds a constraint on the named tubes: a Ctc applied at every time to their components in order, or a "
+          "NetworkCtc on the whole tubes (CtcIncrement, CtcSecondDeriv, ...). Before the first advance().")
+      .def(
+          "advance",
+          [](OnlineEstimator& est, double t, const py::object& inputs) {
+            const auto given = inputs_arg(inputs);
+            py::gil_scoped_release unlocked;
+            est.advance(t, given);
+          },
+          py::arg("t"), py::arg("inputs") = py::none(), DOC(OnlineEstimator, advance))
+      .def(
+          "observe",
+          [](OnlineEstimator& est, const Interval& t, const std::string& state, const py::object& ctc,
+             const py::iterable& extras) {
+            std::vector<DomainRef> refs;
+            for (const auto& h : extras) refs.push_back(to_domain_ref(h, refs.size() + 1));
+            const auto held = hold_ctc(ctc);
+            py::gil_scoped_release unlocked;
+            return est.observe(t, state, held, refs);
+          },
+          py::arg("t"), py::arg("state"), py::arg("ctc"), py::arg("extras") = py::list(),
+          DOC(OnlineEstimator, observe))
+      .def("now", py::overload_cast<>(&OnlineEstimator::now, py::const_), DOC(OnlineEstimator, now, void))
+      .def("now", py::overload_cast<const std::string&>(&OnlineEstimator::now, py::const_), py::arg("name"),
+           DOC(OnlineEstimator, now, string))
+      .def("window_start", &OnlineEstimator::window_start, DOC(OnlineEstimator, window_start))
+      .def("tube", &OnlineEstimator::tube, py::arg("name"), DOC(OnlineEstimator, tube))
+      .def("stats", &OnlineEstimator::stats, DOC(OnlineEstimator, stats))
+      .def("last_update", &OnlineEstimator::last_update, py::return_value_policy::copy,
+           DOC(OnlineEstimator, last_update))
+      .def("network", &OnlineEstimator::network, py::return_value_policy::reference_internal,
+           DOC(OnlineEstimator, network))
+      .def("options", &OnlineEstimator::options, py::return_value_policy::copy, DOC(OnlineEstimator, options))
+      .def("__repr__", [](const OnlineEstimator& est) {
+        const OnlineStats s = est.stats();
+        return "OnlineEstimator(now=" + std::to_string(est.now()) + ", " + std::to_string(s.slices) + " slices, " +
+               std::to_string(s.observations) + " observations)";
+      });
+}
+
+}  // namespace sillage::python

@@ -1,0 +1,151 @@
+// The network between contractions (online estimation, docs/online.md):
+// atoms narrowed from outside, tubes whose TDomain grew or forgot its past,
+// contractors retired. Each rebuild costs one pass over the nodes; the
+// propagation itself (update()) stays slice-granular.
+#include <algorithm>
+#include <unordered_map>
+
+#include "sillage/cn/network_impl.h"
+#include "sillage/cn/tube_domain.h"
+#include "sillage/error.h"
+
+namespace sillage::detail {
+
+void ContractorNetworkImpl::touched(const DomainRef& d, const Interval& t) {
+  check_not_contracting("touched");
+  if (t.is_empty()) throw Error("ContractorNetwork::touched: the time interval is empty");
+  for (const auto& p : d.parts()) {
+    const auto it = index_.find(p.domain->key());
+    if (it == index_.end()) {
+      throw Error("ContractorNetwork::touched: " + p.domain->noun() + " (" + p.domain->kind() +
+                  ") is not in the network (add a contractor on it first)");
+    }
+    checked_[it->second] = 0;
+  }
+  touched_.push_back({d, t});
+}
+
+void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued) {
+  for (auto& w : watchers_) w.index();
+  for (const Touch& touch : touched_) {
+    for (const auto& p : touch.ref.parts()) {
+      const std::size_t d = index_.at(p.domain->key());
+      std::size_t first = 0, end = domains_[d]->nb_atoms();
+      if (const auto* tube = dynamic_cast<const TubeDomain*>(domains_[d].get()); tube && !touch.t.is_all_reals()) {
+        const TDomain& td = *tube->tube().tdomain();
+        const Interval t = touch.t & td.t0_tf();
+        if (t.is_empty()) continue;  // forgotten since, or not yet there
+        std::size_t k0 = 0, k1 = 0;
+        slice_range(td, t, k0, k1, "ContractorNetwork::touched");
+        first = 2 * k0;      // gate k0
+        end = 2 * k1 + 3;    // up to gate k1 + 1
+      }
+      for (std::size_t a = first; a < end; ++a) {
+        watchers_[d].for_each(a, [&](std::size_t node, std::size_t, std::size_t bit) {
+          if (dirty_.mark(node, bit) && !queued[node]) {
+            queued[node] = 1;
+            round.push_back(node);
+          }
+        });
+      }
+    }
+  }
+}
+
+void ContractorNetworkImpl::relayout() {
+  check_not_contracting("relayout");
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (domains_[d]->layout_changed() && !domains_[d]->relaid()) domains_[d]->check_layout(label(d));
+  }
+  rebuild_nodes(false);
+}
+
+void ContractorNetworkImpl::retire(std::vector<std::size_t> nodes) {
+  check_not_contracting("retire");
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  if (!nodes.empty() && nodes.back() >= nodes_.size()) {
+    throw Error("ContractorNetwork::retire: no contractor " + std::to_string(nodes.back()) + " (" +
+                std::to_string(nodes_.size()) + " added)");
+  }
+  std::vector<char> gone(nodes_.size(), 0);
+  for (const std::size_t i : nodes) gone[i] = 1;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (!gone[i] && !records_[i].make) {
+      throw Error("ContractorNetwork::retire: contractor " + std::to_string(i) + " (" + describe_node(i) +
+                  ") was given by add_node and cannot be laid out anew");
+    }
+  }
+  std::size_t kept = 0;
+  ctc_names_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (gone[i]) continue;
+    if (kept == i) {  // no self-move (it would empty the record)
+      ++kept;
+      continue;
+    }
+    nodes_[kept] = std::move(nodes_[i]);
+    records_[kept] = std::move(records_[i]);
+    fresh_[kept] = fresh_[i];
+    ctc_names_[kept] = std::move(ctc_names_[i]);
+    ++kept;
+  }
+  nodes_.resize(kept);
+  records_.resize(kept);
+  fresh_.resize(kept);
+  ctc_names_.resize(kept);
+  rebuild_nodes(true);
+}
+
+void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (records_[i].make) continue;
+    for (const auto& a : nodes_[i]->ranges()) {
+      if (domains_[a.domain]->layout_changed()) {
+        throw Error("ContractorNetwork: contractor " + std::to_string(i) + " (" + describe_node(i) +
+                    ") was given by add_node and cannot be laid out anew on " + label(a.domain));
+      }
+    }
+  }
+  auto old = std::move(nodes_);
+  auto records = std::move(records_);
+  auto fresh = std::move(fresh_);
+  nodes_.clear();
+  records_.clear();
+  fresh_.clear();
+  // What a domain carries besides its object, found again by key after a rebind.
+  struct Kept {
+    std::string name;
+    char checked;
+  };
+  std::unordered_map<const void*, Kept> kept;
+  if (rebind) {  // from an empty network: the domains come back as the records bind them
+    for (std::size_t d = 0; d < domains_.size(); ++d) kept.emplace(domains_[d]->key(), Kept{names_[d], checked_[d]});
+    domains_.clear();
+    names_.clear();
+    index_.clear();
+    watchers_.clear();
+    checked_.clear();
+  } else {
+    for (auto& d : domains_) {
+      if (!d->layout_changed()) continue;
+      if (auto now = d->relaid()) d = now;
+    }
+    for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
+  }
+  dirty_.clear_nodes();
+  // Every node again, in the same order (the watchers name nodes by index).
+  for (std::size_t i = 0; i < old.size(); ++i) {
+    add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
+    records_.back() = std::move(records[i]);
+    fresh_.back() = fresh[i];
+  }
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    const auto it = kept.find(domains_[d]->key());
+    if (it == kept.end()) continue;
+    names_[d] = it->second.name;
+    checked_[d] = it->second.checked;
+  }
+}
+
+}  // namespace sillage::detail

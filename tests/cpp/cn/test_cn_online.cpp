@@ -1,0 +1,120 @@
+// The network between contractions (online use): update() contracts only
+// what changed (new contractors, atoms touched from outside), relayout()
+// follows a TDomain that grew or forgot, retire() removes contractors.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "cn/counting_ctc.h"
+#include "sillage/cn/contractor_network.h"
+#include "sillage/ctc/ctc_function.h"
+#include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/error.h"
+#include "sillage/tube/tube_vector.h"
+
+using namespace sillage;
+using sillage::test::Counting;
+
+namespace {
+
+std::shared_ptr<Counting> counting(const std::vector<std::string>& vars, const std::string& text) {
+  return std::make_shared<Counting>(std::make_shared<CtcFunction>(Function(vars, text)));
+}
+
+}  // namespace
+
+TEST(CnOnline, UpdateAtAFixedPointRunsNothing) {
+  ContractorNetwork cn;
+  auto x = cn.create_dom(Interval(0, 10), "x");
+  auto y = cn.create_dom(Interval(0, 10), "y");
+  cn.add(counting({"x", "y"}, "x - y - 1"), {x, y});
+  cn.contract();
+  const ContractStats s = cn.update();
+  EXPECT_EQ(s.contractor_calls, 0u);
+  EXPECT_EQ(s.summary.status, Status::Converged);
+}
+
+TEST(CnOnline, UpdateRunsTheNewContractorsAndWhatTheyWake) {
+  ContractorNetwork cn;
+  auto x = cn.create_dom(Interval(0, 10), "x");
+  auto y = cn.create_dom(Interval(0, 10), "y");
+  auto z = cn.create_dom(Interval(0, 10), "z");
+  auto far = counting({"z"}, "z - 5");
+  auto link = counting({"x", "y"}, "x - y - 1");
+  cn.add(far, {z});
+  cn.add(link, {x, y});
+  cn.contract();
+  far->calls = 0;
+  link->calls = 0;
+  cn.add(counting({"y"}, "y - 2"), {y});  // y = 2 pins x = 3
+  const ContractStats s = cn.update();
+  EXPECT_EQ(*x, Interval(3, 3));
+  EXPECT_EQ(far->calls, 0);  // not reached
+  EXPECT_EQ(link->calls, 1);
+  EXPECT_EQ(s.contractor_calls, 2u);
+}
+
+TEST(CnOnline, TouchedWakesTheContractorsOfTheSlicesItNames) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto y = std::make_shared<Tube>(td, Interval(0, 10));
+  ContractorNetwork cn;
+  auto link = counting({"x", "y"}, "x - y");
+  cn.add(link, {x, y});
+  cn.contract();
+  link->calls = 0;
+  x->write().slices()[7] = Interval(1, 2);  // an input written from outside
+  cn.touched(x, Interval(7.2, 7.8));
+  cn.update();
+  EXPECT_EQ(y->slice(7), Interval(1, 2));
+  EXPECT_EQ(y->slice(6), Interval(0, 10));
+  EXPECT_LE(link->calls, 3);  // slice 7 and its two gates, not 21 atoms
+  EXPECT_THROW(cn.touched(x, Interval::empty()), Error);
+  EXPECT_THROW(cn.touched(std::make_shared<Interval>(1, 2)), Error);  // not in the network
+}
+
+TEST(CnOnline, RelayoutFollowsATDomainThatGrows) {
+  auto td = TDomain::create({0.0, 1.0});
+  auto x = std::make_shared<TubeVector>(td, 1);
+  auto v = std::make_shared<TubeVector>(td, 1, Interval(1, 2));
+  x->set_gate(0, IntervalVector{Interval(0, 0)});
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.contract();
+  EXPECT_EQ((*x)[0].gate(1), Interval(1, 2));
+  td->extend(3.0);
+  EXPECT_THROW(cn.update(), DimensionError);  // the layout is stale until relayout()
+  cn.relayout();
+  (*v)[0].write().slices()[1] = Interval(1, 2);
+  cn.touched(v, Interval(1, 3));
+  const ContractStats s = cn.update();
+  EXPECT_FALSE(s.empty);
+  EXPECT_EQ((*x)[0].gate(2), Interval(3, 6));
+  td->forget_before(1.0);
+  cn.relayout();
+  EXPECT_EQ(cn.update().contractor_calls, 0u);
+  EXPECT_EQ((*x)[0].gate(0), Interval(1, 2));
+}
+
+TEST(CnOnline, RetireRemovesContractorsAndTheDomainsOnlyTheyUsed) {
+  ContractorNetwork cn;
+  auto x = cn.create_dom(Interval(0, 10), "x");
+  auto y = cn.create_dom(Interval(0, 10), "y");
+  auto z = std::make_shared<Interval>(0, 10);
+  cn.add(counting({"x", "y"}, "x - y"), {x, y});
+  cn.add(counting({"y", "z"}, "y - z"), {y, z});
+  cn.add(counting({"x"}, "x - 4"), {x});
+  cn.set_ctc_name(2, "x fix");
+  cn.contract();
+  EXPECT_EQ(cn.nb_dom(), 3u);
+  cn.retire({1});
+  EXPECT_EQ(cn.nb_ctc(), 2u);
+  EXPECT_EQ(cn.nb_dom(), 2u);  // z was used by the retired one only
+  EXPECT_EQ(cn.domain_name(0), "x");
+  EXPECT_EQ(*z, Interval(4, 4));  // the object keeps its value
+  cn.add(counting({"x"}, "x - 5"), {x});  // inconsistent: named by the right contractor
+  const ContractStats s = cn.update();
+  EXPECT_TRUE(s.empty);
+  EXPECT_EQ(s.empty_node, 2u);
+  EXPECT_THROW(cn.retire({7}), Error);
+}

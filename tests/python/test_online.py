@@ -1,0 +1,130 @@
+"""Online estimation from Python: a time domain that grows and forgets, a
+network that contracts only what changed, and OnlineEstimator on a robot
+whose truth is known (it must stay inside every estimate)."""
+import math
+import random
+
+import pytest
+
+import sillage as s
+
+
+def truth(t):
+    return [10 * math.cos(t / 10), 10 * math.sin(t / 5)]
+
+
+def velocity(t):
+    ti = s.Interval(t[0], t[1])
+    return s.IntervalVector([-s.sin(ti / 10) + s.Interval(-0.05, 0.05), 2 * s.cos(ti / 5) + s.Interval(-0.05, 0.05)])
+
+
+RANGE = s.CtcFunction(s.Function(["q0", "q1", "b0", "b1", "r"], "sqrt((q0 - b0)^2 + (q1 - b1)^2) - r"))
+BEACONS = [(0.0, 0.0), (20.0, 5.0), (-5.0, 15.0)]
+
+
+def estimator(**options):
+    est = s.OnlineEstimator(0.0, s.OnlineOptions(**options))
+    p0 = truth(0.0)
+    est.add_state("p", 2, s.IntervalVector([s.Interval(p0[0] - 0.1, p0[0] + 0.1), s.Interval(p0[1] - 0.1, p0[1] + 0.1)]))
+    est.add_input("v", 2)
+    est.add_deriv("p", "v")
+    return est
+
+
+def run(est, steps, seed=1, check=None):
+    rng = random.Random(seed)
+    pending, next_range, dt = [], 0.5, 0.2
+    for k in range(1, steps + 1):
+        t = k * dt
+        est.advance(t, {"v": velocity(((k - 1) * dt, t))})
+        if check:
+            check(est)
+        while next_range < t - 0.3:  # a range arrives 0.3 s after it was taken
+            b = BEACONS[rng.randrange(3)]
+            p = truth(next_range)
+            r = math.hypot(p[0] - b[0], p[1] - b[1]) + rng.uniform(-0.1, 0.1)
+            stamp = next_range + rng.uniform(-0.1, 0.1)
+            est.observe(s.Interval(stamp - 0.1, stamp + 0.1), "p", RANGE,
+                        [s.IntervalVector([s.Interval(b[0]), s.Interval(b[1])]), s.Interval(r - 0.1, r + 0.1)])
+            if check:
+                check(est)
+            next_range += 0.3 + rng.random()
+
+
+def test_tdomain_extends_and_forgets():
+    td = s.TDomain([0.0, 1.0])
+    x = s.Tube(td, s.Interval(1, 2))
+    assert td.extend(2.0) == 2
+    assert x.nb_slices() == 2 and x.gate(1) == s.Interval(1, 2)
+    assert td.forget_before(1.5) == 1 and td.nb_forgotten() == 1
+    assert x.gate(0) == s.Interval(1, 2) and td.t0_tf() == s.Interval(1, 2)
+    with pytest.raises(s.Error, match="not after the end"):
+        td.extend(1.5)
+
+
+def test_network_update_runs_only_what_changed():
+    cn = s.ContractorNetwork()
+    x, y = s.Interval(0, 10), s.Interval(0, 10)
+    cn.add(s.CtcFunction(s.Function(["x", "y"], "x - y - 1")), [x, y])
+    cn.contract()
+    assert cn.update().contractor_calls == 0
+    cn.add(s.CtcFunction(s.Function(["y"], "y - 2")), [y])
+    st = cn.update()
+    assert x == s.Interval(3) and st.contractor_calls == 2
+    cn.retire([1])
+    assert cn.nb_ctc() == 1
+    cn.touched(x)
+    assert cn.update().summary.status == s.Status.Converged
+
+
+def test_the_truth_stays_inside_every_estimate():
+    est = estimator()
+
+    def check(e):
+        assert e.now("p").contains(truth(e.now())), e.now()
+        assert e.last_update().summary.status == s.Status.Converged
+
+    run(est, 200, check=check)
+    p = est.tube("p")
+    for t in [0.05 * i for i in range(1, 800)]:
+        assert p(t).contains(truth(t)), t
+    st = est.stats()
+    assert st.slices == 200 and st.updates == 200 + st.observations and st.forgotten == 0
+
+
+def test_a_window_keeps_memory_flat():
+    est = estimator(window=5.0)
+    most = []
+
+    def check(e):
+        assert e.now("p").contains(truth(e.now()))
+        most.append(e.stats().slices)
+
+    run(est, 600, check=check)
+    assert max(most) <= (5.0 + 5.0 / 8) / 0.2 + 2
+    assert est.window_start() >= est.now() - 5.0 - 5.0 / 8 - 0.2
+    st = est.stats()
+    assert st.forgotten > 500 and st.retired > 0
+    assert "OnlineEstimator(now=120" in repr(est)
+
+
+def test_bad_input_is_refused():
+    est = estimator(window=5.0)
+    b, r = s.IntervalVector([s.Interval(0), s.Interval(0)]), s.Interval(9, 11)
+    with pytest.raises(s.Error, match="advance"):
+        est.observe(s.Interval(0, 0.1), "p", RANGE, [b, r])
+    for k in range(1, 51):
+        est.advance(0.2 * k, {"v": velocity((0.2 * (k - 1), 0.2 * k))})
+    with pytest.raises(s.Error, match="future"):
+        est.observe(s.Interval(10.5, 11), "p", RANGE, [b, r])
+    with pytest.raises(s.Error, match="older than the window"):
+        est.observe(s.Interval(0.1, 0.2), "p", RANGE, [b, r])
+    with pytest.raises(s.Error, match="not after now"):
+        est.advance(10.0)
+    with pytest.raises(s.Error, match="no tube 'w'"):
+        est.advance(10.2, {"w": velocity((10, 10.2))})
+    with pytest.raises(s.Error, match="before the first advance"):
+        est.add_input("u", 1)
+    with pytest.raises(s.Error, match="window must be positive"):
+        s.OnlineEstimator(0.0, s.OnlineOptions(window=0))
+    assert est.now() == 10.0
