@@ -24,11 +24,7 @@ namespace {
 const std::filesystem::path kDir = std::filesystem::path(SILLAGE_SHARED_DIR) / "data" / "plaza1";
 
 // The data, read on first use; nullopt if the folder holds none.
-const std::optional<example::Plaza1Data>& data() {
-  static const std::optional<example::Plaza1Data> d =
-      std::filesystem::exists(kDir / "odometry.csv") ? std::optional(example::load_plaza1(kDir)) : std::nullopt;
-  return d;
-}
+const std::optional<example::Plaza1Data>& data() { return example::plaza1_once(kDir); }
 
 void BM_Plaza1(benchmark::State& state) {
   if (!data()) {

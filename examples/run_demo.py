@@ -43,6 +43,8 @@ EXAMPLES = [
     ("drifting_clock", "py", "drifting_clock.py"),
     ("plaza1", "cpp", "example_plaza1"),
     ("plaza1", "py", "plaza1.py"),
+    ("plaza1_online", "cpp", "example_plaza1_online"),
+    ("plaza1_online", "py", "plaza1_online.py"),
     ("loops_survey", "cpp", "example_loops_survey"),
     ("loops_plaza1", "cpp", "example_loops_plaza1"),
     ("loops_plaza1", "py", "loops_plaza1.py"),

@@ -29,6 +29,7 @@ inline const std::vector<std::pair<std::string, std::vector<std::string>>>& prog
       {"lowcost_beacons", {"--dt=X", "--ratio=X"}},
       {"plaza1", {"--data", "--unknown-start=X", "--start-heading-pieces=X", "--q-ranges=X", "--heading-window=X", PLAZA1_BOUND_OPTIONS}},
       {"plaza1_slam", {"--data", "--eps=X", "--heading-window=X", PLAZA1_BOUND_OPTIONS}},
+      {"plaza1_online", {"--data", "--window=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_plaza1", {"--data", "--eps-div=X", "--reverse-below=X", "--glitch-above=X", PLAZA1_BOUND_OPTIONS}},
       {"loops_survey", {"--hours=X", "--eps-divisor=X", "--e=X", "--seed=X", "--lissajous=X", "--study=X"}},
       {"loops_utias", {"--data", "--robot"}},

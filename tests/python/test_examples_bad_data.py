@@ -19,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BUILD = Path(sillage.__file__).resolve().parents[2]  # <build>/python/sillage/__init__.py
 DATA = ROOT.parent / "shared" / "data"
 PLAZA1, UTIAS = DATA / "plaza1", DATA / "utias-mrclam7"
-PLAZA1_PROGRAMS = ["plaza1", "loops_plaza1", "plaza1_slam"]
+PLAZA1_PROGRAMS = ["plaza1", "loops_plaza1", "plaza1_slam", "plaza1_online"]
 
 # ranges.csv broken in four ways: (its text from the real one, the message expected).
 BROKEN_RANGES = {

@@ -128,3 +128,28 @@ def test_bad_input_is_refused():
     with pytest.raises(s.Error, match="window must be positive"):
         s.OnlineEstimator(0.0, s.OnlineOptions(window=0))
     assert est.now() == 10.0
+
+
+ROOT = __import__("pathlib").Path(__file__).resolve().parents[2]
+PLAZA1 = ROOT.parent / "shared" / "data" / "plaza1"
+
+
+@pytest.mark.skipif(not (PLAZA1 / "odometry.csv").exists(), reason="no plaza1 data")
+def test_plaza1_online_examples_keep_the_truth(tmp_path):
+    """The plaza1 log replayed online (W = 60 s), in Python and in C++: the ground truth inside the
+    box of the position now at every one of the 9657 periods, and a figure of the box sizes."""
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, str(ROOT / "examples" / "python" / "plaza1_online.py"), "--out",
+                        str(tmp_path)], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stdout[-2000:] + r.stderr[-2000:]
+    assert "ground truth inside the online box at 9657 / 9657 times" in r.stdout
+    assert (tmp_path / "plaza1_online_sizes_py.png").stat().st_size > 10000
+    exe = __import__("pathlib").Path(s.__file__).resolve().parents[2] / "examples" / "example_plaza1_online"
+    if not exe.exists():
+        pytest.skip(f"{exe} is not built")
+    r = subprocess.run([str(exe), "--out", str(tmp_path), "--window", "30"], capture_output=True, text=True,
+                       timeout=600)
+    assert r.returncode == 0, r.stdout[-2000:]
+    assert "ground truth inside the online box at 9657 / 9657 times" in r.stdout
+    assert "<svg" in (tmp_path / "plaza1_online_sizes.svg").read_text()

@@ -23,6 +23,10 @@
 
 namespace sillage {
 
+namespace detail {
+class ContractorNetworkImpl;
+}
+
 // Atoms [first, first + count) of the network's domain number `domain`.
 struct AtomRange {
   std::size_t domain;
@@ -92,6 +96,11 @@ class CnNode {
   // Appends the tube ranges (x, v) on which run() enforces x' = v over the
   // whole tube, to fixed point (CtcDeriv's node); none by default.
   virtual void derivative_pairs(std::vector<DerivativePair>& /*out*/) const {}
+  // Whether the node stays right when a tube it acts on gains slices at its
+  // end (TDomain::extend), its ranges over that whole tube growing with it:
+  // nothing in it depends on the number of slices. The network then keeps it
+  // rather than building it anew (online estimation). False by default.
+  virtual bool follows_appends() const { return false; }
 
  protected:
   // Wakes this node only for atoms [first, first + count) of range r (a node
@@ -104,6 +113,11 @@ class CnNode {
   std::vector<AtomRange> watched_;
   std::vector<std::size_t> offsets_;
   std::size_t nb_atoms_ = 0;
+
+  friend class detail::ContractorNetworkImpl;
+  // The ranges (and watched ranges) covering the `from` atoms of domain d
+  // now cover its `to` atoms (the network, for a node that follows_appends()).
+  void follow_append(std::size_t d, std::size_t from, std::size_t to);
 };
 
 // A box contractor on the concatenation of its atoms: read, contract, write

@@ -63,6 +63,9 @@ class Domain {
   // layout changed only because its TDomain gained time points; nullptr
   // otherwise (the network then reports the change as an error).
   virtual std::shared_ptr<Domain> relaid() const { return nullptr; }
+  // True when the layout changed only by atoms appended at the end (a
+  // tube's TDomain that grew): the atoms it had keep their indices.
+  virtual bool appended_only() const { return false; }
   // The word for this kind of domain in reports: "interval", "box", "tube".
   virtual std::string noun() const { return "domain"; }
   // Where atom i lies (kind "" by default).

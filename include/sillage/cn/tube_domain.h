@@ -35,6 +35,7 @@ class TubeDomain : public Domain, public TubeAtoms {
   std::string noun() const override { return "tube"; }
   AtomPlace place(std::size_t i) const override;
   std::shared_ptr<Domain> relaid() const override;
+  bool appended_only() const override;
 
   Tube& tube() const { return *x_; }
   const std::shared_ptr<Tube>& object() const { return x_; }
@@ -45,6 +46,8 @@ class TubeDomain : public Domain, public TubeAtoms {
   std::shared_ptr<Tube> x_;
   std::size_t nb_slices_;
   std::shared_ptr<TDomain> td_;  // at registration (kept alive: never a reused address)
+  std::size_t forgotten_;        // td_->nb_forgotten() at registration
+  double tf_;                    // td_->tf() at registration
 };
 
 }  // namespace sillage

@@ -41,6 +41,19 @@ std::size_t CnNode::range_of(std::size_t pos) const {
   return g;
 }
 
+void CnNode::follow_append(std::size_t d, std::size_t from, std::size_t to) {
+  for (std::size_t g = 0; g < ranges_.size(); ++g) {
+    if (ranges_[g].domain != d || ranges_[g].first != 0 || ranges_[g].count != from) continue;
+    ranges_[g].count = to;
+    if (watched_[g].first == 0 && watched_[g].count == from) watched_[g].count = to;
+  }
+  nb_atoms_ = 0;
+  for (std::size_t g = 0; g < ranges_.size(); ++g) {
+    offsets_[g] = nb_atoms_;
+    nb_atoms_ += ranges_[g].count;
+  }
+}
+
 void CnNode::watch_only(std::size_t r, std::size_t first, std::size_t count) {
   const AtomRange& a = ranges_.at(r);
   if (first < a.first || count > a.count || first - a.first > a.count - count) {

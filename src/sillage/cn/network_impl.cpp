@@ -54,7 +54,12 @@ std::vector<BoundDomain> ContractorNetworkImpl::bind(const std::vector<DomainRef
       // whole tube as it is now.
       std::shared_ptr<Domain> dom = p.domain;
       std::size_t count = p.count;
-      if (dom->layout_changed() && p.first == 0 && p.count == dom->nb_atoms()) {
+      // Registered and laid out as it is now: that domain object (no new one per reference).
+      if (const auto it = index_.find(dom->key()); it != index_.end() && dom->layout_changed() &&
+                                                  !domains_[it->second]->layout_changed()) {
+        if (p.first == 0 && p.count == dom->nb_atoms()) count = domains_[it->second]->nb_atoms();
+        dom = domains_[it->second];
+      } else if (dom->layout_changed() && p.first == 0 && p.count == dom->nb_atoms()) {
         if (auto now = dom->relaid()) {
           dom = now;
           count = dom->nb_atoms();

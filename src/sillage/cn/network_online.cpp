@@ -126,17 +126,42 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     index_.clear();
     watchers_.clear();
     checked_.clear();
-  } else {
-    for (auto& d : domains_) {
-      if (!d->layout_changed()) continue;
-      if (auto now = d->relaid()) d = now;
+  }
+  // relayout: which domains changed, and the atoms of those that only grew at the end.
+  std::vector<char> changed(domains_.size(), 0);
+  std::vector<std::size_t> grown_from(domains_.size(), kNoAtom);
+  if (!rebind) {
+    for (std::size_t d = 0; d < domains_.size(); ++d) {
+      if (!domains_[d]->layout_changed()) continue;
+      changed[d] = 1;
+      if (domains_[d]->appended_only()) grown_from[d] = domains_[d]->nb_atoms();
+      if (auto now = domains_[d]->relaid()) domains_[d] = std::move(now);
     }
     for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
   }
   dirty_.clear_nodes();
-  // Every node again, in the same order (the watchers name nodes by index).
+  // Every node again, in the same order (the watchers name nodes by index): as
+  // it was if its domains did not change, grown in place if they only grew
+  // and it follows appends (the observations, many), else built anew.
   for (std::size_t i = 0; i < old.size(); ++i) {
-    add_node(records[i].make ? records[i].make(bind(records[i].refs)) : old[i]);
+    bool touches = false, grows = true;
+    for (const auto& a : old[i]->ranges()) {
+      if (rebind || !changed[a.domain]) continue;
+      touches = true;
+      grows = grows && grown_from[a.domain] != kNoAtom;
+    }
+    std::shared_ptr<const CnNode> node = old[i];
+    if (rebind || (touches && records[i].make && !(grows && old[i]->follows_appends()))) {
+      node = records[i].make(bind(records[i].refs));
+    } else if (touches) {  // made by this network for itself: no one else holds it
+      auto& grown = const_cast<CnNode&>(*old[i]);
+      std::vector<std::size_t> ds;
+      for (const auto& a : grown.ranges()) {
+        if (changed[a.domain] && std::find(ds.begin(), ds.end(), a.domain) == ds.end()) ds.push_back(a.domain);
+      }
+      for (const std::size_t d : ds) grown.follow_append(d, grown_from[d], domains_[d]->nb_atoms());
+    }
+    add_node(std::move(node));
     records_.back() = std::move(records[i]);
     fresh_.back() = fresh[i];
   }

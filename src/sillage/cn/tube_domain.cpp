@@ -11,6 +11,15 @@ TubeDomain::TubeDomain(std::shared_ptr<Tube> x) : x_(std::move(x)) {
   if (!x_) throw Error("ContractorNetwork: null Tube domain");
   nb_slices_ = x_->nb_slices();
   td_ = x_->tdomain();
+  forgotten_ = td_->nb_forgotten();
+  tf_ = td_->tf();
+}
+
+// Slices only appended: nothing forgotten, and the time point that ended the
+// domain is still number N (a sample() before it would have moved it).
+bool TubeDomain::appended_only() const {
+  return same_tdomain() && td_->nb_forgotten() == forgotten_ && x_->nb_slices() > nb_slices_ &&
+         td_->t(nb_slices_) == tf_;
 }
 
 Interval TubeDomain::atom(std::size_t i) const {

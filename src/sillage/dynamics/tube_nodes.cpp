@@ -46,6 +46,11 @@ class EvalNode : public TubeNode {
     }
   }
 
+  // Its slices around [t] keep their indices when the tubes grow at the end,
+  // and it reads the tubes themselves, whatever their length: an online
+  // estimator keeps its observations through every advance().
+  bool follows_appends() const override { return true; }
+
   bool run(NodeRun& r) const override {
     Domain& td = *r.domains[ranges()[0].domain];
     const Interval t0 = td.atom(ranges()[0].first);
