@@ -38,6 +38,12 @@ void def_copy(Class& cls) {
 // def_readwrite / def_readonly fields), for option and result structs.
 std::string fields_repr(const py::object& self);
 
+// The GIL released during the call, for a C++ function that touches no Python
+// object: pybind11 converts the arguments before and the result after, with
+// the GIL held. Not for a computation Ctrl-C must stop (interruptible.h).
+//   .def("contract", &CtcSecondDeriv::contract, py::arg("x"), py::arg("a"), nogil, DOC(...))
+inline constexpr py::call_guard<py::gil_scoped_release> nogil{};
+
 // Each binding file registers itself, declaratively (module.cpp calls them all):
 //
 //   SILLAGE_BINDING(tube, "expr", "interval", "tdomain", "trajectory") {

@@ -138,8 +138,7 @@ CtcQEval(q, obs) holds the fixes and cn.add(ctc, [x, v]) contracts x.)doc")
                     (c.observations().empty() ? "" : ", " + std::to_string(c.observations().size()) + " observations") +
                     ")";
            })
-      .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
-           py::call_guard<py::gil_scoped_release>(), DOC(CtcQEval, contract));
+      .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"), nogil, DOC(CtcQEval, contract));
 
   py::class_<TubeGomneResult>(m, "TubeGomneResult", DOC(TubeGomneResult))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")

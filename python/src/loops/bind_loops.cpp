@@ -132,7 +132,6 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       .def_readwrite("split_max_boxes", &ProofOptions::split_max_boxes, DOC(ProofOptions, split_max_boxes))
       .def_readwrite("budget", &ProofOptions::budget, DOC(ProofOptions, budget));
 
-  const py::call_guard<py::gil_scoped_release> nogil;
   py::class_<TPlane>(m, "TPlane",
                      DOC(TPlane))
       .def("__repr__",

@@ -113,14 +113,8 @@ void init_bathymetry_data(py::module_& m) {
       .def_readonly("dem", &Seabed::dem, DOC(Seabed, dem))
       .def_readonly("bounds", &Seabed::bounds, DOC(Seabed, bounds))
       .def_readonly("smooth_region", &Seabed::smooth_region, DOC(Seabed, smooth_region));
-  m.def(
-      "generate_seabed",
-      [](std::uint64_t seed, const SeabedOptions& o) {
-        py::gil_scoped_release unlocked;
-        return generate_seabed(seed, o);
-      },
-      py::arg("seed"), py::arg("options") = SeabedOptions{},
-      DOC(generate_seabed));
+  m.def("generate_seabed", &generate_seabed, py::arg("seed"), py::arg("options") = SeabedOptions{}, nogil,
+        DOC(generate_seabed));
 
   py::class_<TideModel>(m, "TideModel", DOC(TideModel))
       .def(py::init([](double range, double duration, double t_low, const Interval& error) {
@@ -237,16 +231,15 @@ void init_bathymetry_mission(py::module_& m) {
            DOC(BathymetryMission, tdomain))
       .def("sample_index", &Mission::sample_index, py::arg("t"), DOC(BathymetryMission, sample_index));
 
-  auto released = py::call_guard<py::gil_scoped_release>();
-  m.def("bathymetry_sensor_tubes", &bathymetry_sensor_tubes, py::arg("mission"), py::arg("tdomain"), released,
+  m.def("bathymetry_sensor_tubes", &bathymetry_sensor_tubes, py::arg("mission"), py::arg("tdomain"), nogil,
         DOC(bathymetry_sensor_tubes));
-  m.def("bathymetry_velocity_tube", &bathymetry_velocity_tube, py::arg("mission"), py::arg("tdomain"), released,
+  m.def("bathymetry_velocity_tube", &bathymetry_velocity_tube, py::arg("mission"), py::arg("tdomain"), nogil,
         DOC(bathymetry_velocity_tube));
-  m.def("bathymetry_dead_reckoning", &bathymetry_dead_reckoning, py::arg("mission"), py::arg("tdomain"),
-        py::arg("x0"), released, DOC(bathymetry_dead_reckoning));
+  m.def("bathymetry_dead_reckoning", &bathymetry_dead_reckoning, py::arg("mission"), py::arg("tdomain"), py::arg("x0"),
+        nogil, DOC(bathymetry_dead_reckoning));
   m.def("bathymetry_initial_box", &bathymetry_initial_box, py::arg("mission"), py::arg("horizontal") = 1.0,
         DOC(bathymetry_initial_box));
-  m.def("bathymetry_observation_tube", &bathymetry_observation_tube, py::arg("mission"), py::arg("tdomain"), released,
+  m.def("bathymetry_observation_tube", &bathymetry_observation_tube, py::arg("mission"), py::arg("tdomain"), nogil,
         DOC(bathymetry_observation_tube));
   m.def("bathymetry_observation_rate_bound", &bathymetry_observation_rate_bound, py::arg("mission"),
         DOC(bathymetry_observation_rate_bound));
@@ -278,9 +271,8 @@ void init_range_observation(py::module_& m) {
       .def_readwrite("long_err", &RangeBounds::long_err, DOC(RangeBounds, long_err))
       .def_readwrite("time_err", &RangeBounds::time_err, DOC(RangeBounds, time_err))
       .def_readwrite("speed", &RangeBounds::speed, DOC(RangeBounds, speed));
-  m.def("range_observation_tubes", &range_observation_tubes, py::arg("tdomain"), py::arg("times"),
-        py::arg("beacon"), py::arg("range"), py::arg("beacon_ids"), py::arg("bounds") = RangeBounds{},
-        py::call_guard<py::gil_scoped_release>(),
+  m.def("range_observation_tubes", &range_observation_tubes, py::arg("tdomain"), py::arg("times"), py::arg("beacon"),
+        py::arg("range"), py::arg("beacon_ids"), py::arg("bounds") = RangeBounds{}, nogil,
         DOC(range_observation_tubes));
 }
 

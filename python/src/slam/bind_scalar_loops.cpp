@@ -15,12 +15,11 @@ SILLAGE_BINDING(scalar_loops, "tube") {
       .def_readwrite("hull", &ScalarLoop::hull, DOC(ScalarLoop, hull))
       .def_readwrite("proven", &ScalarLoop::proven, DOC(ScalarLoop, proven))
       .def("__repr__", [](const ScalarLoop& l) { return repr(l); }, "ScalarLoop(boxes=..., hull=..., proven=...).");
-  m.def("scalar_loop_exists", &scalar_loop_exists, py::arg("boxes"), py::arg("p"), py::arg("w"),
-        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loop_exists));
+  m.def("scalar_loop_exists", &scalar_loop_exists, py::arg("boxes"), py::arg("p"), py::arg("w"), nogil,
+        DOC(scalar_loop_exists));
   m.def(
       "scalar_loops", [](double eps, const TubeVector& p, const TubeVector& w) { return scalar_loops(eps, p, w); },
-      py::arg("eps"), py::arg("p"), py::arg("w"),
-        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loops));
+      py::arg("eps"), py::arg("p"), py::arg("w"), nogil, DOC(scalar_loops));
 }
 
 }  // namespace sillage::python

@@ -19,28 +19,17 @@
 namespace sillage::python {
 
 SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
-  py::class_<CtcT1T2>(m, "CtcT1T2",
-                      DOC(CtcT1T2))
-      .def(py::init<double, std::size_t>(), py::arg("ratio") = 1e-3, py::arg("max_passes") = 100,
-           DOC(CtcT1T2, CtcT1T2))
+  py::class_<CtcT1T2>(m, "CtcT1T2", DOC(CtcT1T2))
+      .def(py::init<double, std::size_t>(), py::arg("ratio") = 1e-3, py::arg("max_passes") = 100, DOC(CtcT1T2, CtcT1T2))
       .def_property_readonly("ratio", &CtcT1T2::ratio, DOC(CtcT1T2, ratio))
       .def_property_readonly("max_passes", &CtcT1T2::max_passes, DOC(CtcT1T2, max_passes))
-      .def(
-          "contract",
-          [](const CtcT1T2& c, Interval& t1, Interval& t2, TubeVector& p, const TubeVector& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(t1, t2, p, w);
-          },
-          py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"),
-          DOC(CtcT1T2, contract, Interval_Interval_TubeVector_TubeVector))
-      .def(
-          "contract",
-          [](const CtcT1T2& c, Interval& t1, Interval& t2, Tube& p, const Tube& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(t1, t2, p, w);
-          },
-          py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"),
-          DOC(CtcT1T2, contract, Interval_Interval_Tube_Tube))
+      .def("contract",
+           py::overload_cast<Interval&, Interval&, TubeVector&, const TubeVector&>(&CtcT1T2::contract, py::const_),
+           py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"), nogil,
+           DOC(CtcT1T2, contract, Interval_Interval_TubeVector_TubeVector))
+      .def("contract", py::overload_cast<Interval&, Interval&, Tube&, const Tube&>(&CtcT1T2::contract, py::const_),
+           py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"), nogil,
+           DOC(CtcT1T2, contract, Interval_Interval_Tube_Tube))
       .def("__repr__", [](const CtcT1T2& c) {
         return "CtcT1T2(ratio=" + py::repr(py::float_(c.ratio())).cast<std::string>() + ", max_passes=" + std::to_string(c.max_passes()) + ")";
       });
@@ -68,18 +57,10 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
                " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
       });
 
-  py::class_<CtcOmega>(m, "CtcOmega",
-                       DOC(CtcOmega))
-      .def(py::init([](const CtcT1T2& c) { return CtcOmega(c); }), py::arg("t1t2") = CtcT1T2(),
-           DOC(CtcOmega, CtcOmega))
-      .def(
-          "contract",
-          [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, TubeVector& p, const TubeVector& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(boxes, p, w);
-          },
-          py::arg("boxes"), py::arg("p"), py::arg("w"),
-          DOC(CtcOmega, contract))
+  py::class_<CtcOmega>(m, "CtcOmega", DOC(CtcOmega))
+      .def(py::init([](const CtcT1T2& c) { return CtcOmega(c); }), py::arg("t1t2") = CtcT1T2(), DOC(CtcOmega, CtcOmega))
+      .def("contract", &CtcOmega::contract, py::arg("boxes"), py::arg("p"), py::arg("w"), nogil,
+           DOC(CtcOmega, contract))
       .def(
           "hull",
           [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w) {
@@ -87,8 +68,7 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
             TubeVector work = p;
             return c.hull(boxes, p, w, work);
           },
-          py::arg("boxes"), py::arg("p"), py::arg("w"),
-          DOC(CtcOmega, hull))
+          py::arg("boxes"), py::arg("p"), py::arg("w"), DOC(CtcOmega, hull))
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
 
   py::class_<SlamRow>(m, "SlamRow", DOC(SlamRow))
