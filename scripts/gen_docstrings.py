@@ -427,9 +427,17 @@ def macro_names(ents):
 
 
 def used_names(text):
-    """The macro names of the DOC(...) uses in a source text."""
-    return {macro_name(tuple(a.strip() for a in m.group(1).split(",")))
-            for m in re.finditer(r"\bDOC\(([\w\s,]+)\)", text)}
+    """The macro names of the DOC(...) uses in a source text, those of the name-once macros of
+    python/src/bindings.h included: SILLAGE_DEF(T, name, ...) uses DOC(T, name), SILLAGE_FIELDS(T, a, b)
+    DOC(T, a) and DOC(T, b), SILLAGE_FN(name, ...) DOC(name)."""
+    names = {macro_name(tuple(a.strip() for a in m.group(1).split(",")))
+             for m in re.finditer(r"\bDOC\(([\w\s,]+)\)", text)}
+    for m in re.finditer(r"\bSILLAGE_(DEF|DEF_STATIC|DEFS|FIELDS|READONLY_FIELDS|PROPERTIES)\(([\w\s,]+)", text):
+        cls, *members = [a.strip() for a in m.group(2).split(",") if a.strip()]
+        if m.group(1) in ("DEF", "DEF_STATIC"):
+            members = members[:1]
+        names |= {macro_name((cls, x)) for x in members}
+    return names | {macro_name((m.group(1),)) for m in re.finditer(r"\bSILLAGE_FN\(\s*(\w+)", text)}
 
 
 def main(argv):

@@ -23,7 +23,7 @@ heading psi, and the heading (slices and gates) from the positions, when the
 displacement box excludes 0 and the heading spans less than a half turn over
 the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d, w]).)doc")
       .def(py::init<double>(), py::arg("track") = 0.0, DOC(CtcHeading, CtcHeading))
-      .def("track", &CtcHeading::track, DOC(CtcHeading, track))
+      .SILLAGE_DEF(CtcHeading, track)
       .def("__repr__",
            [](const CtcHeading& c) { return "CtcHeading(track=" + std::string(py::repr(py::float_(c.track()))) + ")"; })
       .def("contract",
@@ -44,10 +44,7 @@ rounded. ContractorNetwork.add(CtcHeadingWindow(window, track, turn_accel, strid
 [p, psi, d, dpsi, w]).)doc")
       .def(py::init<double, double, double, std::size_t>(), py::arg("window"), py::arg("track") = 0.0,
            py::arg("turn_accel") = INFINITY, py::arg("stride") = 1, DOC(CtcHeadingWindow, CtcHeadingWindow))
-      .def("window", &CtcHeadingWindow::window, DOC(CtcHeadingWindow, window))
-      .def("track", &CtcHeadingWindow::track, DOC(CtcHeadingWindow, track))
-      .def("turn_accel", &CtcHeadingWindow::turn_accel, DOC(CtcHeadingWindow, turn_accel))
-      .def("stride", &CtcHeadingWindow::stride, DOC(CtcHeadingWindow, stride))
+      .SILLAGE_DEFS(CtcHeadingWindow, window, track, turn_accel, stride)
       .def("__repr__",
            [](const CtcHeadingWindow& c) {
              const auto num = [](double x) { return std::string(py::repr(py::float_(x))); };

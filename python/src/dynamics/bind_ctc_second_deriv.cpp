@@ -18,7 +18,7 @@ acceleration for a heading, is much tighter inside short slices than a rate boun
 ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
       .def(py::init<>(), DOC(CtcSecondDeriv, CtcSecondDeriv))
       .def("__repr__", [](const CtcSecondDeriv&) { return std::string("CtcSecondDeriv()"); })
-      .def("contract", &CtcSecondDeriv::contract, py::arg("x"), py::arg("a"), nogil, DOC(CtcSecondDeriv, contract));
+      .SILLAGE_DEF(CtcSecondDeriv, contract, py::arg("x"), py::arg("a"), nogil);
 }
 
 }  // namespace sillage::python

@@ -25,8 +25,7 @@ SILLAGE_BINDING(dynamics, "cn", "interval", "tube") {
   using C = CtcDeriv;
   py::class_<C, NetworkCtc, std::shared_ptr<C>>(m, "CtcDeriv", DOC(CtcDeriv))
       .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD, DOC(CtcDeriv, CtcDeriv))
-      .def("time_propag", &C::time_propag, DOC(CtcDeriv, time_propag))
-      .def("enforces_derivative", &C::enforces_derivative, DOC(CtcDeriv, enforces_derivative))
+      .SILLAGE_DEFS(CtcDeriv, time_propag, enforces_derivative)
       .def("contract", py::overload_cast<Tube&, const Tube&>(&C::contract, py::const_), py::arg("x"), py::arg("v"),
            nogil, DOC(CtcDeriv, contract, Tube_Tube))
       .def("contract", py::overload_cast<Tube&, const Tube&, std::size_t, std::size_t>(&C::contract, py::const_),
