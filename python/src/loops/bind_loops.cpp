@@ -46,6 +46,56 @@ PlaneJacobian plane_jacobian(const py::function& j) {
   };
 }
 
+// The jacobian of split_region: none, unless options.count needs one (Error naming `where`).
+PlaneJacobian python_jacobian(const py::object& j, const SplitOptions& o, const std::string& where) {
+  if (!j.is_none()) return plane_jacobian(j.cast<py::function>());
+  if (o.count) throw Error(where + ": a jacobian is needed to count (or set options.count = False)");
+  return {};
+}
+
+// `count` (count_zeros or count_zeros_run) bound as `name` twice: for a
+// LoopFunction, on a worker thread (Ctrl-C stops it), and for Python callables.
+template <class Count>
+void def_count(py::module_& m, const char* name, Count count, const char* loop_doc, const char* python_doc) {
+  m.def(
+      name,
+      [count](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return count(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
+        });
+      },
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{}, loop_doc);
+  m.def(
+      name,
+      [count](const std::vector<IntervalVector>& boxes, int degree, const py::function& f, const py::function& j,
+              const CountOptions& o) { return count(boxes, degree, plane_function(f), plane_jacobian(j), o); },
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
+      python_doc);
+}
+
+// `split` (split_region or split_region_run) bound as `name` twice: for a
+// LoopFunction, on a worker thread (Ctrl-C stops it), and for Python callables
+// (on this thread: they need the GIL).
+template <class Split>
+void def_split(py::module_& m, const char* name, Split split, const char* loop_doc, const char* python_doc) {
+  m.def(
+      name,
+      [split](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          SplitOptions with = with_token(o, t);
+          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
+          return split(boxes, f.memoized_function(), f.jacobian_function(), with);
+        });
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{}, loop_doc);
+  m.def(
+      name,
+      [split, name](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j,
+                    const SplitOptions& o) { return split(boxes, plane_function(f), python_jacobian(j, o, name), o); },
+      py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
+      python_doc);
+}
+
 // Boxes as a float array (k, 2, 2) of [lb, ub] rows, as Paving.boxes_array: fast plotting.
 py::array_t<double> boxes_array(const std::vector<IntervalVector>& boxes) {
   py::array_t<double> a({boxes.size(), std::size_t{2}, std::size_t{2}});
@@ -73,10 +123,9 @@ std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? 
 
 // A RunResult<T> (run_result.h) as `name`: value (None unless finished), summary, take().
 template <class T>
-void bind_run_result(py::module_& m, const char* name, const char* what) {
+void bind_run_result(py::module_& m, const char* name, const char* doc) {
   using Run = RunResult<T>;
-  py::class_<Run>(m, name, (std::string("A ") + what + " with how its computation ended (Summary): the value of a "
-                            "finished run, None once stopped or cancelled (a partial one is no answer).").c_str())
+  py::class_<Run>(m, name, doc)
       .def_readonly("value", &Run::value, "The result of a finished run; None for Stopped and Cancelled.")
       .def_readonly("summary", &Run::summary, "Converged, Stopped (the budget in reason) or Cancelled.")
       .def("take", [](const Run& r) { return Run(r).take(); },
@@ -239,7 +288,7 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
       "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
-  bind_run_result<DegreeResult>(m, "DegreeRun", "DegreeResult");
+  bind_run_result<DegreeResult>(m, "DegreeRun", DOC(DegreeRun));
   m.def(
       "topological_degree_run",
       [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const DegreeOptions& o) {
@@ -248,7 +297,7 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
         });
       },
       py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
-      "topological_degree of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (DegreeRun).");
+      DOC(topological_degree_run));
   m.def(
       "topological_degree_run",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
@@ -291,32 +340,11 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
         return "<CountResult count " + (r.count ? std::to_string(*r.count) : std::string("None")) + ", " +
                std::to_string(r.nb_boxes) + " boxes>";
       });
-  m.def(
-      "count_zeros",
-      [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return count_zeros(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
-        });
-      },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
-      DOC(count_zeros));
-  m.def(
-      "count_zeros",
-      [](const std::vector<IntervalVector>& boxes, int degree, const py::function& f, const py::function& j,
-         const CountOptions& o) { return count_zeros(boxes, degree, plane_function(f), plane_jacobian(j), o); },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
-      "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
-
-  bind_run_result<CountResult>(m, "CountRun", "CountResult");
-  m.def(
-      "count_zeros_run",
-      [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return count_zeros_run(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
-        });
-      },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
-      "count_zeros of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (CountRun).");
+  def_count(m, "count_zeros", &count_zeros, DOC(count_zeros),
+            "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
+  bind_run_result<CountResult>(m, "CountRun", DOC(CountRun));
+  def_count(m, "count_zeros_run", &count_zeros_run, DOC(count_zeros_run),
+            "count_zeros of Python f(box) -> box and jacobian(box) -> matrix with a Summary (CountRun).");
 
   py::class_<SplitOptions>(m, "SplitOptions", DOC(SplitOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
@@ -336,39 +364,11 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
         return "<SplitResult " + std::to_string(r.pieces.size()) + " pieces, degree " + optional_str(r.degree()) +
                ", count " + optional_size_str(r.count()) + ">";
       });
-  m.def(
-      "split_region",
-      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          SplitOptions with = with_token(o, t);
-          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
-          return split_region(boxes, f.memoized_function(), f.jacobian_function(), with);
-        });
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
-      DOC(split_region));
-  m.def(
-      "split_region",
-      [](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j, const SplitOptions& o) {
-        const PlaneJacobian jac = j.is_none() ? PlaneJacobian{} : plane_jacobian(j.cast<py::function>());
-        if (!jac && o.count) throw Error("split_region: a jacobian is needed to count (or set options.count = False)");
-        return split_region(boxes, plane_function(f), jac, o);
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
-      "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
-
-  bind_run_result<SplitResult>(m, "SplitRun", "SplitResult");
-  m.def(
-      "split_region_run",
-      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          SplitOptions with = with_token(o, t);
-          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
-          return split_region_run(boxes, f.memoized_function(), f.jacobian_function(), with);
-        });
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
-      "split_region of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (SplitRun).");
+  def_split(m, "split_region", &split_region, DOC(split_region),
+            "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
+  bind_run_result<SplitResult>(m, "SplitRun", DOC(SplitRun));
+  def_split(m, "split_region_run", &split_region_run, DOC(split_region_run),
+            "split_region of Python f(box) -> box (and jacobian, needed to count) with a Summary (SplitRun).");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
       .SILLAGE_READONLY_FIELDS(PathCrossing, t1)

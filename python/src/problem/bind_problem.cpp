@@ -113,7 +113,7 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
 
   py::class_<SolveResult, std::shared_ptr<SolveResult>>(
       m, "SolveResult", DOC(SolveResult))
-      .SILLAGE_READONLY_FIELDS(SolveResult, empty, why_empty, scheduling, stopped, warnings)
+      .SILLAGE_READONLY_FIELDS(SolveResult, empty, why_empty, scheduling, stopped, warnings, summary)
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
