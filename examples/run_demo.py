@@ -27,6 +27,8 @@ EXAMPLES = [
     ("beacons_static", "py", "beacons_static.py"),
     ("sivia_two_beacons", "cpp", "example_sivia_two_beacons"),
     ("sivia_two_beacons", "py", "sivia_two_beacons.py"),
+    ("outcome_budget", "cpp", "example_outcome_budget"),
+    ("outcome_budget", "py", "outcome_budget.py"),
     ("dead_reckoning", "cpp", "example_dead_reckoning"),
     ("dead_reckoning", "py", "dead_reckoning.py"),
     ("causal_chain", "cpp", "example_causal_chain"),

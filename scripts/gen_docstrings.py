@@ -4,7 +4,7 @@
     gen_docstrings.py OUTPUT.h HEADER.h...      writes the docstring header
     gen_docstrings.py --list [HEADER.h...]      prints the documented entities (default: include/sillage)
 
-A documented entity is a class / struct / enum, a method, constructor, data member or
+A documented entity is a class / struct / enum, a type alias (using X = ...), a method, constructor, data member or
 enumerator of one, or a free function of namespace sillage (not detail, not private), with a
 comment: the block of `//` lines right above its declaration (no blank line between), or the
 `//` comment at the end of its declaration's last line (continued on the aligned `//` lines
@@ -291,6 +291,10 @@ class Scanner:
         """Registers one declaration ended by ';' (or a function definition)."""
         kind, owner = scopes[-1][0], scopes[-1][1]
         decl = re.sub(r"^template\s*<.*?>\s*(?=[A-Za-z])", "", decl)
+        m_alias = re.match(r"^using\s+(\w+)\s*=", decl)
+        if m_alias and kind in ("class", "ns", "file"):  # a type alias (CountRun = RunResult<CountResult>)
+            return self.emit((owner, m_alias.group(1)) if kind == "class" else (m_alias.group(1),), lead, None,
+                             line, scopes)
         if not decl or decl.startswith(("using ", "typedef ", "friend ", "static_assert", "return ")) or \
                 re.search(r"=\s*delete$", decl):
             self.trailing_for_buf = None
@@ -427,9 +431,17 @@ def macro_names(ents):
 
 
 def used_names(text):
-    """The macro names of the DOC(...) uses in a source text."""
-    return {macro_name(tuple(a.strip() for a in m.group(1).split(",")))
-            for m in re.finditer(r"\bDOC\(([\w\s,]+)\)", text)}
+    """The macro names of the DOC(...) uses in a source text, those of the name-once macros of
+    python/src/bindings.h included: SILLAGE_DEF(T, name, ...) uses DOC(T, name), SILLAGE_FIELDS(T, a, b)
+    DOC(T, a) and DOC(T, b), SILLAGE_FN(name, ...) DOC(name)."""
+    names = {macro_name(tuple(a.strip() for a in m.group(1).split(",")))
+             for m in re.finditer(r"\bDOC\(([\w\s,]+)\)", text)}
+    for m in re.finditer(r"\bSILLAGE_(DEF|DEF_STATIC|DEFS|FIELDS|READONLY_FIELDS|PROPERTIES)\(([\w\s,]+)", text):
+        cls, *members = [a.strip() for a in m.group(2).split(",") if a.strip()]
+        if m.group(1) in ("DEF", "DEF_STATIC"):
+            members = members[:1]
+        names |= {macro_name((cls, x)) for x in members}
+    return names | {macro_name((m.group(1),)) for m in re.finditer(r"\bSILLAGE_FN\(\s*(\w+)", text)}
 
 
 def main(argv):

@@ -32,7 +32,7 @@ SILLAGE_BINDING(threads) {
            }),
            py::arg("threads"),
            "A limit of `threads` threads (at least 1), in force inside a `with` block: `with sillage.ThreadLimit(1): ...`.")
-      .def_property_readonly("threads", [](const ScopedThreadLimit& s) { return s.threads; }, DOC(ThreadLimit, threads))
+      .def_readonly("threads", &ScopedThreadLimit::threads, DOC(ThreadLimit, threads))
       .def(
           "__enter__",
           [](ScopedThreadLimit& s) -> ScopedThreadLimit& {

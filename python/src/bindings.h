@@ -38,6 +38,46 @@ void def_copy(Class& cls) {
 // def_readwrite / def_readonly fields), for option and result structs.
 std::string fields_repr(const py::object& self);
 
+// The GIL released during the call, for a C++ function that touches no Python
+// object: pybind11 converts the arguments before and the result after, with
+// the GIL held. Not for a computation Ctrl-C must stop (interruptible.h).
+//   .def("contract", &CtcSecondDeriv::contract, py::arg("x"), py::arg("a"), nogil, DOC(...))
+inline constexpr py::call_guard<py::gil_scoped_release> nogil{};
+
+// Name-once bindings (as coal's DEF_CLASS_FUNC): members and functions bound
+// under their C++ names with their header comments as docstrings, each name
+// written once. T is the class's own name, not an alias: the DOC macros are
+// named after it.
+//   py::class_<Tube, ...>(m, "Tube", DOC(Tube))
+//       .SILLAGE_DEFS(Tube, volume, codomain)         // methods without arguments to name
+//       .SILLAGE_DEF(Tube, is_subset, py::arg("y"))   // one method, extras after the name
+//   py::class_<Options>(m, "Options", DOC(Options)).SILLAGE_FIELDS(Options, eps, budget);
+//   m.SILLAGE_FN(tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"));
+// SILLAGE_READONLY_FIELDS binds def_readonly, SILLAGE_PROPERTIES
+// def_property_readonly, SILLAGE_DEF_STATIC def_static. Overloads
+// (py::overload_cast, DOC(T, name, tag)), other Python names and what is
+// Python-only stay written out.
+#define SILLAGE_DEF(T, name, ...) def(#name, &T::name __VA_OPT__(, ) __VA_ARGS__, DOC(T, name))
+#define SILLAGE_DEF_STATIC(T, name, ...) def_static(#name, &T::name __VA_OPT__(, ) __VA_ARGS__, DOC(T, name))
+#define SILLAGE_FN(name, ...) def(#name, &name __VA_OPT__(, ) __VA_ARGS__, DOC(name))
+#define SILLAGE_DEFS(T, ...) SILLAGE_EACH(SILLAGE_DEF, T, __VA_ARGS__)
+#define SILLAGE_FIELDS(T, ...) SILLAGE_EACH(SILLAGE_FIELD_, T, __VA_ARGS__)
+#define SILLAGE_READONLY_FIELDS(T, ...) SILLAGE_EACH(SILLAGE_READONLY_, T, __VA_ARGS__)
+#define SILLAGE_PROPERTIES(T, ...) SILLAGE_EACH(SILLAGE_PROPERTY_, T, __VA_ARGS__)
+#define SILLAGE_FIELD_(T, name) def_readwrite(#name, &T::name, DOC(T, name))
+#define SILLAGE_READONLY_(T, name) def_readonly(#name, &T::name, DOC(T, name))
+#define SILLAGE_PROPERTY_(T, name) def_property_readonly(#name, &T::name, DOC(T, name))
+// SILLAGE_EACH(F, T, a, b, c) is F(T, a).F(T, b).F(T, c): the __VA_OPT__
+// recursion of C++20, rescanned up to 256 times (names a list can hold).
+#define SILLAGE_EACH(F, T, first, ...) F(T, first) __VA_OPT__(SILLAGE_EXPAND(SILLAGE_EACH_NEXT(F, T, __VA_ARGS__)))
+#define SILLAGE_EACH_NEXT(F, T, a, ...) .F(T, a) __VA_OPT__(SILLAGE_EACH_AGAIN SILLAGE_PARENS(F, T, __VA_ARGS__))
+#define SILLAGE_EACH_AGAIN() SILLAGE_EACH_NEXT
+#define SILLAGE_PARENS ()
+#define SILLAGE_EXPAND(...) SILLAGE_EXPAND3(SILLAGE_EXPAND3(SILLAGE_EXPAND3(SILLAGE_EXPAND3(__VA_ARGS__))))
+#define SILLAGE_EXPAND3(...) SILLAGE_EXPAND2(SILLAGE_EXPAND2(SILLAGE_EXPAND2(SILLAGE_EXPAND2(__VA_ARGS__))))
+#define SILLAGE_EXPAND2(...) SILLAGE_EXPAND1(SILLAGE_EXPAND1(SILLAGE_EXPAND1(SILLAGE_EXPAND1(__VA_ARGS__))))
+#define SILLAGE_EXPAND1(...) __VA_ARGS__
+
 // Each binding file registers itself, declaratively (module.cpp calls them all):
 //
 //   SILLAGE_BINDING(tube, "expr", "interval", "tdomain", "trajectory") {

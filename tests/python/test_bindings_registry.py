@@ -68,7 +68,7 @@ def test_a_binding_names_the_bindings_of_the_classes_it_uses():
         text = f.read_text()
         for cls in re.findall(r"py::(?:class_|enum_)<[^;]*?>\s*\w*\s*\(\s*\w+\s*,\s*\"(\w+)\"", text, re.S):
             owner[cls] = name
-        for fn in set(re.findall(r'\bm\.def\(\s*"(\w+)"', text)):
+        for fn in set(re.findall(r'\bm\.(?:def\(\s*"|SILLAGE_FN\(\s*)(\w+)', text)):  # SILLAGE_FN: bindings.h
             functions.setdefault(fn, []).append(name)
     assert {"Interval", "Tube", "NetworkCtc", "Ctc"} <= set(owner)
     missing = []

@@ -147,3 +147,18 @@ def test_python_docstrings_are_the_header_comments():
     assert interval_vector_volume.splitlines()[0] in sillage.IntervalVector.volume.__doc__
     network = table[("ContractorNetwork",)][0].text
     assert network.splitlines()[0] in sillage.ContractorNetwork.__doc__
+
+
+def test_generator_reads_type_aliases(tmp_path):
+    ents = parse(tmp_path, """\
+        namespace sillage {
+        // A count with how it ended.
+        using CountRun = RunResult<CountResult>;
+        // Its computation.
+        CountRun count_run(int n);
+        using Undocumented = int;
+        }  // namespace sillage
+        """)
+    assert ents[("CountRun", None)] == "A count with how it ended."
+    assert ents[("count_run", "int")] == "Its computation."
+    assert "Undocumented" not in {k for k, _ in ents}

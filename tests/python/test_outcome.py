@@ -206,3 +206,53 @@ def test_temporal_slam_run_summary_and_progress():
     with pytest.raises(sl.Cancelled):
         sl.temporal_slam(x, v, u, z, f, h, o)
 
+
+
+def test_count_and_split_runs_of_python_callables():
+    quadrants = [sl.IntervalVector([[a, a + 1], [b, b + 1]]) for a in (-1, 0) for b in (-1, 0)]
+    f = lambda b: b  # noqa: E731  (one zero, at the origin)
+    j = lambda b: sl.IntervalMatrix.identity(2)  # noqa: E731
+    c = sl.count_zeros_run(quadrants, 1, f, j)
+    assert c.summary.status == sl.Status.Converged and c.value.count == 1
+    assert c.take().count == sl.count_zeros(quadrants, 1, f, j).count
+    o = sl.CountOptions()
+    o.budget = sl.Budget(max_boxes=1)
+    c = sl.count_zeros_run(quadrants, 1, f, j, o)
+    assert c.value is None and c.summary.status == sl.Status.Stopped
+    s = sl.split_region_run(quadrants, f, j)
+    assert s.summary.status == sl.Status.Converged and s.value.count() == 1
+    o = sl.SplitOptions()
+    o.budget = sl.Budget(max_boxes=1)
+    s = sl.split_region_run(quadrants, f, j, o)
+    assert s.value is None and s.summary.status == sl.Status.Stopped
+    o = sl.SplitOptions()
+    o.budget.cancel.cancel()
+    assert sl.split_region_run(quadrants, f, j, o).summary.status == sl.Status.Cancelled
+    with pytest.raises(sl.Error, match="split_region_run: a jacobian is needed to count"):
+        sl.split_region_run(quadrants, f)
+    o = sl.SplitOptions()
+    o.count = False
+    assert sl.split_region_run(quadrants, f, options=o).value.degree() == 1
+
+
+POINT = ('[time]\ndomain = [0, 1]\ndelta = 0.5\n[var.x]\nkind = "interval"\nvalue = "[0, 10]"\n'
+         '[[constraint]]\nkind = "expr"\nexpr = "x - {}"\n')
+SLOW = ('[time]\ndomain = [0, 1]\ndelta = 0.5\n[network]\nratio = 0\n[var.x]\nkind = "interval"\n'
+        'value = "[0, 1000000]"\n[var.y]\nkind = "interval"\nvalue = "[0, 1000000]"\n[[constraint]]\n'
+        'kind = "expr"\nexpr = "x - y"\n[[constraint]]\nkind = "expr"\nexpr = "y - 0.99999*x"\n')
+
+
+def test_problem_solve_summary(tmp_path):
+    path = tmp_path / "p.toml"
+    path.write_text(POINT.format(1))
+    r = sl.solve(str(path))
+    assert (r.summary.status, r.summary.reason) == (sl.Status.Converged, "")
+    assert r.summary.work == r.schedule[-1]["stats"].contractor_calls > 0 and r.summary.finished()
+    path.write_text(POINT.format(20))
+    r = sl.solve(str(path))
+    assert r.empty and r.summary.status == sl.Status.NoSolution and r.summary.reason == r.why_empty
+    assert "p.toml" in r.summary.reason  # the constraint and its place in the file
+    path.write_text(SLOW)
+    r = sl.solve_problem(sl.load_problem(str(path)), budget=sl.Budget(max_boxes=1000))
+    assert r.summary.status == sl.Status.Stopped and r.summary.reason == r.stopped and r.summary.work == 1000
+    assert not r.summary.finished() and r.summary.seconds >= r.contract_seconds()

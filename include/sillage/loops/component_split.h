@@ -89,10 +89,12 @@ struct SplitResult {
 SplitResult split_region(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                          const PlaneJacobian& jacobian, const SplitOptions& options = {});
 
-// A split with how it ended (run_result.h), instead of BudgetExceeded or
-// Cancelled from options.budget: Converged with the SplitResult, or Stopped /
-// Cancelled with no value: the pieces assessed so far do not cover the region.
+// A split with how its computation ended (run_result.h): the SplitResult of a
+// finished run, no value once stopped or cancelled.
 using SplitRun = RunResult<SplitResult>;
+// split_region with how it ended, instead of BudgetExceeded or Cancelled from
+// options.budget: Converged with the SplitResult, or Stopped / Cancelled with
+// no value: the pieces assessed so far do not cover the region.
 SplitRun split_region_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                           const PlaneJacobian& jacobian, const SplitOptions& options = {});
 

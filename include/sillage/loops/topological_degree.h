@@ -60,13 +60,16 @@ DegreeResult topological_degree(const std::vector<ContourLoop>& loops, const Pla
 DegreeResult topological_degree(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                 const DegreeOptions& options = {});
 
-// A degree with how its computation ended (run_result.h), instead of
-// BudgetExceeded or Cancelled from options.budget: Converged with the
-// DegreeResult (which may still be inconclusive, as above), or Stopped /
-// Cancelled with no value: the degree of part of the boundary is no answer.
+// A degree with how its computation ended (run_result.h): the DegreeResult of a
+// finished run, no value once stopped or cancelled.
 using DegreeRun = RunResult<DegreeResult>;
+// topological_degree with how it ended, instead of BudgetExceeded or Cancelled
+// from options.budget: Converged with the DegreeResult (which may still be
+// inconclusive, as above), or Stopped / Cancelled with no value: the degree of
+// part of the boundary is no answer.
 DegreeRun topological_degree_run(const std::vector<ContourLoop>& loops, const PlaneFunction& f,
                                  const DegreeOptions& options = {});
+// The same over a union of 2-D boxes with disjoint interiors.
 DegreeRun topological_degree_run(const std::vector<IntervalVector>& boxes, const PlaneFunction& f,
                                  const DegreeOptions& options = {});
 

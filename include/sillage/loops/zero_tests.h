@@ -59,11 +59,13 @@ struct CountResult {
 CountResult count_zeros(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                         const PlaneJacobian& jacobian, const CountOptions& options = {});
 
-// A count with how its computation ended (run_result.h), instead of
-// BudgetExceeded or Cancelled from options.budget: Converged with the
-// CountResult (its count may still be nullopt, as above), or Stopped /
-// Cancelled with no value: the boxes examined so far count nothing.
+// A count with how its computation ended (run_result.h): the CountResult of a
+// finished run, no value once stopped or cancelled.
 using CountRun = RunResult<CountResult>;
+// count_zeros with how it ended, instead of BudgetExceeded or Cancelled from
+// options.budget: Converged with the CountResult (its count may still be
+// nullopt, as above), or Stopped / Cancelled with no value: the boxes examined
+// so far count nothing.
 CountRun count_zeros_run(const std::vector<IntervalVector>& boxes, int degree, const PlaneFunction& f,
                          const PlaneJacobian& jacobian, const CountOptions& options = {});
 

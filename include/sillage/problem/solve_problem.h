@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sillage/budget.h"
+#include "sillage/outcome.h"
 #include "sillage/problem/build_network.h"
 
 namespace sillage {
@@ -70,6 +71,10 @@ struct SolveResult {
   // in results.json and the report.
   std::vector<std::string> warnings;
   Scheduling scheduling = Scheduling::Fifo;  // the order the propagation ran
+  // How the solve ended (outcome.h), as the network reports it: Converged, NoSolution (reason:
+  // why_empty) or Stopped (reason: stopped); rounds and work are the propagation rounds and
+  // contractor calls of every step, seconds the whole solve. A cancellation raises Cancelled.
+  Summary summary;
   // Time spent building the networks (all steps).
   double build_seconds() const;
   // Time spent contracting (all steps).

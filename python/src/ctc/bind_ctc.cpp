@@ -115,14 +115,12 @@ SILLAGE_BINDING(ctc, "expr", "interval") {
             return x;
           },
           py::arg("x"), DOC(Ctc, contract))
-      .def("nb_vars", &Ctc::nb_vars, DOC(Ctc, nb_vars))
-      .def("name", &Ctc::name, DOC(Ctc, name))
-      .def("describe", &Ctc::describe, DOC(Ctc, describe))
+      .SILLAGE_DEFS(Ctc, nb_vars, name, describe)
       .def("__repr__", [](const Ctc& c) { return "<" + c.name() + " on " + std::to_string(c.nb_vars()) + " variables>"; });
 
   py::class_<CtcBox, Ctc, std::shared_ptr<CtcBox>>(m, "CtcBox", DOC(CtcBox))
       .def(py::init<const IntervalVector&>(), py::arg("box"), DOC(CtcBox, CtcBox))
-      .def("box", &CtcBox::box, DOC(CtcBox, box));
+      .SILLAGE_DEF(CtcBox, box);
   py::class_<CtcBinary, Ctc, std::shared_ptr<CtcBinary>>(m, "CtcBinary",
                                                          DOC(CtcBinary))
       .def(py::init<const std::string&>(), py::arg("op"),
@@ -150,8 +148,7 @@ SILLAGE_BINDING(ctc, "expr", "interval") {
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("y"),
            DOC(CtcFunction, CtcFunction, Function_Interval))
       .def(py::init<const Function&>(), py::arg("f"), DOC(CtcFunction, CtcFunction, Function))
-      .def("function", &CtcFunction::function, DOC(CtcFunction, function))
-      .def("image", &CtcFunction::image, DOC(CtcFunction, image));
+      .SILLAGE_DEFS(CtcFunction, function, image);
 
   py::class_<DefinitionCheck>(m, "DefinitionCheck", R"doc(
 Proves that a Function is defined at every point of a box (set-based evaluation
@@ -162,10 +159,8 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
            [](const DefinitionCheck& d) {
              return std::string("DefinitionCheck(total=") + (d.is_total() ? "True" : "False") + ")";
            })
-      .def("defined_on", &DefinitionCheck::defined_on, py::arg("x"),
-           DOC(DefinitionCheck, defined_on))
-      .def("is_total", &DefinitionCheck::is_total,
-           DOC(DefinitionCheck, is_total));
+      .SILLAGE_DEF(DefinitionCheck, defined_on, py::arg("x"))
+      .SILLAGE_DEF(DefinitionCheck, is_total);
 
   const auto list_ctor = [](auto tag) {
     using T = typename decltype(tag)::type;
@@ -196,7 +191,7 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
       .def(py::init([](const py::object& c, double ratio) { return std::make_shared<CtcFixPoint>(hold_ctc(c), ratio); }),
            py::arg("ctc"), py::arg("ratio") = 0.01,
            "Iterates ctc; 0 <= ratio < 1 (else Error), ratio = 0 iterates until nothing changes at all.")
-      .def("ratio", &CtcFixPoint::ratio, DOC(CtcFixPoint, ratio));
+      .SILLAGE_DEF(CtcFixPoint, ratio);
 
   // ---- separators ----
   py::class_<Sep, PySep, std::shared_ptr<Sep>> sep(m, "Sep", DOC(Sep));
@@ -210,8 +205,7 @@ silently ignores points where sqrt, log, /, ... are undefined).)doc")
             return py::make_tuple(x_in, x_out);
           },
           py::arg("x_in"), py::arg("x_out"), DOC(Sep, separate))
-      .def("nb_vars", &Sep::nb_vars, DOC(Sep, nb_vars))
-      .def("name", &Sep::name, DOC(Sep, name))
+      .SILLAGE_DEFS(Sep, nb_vars, name)
       .def("__repr__", [](const Sep& s) { return "<" + s.name() + " on " + std::to_string(s.nb_vars()) + " variables>"; });
 
   py::class_<SepCtcPair, Sep, std::shared_ptr<SepCtcPair>>(m, "SepCtcPair",

@@ -48,16 +48,11 @@ leaves x unchanged. Not idempotent: wrap it in CtcFixPoint to iterate.)doc")
       .def(py::init([](const py::iterable& ctcs, int q) { return std::make_shared<CtcQInter>(hold_ctcs(ctcs), q); }),
            py::arg("ctcs"), py::arg("q"),
            "The q-relaxed intersection of the contractors ctcs (all on the same variables); 0 <= q (else Error).")
-      .def("q", &CtcQInter::q, DOC(CtcQInter, q));
+      .SILLAGE_DEF(CtcQInter, q);
 
   py::class_<GomneResult>(m, "GomneResult", DOC(GomneResult))
-      .def_readonly("q", &GomneResult::q,
-                    DOC(GomneResult, q))
-      .def_readonly("box", &GomneResult::box, DOC(GomneResult, box))
-      .def_readonly("outliers", &GomneResult::outliers,
-                    DOC(GomneResult, outliers))
-      .def_readonly("leaves", &GomneResult::leaves, DOC(GomneResult, leaves))
-      .def("is_empty", &GomneResult::is_empty, DOC(GomneResult, is_empty))
+      .SILLAGE_READONLY_FIELDS(GomneResult, q, box, outliers, leaves)
+      .SILLAGE_DEF(GomneResult, is_empty)
       .def("__repr__", [](const GomneResult& r) {
         return "<GomneResult q=" + std::to_string(r.q) + " box=" + r.box.str() + " outliers=" +
                py::repr(py::cast(r.outliers)).cast<std::string>() + ">";
@@ -97,9 +92,7 @@ ctc = CtcFunction(|z - b|, r). name: what the fix is, for the reports (e.g.
            }),
            py::arg("t"), py::arg("z"), py::arg("ctc") = py::none(), py::arg("name") = "",
            "The fix x(t') in z for some t' in t, z satisfying ctc (None: no constraint), named name for the reports.")
-      .def_readwrite("t", &TubeObservation::t, DOC(TubeObservation, t))
-      .def_readwrite("z", &TubeObservation::z, DOC(TubeObservation, z))
-      .def_readwrite("name", &TubeObservation::name, DOC(TubeObservation, name))
+      .SILLAGE_FIELDS(TubeObservation, t, z, name)
       .def("__repr__", [](const TubeObservation& o) {
         return "<TubeObservation t=" + o.t.str() + " z=" + o.z.str() + (o.name.empty() ? "" : " name='" + o.name + "'") +
                ">";
@@ -114,7 +107,7 @@ The set of one CtcEval and one observation node per fix, without a node, a
 domain and a name per fix. A fix found inconsistent empties x and the network's
 emptiness names it (TubeObservation.name).)doc")
       .def(py::init<std::vector<TubeObservation>>(), py::arg("obs"), DOC(CtcEvalList, CtcEvalList))
-      .def("observations", &CtcEvalList::observations, DOC(CtcEvalList, observations))
+      .SILLAGE_DEF(CtcEvalList, observations)
       .def("__repr__", [](const CtcEvalList& c) {
         return "CtcEvalList(" + std::to_string(c.observations().size()) + " observations)";
       });
@@ -130,23 +123,18 @@ CtcQEval(q, obs) holds the fixes and cn.add(ctc, [x, v]) contracts x.)doc")
       .def(py::init<int>(), py::arg("q"), DOC(CtcQEval, CtcQEval, int))
       .def(py::init<int, std::vector<TubeObservation>>(), py::arg("q"), py::arg("obs"),
            DOC(CtcQEval, CtcQEval, int_vector_TubeObservation))
-      .def("q", &CtcQEval::q, DOC(CtcQEval, q))
-      .def("observations", &CtcQEval::observations, DOC(CtcQEval, observations))
+      .SILLAGE_DEFS(CtcQEval, q, observations)
       .def("__repr__",
            [](const CtcQEval& c) {
              return "CtcQEval(q=" + std::to_string(c.q()) +
                     (c.observations().empty() ? "" : ", " + std::to_string(c.observations().size()) + " observations") +
                     ")";
            })
-      .def("contract", &CtcQEval::contract, py::arg("x"), py::arg("v"), py::arg("obs"),
-           py::call_guard<py::gil_scoped_release>(), DOC(CtcQEval, contract));
+      .SILLAGE_DEF(CtcQEval, contract, py::arg("x"), py::arg("v"), py::arg("obs"), nogil);
 
   py::class_<TubeGomneResult>(m, "TubeGomneResult", DOC(TubeGomneResult))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
-      .def_readonly("q", &TubeGomneResult::q, DOC(TubeGomneResult, q))
-      .def_readonly("x", &TubeGomneResult::x, DOC(TubeGomneResult, x))
-      .def_readonly("outliers", &TubeGomneResult::outliers,
-                    DOC(TubeGomneResult, outliers));
+      .SILLAGE_READONLY_FIELDS(TubeGomneResult, q, x, outliers);
   m.def(
       "gomne_tube",
       [](const TubeVector& x, const TubeVector& v, const std::vector<TubeObservation>& obs, std::optional<int> q_max,

@@ -13,7 +13,7 @@ SILLAGE_BINDING(ctc_biased_increment, "cn", "interval", "tube") {
   py::class_<CtcBiasedIncrement, NetworkCtc, std::shared_ptr<CtcBiasedIncrement>>(m, "CtcBiasedIncrement",
                                                                                   DOC(CtcBiasedIncrement))
       .def(py::init<double>(), py::arg("drift") = 0.0, DOC(CtcBiasedIncrement, CtcBiasedIncrement))
-      .def("drift", &CtcBiasedIncrement::drift, DOC(CtcBiasedIncrement, drift))
+      .SILLAGE_DEF(CtcBiasedIncrement, drift)
       .def("__repr__",
            [](const CtcBiasedIncrement& c) {
              return "CtcBiasedIncrement(drift=" + std::string(py::repr(py::float_(c.drift()))) + ")";

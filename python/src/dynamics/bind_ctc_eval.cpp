@@ -13,13 +13,10 @@ SILLAGE_BINDING(ctc_eval, "cn", "interval", "tube") {
       m, "CtcEval",
       DOC(CtcEval))
       .def(py::init<>(), DOC(CtcEval, CtcEval))
-      .def("enable_time_sampling", &CtcEval::enable_time_sampling, py::arg("on"),
-           DOC(CtcEval, enable_time_sampling))
-      .def("time_sampling", &CtcEval::time_sampling, DOC(CtcEval, time_sampling))
-      .def("enable_gates_at_time_bounds", &CtcEval::enable_gates_at_time_bounds, py::arg("on"),
-           DOC(CtcEval, enable_gates_at_time_bounds))
-      .def("gates_at_time_bounds", &CtcEval::gates_at_time_bounds,
-           DOC(CtcEval, gates_at_time_bounds))
+      .SILLAGE_DEF(CtcEval, enable_time_sampling, py::arg("on"))
+      .SILLAGE_DEF(CtcEval, time_sampling)
+      .SILLAGE_DEF(CtcEval, enable_gates_at_time_bounds, py::arg("on"))
+      .SILLAGE_DEF(CtcEval, gates_at_time_bounds)
       .def(
           "contract",
           [](const CtcEval& c, Interval& t, Interval& z, Tube& y, const Tube* w) {

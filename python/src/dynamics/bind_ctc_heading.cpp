@@ -22,18 +22,14 @@ heading) and psi' in w. Both ways: the positions p (a 2-d TubeVector) from the
 heading psi, and the heading (slices and gates) from the positions, when the
 displacement box excludes 0 and the heading spans less than a half turn over
 the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d, w]).)doc")
-      .def(py::init<double>(), py::arg("track") = 0.0,
-           DOC(CtcHeading, CtcHeading))
-      .def("track", &CtcHeading::track, DOC(CtcHeading, track))
-      .def("__repr__", [](const CtcHeading& c) { return "CtcHeading(track=" + std::string(py::repr(py::float_(c.track()))) + ")"; })
-      .def(
-          "contract",
-          [](const CtcHeading& c, TubeVector& p, Tube& psi, const Tube& d, const Tube& w) {
-            py::gil_scoped_release release;
-            return c.contract(p, psi, d, w);
-          },
-          py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("w"),
-          DOC(CtcHeading, contract, TubeVector_Tube_Tube_Tube));
+      .def(py::init<double>(), py::arg("track") = 0.0, DOC(CtcHeading, CtcHeading))
+      .SILLAGE_DEF(CtcHeading, track)
+      .def("__repr__",
+           [](const CtcHeading& c) { return "CtcHeading(track=" + std::string(py::repr(py::float_(c.track()))) + ")"; })
+      .def("contract",
+           py::overload_cast<TubeVector&, Tube&, const Tube&, const Tube&>(&CtcHeading::contract, py::const_),
+           py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("w"), nogil,
+           DOC(CtcHeading, contract, TubeVector_Tube_Tube_Tube));
 
   py::class_<CtcHeadingWindow, NetworkCtc, std::shared_ptr<CtcHeadingWindow>>(m, "CtcHeadingWindow", R"doc(
 p(t_b) - p(t_a) = integral over [t_a, t_b] of s (cos, sin)(psi + e), over windows of
@@ -47,26 +43,19 @@ removed; psi is an unwrapped angle), and p(t_a), p(t_b) from the heading. Outwar
 rounded. ContractorNetwork.add(CtcHeadingWindow(window, track, turn_accel, stride),
 [p, psi, d, dpsi, w]).)doc")
       .def(py::init<double, double, double, std::size_t>(), py::arg("window"), py::arg("track") = 0.0,
-           py::arg("turn_accel") = INFINITY, py::arg("stride") = 1,
-           DOC(CtcHeadingWindow, CtcHeadingWindow))
-      .def("window", &CtcHeadingWindow::window, DOC(CtcHeadingWindow, window))
-      .def("track", &CtcHeadingWindow::track, DOC(CtcHeadingWindow, track))
-      .def("turn_accel", &CtcHeadingWindow::turn_accel, DOC(CtcHeadingWindow, turn_accel))
-      .def("stride", &CtcHeadingWindow::stride, DOC(CtcHeadingWindow, stride))
+           py::arg("turn_accel") = INFINITY, py::arg("stride") = 1, DOC(CtcHeadingWindow, CtcHeadingWindow))
+      .SILLAGE_DEFS(CtcHeadingWindow, window, track, turn_accel, stride)
       .def("__repr__",
            [](const CtcHeadingWindow& c) {
              const auto num = [](double x) { return std::string(py::repr(py::float_(x))); };
              return "CtcHeadingWindow(window=" + num(c.window()) + ", track=" + num(c.track()) +
                     ", turn_accel=" + num(c.turn_accel()) + ", stride=" + std::to_string(c.stride()) + ")";
            })
-      .def(
-          "contract",
-          [](const CtcHeadingWindow& c, TubeVector& p, Tube& psi, const Tube& d, const Tube& dpsi, const Tube& w) {
-            py::gil_scoped_release release;
-            return c.contract(p, psi, d, dpsi, w);
-          },
-          py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("dpsi"), py::arg("w"),
-          DOC(CtcHeadingWindow, contract, TubeVector_Tube_Tube_Tube_Tube));
+      .def("contract",
+           py::overload_cast<TubeVector&, Tube&, const Tube&, const Tube&, const Tube&>(&CtcHeadingWindow::contract,
+                                                                                        py::const_),
+           py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("dpsi"), py::arg("w"), nogil,
+           DOC(CtcHeadingWindow, contract, TubeVector_Tube_Tube_Tube_Tube));
 }
 
 }  // namespace sillage::python

@@ -18,14 +18,7 @@ acceleration for a heading, is much tighter inside short slices than a rate boun
 ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
       .def(py::init<>(), DOC(CtcSecondDeriv, CtcSecondDeriv))
       .def("__repr__", [](const CtcSecondDeriv&) { return std::string("CtcSecondDeriv()"); })
-      .def(
-          "contract",
-          [](const CtcSecondDeriv& c, Tube& x, const Tube& a) {
-            py::gil_scoped_release release;
-            return c.contract(x, a);
-          },
-          py::arg("x"), py::arg("a"),
-          DOC(CtcSecondDeriv, contract));
+      .SILLAGE_DEF(CtcSecondDeriv, contract, py::arg("x"), py::arg("a"), nogil);
 }
 
 }  // namespace sillage::python

@@ -23,59 +23,24 @@ SILLAGE_BINDING(dynamics, "cn", "interval", "tube") {
       .def("__or__", [](TimePropag a, TimePropag b) { return a | b; }, py::is_operator());
 
   using C = CtcDeriv;
-  py::class_<C, NetworkCtc, std::shared_ptr<C>>(
-      m, "CtcDeriv",
-      DOC(CtcDeriv))
-      .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD,
-           DOC(CtcDeriv, CtcDeriv))
-      .def("time_propag", &C::time_propag, DOC(CtcDeriv, time_propag))
-      .def("enforces_derivative", &C::enforces_derivative, DOC(CtcDeriv, enforces_derivative))
-      .def(
-          "contract",
-          [](const C& c, Tube& x, const Tube& v) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v);
-          },
-          py::arg("x"), py::arg("v"),
-          DOC(CtcDeriv, contract, Tube_Tube))
-      .def(
-          "contract",
-          [](const C& c, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v, first, last);
-          },
-          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
-          DOC(CtcDeriv, contract, Tube_Tube_size_t_size_t))
-      .def(
-          "contract",
-          [](const C& c, Tube& x, const Tube& v, const Interval& t) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v, t);
-          },
-          py::arg("x"), py::arg("v"), py::arg("t"), DOC(CtcDeriv, contract, Tube_Tube_Interval))
-      .def(
-          "contract",
-          [](const C& c, TubeVector& x, const TubeVector& v) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v);
-          },
-          py::arg("x"), py::arg("v"),
-          DOC(CtcDeriv, contract, TubeVector_TubeVector))
-      .def(
-          "contract",
-          [](const C& c, TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v, first, last);
-          },
-          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
-          DOC(CtcDeriv, contract, TubeVector_TubeVector_size_t_size_t))
-      .def(
-          "contract",
-          [](const C& c, TubeVector& x, const TubeVector& v, const Interval& t) {
-            py::gil_scoped_release unlocked;
-            return c.contract(x, v, t);
-          },
-          py::arg("x"), py::arg("v"), py::arg("t"), DOC(CtcDeriv, contract, TubeVector_TubeVector_Interval))
+  py::class_<C, NetworkCtc, std::shared_ptr<C>>(m, "CtcDeriv", DOC(CtcDeriv))
+      .def(py::init<TimePropag>(), py::arg("time_propag") = TimePropag::FWD_BWD, DOC(CtcDeriv, CtcDeriv))
+      .SILLAGE_DEFS(CtcDeriv, time_propag, enforces_derivative)
+      .def("contract", py::overload_cast<Tube&, const Tube&>(&C::contract, py::const_), py::arg("x"), py::arg("v"),
+           nogil, DOC(CtcDeriv, contract, Tube_Tube))
+      .def("contract", py::overload_cast<Tube&, const Tube&, std::size_t, std::size_t>(&C::contract, py::const_),
+           py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"), nogil,
+           DOC(CtcDeriv, contract, Tube_Tube_size_t_size_t))
+      .def("contract", py::overload_cast<Tube&, const Tube&, const Interval&>(&C::contract, py::const_), py::arg("x"),
+           py::arg("v"), py::arg("t"), nogil, DOC(CtcDeriv, contract, Tube_Tube_Interval))
+      .def("contract", py::overload_cast<TubeVector&, const TubeVector&>(&C::contract, py::const_), py::arg("x"),
+           py::arg("v"), nogil, DOC(CtcDeriv, contract, TubeVector_TubeVector))
+      .def("contract",
+           py::overload_cast<TubeVector&, const TubeVector&, std::size_t, std::size_t>(&C::contract, py::const_),
+           py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"), nogil,
+           DOC(CtcDeriv, contract, TubeVector_TubeVector_size_t_size_t))
+      .def("contract", py::overload_cast<TubeVector&, const TubeVector&, const Interval&>(&C::contract, py::const_),
+           py::arg("x"), py::arg("v"), py::arg("t"), nogil, DOC(CtcDeriv, contract, TubeVector_TubeVector_Interval))
       .def("__repr__", [](const C& c) {
         switch (c.time_propag()) {
           case TimePropag::FORWARD:

@@ -23,15 +23,10 @@ SILLAGE_BINDING(ivp, "budget", "cn", "dynamics", "expr", "tube") {
       .def(py::init<const Function&, std::size_t, int, TimePropag>(), py::arg("f"), py::arg("nb_inputs") = 0,
            py::arg("order") = 20, py::arg("time_propag") = TimePropag::FWD_BWD,
            DOC(CtcIvp, CtcIvp))
-      .def("nb_states", &C::nb_states, DOC(CtcIvp, nb_states))
-      .def("nb_inputs", &C::nb_inputs, DOC(CtcIvp, nb_inputs))
-      .def("order", &C::order, DOC(CtcIvp, order))
-      .def("time_propag", &C::time_propag, DOC(CtcIvp, time_propag))
-      .def("function", &C::function, DOC(CtcIvp, function))
-      .def("tolerance", &C::tolerance, DOC(CtcIvp, tolerance))
-      .def("set_tolerance", &C::set_tolerance, py::arg("tol"), DOC(CtcIvp, set_tolerance))
-      .def("max_pieces", &C::max_pieces, DOC(CtcIvp, max_pieces))
-      .def("set_max_pieces", &C::set_max_pieces, py::arg("m"), DOC(CtcIvp, set_max_pieces))
+      .SILLAGE_DEFS(CtcIvp, nb_states, nb_inputs, order, time_propag, function, tolerance)
+      .SILLAGE_DEF(CtcIvp, set_tolerance, py::arg("tol"))
+      .SILLAGE_DEF(CtcIvp, max_pieces)
+      .SILLAGE_DEF(CtcIvp, set_max_pieces, py::arg("m"))
       // On a worker thread: Ctrl-C (or `cancel`) stops it within an integration step.
       .def(
           "contract",

@@ -3,6 +3,7 @@
 // batch over numpy arrays), differentiate, and contract with HC4-revise (in
 // place on the given box).
 #include <pybind11/numpy.h>
+#include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -118,15 +119,14 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
         "The constant c: an int exactly, or the tightest interval around it.")  // exact or outward
       .def(py::init<double>(), py::arg("c"), DOC(Expr, Expr, double))
       .def(py::init<const Interval&>(), py::arg("c"), DOC(Expr, Expr, Interval))
-      .def("op", &Expr::op, DOC(Expr, op))
-      .def("is_const", &Expr::is_const, DOC(Expr, is_const))
+      .SILLAGE_DEFS(Expr, op, is_const)
       .def("__str__", &Expr::str)
       .def("__repr__", [](const Expr& x) { return "Expr(" + x.str() + ")"; })
       // Node identity, which hash-consing makes structural equality (C++ operator==).
-      .def("__eq__", [](const Expr& a, const Expr& b) { return a == b; }, py::is_operator())
-      .def("__ne__", [](const Expr& a, const Expr& b) { return a != b; }, py::is_operator())
+      .def(py::self == py::self)
+      .def(py::self != py::self)
       .def("__hash__", [](const Expr& x) { return std::hash<const ExprNode*>{}(x.get()); })
-      .def("__neg__", [](const Expr& x) { return -x; })
+      .def(-py::self)
       .def("__pos__", [](const Expr& x) { return x; })
       .def("__abs__", [](const Expr& x) { return abs(x); });
   // Binary operators with an Expr, a number or an Interval on either side (numbers
@@ -155,7 +155,7 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
 
   py::class_<ExprVar, Expr>(m, "ExprVar", DOC(ExprVar))
       .def(py::init<const std::string&>(), py::arg("name"), DOC(ExprVar, ExprVar))
-      .def("name", &ExprVar::name, DOC(ExprVar, name))
+      .SILLAGE_DEF(ExprVar, name)
       .def("__repr__", [](const ExprVar& v) { return "ExprVar(" + py::repr(py::str(v.name())).cast<std::string>() + ")"; });
   m.attr("Variable") = m.attr("ExprVar");  // C++: using Variable = ExprVar
 
@@ -164,7 +164,7 @@ sin, ..., atan2, abs, min, max, sign; then Function([x1, x2], expr).)doc");
   py::implicitly_convertible<py::int_, Expr>();
   py::implicitly_convertible<Interval, Expr>();
 
-  m.def("expr_pi", &expr_pi, DOC(expr_pi));
+  m.SILLAGE_FN(expr_pi);
   using E1 = Expr (*)(const Expr&);
   using E2 = Expr (*)(const Expr&, const Expr&);
   m.def("sqr", static_cast<E1>(&sqr), py::arg("x"), DOC(sqr, Expr));
@@ -211,11 +211,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
            DOC(Function, Function, vector_ExprVar_Expr))
       .def(py::init<const std::vector<ExprVar>&, const std::vector<Expr>&>(), py::arg("vars"), py::arg("exprs"),
            DOC(Function, Function, vector_ExprVar_vector_Expr))
-      .def("nb_vars", &Function::nb_vars, DOC(Function, nb_vars))
-      .def("image_dim", &Function::image_dim, DOC(Function, image_dim))
-      .def("var_names", &Function::var_names, DOC(Function, var_names))
-      .def("exprs", &Function::exprs, DOC(Function, exprs))
-      .def("tape_size", &Function::tape_size, DOC(Function, tape_size))
+      .SILLAGE_DEFS(Function, nb_vars, image_dim, var_names, exprs, tape_size)
       .def(
           "eval",
           [](const Function& f, const py::object& x) -> py::object {
@@ -250,7 +246,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           py::arg("x"), py::arg("y"),
           "Contracts the box x in place so that f(x) in y (an Interval or a number for a scalar function, an "
           "IntervalVector otherwise). Returns False (x is then empty) when proven inconsistent.")
-      .def("diff", &Function::diff, DOC(Function, diff))
+      .SILLAGE_DEF(Function, diff)
       .def(
           "eval_batch",
           [](const Function& f, const py::object& xs) {
@@ -272,7 +268,7 @@ enclosed rigorously; a float in the builder is the degenerate interval).)doc")
           "Evaluates many boxes at once: xs is a list of IntervalVector or an (N, n, 2) array of bounds; returns "
           "an (N, m, 2) array of bounds, (nan, nan) for an empty interval.")
       .def("__getitem__", &Function::operator[], py::arg("i"), DOC(Function, op_index))
-      .def("expr_str", &Function::expr_str, DOC(Function, expr_str))
+      .SILLAGE_DEF(Function, expr_str)
       .def("__str__", &Function::str)
       .def("__repr__", [](const Function& f) { return "Function(" + f.str() + ")"; });
 }

@@ -32,59 +32,45 @@ SILLAGE_BINDING(figures, "interval", "paving") {
            py::arg("opacity") = 1.0, py::arg("css_class") = "", py::arg("label") = "",
            "fill and stroke: SVG colours ('none' for nothing); stroke_width in pixels; opacity in [0, 1];\n"
            "css_class: an optional class attribute of the SVG elements; label: its legend entry (none if empty).")
-      .def_readwrite("fill", &Style::fill, DOC(Style, fill))
-      .def_readwrite("stroke", &Style::stroke, DOC(Style, stroke))
-      .def_readwrite("stroke_width", &Style::stroke_width, DOC(Style, stroke_width))
-      .def_readwrite("opacity", &Style::opacity, DOC(Style, opacity))
-      .def_readwrite("css_class", &Style::css_class, DOC(Style, css_class))
-      .def_readwrite("label", &Style::label, DOC(Style, label))
+      .SILLAGE_FIELDS(Style, fill, stroke, stroke_width, opacity, css_class, label)
       .def("__repr__", [](const Style& st) {
         return "Style(fill=" + quoted(st.fill) + ", stroke=" + quoted(st.stroke) + ", stroke_width=" +
                num(st.stroke_width) + ", opacity=" + num(st.opacity) + ")";
       });
-  m.def("paving_style", &paving_style, py::arg("tag"), DOC(paving_style));
+  m.SILLAGE_FN(paving_style, py::arg("tag"));
 
   py::class_<Figure>(m, "Figure", DOC(Figure))
       .def(py::init<const IntervalVector&, double, double>(), py::arg("view"), py::arg("width_px") = 600.0,
            py::arg("height_px") = 0.0,
            DOC(Figure, Figure))
-      .def("set_title", &Figure::set_title, py::arg("title"), DOC(Figure, set_title))
-      .def("set_note", &Figure::set_note, py::arg("note"), DOC(Figure, set_note))
-      .def("set_labels", &Figure::set_labels, py::arg("x_label"), py::arg("y_label"),
-           DOC(Figure, set_labels))
-      .def("set_projection", &Figure::set_projection, py::arg("i"), py::arg("j"),
-           DOC(Figure, set_projection))
-      .def("draw_box", &Figure::draw_box, py::arg("box"), py::arg("style") = Style{}, DOC(Figure, draw_box))
+      .SILLAGE_DEF(Figure, set_title, py::arg("title"))
+      .SILLAGE_DEF(Figure, set_note, py::arg("note"))
+      .SILLAGE_DEF(Figure, set_labels, py::arg("x_label"), py::arg("y_label"))
+      .SILLAGE_DEF(Figure, set_projection, py::arg("i"), py::arg("j"))
+      .SILLAGE_DEF(Figure, draw_box, py::arg("box"), py::arg("style") = Style{})
       .def("draw_boxes", &Figure::draw_boxes, py::arg("boxes"), py::arg("style") = Style{},
            "Draws a list of boxes with one style.")
-      .def("draw_ring", &Figure::draw_ring, py::arg("center"), py::arg("radius"), py::arg("style") = Style{},
-           DOC(Figure, draw_ring))
-      .def("draw_point", &Figure::draw_point, py::arg("p"), py::arg("radius_px") = 3.0,
-           py::arg("style") = Style{"black", "none", 0, 1, ""}, DOC(Figure, draw_point))
-      .def("draw_polyline", &Figure::draw_polyline, py::arg("points"), py::arg("style") = Style{},
-           py::arg("closed") = false, DOC(Figure, draw_polyline))
-      .def("draw_paving", &Figure::draw_paving, py::arg("paving"), py::arg("show_outside") = true,
-           DOC(Figure, draw_paving))
-      .def("draw_contour", &Figure::draw_contour, py::arg("loops"),
-           py::arg("style") = Style{"none", "black", 1.5, 1, ""}, DOC(Figure, draw_contour))
-      .def("draw_text", &Figure::draw_text, py::arg("p"), py::arg("text"), py::arg("size_px") = 12.0,
-           py::arg("colour") = "black", DOC(Figure, draw_text))
-      .def("nb_shapes", &Figure::nb_shapes, DOC(Figure, nb_shapes))
-      .def("svg", &Figure::svg, DOC(Figure, svg))
-      .def("save", &Figure::save, py::arg("path"), DOC(Figure, save))
-      .def("px", &Figure::px, py::arg("x"), DOC(Figure, px))
-      .def("py", &Figure::py, py::arg("y"), DOC(Figure, py))
+      .SILLAGE_DEF(Figure, draw_ring, py::arg("center"), py::arg("radius"), py::arg("style") = Style{})
+      .SILLAGE_DEF(Figure, draw_point, py::arg("p"), py::arg("radius_px") = 3.0,
+                   py::arg("style") = Style{"black", "none", 0, 1, ""})
+      .SILLAGE_DEF(Figure, draw_polyline, py::arg("points"), py::arg("style") = Style{}, py::arg("closed") = false)
+      .SILLAGE_DEF(Figure, draw_paving, py::arg("paving"), py::arg("show_outside") = true)
+      .SILLAGE_DEF(Figure, draw_contour, py::arg("loops"), py::arg("style") = Style{"none", "black", 1.5, 1, ""})
+      .SILLAGE_DEF(Figure, draw_text, py::arg("p"), py::arg("text"), py::arg("size_px") = 12.0,
+                   py::arg("colour") = "black")
+      .SILLAGE_DEFS(Figure, nb_shapes, svg)
+      .SILLAGE_DEF(Figure, save, py::arg("path"))
+      .SILLAGE_DEF(Figure, px, py::arg("x"))
+      .SILLAGE_DEF(Figure, py, py::arg("y"))
       .def("_repr_svg_", &Figure::svg)  // inline display in Jupyter
       .def("__repr__", [](const Figure& f) { return "Figure(" + std::to_string(f.nb_shapes()) + " shapes)"; });
 
   py::class_<Html>(m, "Html", DOC(Html))
       .def(py::init<std::string>(), py::arg("title"), DOC(Html, Html))
-      .def("add", &Html::add, py::arg("figure"), py::arg("file_name"), py::arg("caption"),
-           DOC(Html, add))
-      .def("add_text", &Html::add_text, py::arg("text"), DOC(Html, add_text))
-      .def("nb_figures", &Html::nb_figures, DOC(Html, nb_figures))
-      .def("index", &Html::index, DOC(Html, index))
-      .def("save", &Html::save, py::arg("directory"), DOC(Html, save))
+      .SILLAGE_DEF(Html, add, py::arg("figure"), py::arg("file_name"), py::arg("caption"))
+      .SILLAGE_DEF(Html, add_text, py::arg("text"))
+      .SILLAGE_DEFS(Html, nb_figures, index)
+      .SILLAGE_DEF(Html, save, py::arg("directory"))
       .def("__repr__", [](const Html& h) { return "Html(" + std::to_string(h.nb_figures()) + " figures)"; });
 }
 

@@ -27,19 +27,13 @@ SILLAGE_BINDING(loop_figures, "interval", "loops", "tube") {
       .value("Proven", LoopStatus::Proven)
       .value("Unproven", LoopStatus::Unproven)
       .value("Partial", LoopStatus::Partial);
-  m.def("loop_status", &loop_status, py::arg("loop"),
-        DOC(loop_status));
-  m.def("loop_style", &loop_style, py::arg("status"), DOC(loop_style));
+  m.SILLAGE_FN(loop_status, py::arg("loop"));
+  m.SILLAGE_FN(loop_style, py::arg("status"));
 
   py::class_<TPlaneFigureOptions>(m, "TPlaneFigureOptions", DOC(TPlaneFigureOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_leaf_px 2, marker_px 3, crossing_px 2, show_diagonal True.")
-      .def_readwrite("min_leaf_px", &TPlaneFigureOptions::min_leaf_px,
-                     DOC(TPlaneFigureOptions, min_leaf_px))
-      .def_readwrite("marker_px", &TPlaneFigureOptions::marker_px,
-                     DOC(TPlaneFigureOptions, marker_px))
-      .def_readwrite("crossing_px", &TPlaneFigureOptions::crossing_px, DOC(TPlaneFigureOptions, crossing_px))
-      .def_readwrite("show_diagonal", &TPlaneFigureOptions::show_diagonal, DOC(TPlaneFigureOptions, show_diagonal));
+      .SILLAGE_FIELDS(TPlaneFigureOptions, min_leaf_px, marker_px, crossing_px, show_diagonal);
   m.def(
       "tplane_figure",
       [](const TPlane& tp, const std::optional<std::vector<PathCrossing>>& crossings, const std::string& title,
@@ -53,13 +47,7 @@ SILLAGE_BINDING(loop_figures, "interval", "loops", "tube") {
   py::class_<LoopsMapOptions>(m, "LoopsMapOptions", DOC(LoopsMapOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: show_partial, boxes and projections True, path_px 0.5, crossing_px 2.5.")
-      .def_readwrite("show_partial", &LoopsMapOptions::show_partial, DOC(LoopsMapOptions, show_partial))
-      .def_readwrite("boxes", &LoopsMapOptions::boxes, DOC(LoopsMapOptions, boxes))
-      .def_readwrite("projections", &LoopsMapOptions::projections,
-                     DOC(LoopsMapOptions, projections))
-      .def_readwrite("path_px", &LoopsMapOptions::path_px,
-                     DOC(LoopsMapOptions, path_px))
-      .def_readwrite("crossing_px", &LoopsMapOptions::crossing_px, DOC(LoopsMapOptions, crossing_px));
+      .SILLAGE_FIELDS(LoopsMapOptions, show_partial, boxes, projections, path_px, crossing_px);
   m.def(
       "loops_map_figure",
       [](const TPlane& tp, const std::optional<std::vector<Vector>>& path,

@@ -23,16 +23,9 @@ SILLAGE_BINDING(tube_figures, "trajectory", "tube") {
            py::arg("show_gates") = false, py::arg("merge_px") = 1.0,
            "show_gates: draw the gates as segments; merge_px: slices narrower than this many pixels are\n"
            "drawn as their hull (aggregation, never hiding a value).")
-      .def_readwrite("slices", &TubeStyle::slices, DOC(TubeStyle, slices))
-      .def_readwrite("gates", &TubeStyle::gates, DOC(TubeStyle, gates))
-      .def_readwrite("truth", &TubeStyle::truth, DOC(TubeStyle, truth))
-      .def_readwrite("initial", &TubeStyle::initial, DOC(TubeStyle, initial))
+      .SILLAGE_FIELDS(TubeStyle, slices, gates, truth, initial)
       .def_readwrite("final", &TubeStyle::final, "Style of the final gate (2-D projections).")
-      .def_readwrite("show_gates", &TubeStyle::show_gates, DOC(TubeStyle, show_gates))
-      .def_readwrite("merge_px", &TubeStyle::merge_px, DOC(TubeStyle, merge_px))
-      .def_readwrite("landmarks", &TubeStyle::landmarks, DOC(TubeStyle, landmarks))
-      .def_readwrite("landmark_px", &TubeStyle::landmark_px, DOC(TubeStyle, landmark_px))
-      .def_readwrite("min_px", &TubeStyle::min_px, DOC(TubeStyle, min_px))
+      .SILLAGE_FIELDS(TubeStyle, show_gates, merge_px, landmarks, landmark_px, min_px)
       .def("__repr__", [](const TubeStyle& st) {
         std::ostringstream os;
         os << "TubeStyle(show_gates=" << (st.show_gates ? "True" : "False") << ", merge_px=" << st.merge_px << ")";
@@ -43,15 +36,13 @@ SILLAGE_BINDING(tube_figures, "trajectory", "tube") {
       .value("MaxDiameter", ThicknessMeasure::MaxDiameter)
       .value("Diagonal", ThicknessMeasure::Diagonal);
 
-  m.def("draw_tube", &draw_tube, py::arg("fig"), py::arg("tube"), py::arg("style") = TubeStyle{},
-        py::arg("truth") = py::none(),
-        DOC(draw_tube));
-  m.def("draw_tube_vector_2d", &draw_tube_vector_2d, py::arg("fig"), py::arg("tube"), py::arg("i") = 0,
-        py::arg("j") = 1, py::arg("style") = TubeStyle{}, py::arg("truth_i") = py::none(),
-        py::arg("truth_j") = py::none(), DOC(draw_tube_vector_2d));
-  m.def("tube_figure", &tube_figure, py::arg("tube"), py::arg("title") = "", py::arg("style") = TubeStyle{},
-        py::arg("truth") = py::none(), py::arg("width_px") = 600.0, py::arg("height_px") = 300.0,
-        py::arg("name") = "x", DOC(tube_figure));
+  m.SILLAGE_FN(draw_tube, py::arg("fig"), py::arg("tube"), py::arg("style") = TubeStyle{},
+               py::arg("truth") = py::none());
+  m.SILLAGE_FN(draw_tube_vector_2d, py::arg("fig"), py::arg("tube"), py::arg("i") = 0, py::arg("j") = 1,
+               py::arg("style") = TubeStyle{}, py::arg("truth_i") = py::none(), py::arg("truth_j") = py::none());
+  m.SILLAGE_FN(tube_figure, py::arg("tube"), py::arg("title") = "", py::arg("style") = TubeStyle{},
+               py::arg("truth") = py::none(), py::arg("width_px") = 600.0, py::arg("height_px") = 300.0,
+               py::arg("name") = "x");
   // Landmarks as an optional list: None (no landmark) maps to a null pointer.
   m.def(
       "tube_vector_figure",

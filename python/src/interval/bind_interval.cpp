@@ -318,10 +318,9 @@ void init_vector_class(py::module_& m) {
         "pairs [lb, ub], or from an (n, 2) array of bounds.")
       .def(py::init([](std::size_t n, const py::object& x) { return V(n, to_interval(x, "IntervalVector(n, x)")); }),
            py::arg("n"), py::arg("x"), "n copies of the interval x.")
-      .def_static("from_point", [](const Vector& p) { return V::from_point(p); }, py::arg("p"),
-                  DOC(IntervalVector, from_point))
-      .def_static("empty", &V::empty, py::arg("n"), DOC(IntervalVector, empty))
-      .def("size", &V::size, DOC(IntervalVector, size))
+      .SILLAGE_DEF_STATIC(IntervalVector, from_point, py::arg("p"))
+      .SILLAGE_DEF_STATIC(IntervalVector, empty, py::arg("n"))
+      .SILLAGE_DEF(IntervalVector, size)
       .def("__len__", &V::size)
       .def("__getitem__", [](const V& v, long long i) { return v[py_index(i, v.size(), "IntervalVector")]; })
       .def("__getitem__",
@@ -338,36 +337,22 @@ void init_vector_class(py::module_& m) {
              v[k] = to_interval(x, "IntervalVector[" + std::to_string(k) + "]");
            })
       .def("__iter__", [](const V& v) { return py::iter(py::cast(v.components())); })
-      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), DOC(IntervalVector, subvector))
-      .def("put", &V::put, py::arg("start"), py::arg("x"),
-           DOC(IntervalVector, put))
-      .def("lb", &V::lb, DOC(IntervalVector, lb))
-      .def("ub", &V::ub, DOC(IntervalVector, ub))
-      .def("mid", &V::mid, DOC(IntervalVector, mid))
-      .def("diam", &V::diam, DOC(IntervalVector, diam))
-      .def("rad", &V::rad, DOC(IntervalVector, rad))
-      .def("mag", &V::mag, DOC(IntervalVector, mag))
-      .def("mig", &V::mig, DOC(IntervalVector, mig))
-      .def("volume", &V::volume, DOC(IntervalVector, volume))
-      .def("max_diam", &V::max_diam, DOC(IntervalVector, max_diam))
-      .def("min_diam", &V::min_diam, DOC(IntervalVector, min_diam))
-      .def("extr_diam_index", &V::extr_diam_index, py::arg("largest") = true,
-           DOC(IntervalVector, extr_diam_index))
-      .def("is_empty", &V::is_empty, DOC(IntervalVector, is_empty))
-      .def("is_unbounded", &V::is_unbounded, DOC(IntervalVector, is_unbounded))
-      .def("is_degenerate", &V::is_degenerate, DOC(IntervalVector, is_degenerate))
-      .def("contains", &V::contains, py::arg("p"), DOC(IntervalVector, contains))
-      .def("is_subset", &V::is_subset, py::arg("y"), DOC(IntervalVector, is_subset))
-      .def("is_strict_subset", &V::is_strict_subset, py::arg("y"),
-           DOC(IntervalVector, is_strict_subset))
-      .def("is_interior_subset", &V::is_interior_subset, py::arg("y"), DOC(IntervalVector, is_interior_subset))
-      .def("intersects", &V::intersects, py::arg("y"), DOC(IntervalVector, intersects))
+      .SILLAGE_DEF(IntervalVector, subvector, py::arg("i"), py::arg("j"))
+      .SILLAGE_DEF(IntervalVector, put, py::arg("start"), py::arg("x"))
+      .SILLAGE_DEFS(IntervalVector, lb, ub, mid, diam, rad, mag, mig, volume, max_diam, min_diam)
+      .SILLAGE_DEF(IntervalVector, extr_diam_index, py::arg("largest") = true)
+      .SILLAGE_DEFS(IntervalVector, is_empty, is_unbounded, is_degenerate)
+      .SILLAGE_DEF(IntervalVector, contains, py::arg("p"))
+      .SILLAGE_DEF(IntervalVector, is_subset, py::arg("y"))
+      .SILLAGE_DEF(IntervalVector, is_strict_subset, py::arg("y"))
+      .SILLAGE_DEF(IntervalVector, is_interior_subset, py::arg("y"))
+      .SILLAGE_DEF(IntervalVector, intersects, py::arg("y"))
       .def("bisect", py::overload_cast<double>(&V::bisect, py::const_), py::arg("ratio") = 0.5,
            DOC(IntervalVector, bisect, double))
       .def("bisect", py::overload_cast<std::size_t, double>(&V::bisect, py::const_), py::arg("i"),
            py::arg("ratio") = 0.5, DOC(IntervalVector, bisect, size_t_double))
-      .def("inflate", &V::inflate, py::arg("r"), DOC(IntervalVector, inflate))
-      .def("set_empty", &V::set_empty, DOC(IntervalVector, set_empty))
+      .SILLAGE_DEF(IntervalVector, inflate, py::arg("r"))
+      .SILLAGE_DEF(IntervalVector, set_empty)
       .def("to_numpy", &vector_to_numpy, "An (n, 2) array of bounds (an empty component gives inf, -inf).")
       .def("__array__", [](const V& v, const py::object& dtype, const py::object&) {
              return as_array(vector_to_numpy(v), dtype);
@@ -383,16 +368,12 @@ void init_vector_class(py::module_& m) {
       .def(py::self - py::self)
       .def(py::self & py::self)
       .def(py::self | py::self)
-      .def("__iadd__", [](V& a, const V& b) -> V& { return a += b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__isub__", [](V& a, const V& b) -> V& { return a -= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__ior__", [](V& a, const V& b) -> V& { return a |= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__mul__", [](const V& v, const Interval& s) { return v * s; }, py::is_operator())
-      .def("__rmul__", [](const V& v, const Interval& s) { return s * v; }, py::is_operator())
+      .def(py::self += py::self)  // in place: the same Python object back
+      .def(py::self -= py::self)
+      .def(py::self &= py::self)
+      .def(py::self |= py::self)
+      .def(py::self * Interval())
+      .def(Interval() * py::self)
       .def("__imul__", [](V& v, const Interval& s) -> V& { return v = s * v; }, py::is_operator(),
            py::return_value_policy::reference);
   c.attr("__hash__") = py::none();
@@ -411,12 +392,10 @@ void init_matrix_class(py::module_& m) {
       .def(py::init([](const py::object& obj) { return matrix_from(obj); }), py::arg("x"),
            "From a list of rows (each a list of intervals / numbers / pairs, or an IntervalVector), "
            "an (n, m, 2) array of bounds or an (n, m) array of points.")
-      .def_static("identity", &M::identity, py::arg("n"), DOC(IntervalMatrix, identity))
-      .def_static("empty", &M::empty, py::arg("rows"), py::arg("cols"), DOC(IntervalMatrix, empty))
-      .def_static("from_point", [](const Matrix& p) { return M::from_point(p); }, py::arg("p"),
-                  DOC(IntervalMatrix, from_point))
-      .def("rows", &M::rows, DOC(IntervalMatrix, rows))
-      .def("cols", &M::cols, DOC(IntervalMatrix, cols))
+      .SILLAGE_DEF_STATIC(IntervalMatrix, identity, py::arg("n"))
+      .SILLAGE_DEF_STATIC(IntervalMatrix, empty, py::arg("rows"), py::arg("cols"))
+      .SILLAGE_DEF_STATIC(IntervalMatrix, from_point, py::arg("p"))
+      .SILLAGE_DEFS(IntervalMatrix, rows, cols)
       .def_property_readonly("shape", [](const M& a) { return py::make_tuple(a.rows(), a.cols()); }, "(rows, cols).")
       .def("__len__", &M::rows)
       .def("__getitem__", [](const M& a, std::pair<long long, long long> ij) {
@@ -430,27 +409,19 @@ void init_matrix_class(py::module_& m) {
       .def("__setitem__", [](M& a, long long i, const py::object& r) {
              a.set_row(py_index(i, a.rows(), "IntervalMatrix row"), vector_from(r));
            })
-      .def("row", &M::row, py::arg("i"), DOC(IntervalMatrix, row))
-      .def("col", &M::col, py::arg("j"), DOC(IntervalMatrix, col))
-      .def("set_row", &M::set_row, py::arg("i"), py::arg("r"), DOC(IntervalMatrix, set_row))
-      .def("set_col", &M::set_col, py::arg("j"), py::arg("c"), DOC(IntervalMatrix, set_col))
-      .def("transpose", &M::transpose, DOC(IntervalMatrix, transpose))
+      .SILLAGE_DEF(IntervalMatrix, row, py::arg("i"))
+      .SILLAGE_DEF(IntervalMatrix, col, py::arg("j"))
+      .SILLAGE_DEF(IntervalMatrix, set_row, py::arg("i"), py::arg("r"))
+      .SILLAGE_DEF(IntervalMatrix, set_col, py::arg("j"), py::arg("c"))
+      .SILLAGE_DEF(IntervalMatrix, transpose)
       .def_property_readonly("T", &M::transpose, "The transpose (a new matrix).")
-      .def("lb", &M::lb, DOC(IntervalMatrix, lb))
-      .def("ub", &M::ub, DOC(IntervalMatrix, ub))
-      .def("mid", &M::mid, DOC(IntervalMatrix, mid))
-      .def("diam", &M::diam, DOC(IntervalMatrix, diam))
-      .def("max_diam", &M::max_diam, DOC(IntervalMatrix, max_diam))
-      .def("is_empty", &M::is_empty, DOC(IntervalMatrix, is_empty))
-      .def("is_unbounded", &M::is_unbounded, DOC(IntervalMatrix, is_unbounded))
-      .def("is_degenerate", &M::is_degenerate, DOC(IntervalMatrix, is_degenerate))
-      .def("contains", &M::contains, py::arg("p"), DOC(IntervalMatrix, contains))
-      .def("is_subset", &M::is_subset, py::arg("y"), DOC(IntervalMatrix, is_subset))
-      .def("is_interior_subset", &M::is_interior_subset, py::arg("y"),
-           DOC(IntervalMatrix, is_interior_subset))
-      .def("intersects", &M::intersects, py::arg("y"), DOC(IntervalMatrix, intersects))
-      .def("inflate", &M::inflate, py::arg("r"), DOC(IntervalMatrix, inflate))
-      .def("set_empty", &M::set_empty, DOC(IntervalMatrix, set_empty))
+      .SILLAGE_DEFS(IntervalMatrix, lb, ub, mid, diam, max_diam, is_empty, is_unbounded, is_degenerate)
+      .SILLAGE_DEF(IntervalMatrix, contains, py::arg("p"))
+      .SILLAGE_DEF(IntervalMatrix, is_subset, py::arg("y"))
+      .SILLAGE_DEF(IntervalMatrix, is_interior_subset, py::arg("y"))
+      .SILLAGE_DEF(IntervalMatrix, intersects, py::arg("y"))
+      .SILLAGE_DEF(IntervalMatrix, inflate, py::arg("r"))
+      .SILLAGE_DEF(IntervalMatrix, set_empty)
       .def("to_numpy", &matrix_to_numpy, "An (n, m, 2) array of bounds.")
       .def("__array__", [](const M& a, const py::object& dtype, const py::object&) {
              return as_array(matrix_to_numpy(a), dtype);
@@ -466,22 +437,17 @@ void init_matrix_class(py::module_& m) {
       .def(py::self - py::self)
       .def(py::self & py::self)
       .def(py::self | py::self)
-      .def("__iadd__", [](M& a, const M& b) -> M& { return a += b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__isub__", [](M& a, const M& b) -> M& { return a -= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__iand__", [](M& a, const M& b) -> M& { return a &= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__ior__", [](M& a, const M& b) -> M& { return a |= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__mul__", [](const M& a, const M& b) { return a * b; }, py::is_operator())
-      .def("__mul__", [](const M& a, const IntervalVector& x) { return a * x; }, py::is_operator())
-      .def("__mul__", [](const M& a, const Interval& s) { return a * s; }, py::is_operator())
-      .def("__rmul__", [](const M& a, const Interval& s) { return s * a; }, py::is_operator())
+      .def(py::self += py::self)  // in place: the same Python object back
+      .def(py::self -= py::self)
+      .def(py::self &= py::self)
+      .def(py::self |= py::self)
+      .def(py::self * py::self)
+      .def(py::self * IntervalVector())
+      .def(py::self * Interval())
+      .def(Interval() * py::self)
       .def("__matmul__", [](const M& a, const M& b) { return a * b; }, py::is_operator())
       .def("__matmul__", [](const M& a, const IntervalVector& x) { return a * x; }, py::is_operator())
-      .def("__imul__", [](M& a, const Interval& s) -> M& { return a *= s; }, py::is_operator(),
-           py::return_value_policy::reference);
+      .def(py::self *= Interval());
   c.attr("__hash__") = py::none();
   c.attr("__array_ufunc__") = py::none();
 }
@@ -520,10 +486,9 @@ void init_functions(py::module_& m) {
   m.def("hull", static_cast<F2>(&hull), py::arg("x"), py::arg("y"), DOC(hull, Interval_Interval));
   m.def("hull", [](const IntervalVector& x, const IntervalVector& y) { return hull(x, y); }, py::arg("x"),
         py::arg("y"), DOC(hull, IntervalVector_IntervalVector));
-  m.def("dot", &dot, py::arg("x"), py::arg("y"), DOC(dot));
-  m.def("norm", &norm, py::arg("x"), DOC(norm));
-  m.def("div2", &div2, py::arg("c"), py::arg("b"),
-        DOC(div2));
+  m.SILLAGE_FN(dot, py::arg("x"), py::arg("y"));
+  m.SILLAGE_FN(norm, py::arg("x"));
+  m.SILLAGE_FN(div2, py::arg("c"), py::arg("b"));
 
   // Backward projections: Python intervals are values, so each returns the
   // contracted arguments as a tuple (a 1-tuple for one argument); an argument

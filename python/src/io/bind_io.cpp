@@ -32,12 +32,9 @@ SILLAGE_BINDING(io) {
              for (std::size_t i = 0; i < t.columns().size(); ++i) s += (i ? ", '" : "'") + t.columns()[i] + "'";
              return s + "])";
            })
-      .def_static("read", &CsvTable::read, py::arg("path"),
-                  DOC(CsvTable, read))
-      .def_static("parse", &CsvTable::parse, py::arg("text"), py::arg("source") = "<text>",
-                  DOC(CsvTable, parse))
-      .def("columns", &CsvTable::columns, DOC(CsvTable, columns))
-      .def("nb_rows", &CsvTable::nb_rows, DOC(CsvTable, nb_rows))
+      .SILLAGE_DEF_STATIC(CsvTable, read, py::arg("path"))
+      .SILLAGE_DEF_STATIC(CsvTable, parse, py::arg("text"), py::arg("source") = "<text>")
+      .SILLAGE_DEFS(CsvTable, columns, nb_rows)
       .def(
           "row",
           [](const CsvTable& t, py::ssize_t i) {
@@ -47,7 +44,7 @@ SILLAGE_BINDING(io) {
           py::arg("i"),
           "Row i as a list of floats (OutOfRangeError if i < 0 or i >= nb_rows()); a cell that is not a number "
           "is nan: read only the columns that column() or is_numeric() accepts.")
-      .def("source", &CsvTable::source, DOC(CsvTable, source))
+      .SILLAGE_DEF(CsvTable, source)
       .def(
           "line",
           [](const CsvTable& t, py::ssize_t i) { return t.line(row_index(t, i, "CsvTable.line")); },
@@ -56,11 +53,10 @@ SILLAGE_BINDING(io) {
           "where",
           [](const CsvTable& t, py::ssize_t i) { return t.where(row_index(t, i, "CsvTable.where")); },
           py::arg("i"), DOC(CsvTable, where))
-      .def("has_column", &CsvTable::has_column, py::arg("name"), DOC(CsvTable, has_column))
-      .def("column", &CsvTable::column, py::arg("name"),
-           DOC(CsvTable, column))
-      .def("is_numeric", &CsvTable::is_numeric, py::arg("name"), DOC(CsvTable, is_numeric))
-      .def("check_numeric", &CsvTable::check_numeric, py::arg("c"), DOC(CsvTable, check_numeric))
+      .SILLAGE_DEF(CsvTable, has_column, py::arg("name"))
+      .SILLAGE_DEF(CsvTable, column, py::arg("name"))
+      .SILLAGE_DEF(CsvTable, is_numeric, py::arg("name"))
+      .SILLAGE_DEF(CsvTable, check_numeric, py::arg("c"))
       .def(
           "values",
           [](const CsvTable& t, const std::string& name) {

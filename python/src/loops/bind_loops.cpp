@@ -46,6 +46,56 @@ PlaneJacobian plane_jacobian(const py::function& j) {
   };
 }
 
+// The jacobian of split_region: none, unless options.count needs one (Error naming `where`).
+PlaneJacobian python_jacobian(const py::object& j, const SplitOptions& o, const std::string& where) {
+  if (!j.is_none()) return plane_jacobian(j.cast<py::function>());
+  if (o.count) throw Error(where + ": a jacobian is needed to count (or set options.count = False)");
+  return {};
+}
+
+// `count` (count_zeros or count_zeros_run) bound as `name` twice: for a
+// LoopFunction, on a worker thread (Ctrl-C stops it), and for Python callables.
+template <class Count>
+void def_count(py::module_& m, const char* name, Count count, const char* loop_doc, const char* python_doc) {
+  m.def(
+      name,
+      [count](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          return count(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
+        });
+      },
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{}, loop_doc);
+  m.def(
+      name,
+      [count](const std::vector<IntervalVector>& boxes, int degree, const py::function& f, const py::function& j,
+              const CountOptions& o) { return count(boxes, degree, plane_function(f), plane_jacobian(j), o); },
+      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
+      python_doc);
+}
+
+// `split` (split_region or split_region_run) bound as `name` twice: for a
+// LoopFunction, on a worker thread (Ctrl-C stops it), and for Python callables
+// (on this thread: they need the GIL).
+template <class Split>
+void def_split(py::module_& m, const char* name, Split split, const char* loop_doc, const char* python_doc) {
+  m.def(
+      name,
+      [split](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
+          SplitOptions with = with_token(o, t);
+          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
+          return split(boxes, f.memoized_function(), f.jacobian_function(), with);
+        });
+      },
+      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{}, loop_doc);
+  m.def(
+      name,
+      [split, name](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j,
+                    const SplitOptions& o) { return split(boxes, plane_function(f), python_jacobian(j, o, name), o); },
+      py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
+      python_doc);
+}
+
 // Boxes as a float array (k, 2, 2) of [lb, ub] rows, as Paving.boxes_array: fast plotting.
 py::array_t<double> boxes_array(const std::vector<IntervalVector>& boxes) {
   py::array_t<double> a({boxes.size(), std::size_t{2}, std::size_t{2}});
@@ -73,10 +123,9 @@ std::string optional_size_str(const std::optional<std::size_t>& x) { return x ? 
 
 // A RunResult<T> (run_result.h) as `name`: value (None unless finished), summary, take().
 template <class T>
-void bind_run_result(py::module_& m, const char* name, const char* what) {
+void bind_run_result(py::module_& m, const char* name, const char* doc) {
   using Run = RunResult<T>;
-  py::class_<Run>(m, name, (std::string("A ") + what + " with how its computation ended (Summary): the value of a "
-                            "finished run, None once stopped or cancelled (a partial one is no answer).").c_str())
+  py::class_<Run>(m, name, doc)
       .def_readonly("value", &Run::value, "The result of a finished run; None for Stopped and Cancelled.")
       .def_readonly("summary", &Run::summary, "Converged, Stopped (the budget in reason) or Cancelled.")
       .def("take", [](const Run& r) { return Run(r).take(); },
@@ -94,45 +143,20 @@ void bind_run_result(py::module_& m, const char* name, const char* what) {
 
 SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
   py::class_<Loop>(m, "Loop", DOC(Loop))
-      .def("boxes", &Loop::boxes, DOC(Loop, boxes))
+      .SILLAGE_DEF(Loop, boxes)
       .def("boxes_array", [](const Loop& l) { return boxes_array(l.boxes()); },
            "The boxes as a numpy array (k, 2, 2) of [lb, ub] rows.")
-      .def("nb_inner", &Loop::nb_inner, DOC(Loop, nb_inner))
-      .def("t_box", &Loop::t_box, DOC(Loop, t_box))
-      .def("map_box", &Loop::map_box, DOC(Loop, map_box))
-      .def("complete", &Loop::complete, DOC(Loop, complete))
-      .def("degree", &Loop::degree, DOC(Loop, degree))
-      .def("proven", &Loop::proven, DOC(Loop, proven))
-      .def("proven_newton", &Loop::proven_newton, DOC(Loop, proven_newton))
-      .def("count", &Loop::count, DOC(Loop, count))
-      .def("pieces", &Loop::pieces,
-           DOC(Loop, pieces))
-      .def("nb_proven_pieces", &Loop::nb_proven_pieces, DOC(Loop, nb_proven_pieces))
-      .def("proven_split", &Loop::proven_split, DOC(Loop, proven_split))
+      .SILLAGE_DEFS(Loop, nb_inner, t_box, map_box, complete, degree, proven, proven_newton, count, pieces,
+                    nb_proven_pieces, proven_split)
       .def("__repr__", &loop_repr);
 
   py::class_<ProofOptions>(m, "ProofOptions", DOC(ProofOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "The default tuning (see the fields); newton and count on.")
-      .def_readwrite("degree_edge_fraction", &ProofOptions::degree_edge_fraction,
-                     DOC(ProofOptions, degree_edge_fraction))
-      .def_readwrite("degree_max_evaluations", &ProofOptions::degree_max_evaluations,
-                     DOC(ProofOptions, degree_max_evaluations))
-      .def_readwrite("count_width_fraction", &ProofOptions::count_width_fraction,
-                     DOC(ProofOptions, count_width_fraction))
-      .def_readwrite("count_max_boxes", &ProofOptions::count_max_boxes, DOC(ProofOptions, count_max_boxes))
-      .def_readwrite("newton", &ProofOptions::newton, DOC(ProofOptions, newton))
-      .def_readwrite("newton_inflation", &ProofOptions::newton_inflation,
-                     DOC(ProofOptions, newton_inflation))
-      .def_readwrite("count", &ProofOptions::count, DOC(ProofOptions, count))
-      .def_readwrite("split", &ProofOptions::split,
-                     DOC(ProofOptions, split))
-      .def_readwrite("split_max_levels", &ProofOptions::split_max_levels,
-                     DOC(ProofOptions, split_max_levels))
-      .def_readwrite("split_max_boxes", &ProofOptions::split_max_boxes, DOC(ProofOptions, split_max_boxes))
-      .def_readwrite("budget", &ProofOptions::budget, DOC(ProofOptions, budget));
+      .SILLAGE_FIELDS(ProofOptions, degree_edge_fraction, degree_max_evaluations, count_width_fraction,
+                      count_max_boxes, newton, newton_inflation, count, split, split_max_levels, split_max_boxes,
+                      budget);
 
-  const py::call_guard<py::gil_scoped_release> nogil;
   py::class_<TPlane>(m, "TPlane",
                      DOC(TPlane))
       .def("__repr__",
@@ -145,7 +169,7 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       .def(py::init<const Interval&>(), py::arg("tdomain"),
            DOC(TPlane, TPlane, Interval))
       .def(py::init<const std::shared_ptr<TDomain>&>(), py::arg("tdomain"), DOC(TPlane, TPlane, TDomain))
-      .def("domain", &TPlane::domain, DOC(TPlane, domain))
+      .SILLAGE_DEF(TPlane, domain)
       .def(
           "compute_detections",
           [](TPlane& tp, double eps, const TubeVector& v, const Budget& b) {
@@ -193,18 +217,9 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
           },
           py::arg("p"), py::arg("w"), py::arg("options") = ProofOptions{},
           DOC(TPlane, compute_proofs, TubeVector_TubeVector_ProofOptions))
-      .def("eps", &TPlane::eps, DOC(TPlane, eps))
-      .def("paving", &TPlane::paving, py::return_value_policy::reference_internal,
-           DOC(TPlane, paving))
-      .def("nb_detections", &TPlane::nb_detections, DOC(TPlane, nb_detections))
-      .def("nb_complete_detections", &TPlane::nb_complete_detections,
-           DOC(TPlane, nb_complete_detections))
-      .def("nb_proofs", &TPlane::nb_proofs, DOC(TPlane, nb_proofs))
-      .def("nb_newton_proofs", &TPlane::nb_newton_proofs,
-           DOC(TPlane, nb_newton_proofs))
-      .def("detections", &TPlane::detections,
-           DOC(TPlane, detections))
-      .def("proofs", &TPlane::proofs, DOC(TPlane, proofs));
+      .SILLAGE_DEF(TPlane, eps)
+      .SILLAGE_DEF(TPlane, paving, py::return_value_policy::reference_internal)
+      .SILLAGE_DEFS(TPlane, nb_detections, nb_complete_detections, nb_proofs, nb_newton_proofs, detections, proofs);
 
   // The tubes must outlive the LoopFunction and stay unmodified (queries
   // throw otherwise): keep_alive holds them as long as the Python object.
@@ -218,39 +233,21 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
            DOC(LoopFunction, LoopFunction, TubeVector))
       .def(py::init<const TubeVector&, const TubeVector&>(), py::arg("p"), py::arg("w"), py::keep_alive<1, 2>(),
            py::keep_alive<1, 3>(), DOC(LoopFunction, LoopFunction, TubeVector_TubeVector))
-      .def("has_positions", &LoopFunction::has_positions,
-           DOC(LoopFunction, has_positions))
-      .def("is_empty", &LoopFunction::is_empty, DOC(LoopFunction, is_empty))
-      .def("time_domain", &LoopFunction::time_domain,
-           DOC(LoopFunction, time_domain))
+      .SILLAGE_DEFS(LoopFunction, has_positions, is_empty, time_domain)
       .def("__call__", &LoopFunction::operator(), py::arg("t"), DOC(LoopFunction, op_call))
-      .def("velocity_form", &LoopFunction::velocity_form, py::arg("t"),
-           DOC(LoopFunction, velocity_form))
-      .def("jacobian", &LoopFunction::jacobian, py::arg("t"), DOC(LoopFunction, jacobian))
-      .def("velocity", &LoopFunction::velocity, py::arg("t"),
-           DOC(LoopFunction, velocity))
-      .def("position", &LoopFunction::position, py::arg("t"),
-           DOC(LoopFunction, position))
-      .def("integral_bounds", &LoopFunction::integral_bounds, py::arg("t1"), py::arg("t2"),
-           DOC(LoopFunction, integral_bounds));
+      .SILLAGE_DEF(LoopFunction, velocity_form, py::arg("t"))
+      .SILLAGE_DEF(LoopFunction, jacobian, py::arg("t"))
+      .SILLAGE_DEF(LoopFunction, velocity, py::arg("t"))
+      .SILLAGE_DEF(LoopFunction, position, py::arg("t"))
+      .SILLAGE_DEF(LoopFunction, integral_bounds, py::arg("t1"), py::arg("t2"));
 
   py::class_<DegreeOptions>(m, "DegreeOptions", DOC(DegreeOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_edge_length 1e-9, max_evaluations 2^20.")
-      .def_readwrite("min_edge_length", &DegreeOptions::min_edge_length,
-                     DOC(DegreeOptions, min_edge_length))
-      .def_readwrite("max_evaluations", &DegreeOptions::max_evaluations,
-                     DOC(DegreeOptions, max_evaluations))
-      .def_readwrite("budget", &DegreeOptions::budget, DOC(DegreeOptions, budget));
+      .SILLAGE_FIELDS(DegreeOptions, min_edge_length, max_evaluations, budget);
   py::class_<DegreeResult>(m, "DegreeResult", DOC(DegreeResult))
-      .def_readonly("degree", &DegreeResult::degree,
-                    DOC(DegreeResult, degree))
-      .def_readonly("nb_evaluations", &DegreeResult::nb_evaluations, DOC(DegreeResult, nb_evaluations))
-      .def_readonly("nb_pieces", &DegreeResult::nb_pieces, DOC(DegreeResult, nb_pieces))
-      .def_readonly("nb_unresolved", &DegreeResult::nb_unresolved,
-                    DOC(DegreeResult, nb_unresolved))
-      .def("proves_zero", &DegreeResult::proves_zero,
-           DOC(DegreeResult, proves_zero))
+      .SILLAGE_READONLY_FIELDS(DegreeResult, degree, nb_evaluations, nb_pieces, nb_unresolved)
+      .SILLAGE_DEF(DegreeResult, proves_zero)
       .def("__repr__", [](const DegreeResult& r) {
         return "<DegreeResult degree " + optional_str(r.degree) + ", " + std::to_string(r.nb_evaluations) +
                " evaluations, " + std::to_string(r.nb_unresolved) + " unresolved>";
@@ -291,7 +288,7 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
       py::arg("loops"), py::arg("f"), py::arg("options") = DegreeOptions{},
       "Degree of a Python f(box) -> box over the region bounded by oriented contour loops.");
 
-  bind_run_result<DegreeResult>(m, "DegreeRun", "DegreeResult");
+  bind_run_result<DegreeResult>(m, "DegreeRun", DOC(DegreeRun));
   m.def(
       "topological_degree_run",
       [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const DegreeOptions& o) {
@@ -300,7 +297,7 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
         });
       },
       py::arg("boxes"), py::arg("f"), py::arg("options") = DegreeOptions{},
-      "topological_degree of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (DegreeRun).");
+      DOC(topological_degree_run));
   m.def(
       "topological_degree_run",
       [](const std::vector<IntervalVector>& boxes, const py::function& f, const DegreeOptions& o) {
@@ -312,11 +309,9 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
   py::class_<NewtonOptions>(m, "NewtonOptions", DOC(NewtonOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_iterations 20.")
-      .def_readwrite("max_iterations", &NewtonOptions::max_iterations, DOC(NewtonOptions, max_iterations));
+      .SILLAGE_FIELDS(NewtonOptions, max_iterations);
   py::class_<NewtonResult>(m, "NewtonResult", DOC(NewtonResult))
-      .def_readonly("proven", &NewtonResult::proven, DOC(NewtonResult, proven))
-      .def_readonly("box", &NewtonResult::box, DOC(NewtonResult, box))
-      .def_readonly("nb_iterations", &NewtonResult::nb_iterations, DOC(NewtonResult, nb_iterations))
+      .SILLAGE_READONLY_FIELDS(NewtonResult, proven, box, nb_iterations)
       .def("__repr__", [](const NewtonResult& r) {
         return std::string("<NewtonResult ") + (r.proven ? "proven" : "not proven") + ", box " + r.box.str() + ">";
       });
@@ -338,125 +333,54 @@ SILLAGE_BINDING(loops, "budget", "interval", "paving", "tdomain", "tube") {
   py::class_<CountOptions>(m, "CountOptions", DOC(CountOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: min_width 1e-9, max_boxes 2^16.")
-      .def_readwrite("min_width", &CountOptions::min_width,
-                     DOC(CountOptions, min_width))
-      .def_readwrite("max_boxes", &CountOptions::max_boxes,
-                     DOC(CountOptions, max_boxes))
-      .def_readwrite("budget", &CountOptions::budget,
-                     DOC(CountOptions, budget));
+      .SILLAGE_FIELDS(CountOptions, min_width, max_boxes, budget);
   py::class_<CountResult>(m, "CountResult", DOC(CountResult))
-      .def_readonly("count", &CountResult::count, DOC(CountResult, count))
-      .def_readonly("nb_boxes", &CountResult::nb_boxes, DOC(CountResult, nb_boxes))
+      .SILLAGE_READONLY_FIELDS(CountResult, count, nb_boxes)
       .def("__repr__", [](const CountResult& r) {
         return "<CountResult count " + (r.count ? std::to_string(*r.count) : std::string("None")) + ", " +
                std::to_string(r.nb_boxes) + " boxes>";
       });
-  m.def(
-      "count_zeros",
-      [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return count_zeros(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
-        });
-      },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
-      DOC(count_zeros));
-  m.def(
-      "count_zeros",
-      [](const std::vector<IntervalVector>& boxes, int degree, const py::function& f, const py::function& j,
-         const CountOptions& o) { return count_zeros(boxes, degree, plane_function(f), plane_jacobian(j), o); },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("jacobian"), py::arg("options") = CountOptions{},
-      "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
-
-  bind_run_result<CountResult>(m, "CountRun", "CountResult");
-  m.def(
-      "count_zeros_run",
-      [](const std::vector<IntervalVector>& boxes, int degree, const LoopFunction& f, const CountOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          return count_zeros_run(boxes, degree, f.memoized_function(), f.jacobian_function(), with_token(o, t));
-        });
-      },
-      py::arg("boxes"), py::arg("degree"), py::arg("f"), py::arg("options") = CountOptions{},
-      "count_zeros of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (CountRun).");
+  def_count(m, "count_zeros", &count_zeros, DOC(count_zeros),
+            "Alg. 10: the exact number of zeros when det [J] keeps its sign where f may vanish.");
+  bind_run_result<CountResult>(m, "CountRun", DOC(CountRun));
+  def_count(m, "count_zeros_run", &count_zeros_run, DOC(count_zeros_run),
+            "count_zeros of Python f(box) -> box and jacobian(box) -> matrix with a Summary (CountRun).");
 
   py::class_<SplitOptions>(m, "SplitOptions", DOC(SplitOptions))
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.")
       .def(py::init<>(), "Defaults: max_levels 8, max_boxes 2^15, count on.")
-      .def_readwrite("max_levels", &SplitOptions::max_levels,
-                     DOC(SplitOptions, max_levels))
-      .def_readwrite("max_boxes", &SplitOptions::max_boxes, DOC(SplitOptions, max_boxes))
-      .def_readwrite("degree", &SplitOptions::degree, DOC(SplitOptions, degree))
-      .def_readwrite("count", &SplitOptions::count, DOC(SplitOptions, count))
-      .def_readwrite("count_options", &SplitOptions::count_options, DOC(SplitOptions, count_options))
-      .def_readwrite("deep_margin", &SplitOptions::deep_margin,
-                     DOC(SplitOptions, deep_margin))
-      .def_readwrite("budget", &SplitOptions::budget, DOC(SplitOptions, budget));
+      .SILLAGE_FIELDS(SplitOptions, max_levels, max_boxes, degree, count, count_options, deep_margin, budget);
   py::class_<SplitPiece>(m, "SplitPiece", DOC(SplitPiece))
-      .def_readonly("boxes", &SplitPiece::boxes, DOC(SplitPiece, boxes))
-      .def_readonly("t_box", &SplitPiece::t_box, DOC(SplitPiece, t_box))
-      .def_readonly("degree", &SplitPiece::degree, DOC(SplitPiece, degree))
-      .def_readonly("count", &SplitPiece::count, DOC(SplitPiece, count))
-      .def("proves_zero", &SplitPiece::proves_zero, DOC(SplitPiece, proves_zero))
+      .SILLAGE_READONLY_FIELDS(SplitPiece, boxes, t_box, degree, count)
+      .SILLAGE_DEF(SplitPiece, proves_zero)
       .def("__repr__", [](const SplitPiece& p) {
         return "<SplitPiece t_box " + p.t_box.str() + ", degree " + optional_str(p.degree) + ", count " +
                optional_size_str(p.count) + ", " + std::to_string(p.boxes.size()) + " boxes>";
       });
   py::class_<SplitResult>(m, "SplitResult", DOC(SplitResult))
-      .def_readonly("pieces", &SplitResult::pieces, DOC(SplitResult, pieces))
-      .def_readonly("nb_evaluations", &SplitResult::nb_evaluations, DOC(SplitResult, nb_evaluations))
-      .def_readonly("nb_levels", &SplitResult::nb_levels, DOC(SplitResult, nb_levels))
-      .def("degree", &SplitResult::degree, DOC(SplitResult, degree))
-      .def("count", &SplitResult::count, DOC(SplitResult, count))
-      .def("nb_proven", &SplitResult::nb_proven, DOC(SplitResult, nb_proven))
+      .SILLAGE_READONLY_FIELDS(SplitResult, pieces, nb_evaluations, nb_levels)
+      .SILLAGE_DEFS(SplitResult, degree, count, nb_proven)
       .def("__repr__", [](const SplitResult& r) {
         return "<SplitResult " + std::to_string(r.pieces.size()) + " pieces, degree " + optional_str(r.degree()) +
                ", count " + optional_size_str(r.count()) + ">";
       });
-  m.def(
-      "split_region",
-      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          SplitOptions with = with_token(o, t);
-          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
-          return split_region(boxes, f.memoized_function(), f.jacobian_function(), with);
-        });
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
-      DOC(split_region));
-  m.def(
-      "split_region",
-      [](const std::vector<IntervalVector>& boxes, const py::function& f, const py::object& j, const SplitOptions& o) {
-        const PlaneJacobian jac = j.is_none() ? PlaneJacobian{} : plane_jacobian(j.cast<py::function>());
-        if (!jac && o.count) throw Error("split_region: a jacobian is needed to count (or set options.count = False)");
-        return split_region(boxes, plane_function(f), jac, o);
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("jacobian") = py::none(), py::arg("options") = SplitOptions{},
-      "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
-
-  bind_run_result<SplitResult>(m, "SplitRun", "SplitResult");
-  m.def(
-      "split_region_run",
-      [](const std::vector<IntervalVector>& boxes, const LoopFunction& f, const SplitOptions& o) {
-        return run_interruptible(o.budget.cancel, [&](const CancelToken& t) {
-          SplitOptions with = with_token(o, t);
-          with.inside = [&f](const IntervalVector& b) { return detail::is_inner_box(f, b); };
-          return split_region_run(boxes, f.memoized_function(), f.jacobian_function(), with);
-        });
-      },
-      py::arg("boxes"), py::arg("f"), py::arg("options") = SplitOptions{},
-      "split_region of a LoopFunction with a Summary instead of BudgetExceeded / Cancelled (SplitRun).");
+  def_split(m, "split_region", &split_region, DOC(split_region),
+            "Splits a union of 2-D boxes into pieces with zero-free boundaries: the degree and count of each.");
+  bind_run_result<SplitResult>(m, "SplitRun", DOC(SplitRun));
+  def_split(m, "split_region_run", &split_region_run, DOC(split_region_run),
+            "split_region of Python f(box) -> box (and jacobian, needed to count) with a Summary (SplitRun).");
 
   py::class_<PathCrossing>(m, "PathCrossing", "A proper self-crossing of a sampled path.")
-      .def_readonly("t1", &PathCrossing::t1, DOC(PathCrossing, t1))
+      .SILLAGE_READONLY_FIELDS(PathCrossing, t1)
       .def_readonly("t2", &PathCrossing::t2, "The second passage time.")
-      .def_readonly("x", &PathCrossing::x, DOC(PathCrossing, x))
+      .SILLAGE_READONLY_FIELDS(PathCrossing, x)
       .def_readonly("y", &PathCrossing::y, "y of the crossing point.")
-      .def_readonly("segment1", &PathCrossing::segment1, DOC(PathCrossing, segment1))
+      .SILLAGE_READONLY_FIELDS(PathCrossing, segment1)
       .def_readonly("segment2", &PathCrossing::segment2, "The segment [k, k+1] holding t2 (segment1 + 1 < segment2).")
       .def("__repr__", [](const PathCrossing& c) {
         return "<PathCrossing t1=" + number_text(c.t1) + " t2=" + number_text(c.t2) + ">";
       });
-  m.def("self_crossings", &self_crossings, py::arg("t"), py::arg("x"), py::arg("y"), nogil,
-        DOC(self_crossings));
+  m.SILLAGE_FN(self_crossings, py::arg("t"), py::arg("x"), py::arg("y"), nogil);
 }
 
 }  // namespace sillage::python

@@ -91,8 +91,7 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
   py::class_<ContourEdge>(m, "ContourEdge", DOC(ContourEdge))
       .def_property_readonly("a", [](const ContourEdge& e) { return point(e.a); }, "The start point (x, y).")
       .def_property_readonly("b", [](const ContourEdge& e) { return point(e.b); }, DOC(ContourEdge, b))
-      .def("box", &ContourEdge::box, DOC(ContourEdge, box))
-      .def("length", &ContourEdge::length, DOC(ContourEdge, length))
+      .SILLAGE_DEFS(ContourEdge, box, length)
       .def("__repr__", [](const ContourEdge& e) {
         return "<ContourEdge " + py::repr(point(e.a)).cast<std::string>() + " -> " +
                py::repr(point(e.b)).cast<std::string>() + ">";
@@ -100,66 +99,50 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
 
   py::class_<ContourLoop>(m, "ContourLoop",
                           DOC(ContourLoop))
-      .def_readonly("edges", &ContourLoop::edges, DOC(ContourLoop, edges))
-      .def_readonly("is_hole", &ContourLoop::is_hole, DOC(ContourLoop, is_hole))
+      .SILLAGE_READONLY_FIELDS(ContourLoop, edges, is_hole)
       .def("vertices",
            [](const ContourLoop& l) {
              py::list r;
              for (const auto& v : l.vertices()) r.append(point(v));
              return r;
            }, DOC(ContourLoop, vertices))
-      .def("length", &ContourLoop::length, DOC(ContourLoop, length))
+      .SILLAGE_DEF(ContourLoop, length)
       .def("__len__", [](const ContourLoop& l) { return l.edges.size(); })
       .def("__repr__", [](const ContourLoop& l) { return "<ContourLoop " + l.str() + ">"; });
 
   py::class_<Component>(m, "Component", DOC(Component))
-      .def_readonly("boxes", &Component::boxes, DOC(Component, boxes))
-      .def_readonly("tags", &Component::tags, DOC(Component, tags))
-      .def_readonly("hull", &Component::hull, DOC(Component, hull))
-      .def_readonly("volume", &Component::volume, DOC(Component, volume))
-      .def("size", &Component::size, DOC(Component, size))
+      .SILLAGE_READONLY_FIELDS(Component, boxes, tags, hull, volume)
+      .SILLAGE_DEF(Component, size)
       .def("__len__", &Component::size)
-      .def("count", &Component::count, py::arg("tag"), DOC(Component, count))
-      .def("contour", &Component::contour, DOC(Component, contour))
+      .SILLAGE_DEF(Component, count, py::arg("tag"))
+      .SILLAGE_DEF(Component, contour)
       .def("__repr__", [](const Component& c) {
         return "<Component of " + std::to_string(c.size()) + " boxes, hull " + c.hull.str() + ">";
       });
 
   m.def("contour", [](const std::vector<IntervalVector>& boxes) { return contour(boxes); }, py::arg("boxes"),
         DOC(contour));
-  m.def("connected_components", &connected_components, py::arg("boxes"),
-        py::arg("tags") = std::vector<PavingTag>{}, DOC(connected_components));
+  m.SILLAGE_FN(connected_components, py::arg("boxes"), py::arg("tags") = std::vector<PavingTag>{});
 
   py::class_<Paving>(m, "Paving", DOC(Paving))
-      .def("dim", &Paving::dim, DOC(Paving, dim))
-      .def("is_empty", &Paving::is_empty, DOC(Paving, is_empty))
-      .def("domain", &Paving::domain, DOC(Paving, domain))
-      .def("boxes", &Paving::boxes, py::arg("tag"),
-           DOC(Paving, boxes))
-      .def("inner", &Paving::inner, DOC(Paving, inner))
-      .def("boundary", &Paving::boundary, DOC(Paving, boundary))
-      .def("outer", &Paving::outer, DOC(Paving, outer))
-      .def("outside", &Paving::outside, DOC(Paving, outside))
+      .SILLAGE_DEFS(Paving, dim, is_empty, domain)
+      .SILLAGE_DEF(Paving, boxes, py::arg("tag"))
+      .SILLAGE_DEFS(Paving, inner, boundary, outer, outside)
       .def("boxes_array", &boxes_array, py::arg("tag"), "Leaves of a tag as a numpy array (k, dim, 2).")
-      .def("nb_nodes", &Paving::nb_nodes, DOC(Paving, nb_nodes))
-      .def("nb_leaves", &Paving::nb_leaves, DOC(Paving, nb_leaves))
-      .def("count", &Paving::count, py::arg("tag"), DOC(Paving, count))
-      .def("volume", &Paving::volume, py::arg("tag"),
-           DOC(Paving, volume))
-      .def("outer_volume", &Paving::outer_volume, DOC(Paving, outer_volume))
-      .def("hull", &Paving::hull, DOC(Paving, hull))
-      .def("tag_at", &Paving::tag_at, py::arg("point"), DOC(Paving, tag_at))
+      .SILLAGE_DEFS(Paving, nb_nodes, nb_leaves)
+      .SILLAGE_DEF(Paving, count, py::arg("tag"))
+      .SILLAGE_DEF(Paving, volume, py::arg("tag"))
+      .SILLAGE_DEFS(Paving, outer_volume, hull)
+      .SILLAGE_DEF(Paving, tag_at, py::arg("point"))
       .def("components", [](const Paving& p) { return p.components(); },
            DOC(Paving, components))
-      .def("node_box", &Paving::node_box, py::arg("i"),
-           DOC(Paving, node_box))
-      .def("is_leaf", &Paving::is_leaf, py::arg("i"), DOC(Paving, is_leaf))
-      .def("left", &Paving::left, py::arg("i"), DOC(Paving, left))
-      .def("right", &Paving::right, py::arg("i"), DOC(Paving, right))
-      .def("tag", &Paving::tag, py::arg("i"), DOC(Paving, tag))
-      .def("leaf_indices", &Paving::leaf_indices, py::arg("tag"), DOC(Paving, leaf_indices))
-      .def("leaves_intersecting", &Paving::leaves_intersecting, py::arg("box"),
-           DOC(Paving, leaves_intersecting))
+      .SILLAGE_DEF(Paving, node_box, py::arg("i"))
+      .SILLAGE_DEF(Paving, is_leaf, py::arg("i"))
+      .SILLAGE_DEF(Paving, left, py::arg("i"))
+      .SILLAGE_DEF(Paving, right, py::arg("i"))
+      .SILLAGE_DEF(Paving, tag, py::arg("i"))
+      .SILLAGE_DEF(Paving, leaf_indices, py::arg("tag"))
+      .SILLAGE_DEF(Paving, leaves_intersecting, py::arg("box"))
       .def("__eq__", &Paving::operator==)
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
@@ -173,17 +156,13 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
            }),
            py::arg("parallel") = true, py::arg("budget") = nullptr,
            "Options: parallel (oneTBB tasks, default True) and a Budget (default: 10^7 boxes, 1 GiB).")
-      .def_readwrite("parallel", &SiviaOptions::parallel,
-                     DOC(SiviaOptions, parallel))
-      .def_readwrite("budget", &SiviaOptions::budget,
-                     DOC(SiviaOptions, budget))
+      .SILLAGE_FIELDS(SiviaOptions, parallel, budget)
       .def("__repr__", [](const SiviaOptions& o) {
         return std::string("SiviaOptions(parallel=") + (o.parallel ? "True" : "False") +
                ", budget=" + py::repr(py::cast(o.budget)).cast<std::string>() + ")";
       });
   py::class_<SiviaResult>(m, "SiviaResult", DOC(SiviaResult))
-      .def_readonly("paving", &SiviaResult::paving, DOC(SiviaResult, paving))
-      .def_readonly("summary", &SiviaResult::summary, DOC(SiviaResult, summary))
+      .SILLAGE_READONLY_FIELDS(SiviaResult, paving, summary)
       .def("take", [](const SiviaResult& r) { return SiviaResult(r).take(); }, DOC(SiviaResult, take))
       .def("__iter__",
            [](const py::object& self) {

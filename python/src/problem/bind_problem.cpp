@@ -98,7 +98,7 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
       .value("Regions", DeltaRefinement::Regions);
   py::class_<Problem>(m, "Problem", DOC(Problem))
       .def_readonly("file", &Problem::file, "The path of the file.")
-      .def_readonly("hash", &Problem::hash, DOC(Problem, hash))
+      .SILLAGE_READONLY_FIELDS(Problem, hash)
       .def_property_readonly("variables", [](const Problem& p) {
         std::vector<std::string> v;
         for (const VarSpec& s : p.vars) v.push_back(s.name);
@@ -113,19 +113,13 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
 
   py::class_<SolveResult, std::shared_ptr<SolveResult>>(
       m, "SolveResult", DOC(SolveResult))
-      .def_readonly("empty", &SolveResult::empty, DOC(SolveResult, empty))
-      .def_readonly("why_empty", &SolveResult::why_empty,
-                    DOC(SolveResult, why_empty))
-      .def_readonly("scheduling", &SolveResult::scheduling, DOC(SolveResult, scheduling))
-      .def_readonly("stopped", &SolveResult::stopped, DOC(SolveResult, stopped))
-      .def_readonly("warnings", &SolveResult::warnings, DOC(SolveResult, warnings))
+      .SILLAGE_READONLY_FIELDS(SolveResult, empty, why_empty, scheduling, stopped, warnings, summary)
       .def_property_readonly("domains", &domains,
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
       .def_property_readonly("schedule", &schedule,
                              "One dict per δ tried: delta, slices, mean_thickness, build_seconds, "
                              "contract_seconds, stats.")
-      .def("build_seconds", &SolveResult::build_seconds, DOC(SolveResult, build_seconds))
-      .def("contract_seconds", &SolveResult::contract_seconds, DOC(SolveResult, contract_seconds))
+      .SILLAGE_DEFS(SolveResult, build_seconds, contract_seconds)
       .def("__repr__", [](const SolveResult& r) {
         const ScheduleStep& s = r.schedule.back();
         return std::string("SolveResult(") + (r.empty ? "no solution" : r.stopped.empty() ? "solved" : "stopped") + ", delta=" + number_text(s.delta) +
@@ -135,20 +129,18 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
   py::class_<TruthCheck>(m, "TruthCheck", DOC(TruthCheck))
       .def_readonly("samples", &TruthCheck::samples, "The truth time points within [t0, tf].")
       .def_readonly("inside", &TruthCheck::inside, "Those with every component inside a bounded tube value.")
-      .def_readonly("first_misses", &TruthCheck::first_misses, DOC(TruthCheck, first_misses))
+      .SILLAGE_READONLY_FIELDS(TruthCheck, first_misses)
       .def("__repr__", [](const TruthCheck& c) {
         return "TruthCheck(" + std::to_string(c.inside) + " of " + std::to_string(c.samples) + " inside)";
       });
-  m.def("check_delta", &check_delta, py::arg("problem"), py::arg("delta"), py::arg("name") = "delta",
-        DOC(check_delta));
+  m.SILLAGE_FN(check_delta, py::arg("problem"), py::arg("delta"), py::arg("name") = "delta");
   m.def(
       "check_truth", [](const Problem& p, const SolveResult& r) { return check_truth(p, r.built); },
       py::arg("problem"), py::arg("result"), DOC(check_truth));
 
   m.def("load_problem", &load_problem, py::arg("path"),
         "Reads and validates a problem file; sillage.ParseError 'file:line:column: found ..., expected ...' otherwise.");
-  m.def("check_summary", &check_summary, py::arg("problem"),
-        DOC(check_summary));
+  m.SILLAGE_FN(check_summary, py::arg("problem"));
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
         py::arg("refinement") = DeltaRefinement::Halving, py::arg("refine") = py::none(),
@@ -182,15 +174,12 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
       },
       py::arg("problem"), py::arg("result"),
       DOC(find_loops));
-  m.def("problem_warnings", &problem_warnings, py::arg("problem"), DOC(problem_warnings));
-  m.def("peak_memory_estimate", &peak_memory_estimate, py::arg("problem"), py::arg("slices"),
-        DOC(peak_memory_estimate));
-  m.def("check_memory", &check_memory, py::arg("problem"), py::arg("slices"), py::arg("what"), DOC(check_memory));
-  m.def("output_names", &output_names, py::arg("problem"), py::arg("tube_files") = false, DOC(output_names));
-  m.def("check_output_dir", &check_output_dir, py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false,
-        DOC(check_output_dir));
-  m.def("constraint_order", &constraint_order, py::arg("problem"),
-        DOC(constraint_order));
+  m.SILLAGE_FN(problem_warnings, py::arg("problem"));
+  m.SILLAGE_FN(peak_memory_estimate, py::arg("problem"), py::arg("slices"));
+  m.SILLAGE_FN(check_memory, py::arg("problem"), py::arg("slices"), py::arg("what"));
+  m.SILLAGE_FN(output_names, py::arg("problem"), py::arg("tube_files") = false);
+  m.SILLAGE_FN(check_output_dir, py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false);
+  m.SILLAGE_FN(constraint_order, py::arg("problem"));
 }
 
 }  // namespace sillage::python

@@ -11,16 +11,12 @@ namespace sillage::python {
 SILLAGE_BINDING(scalar_loops, "tube") {
   py::class_<ScalarLoop>(m, "ScalarLoop", DOC(ScalarLoop))
       .def(py::init<>(), "An empty piece, not proven.")
-      .def_readwrite("boxes", &ScalarLoop::boxes, DOC(ScalarLoop, boxes))
-      .def_readwrite("hull", &ScalarLoop::hull, DOC(ScalarLoop, hull))
-      .def_readwrite("proven", &ScalarLoop::proven, DOC(ScalarLoop, proven))
+      .SILLAGE_FIELDS(ScalarLoop, boxes, hull, proven)
       .def("__repr__", [](const ScalarLoop& l) { return repr(l); }, "ScalarLoop(boxes=..., hull=..., proven=...).");
-  m.def("scalar_loop_exists", &scalar_loop_exists, py::arg("boxes"), py::arg("p"), py::arg("w"),
-        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loop_exists));
+  m.SILLAGE_FN(scalar_loop_exists, py::arg("boxes"), py::arg("p"), py::arg("w"), nogil);
   m.def(
       "scalar_loops", [](double eps, const TubeVector& p, const TubeVector& w) { return scalar_loops(eps, p, w); },
-      py::arg("eps"), py::arg("p"), py::arg("w"),
-        py::call_guard<py::gil_scoped_release>(), DOC(scalar_loops));
+      py::arg("eps"), py::arg("p"), py::arg("w"), nogil, DOC(scalar_loops));
 }
 
 }  // namespace sillage::python

@@ -19,28 +19,16 @@
 namespace sillage::python {
 
 SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
-  py::class_<CtcT1T2>(m, "CtcT1T2",
-                      DOC(CtcT1T2))
-      .def(py::init<double, std::size_t>(), py::arg("ratio") = 1e-3, py::arg("max_passes") = 100,
-           DOC(CtcT1T2, CtcT1T2))
-      .def_property_readonly("ratio", &CtcT1T2::ratio, DOC(CtcT1T2, ratio))
-      .def_property_readonly("max_passes", &CtcT1T2::max_passes, DOC(CtcT1T2, max_passes))
-      .def(
-          "contract",
-          [](const CtcT1T2& c, Interval& t1, Interval& t2, TubeVector& p, const TubeVector& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(t1, t2, p, w);
-          },
-          py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"),
-          DOC(CtcT1T2, contract, Interval_Interval_TubeVector_TubeVector))
-      .def(
-          "contract",
-          [](const CtcT1T2& c, Interval& t1, Interval& t2, Tube& p, const Tube& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(t1, t2, p, w);
-          },
-          py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"),
-          DOC(CtcT1T2, contract, Interval_Interval_Tube_Tube))
+  py::class_<CtcT1T2>(m, "CtcT1T2", DOC(CtcT1T2))
+      .def(py::init<double, std::size_t>(), py::arg("ratio") = 1e-3, py::arg("max_passes") = 100, DOC(CtcT1T2, CtcT1T2))
+      .SILLAGE_PROPERTIES(CtcT1T2, ratio, max_passes)
+      .def("contract",
+           py::overload_cast<Interval&, Interval&, TubeVector&, const TubeVector&>(&CtcT1T2::contract, py::const_),
+           py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"), nogil,
+           DOC(CtcT1T2, contract, Interval_Interval_TubeVector_TubeVector))
+      .def("contract", py::overload_cast<Interval&, Interval&, Tube&, const Tube&>(&CtcT1T2::contract, py::const_),
+           py::arg("t1").noconvert(), py::arg("t2").noconvert(), py::arg("p"), py::arg("w"), nogil,
+           DOC(CtcT1T2, contract, Interval_Interval_Tube_Tube))
       .def("__repr__", [](const CtcT1T2& c) {
         return "CtcT1T2(ratio=" + py::repr(py::float_(c.ratio())).cast<std::string>() + ", max_passes=" + std::to_string(c.max_passes()) + ")";
       });
@@ -55,11 +43,7 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
                std::to_string(a.atom / 2) + ", " + a.value.str() + ")";
       });
   py::class_<OmegaHull>(m, "OmegaHull", DOC(OmegaHull))
-      .def_readonly("empty", &OmegaHull::empty, DOC(OmegaHull, empty))
-      .def_readonly("atoms", &OmegaHull::atoms, DOC(OmegaHull, atoms))
-      .def_readonly("nb_boxes", &OmegaHull::nb_boxes, DOC(OmegaHull, nb_boxes))
-      .def_readonly("nb_consistent", &OmegaHull::nb_consistent, DOC(OmegaHull, nb_consistent))
-      .def_readonly("nb_touched", &OmegaHull::nb_touched, DOC(OmegaHull, nb_touched))
+      .SILLAGE_READONLY_FIELDS(OmegaHull, empty, atoms, nb_boxes, nb_consistent, nb_touched)
       .def(
           "apply_to", [](const OmegaHull& h, TubeVector& q) { return h.apply_to(q); }, py::arg("q"),
           DOC(OmegaHull, apply_to))
@@ -68,18 +52,9 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
                " atoms, " + std::to_string(h.nb_consistent) + "/" + std::to_string(h.nb_boxes) + " boxes consistent)";
       });
 
-  py::class_<CtcOmega>(m, "CtcOmega",
-                       DOC(CtcOmega))
-      .def(py::init([](const CtcT1T2& c) { return CtcOmega(c); }), py::arg("t1t2") = CtcT1T2(),
-           DOC(CtcOmega, CtcOmega))
-      .def(
-          "contract",
-          [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, TubeVector& p, const TubeVector& w) {
-            py::gil_scoped_release unlocked;
-            return c.contract(boxes, p, w);
-          },
-          py::arg("boxes"), py::arg("p"), py::arg("w"),
-          DOC(CtcOmega, contract))
+  py::class_<CtcOmega>(m, "CtcOmega", DOC(CtcOmega))
+      .def(py::init([](const CtcT1T2& c) { return CtcOmega(c); }), py::arg("t1t2") = CtcT1T2(), DOC(CtcOmega, CtcOmega))
+      .SILLAGE_DEF(CtcOmega, contract, py::arg("boxes"), py::arg("p"), py::arg("w"), nogil)
       .def(
           "hull",
           [](const CtcOmega& c, const std::vector<IntervalVector>& boxes, const TubeVector& p, const TubeVector& w) {
@@ -87,21 +62,13 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
             TubeVector work = p;
             return c.hull(boxes, p, w, work);
           },
-          py::arg("boxes"), py::arg("p"), py::arg("w"),
-          DOC(CtcOmega, hull))
+          py::arg("boxes"), py::arg("p"), py::arg("w"), DOC(CtcOmega, hull))
       .def("__repr__", [](const CtcOmega&) { return std::string("<CtcOmega>"); });
 
   py::class_<SlamRow>(m, "SlamRow", DOC(SlamRow))
       .def(py::init<>(), "An empty row.")
-      .def_readonly("iteration", &SlamRow::iteration, DOC(SlamRow, iteration))
-      .def_readonly("fast", &SlamRow::fast, DOC(SlamRow, fast))
-      .def_readonly("nb_detections", &SlamRow::nb_detections, DOC(SlamRow, nb_detections))
-      .def_readonly("nb_proofs", &SlamRow::nb_proofs, DOC(SlamRow, nb_proofs))
-      .def_readonly("seconds", &SlamRow::seconds, DOC(SlamRow, seconds))
-      .def_readonly("cumulated_seconds", &SlamRow::cumulated_seconds, DOC(SlamRow, cumulated_seconds))
-      .def_readonly("contraction_tf", &SlamRow::contraction_tf, DOC(SlamRow, contraction_tf))
-      .def_readonly("contraction_t0", &SlamRow::contraction_t0, DOC(SlamRow, contraction_t0))
-      .def_readonly("nb_atoms_touched", &SlamRow::nb_atoms_touched, DOC(SlamRow, nb_atoms_touched))
+      .SILLAGE_READONLY_FIELDS(SlamRow, iteration, fast, nb_detections, nb_proofs, seconds, cumulated_seconds,
+                               contraction_tf, contraction_t0, nb_atoms_touched)
       .def("__repr__", [](const SlamRow& r) { return to_string(r); });
 
   py::class_<CtcPImpliesZ, NetworkCtc, std::shared_ptr<CtcPImpliesZ>>(
@@ -109,11 +76,9 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
       DOC(CtcPImpliesZ))
       .def(py::init<double, bool>(), py::arg("eps"), py::arg("fast") = false,
            DOC(CtcPImpliesZ, CtcPImpliesZ))
-      .def_property_readonly("eps", &CtcPImpliesZ::eps, DOC(CtcPImpliesZ, eps))
-      .def_property_readonly("fast", &CtcPImpliesZ::fast, DOC(CtcPImpliesZ, fast))
-      .def("set_ratio", &CtcPImpliesZ::set_ratio, py::arg("ratio"),
-           DOC(CtcPImpliesZ, set_ratio))
-      .def("set_max_iterations", &CtcPImpliesZ::set_max_iterations, py::arg("n"), DOC(CtcPImpliesZ, set_max_iterations))
+      .SILLAGE_PROPERTIES(CtcPImpliesZ, eps, fast)
+      .SILLAGE_DEF(CtcPImpliesZ, set_ratio, py::arg("ratio"))
+      .SILLAGE_DEF(CtcPImpliesZ, set_max_iterations, py::arg("n"))
       // On a worker thread: Ctrl-C (or `cancel`) stops it within a t-box.
       .def(
           "contract",
@@ -145,14 +110,8 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
 
   py::class_<TemporalSlamOptions>(m, "TemporalSlamOptions", DOC(TemporalSlamOptions))
       .def(py::init<>(), "eps=0.1, fast and accurate both on, max_rounds=20.")
-      .def_readwrite("eps", &TemporalSlamOptions::eps, DOC(TemporalSlamOptions, eps))
-      .def_readwrite("fast", &TemporalSlamOptions::fast, DOC(TemporalSlamOptions, fast))
-      .def_readwrite("accurate", &TemporalSlamOptions::accurate, DOC(TemporalSlamOptions, accurate))
-      .def_readwrite("max_rounds", &TemporalSlamOptions::max_rounds, DOC(TemporalSlamOptions, max_rounds))
-      .def_readwrite("on_iteration", &TemporalSlamOptions::on_iteration, DOC(TemporalSlamOptions, on_iteration))
-      .def_readwrite("cancel", &TemporalSlamOptions::cancel, DOC(TemporalSlamOptions, cancel))
-      .def_readwrite("progress", &TemporalSlamOptions::progress, DOC(TemporalSlamOptions, progress))
-      .def("__repr__", [](const py::object& self) { return fields_repr(self); });
+      .SILLAGE_FIELDS(TemporalSlamOptions, eps, fast, accurate, max_rounds, on_iteration, cancel, progress)
+      .def("__repr__", &fields_repr);
 
   m.def(
       "temporal_slam",
@@ -168,8 +127,7 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
       py::arg("options") = TemporalSlamOptions(),
       DOC(temporal_slam));
   py::class_<TemporalSlamResult>(m, "TemporalSlamResult", DOC(TemporalSlamResult))
-      .def_readonly("rows", &TemporalSlamResult::rows, DOC(TemporalSlamResult, rows))
-      .def_readonly("summary", &TemporalSlamResult::summary, DOC(TemporalSlamResult, summary))
+      .SILLAGE_READONLY_FIELDS(TemporalSlamResult, rows, summary)
       .def("__iter__",
            [](const py::object& self) { return py::iter(py::make_tuple(self.attr("rows"), self.attr("summary"))); },
            "rows, summary = result")
@@ -193,22 +151,16 @@ SILLAGE_BINDING(slam, "budget", "cn", "expr", "interval", "tube") {
   py::class_<ThicknessCurve>(m, "ThicknessCurve", DOC(ThicknessCurve))
       .def(py::init<TubeVector, std::string, std::string>(), py::arg("p"), py::arg("label"), py::arg("colour"),
            "The curve of p (its components 0 and 1), labelled, in an SVG colour.")
-      .def_readwrite("p", &ThicknessCurve::p, DOC(ThicknessCurve, p))
-      .def_readwrite("label", &ThicknessCurve::label, DOC(ThicknessCurve, label))
-      .def_readwrite("colour", &ThicknessCurve::colour, DOC(ThicknessCurve, colour))
+      .SILLAGE_FIELDS(ThicknessCurve, p, label, colour)
       .def("__repr__", [](const ThicknessCurve& c) { return "ThicknessCurve(label='" + c.label + "', colour='" + c.colour + "')"; });
-  m.def("slam_thickness_figure", &slam_thickness_figure, py::arg("curves"),
-        py::arg("title") = "Thickness of [p](t): diagonal of [p1] x [p2]", py::arg("width_px") = 700,
-        py::arg("height_px") = 300,
-        DOC(slam_thickness_figure));
-  m.def("slam_map_figure", &slam_map_figure, py::arg("mission"), py::arg("dead_reckoning"), py::arg("slam"),
-        py::arg("tf_boxes"), py::arg("title") = "Temporal SLAM: dead reckoning, SLAM, truth, [p](t_f)",
-        py::arg("width_px") = 600,
-        DOC(slam_map_figure));
+  m.SILLAGE_FN(slam_thickness_figure, py::arg("curves"),
+               py::arg("title") = "Thickness of [p](t): diagonal of [p1] x [p2]", py::arg("width_px") = 700,
+               py::arg("height_px") = 300);
+  m.SILLAGE_FN(slam_map_figure, py::arg("mission"), py::arg("dead_reckoning"), py::arg("slam"), py::arg("tf_boxes"),
+               py::arg("title") = "Temporal SLAM: dead reckoning, SLAM, truth, [p](t_f)", py::arg("width_px") = 600);
 
-  m.def("tide_tube", &tide_tube, py::arg("tdomain"), py::arg("tide"), DOC(tide_tube));
-  m.def("bathymetric_observation", &bathymetric_observation, py::arg("z_alt"), py::arg("z_depth"), py::arg("tide"),
-        DOC(bathymetric_observation));
+  m.SILLAGE_FN(tide_tube, py::arg("tdomain"), py::arg("tide"));
+  m.SILLAGE_FN(bathymetric_observation, py::arg("z_alt"), py::arg("z_depth"), py::arg("tide"));
 }
 
 }  // namespace sillage::python

@@ -29,14 +29,8 @@ SILLAGE_BINDING(trajectory, "expr", "interval") {
            DOC(Trajectory, Trajectory, string_Interval))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
            DOC(Trajectory, Trajectory, Function_Interval))
-      .def("is_sampled", &Trajectory::is_sampled, DOC(Trajectory, is_sampled))
-      .def("is_analytic", &Trajectory::is_analytic,
-           DOC(Trajectory, is_analytic))
-      .def("domain", &Trajectory::domain, DOC(Trajectory, domain))
-      .def("sample_times", &Trajectory::sample_times, DOC(Trajectory, sample_times))
-      .def("sample_values", &Trajectory::sample_values, DOC(Trajectory, sample_values))
-      .def("set", &Trajectory::set, py::arg("t"), py::arg("x"),
-           DOC(Trajectory, set))
+      .SILLAGE_DEFS(Trajectory, is_sampled, is_analytic, domain, sample_times, sample_values)
+      .SILLAGE_DEF(Trajectory, set, py::arg("t"), py::arg("x"))
       .def("__call__", py::overload_cast<double>(&Trajectory::operator(), py::const_), py::arg("t"),
            DOC(Trajectory, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&Trajectory::operator(), py::const_), py::arg("t"))
@@ -59,17 +53,17 @@ SILLAGE_BINDING(trajectory, "expr", "interval") {
             return Trajectory(st[0].cast<std::vector<double>>(), st[1].cast<std::vector<double>>());
           }));
   // Arithmetic (trajectory_arithmetic.h): composite trajectories over the common domain.
-#define SILLAGE_TRAJ_BIN(name, rname, op)                                                                      \
-  tc.def(name, [](const Trajectory& a, const Trajectory& b) { return a op b; }, py::is_operator(),            \
-         "Composite trajectory over the common domain, evaluated as [a](t) " #op " [b](t).")                   \
-      .def(name, [](const Trajectory& a, double b) { return a op b; }, py::is_operator())                     \
-      .def(rname, [](const Trajectory& a, double b) { return b op a; }, py::is_operator());
-  SILLAGE_TRAJ_BIN("__add__", "__radd__", +)
-  SILLAGE_TRAJ_BIN("__sub__", "__rsub__", -)
-  SILLAGE_TRAJ_BIN("__mul__", "__rmul__", *)
-  SILLAGE_TRAJ_BIN("__truediv__", "__rtruediv__", /)
+#define SILLAGE_TRAJ_BIN(op)                                                                             \
+  tc.def(py::self op py::self, "Composite trajectory over the common domain, evaluated as [a](t) " #op   \
+         " [b](t).")                                                                                     \
+      .def(py::self op double())                                                                         \
+      .def(double() op py::self);
+  SILLAGE_TRAJ_BIN(+)
+  SILLAGE_TRAJ_BIN(-)
+  SILLAGE_TRAJ_BIN(*)
+  SILLAGE_TRAJ_BIN(/)
 #undef SILLAGE_TRAJ_BIN
-  tc.def("__neg__", [](const Trajectory& a) { return -a; })
+  tc.def(-py::self)
       .def("__abs__", [](const Trajectory& a) { return abs(a); });
   tc.attr("__array_ufunc__") = py::none();
   using F1 = Trajectory (*)(const Trajectory&);
@@ -109,25 +103,24 @@ SILLAGE_BINDING(trajectory, "expr", "interval") {
            DOC(TrajectoryVector, TrajectoryVector, string_Interval))
       .def(py::init<const Function&, const Interval&>(), py::arg("f"), py::arg("domain"),
            DOC(TrajectoryVector, TrajectoryVector, Function_Interval))
-      .def("size", &TV::size, DOC(TrajectoryVector, size))
+      .SILLAGE_DEF(TrajectoryVector, size)
       .def("__len__", &TV::size)
-      .def("domain", &TV::domain, DOC(TrajectoryVector, domain))
+      .SILLAGE_DEF(TrajectoryVector, domain)
       .def("__getitem__", [](const TV& x, long long i) { return x[py_index(i, x.size(), "TrajectoryVector")]; }, py::arg("i"),
            DOC(TrajectoryVector, op_index))
       .def("__call__", py::overload_cast<double>(&TV::operator(), py::const_), py::arg("t"),
            DOC(TrajectoryVector, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&TV::operator(), py::const_), py::arg("t"))
-      .def("__neg__", [](const TV& a) { return -a; })
-      .def("__add__", [](const TV& a, const TV& b) { return a + b; }, py::is_operator(),
-           "Component-wise (same size, DimensionError otherwise).")
-      .def("__sub__", [](const TV& a, const TV& b) { return a - b; }, py::is_operator())
+      .def(-py::self)
+      .def(py::self + py::self, "Component-wise (same size, DimensionError otherwise).")
+      .def(py::self - py::self)
       .def("__mul__", [](const TV& a, const Trajectory& b) { return a * b; }, py::is_operator(),
            "Every component times a scalar trajectory or a number.")
-      .def("__mul__", [](const TV& a, double b) { return a * b; }, py::is_operator())
+      .def(py::self * double())
       .def("__rmul__", [](const TV& a, const Trajectory& b) { return b * a; }, py::is_operator())
-      .def("__rmul__", [](const TV& a, double b) { return b * a; }, py::is_operator())
+      .def(double() * py::self)
       .def("__truediv__", [](const TV& a, const Trajectory& b) { return a / b; }, py::is_operator())
-      .def("__truediv__", [](const TV& a, double b) { return a / b; }, py::is_operator())
+      .def(py::self / double())
       .def("__repr__",
            [](const TV& x) {
              return "TrajectoryVector(dim " + std::to_string(x.size()) + ", t=" + x.domain().str() + ")";

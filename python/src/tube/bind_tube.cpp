@@ -230,8 +230,7 @@ void init_tube_class(py::module_& m) {
            DOC(Tube, Tube, TDomain_vector_Interval))
       .def(py::init<TD, const std::vector<Interval>&, const std::vector<Interval>&>(), py::arg("tdomain"),
            py::arg("slices"), py::arg("gates"), DOC(Tube, Tube, TDomain_vector_Interval_vector_Interval))
-      .def("tdomain", &T::tdomain, DOC(Tube, tdomain))
-      .def("nb_slices", &T::nb_slices, DOC(Tube, nb_slices))
+      .SILLAGE_DEFS(Tube, tdomain, nb_slices)
       // Signed indices: -1 is an OutOfRangeError, not an argument mismatch.
       .def("slice", [](const T& x, py::ssize_t k) { return x.slice(index_arg(k, "Tube.slice", "slice")); },
            py::arg("k"), "[x](k), the codomain of slice k (0 <= k < N).")
@@ -255,15 +254,12 @@ void init_tube_class(py::module_& m) {
           "set_gate",
           [](T& x, py::ssize_t k, const Interval& y) { x.set_gate(index_arg(k, "Tube.set_gate", "gate"), y); },
           py::arg("k"), py::arg("y"), "Gate k := y (not checked against the slices).")
-      .def("codomain", &T::codomain, DOC(Tube, codomain))
-      .def("volume", &T::volume, DOC(Tube, volume))
+      .SILLAGE_DEFS(Tube, codomain, volume)
       .def("thickness", [](const T& x, py::ssize_t k) { return x.thickness(index_arg(k, "Tube.thickness", "slice")); },
            py::arg("k"), DOC(Tube, thickness))
-      .def("max_thickness", &T::max_thickness, DOC(Tube, max_thickness))
-      .def("is_empty", &T::is_empty, DOC(Tube, is_empty))
-      .def("is_subset", &T::is_subset, py::arg("y"), DOC(Tube, is_subset))
-      .def("contains", &T::contains, py::arg("trajectory"),
-           DOC(Tube, contains))
+      .SILLAGE_DEFS(Tube, max_thickness, is_empty)
+      .SILLAGE_DEF(Tube, is_subset, py::arg("y"))
+      .SILLAGE_DEF(Tube, contains, py::arg("trajectory"))
       .def("__call__", py::overload_cast<double>(&T::operator(), py::const_), py::arg("t"),
            DOC(Tube, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&T::operator(), py::const_), py::arg("t"))
@@ -277,7 +273,7 @@ void init_tube_class(py::module_& m) {
            "A new tube: every slice and gate inflated by r >= 0 (this tube is unchanged, like Interval.inflate).")
       .def("inflate", py::overload_cast<const T&, const T&>(&inflated), py::arg("r"),
            "A new tube: self + [-1, 1]·r slice- and gate-wise, r a tube of radii >= 0 on the same TDomain.")
-      .def("inverse", [](const T& x, const Interval& y) { return x.inverse(y); }, py::arg("y"),
+      .def("inverse", py::overload_cast<const Interval&>(&T::inverse, py::const_), py::arg("y"),
            DOC(Tube, inverse, Interval))
       .def("inverse_components",
            [](const T& x, const Interval& y) {
@@ -314,26 +310,17 @@ void init_tube_class(py::module_& m) {
   c.attr("__hash__") = py::none();
   c.attr("__array_ufunc__") = py::none();
 
-  // With a Tube or an Interval (or a float) on either side; in-place forms modify self.
-#define SILLAGE_TUBE_BIN(name, rname, iname, op)                                                     \
-  c.def(name, [](const T& a, const T& b) { return a op b; }, py::is_operator())                       \
-      .def(name, [](const T& a, const Interval& b) { return a op b; }, py::is_operator())             \
-      .def(rname, [](const T& a, const Interval& b) { return b op a; }, py::is_operator())            \
-      .def(iname, [](T& a, const T& b) -> T& { return a op## = b; }, py::is_operator(),               \
-           py::return_value_policy::reference)                                                        \
-      .def(iname, [](T& a, const Interval& b) -> T& { return a op## = b; }, py::is_operator(),        \
-           py::return_value_policy::reference);
-  SILLAGE_TUBE_BIN("__add__", "__radd__", "__iadd__", +)
-  SILLAGE_TUBE_BIN("__sub__", "__rsub__", "__isub__", -)
-  SILLAGE_TUBE_BIN("__mul__", "__rmul__", "__imul__", *)
-  SILLAGE_TUBE_BIN("__truediv__", "__rtruediv__", "__itruediv__", /)
+  // With a Tube or an Interval (or a float) on either side; in-place forms modify self (and
+  // give the same Python object back).
+#define SILLAGE_TUBE_BIN(op)                                                                             \
+  c.def(py::self op py::self).def(py::self op Interval()).def(Interval() op py::self);                   \
+  c.def(py::self op## = py::self).def(py::self op## = Interval());
+  SILLAGE_TUBE_BIN(+)
+  SILLAGE_TUBE_BIN(-)
+  SILLAGE_TUBE_BIN(*)
+  SILLAGE_TUBE_BIN(/)
 #undef SILLAGE_TUBE_BIN
-  c.def("__and__", [](const T& a, const T& b) { return a & b; }, py::is_operator())
-      .def("__or__", [](const T& a, const T& b) { return a | b; }, py::is_operator())
-      .def("__iand__", [](T& a, const T& b) -> T& { return a &= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__ior__", [](T& a, const T& b) -> T& { return a |= b; }, py::is_operator(),
-           py::return_value_policy::reference);
+  c.def(py::self & py::self).def(py::self | py::self).def(py::self &= py::self).def(py::self |= py::self);
 }
 
 void init_tube_functions(py::module_& m) {
@@ -383,8 +370,7 @@ void init_tube_functions(py::module_& m) {
   m.def("tube_from_data", py::overload_cast<TD, const Trajectory&, double, const Interval&>(&tube_from_data),
         py::arg("tdomain"), py::arg("data"), py::arg("error"), py::arg("dx"),
         DOC(tube_from_data, TDomain_Trajectory_double_Interval));
-  m.def("tube_from_bounds", &tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"),
-        DOC(tube_from_bounds));
+  m.SILLAGE_FN(tube_from_bounds, py::arg("tdomain"), py::arg("lb"), py::arg("ub"));
   m.def("save_tube", py::overload_cast<const T&, const std::string&>(&save), py::arg("x"), py::arg("path"),
         "Writes a Tube or a TubeVector (with its time points) to a file.");
   m.def("save_tube", py::overload_cast<const TubeVector&, const std::string&>(&save), py::arg("x"),
@@ -434,10 +420,9 @@ void init_tube_vector(py::module_& m) {
            }),
            py::arg("tdomain"), py::arg("slices").noconvert(), py::arg("gates") = py::none(), kArraysDoc)
       .def(py::init<std::vector<Tube>>(), py::arg("tubes"), DOC(TubeVector, TubeVector, vector_Tube))
-      .def("size", &V::size, DOC(TubeVector, size))
+      .SILLAGE_DEF(TubeVector, size)
       .def("__len__", &V::size)
-      .def("tdomain", &V::tdomain, DOC(TubeVector, tdomain))
-      .def("nb_slices", &V::nb_slices, DOC(TubeVector, nb_slices))
+      .SILLAGE_DEFS(TubeVector, tdomain, nb_slices)
       // The component itself (a heap object of its own, shared): a live
       // reference that stays valid whatever happens to the vector, and that
       // ContractorNetwork identifies with the component of DomainRef.component.
@@ -450,7 +435,7 @@ void init_tube_vector(py::module_& m) {
              xi = x;
            },
            py::arg("i"), py::arg("x"), "Component i := a copy of the tube x (same TDomain).")
-      .def("subvector", &V::subvector, py::arg("i"), py::arg("j"), DOC(TubeVector, subvector))
+      .SILLAGE_DEF(TubeVector, subvector, py::arg("i"), py::arg("j"))
       .def("slice", [](const V& v, py::ssize_t k) { return v.slice(index_arg(k, "TubeVector.slice", "slice")); },
            py::arg("k"), DOC(TubeVector, slice))
       .def("gate", [](const V& v, py::ssize_t k) { return v.gate(index_arg(k, "TubeVector.gate", "gate")); },
@@ -458,12 +443,9 @@ void init_tube_vector(py::module_& m) {
       .def("__call__", py::overload_cast<double>(&V::operator(), py::const_), py::arg("t"),
            DOC(TubeVector, op_call, double))
       .def("__call__", py::overload_cast<const Interval&>(&V::operator(), py::const_), py::arg("t"))
-      .def("codomain", &V::codomain, DOC(TubeVector, codomain))
-      .def("volume", &V::volume, DOC(TubeVector, volume))
-      .def("max_thickness", &V::max_thickness, DOC(TubeVector, max_thickness))
-      .def("is_empty", &V::is_empty, DOC(TubeVector, is_empty))
-      .def("is_subset", &V::is_subset, py::arg("y"), DOC(TubeVector, is_subset))
-      .def("contains", &V::contains, py::arg("trajectories"), DOC(TubeVector, contains))
+      .SILLAGE_DEFS(TubeVector, codomain, volume, max_thickness, is_empty)
+      .SILLAGE_DEF(TubeVector, is_subset, py::arg("y"))
+      .SILLAGE_DEF(TubeVector, contains, py::arg("trajectories"))
       .def("contains", [](const V& x, const TrajectoryVector& y) { return x.contains(y.components()); },
            py::arg("trajectory"), DOC(TubeVector, contains))
       .def("slices_array", [](const V& v) { return components_array(v, false); },
@@ -519,13 +501,11 @@ void init_tube_vector(py::module_& m) {
           py::arg("k"), py::arg("y"), DOC(TubeVector, set_gate))
       .def(py::self == py::self)
       .def(py::self != py::self)
-      .def("__iand__", [](V& a, const V& b) -> V& { return a &= b; }, py::is_operator(),
-           py::return_value_policy::reference)
-      .def("__ior__", [](V& a, const V& b) -> V& { return a |= b; }, py::is_operator(),
-           py::return_value_policy::reference)
+      .def(py::self &= py::self)
+      .def(py::self |= py::self)
       .def("__and__", [](const V& a, const V& b) { V r(a); return r &= b; }, py::is_operator())
       .def("__or__", [](const V& a, const V& b) { V r(a); return r |= b; }, py::is_operator())
-      .def("__neg__", [](const V& a) { return -a; })
+      .def(-py::self)
       .def("__repr__",
            [](const V& v) {
              return "TubeVector(t=" + v.tdomain()->t0_tf().str() + ", " + std::to_string(v.nb_slices()) +

@@ -41,9 +41,7 @@ SILLAGE_BINDING(tube_analysis, "interval", "tube") {
   py::class_<TubeAnalysis>(m, "TubeAnalysis",
                            DOC(TubeAnalysis))
       .def(py::init<const Tube&>(), py::arg("x"), py::keep_alive<1, 2>(), DOC(TubeAnalysis, TubeAnalysis))
-      .def(
-          "eval", [](const TubeAnalysis& a, const Interval& t) { return a.eval(t); }, py::arg("t"),
-          DOC(TubeAnalysis, eval))
+      .SILLAGE_DEF(TubeAnalysis, eval, py::arg("t"))
       .def(
           "integral",
           [](const TubeAnalysis& a, const py::object& t1, const py::object& t2) {
@@ -68,12 +66,10 @@ SILLAGE_BINDING(tube_analysis, "interval", "tube") {
   m.def("taylor_increments", &taylor_increments, py::arg("w"), py::arg("dw"), py::arg("noise") = Interval(0.0),
         "Enclosures of ∫ over each slice of w + e, w' ∈ dw, e(t) ∈ noise, by first-order Taylor forms from\n"
         "both gates of w (a list of N Intervals).");
-  m.def("primitive_from_increments", &primitive_from_increments, py::arg("x"), py::arg("increments"),
-        py::arg("x0"), py::arg("gates") = std::vector<Interval>(),
-        DOC(primitive_from_increments));
-  m.def("primitive_taylor", &primitive_taylor, py::arg("w"), py::arg("dw"), py::arg("x0") = Interval(0.0),
-        py::arg("noise") = Interval(0.0),
-        DOC(primitive_taylor));
+  m.SILLAGE_FN(primitive_from_increments, py::arg("x"), py::arg("increments"), py::arg("x0"),
+               py::arg("gates") = std::vector<Interval>());
+  m.SILLAGE_FN(primitive_taylor, py::arg("w"), py::arg("dw"), py::arg("x0") = Interval(0.0),
+               py::arg("noise") = Interval(0.0));
 
   py::object cls = m.attr("Tube");
   add_method(cls, "integral",

@@ -86,14 +86,14 @@ void check_solve_options(const Problem& p, const SolveOptions& o, const std::str
                 "delta auto, or delta = \"auto\" in [time]): a fixed delta is not refined");
 }
 
-SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
-  check_solve_options(p, o, "");
+namespace {
+
+// The steps of the solve, into r: a fixed δ, or δ refined until the result settles.
+void solve_steps(const Problem& p, const SolveOptions& o, SolveResult& r) {
   std::optional<double> fixed = o.delta ? o.delta : p.time.delta;
   if (o.auto_delta) fixed.reset();
   if (!p.time.points.empty())
     fixed = (p.time.tf - p.time.t0) / static_cast<double>(p.time.points.size() - 1);  // the mean period, for the reports
-  SolveResult r;
-  r.warnings = problem_warnings(p);
   const auto start = std::chrono::steady_clock::now();
   double delta = fixed ? *fixed : (p.time.tf - p.time.t0) / 64;
   std::vector<double> points;  // regions: the time points of the next step (none: the uniform δ)
@@ -125,16 +125,16 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
     r.schedule.push_back(step);
     if (o.on_step) o.on_step(step);
     r.built = std::move(b);
-    if (!r.stopped.empty()) return r;
+    if (!r.stopped.empty()) return;
     if (step.stats.empty) {
       r.empty = true;
       r.why_empty = explain(p, r.built, step.stats);
-      return r;
+      return;
     }
-    if (fixed) return r;
+    if (fixed) return;
     if (r.schedule.size() >= 2) {
       const double prev = r.schedule[r.schedule.size() - 2].mean_thickness, cur = step.mean_thickness;
-      if (std::abs(prev - cur) <= o.tolerance * std::abs(prev)) return r;
+      if (std::abs(prev - cur) <= o.tolerance * std::abs(prev)) return;
     }
     std::size_t next_slices = 2 * step.slices;
     if (o.refinement == DeltaRefinement::Regions) {
@@ -144,10 +144,35 @@ SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
     // The next step, estimated in proportion to its slices.
     const double last = step.build_seconds + step.contract_seconds;
     const double growth = static_cast<double>(next_slices) / static_cast<double>(step.slices);
-    if (seconds_since(start) + growth * last > o.budget_seconds) return r;
-    if (next_slices > o.max_slices || next_slices == step.slices) return r;
+    if (seconds_since(start) + growth * last > o.budget_seconds) return;
+    if (next_slices > o.max_slices || next_slices == step.slices) return;
     delta /= 2;
   }
+}
+
+// The summary of the solve: the status of its last step, the counters of all.
+Summary solve_summary(const SolveResult& r, double seconds) {
+  Summary s;
+  s.status = !r.stopped.empty() ? Status::Stopped : r.empty ? Status::NoSolution : Status::Converged;
+  s.reason = !r.stopped.empty() ? r.stopped : r.why_empty;
+  for (const ScheduleStep& step : r.schedule) {
+    s.rounds += step.stats.summary.rounds;
+    s.work += step.stats.summary.work;
+  }
+  s.seconds = seconds;
+  return s;
+}
+
+}  // namespace
+
+SolveResult solve_problem(const Problem& p, const SolveOptions& o) {
+  check_solve_options(p, o, "");
+  SolveResult r;
+  r.warnings = problem_warnings(p);
+  const auto start = std::chrono::steady_clock::now();
+  solve_steps(p, o, r);
+  r.summary = solve_summary(r, seconds_since(start));
+  return r;
 }
 
 }  // namespace sillage
