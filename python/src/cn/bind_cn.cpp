@@ -155,16 +155,15 @@ SILLAGE_BINDING(cn, "budget", "ctc", "interval", "tube") {
       .def(
           "contract_run", [](ContractorNetwork& cn) { return interruptible(cn, &ContractorNetwork::contract_run); },
           DOC(ContractorNetwork, contract_run))
-      .def("update", &ContractorNetwork::update, py::call_guard<py::gil_scoped_release>(),
-           DOC(ContractorNetwork, update))
+      .SILLAGE_DEF(ContractorNetwork, update, nogil)
       .def(
           "touched",
           [](ContractorNetwork& cn, const py::object& domain, const Interval& t) {
             cn.touched(to_domain_ref(domain, 0), t);
           },
           py::arg("domain"), py::arg("t") = Interval(), DOC(ContractorNetwork, touched))
-      .def("relayout", &ContractorNetwork::relayout, DOC(ContractorNetwork, relayout))
-      .def("retire", &ContractorNetwork::retire, py::arg("nodes"), DOC(ContractorNetwork, retire))
+      .SILLAGE_DEF(ContractorNetwork, relayout)
+      .SILLAGE_DEF(ContractorNetwork, retire, py::arg("nodes"))
       .def("nb_ctc", &ContractorNetwork::nb_ctc, DOC(ContractorNetwork, nb_ctc))
       .def("nb_dom", &ContractorNetwork::nb_dom, DOC(ContractorNetwork, nb_dom))
       .def("ratio", &ContractorNetwork::ratio,

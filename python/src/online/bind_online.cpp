@@ -40,23 +40,12 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
            }),
            py::arg("window") = OnlineOptions().window, py::arg("forget_every") = 0.0, py::arg("ratio") = 0.01,
            "window=inf (keep everything), forget_every=0 (window/8), ratio=0.01.")
-      .def_readwrite("window", &OnlineOptions::window, DOC(OnlineOptions, window))
-      .def_readwrite("forget_every", &OnlineOptions::forget_every, DOC(OnlineOptions, forget_every))
-      .def_readwrite("ratio", &OnlineOptions::ratio, DOC(OnlineOptions, ratio))
+      .SILLAGE_FIELDS(OnlineOptions, window, forget_every, ratio)
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
 
   py::class_<OnlineStats>(m, "OnlineStats", DOC(OnlineStats))
-      .def_readonly("updates", &OnlineStats::updates, DOC(OnlineStats, updates))
-      .def_readonly("last_seconds", &OnlineStats::last_seconds, DOC(OnlineStats, last_seconds))
-      .def_readonly("total_seconds", &OnlineStats::total_seconds, DOC(OnlineStats, total_seconds))
-      .def_readonly("slices", &OnlineStats::slices, DOC(OnlineStats, slices))
-      .def_readonly("forgotten", &OnlineStats::forgotten, DOC(OnlineStats, forgotten))
-      .def_readonly("observations", &OnlineStats::observations, DOC(OnlineStats, observations))
-      .def_readonly("retired", &OnlineStats::retired, DOC(OnlineStats, retired))
-      .def_readonly("contractors", &OnlineStats::contractors, DOC(OnlineStats, contractors))
-      .def_readonly("contractor_runs", &OnlineStats::contractor_runs, DOC(OnlineStats, contractor_runs))
-      .def_readonly("relayouts", &OnlineStats::relayouts, DOC(OnlineStats, relayouts))
-      .def_readonly("layout_seconds", &OnlineStats::layout_seconds, DOC(OnlineStats, layout_seconds))
+      .SILLAGE_READONLY_FIELDS(OnlineStats, updates, last_seconds, total_seconds, slices, forgotten, observations,
+                               retired, contractors, contractor_runs, relayouts, layout_seconds)
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
 
   py::class_<OnlineEstimator>(m, "OnlineEstimator", DOC(OnlineEstimator))
@@ -64,10 +53,9 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
            DOC(OnlineEstimator, OnlineEstimator))
       .def("add_state", &OnlineEstimator::add_state, py::arg("name"), py::arg("dim"),
            py::arg("x0") = IntervalVector(), DOC(OnlineEstimator, add_state))
-      .def("add_input", &OnlineEstimator::add_input, py::arg("name"), py::arg("dim"), DOC(OnlineEstimator, add_input))
-      .def("add_bounded", &OnlineEstimator::add_bounded, py::arg("name"), py::arg("value"),
-           DOC(OnlineEstimator, add_bounded))
-      .def("add_deriv", &OnlineEstimator::add_deriv, py::arg("x"), py::arg("v"), DOC(OnlineEstimator, add_deriv))
+      .SILLAGE_DEF(OnlineEstimator, add_input, py::arg("name"), py::arg("dim"))
+      .SILLAGE_DEF(OnlineEstimator, add_bounded, py::arg("name"), py::arg("value"))
+      .SILLAGE_DEF(OnlineEstimator, add_deriv, py::arg("x"), py::arg("v"))
       .def(
           "add",
           [](OnlineEstimator& est, const py::object& ctc, const std::vector<std::string>& tubes) {
@@ -103,9 +91,8 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
       .def("now", py::overload_cast<>(&OnlineEstimator::now, py::const_), DOC(OnlineEstimator, now, void))
       .def("now", py::overload_cast<const std::string&>(&OnlineEstimator::now, py::const_), py::arg("name"),
            DOC(OnlineEstimator, now, string))
-      .def("window_start", &OnlineEstimator::window_start, DOC(OnlineEstimator, window_start))
-      .def("tube", &OnlineEstimator::tube, py::arg("name"), DOC(OnlineEstimator, tube))
-      .def("stats", &OnlineEstimator::stats, DOC(OnlineEstimator, stats))
+      .SILLAGE_DEFS(OnlineEstimator, window_start, stats)
+      .SILLAGE_DEF(OnlineEstimator, tube, py::arg("name"))
       .def("last_update", &OnlineEstimator::last_update, py::return_value_policy::copy,
            DOC(OnlineEstimator, last_update))
       .def("network", &OnlineEstimator::network, py::return_value_policy::reference_internal,

@@ -39,9 +39,9 @@ SILLAGE_BINDING(tdomain, "interval") {
            DOC(TDomain, sample, double))
       .def("sample", py::overload_cast<const Interval&>(&TDomain::sample), py::arg("t"),
            DOC(TDomain, sample, Interval))
-      .def("extend", &TDomain::extend, py::arg("t"), DOC(TDomain, extend))
-      .def("forget_before", &TDomain::forget_before, py::arg("t"), DOC(TDomain, forget_before))
-      .def("nb_forgotten", &TDomain::nb_forgotten, DOC(TDomain, nb_forgotten))
+      .SILLAGE_DEF(TDomain, extend, py::arg("t"))
+      .SILLAGE_DEF(TDomain, forget_before, py::arg("t"))
+      .SILLAGE_DEF(TDomain, nb_forgotten)
       .def("nb_attached", &TDomain::nb_attached, DOC(TDomain, nb_attached))
       .def("__repr__",
            [](const TDomain& td) {
