@@ -126,6 +126,12 @@ class TubeContractorNodeBase : public TubeNode {
              const std::function<bool(ArgValues&)>& call) const;
   // The pairs (x, v) of component c for derivative_pairs.
   void pair_of_first_two(std::vector<DerivativePair>& out) const;
+  // A run that works where the first two tube arguments (x, v) changed: per
+  // component c whose x or v has dirty atoms, local(c, x, v, first, last,
+  // changes) with the slices first..last that hold them (a gate brings both
+  // its slices). Sets r.empty_at when local returns false.
+  using Local = std::function<bool(Tube&, const Tube&, std::size_t, std::size_t, const TubeChanges&)>;
+  bool run_local(NodeRun& r, const Local& local) const;
 
  private:
   // Sets r.empty_at: where along time the first contracted tube stopped being consistent.
@@ -160,6 +166,17 @@ class TubeContractorNode<Derived, R(A...)> : public TubeContractorNodeBase {
   std::string describe() const override { return ctc_.describe(); }
 
   bool run(NodeRun& r) const override {
+    // A contractor that can start where its tubes changed (CtcDeriv::contract_local) does so
+    // after its first run: the cost of a run is then the reach of the change, not the tube's.
+    if constexpr (requires(const Derived& d, Tube& x, const Tube& w, const TubeChanges& ch) {
+                    d.contract_local(x, w, std::size_t{0}, std::size_t{0}, ch);
+                  }) {
+      if (!r.all) {
+        return run_local(r, [this](Tube& x, const Tube& w, std::size_t a, std::size_t b, const TubeChanges& ch) {
+          return ctc_.contract_local(x, w, a, b, ch);
+        });
+      }
+    }
     const CancelToken& cancel = r.cancel_token();
     const std::function<bool(ArgValues&)> call = [&](ArgValues& v) { return this->call(v, cancel); };
     thread_local ArgValues scratch;  // buffers reused; a nested run (a contractor running a network) gets its own

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/cn/tube_changes.h"
 #include "sillage/cn/tube_contractor.h"
 #include "sillage/dynamics/time_propag.h"
 #include "sillage/interval/interval.h"
@@ -82,6 +83,16 @@ class CtcDeriv : public TubeContractor<CtcDeriv, bool(Tube&, const Tube&)> {
   // degenerate t: the slices that contain it), as above. Empty t: nothing
   // done, returns true. Error if t is not inside the TDomain.
   bool contract(Tube& x, const Tube& v, const Interval& t) const;
+
+  // For a network node, the local propagation: x was a fixed point of this
+  // contractor before slices first..last changed (in x or in v). The sweeps
+  // start there and go on, both ways, while they move gates, so the cost is
+  // that of how far the change reaches, not of the tube; the result is the
+  // one of contract(x, v) on such a tube (FORWARD or BACKWARD alone, one pass
+  // being no fixed point: the whole pass). `changes` receives what shrank.
+  // False if x is now empty (x is then set empty). Error if first > last or
+  // last >= N; DimensionError if x and v are not on the same TDomain.
+  bool contract_local(Tube& x, const Tube& v, std::size_t first, std::size_t last, const TubeChanges& changes) const;
 
   // Component-wise: x[i]' ∈ v[i]. DimensionError if the sizes differ; if a
   // component becomes empty, all are set empty and false is returned.

@@ -132,6 +132,31 @@ TubeContractorNodeBase::TubeContractorNodeBase(std::string name, const std::vect
   }
 }
 
+bool TubeContractorNodeBase::run_local(NodeRun& r, const Local& local) const {
+  const std::size_t n = components(), x0 = layout_.first[0], v0 = layout_.first[1];
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  thread_local std::vector<std::size_t> lo, hi;
+  lo.assign(n, kNone);
+  hi.assign(n, 0);
+  for (const std::size_t p : r.dirty) {
+    const std::size_t g = range_of(p);
+    const std::size_t c = g >= x0 && g < x0 + n ? g - x0 : g >= v0 && g < v0 + n ? g - v0 : kNone;
+    if (c == kNone) continue;
+    const std::size_t a = p - offset(g), slices = (ranges()[g].count - 1) / 2, k = time_index(a);
+    const std::size_t from = is_slice(a) || k == 0 ? k : k - 1, to = is_slice(a) ? k : std::min(k, slices - 1);
+    lo[c] = std::min(lo[c], from);
+    hi[c] = std::max(hi[c], to);
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    if (lo[c] == kNone) continue;
+    if (!local(tube(x0 + c)->tube(), tube(v0 + c)->tube(), lo[c], hi[c], changes(r, x0 + c))) {
+      r.empty_at = offset(x0 + c) + slice_atom(lo[c]);
+      return false;
+    }
+  }
+  return true;
+}
+
 void TubeContractorNodeBase::load(const NodeRun& r, std::size_t c, ArgValues& v) const {
   const std::size_t n = spec_.size();
   v.tube.assign(n, nullptr);

@@ -1,4 +1,5 @@
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/deriv_sweep.h"
 
 #include <algorithm>
 #include <bit>
@@ -82,20 +83,6 @@ bool backward_sweep(const Arrays& d, std::size_t first, std::size_t last, bool& 
   ch |= store(d.g[first], blo, bhi);
   changed |= ch != 0;
   return ok;
-}
-
-void check_pair(const Tube& x, const Tube& v, const char* where) {
-  if (x.tdomain() != v.tdomain()) {
-    throw DimensionError(std::string(where) + ": x and v are not on the same TDomain (" +
-                         std::to_string(x.nb_slices()) + " and " + std::to_string(v.nb_slices()) + " slices)");
-  }
-}
-
-void check_range(std::size_t n, std::size_t first, std::size_t last, const char* where) {
-  if (first > last || last >= n) {
-    throw Error(std::string(where) + ": slice range [" + std::to_string(first) + ", " + std::to_string(last) +
-                "] is not inside [0, " + std::to_string(n - 1) + "]");
-  }
 }
 
 constexpr std::size_t kBlock = 64;  // slices of a blocked sweep: they stay in L1 between its passes
@@ -205,6 +192,19 @@ bool sweeps(TimePropag p, const Arrays& d, std::size_t first, std::size_t last, 
   return forward_sweep<R, false>(d, first, last, changed) && backward_sweep<R, true>(d, first, last, changed);
 }
 
+template <class R>
+bool one_sweep(detail::DerivSweep kind, const Arrays& d, std::size_t first, std::size_t last, bool& changed) {
+  using K = detail::DerivSweep;
+  const bool blocked = blocked_sweeps<R>();
+  switch (kind) {
+    case K::FwdBwdForward:
+      return blocked ? forward_sweep_blocked<R>(d, first, last, changed) : forward_sweep<R, false>(d, first, last, changed);
+    case K::FwdBwdBackward:
+      return blocked ? backward_sweep_blocked<R>(d, first, last, changed) : backward_sweep<R, true>(d, first, last, changed);
+  }
+  return true;
+}
+
 // Contracts slices first..last (checked); sets x empty and returns false on emptiness.
 bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
   // The rule reads v's slices only, but an empty gate of v leaves no
@@ -259,20 +259,43 @@ bool each_component(TubeVector& x, F f) {
 
 }  // namespace
 
+void detail::check_deriv_pair(const Tube& x, const Tube& v, const char* where) {
+  if (x.tdomain() != v.tdomain()) {
+    throw DimensionError(std::string(where) + ": x and v are not on the same TDomain (" +
+                         std::to_string(x.nb_slices()) + " and " + std::to_string(v.nb_slices()) + " slices)");
+  }
+}
+
+void detail::check_deriv_range(std::size_t n, std::size_t first, std::size_t last, const char* where) {
+  if (first > last || last >= n) {
+    throw Error(std::string(where) + ": slice range [" + std::to_string(first) + ", " + std::to_string(last) +
+                "] is not inside [0, " + std::to_string(n - 1) + "]");
+  }
+}
+
+bool detail::deriv_sweep(DerivSweep kind, const double* t, Interval* s, Interval* g, const Interval* v,
+                         std::size_t first, std::size_t last, bool& changed) {
+  const Arrays d{t, s, g, v};
+#if SILLAGE_HARD_ROUNDING
+  if (detail::hardware_rounding()) return one_sweep<detail::HardRounding>(kind, d, first, last, changed);
+#endif
+  return one_sweep<detail::SoftRounding>(kind, d, first, last, changed);
+}
+
 bool CtcDeriv::contract(Tube& x, const Tube& v) const {
-  check_pair(x, v, "CtcDeriv::contract(x, v)");
+  detail::check_deriv_pair(x, v, "CtcDeriv::contract(x, v)");
   return run(propag_, x, v, 0, x.nb_slices() - 1);
 }
 
 bool CtcDeriv::contract(Tube& x, const Tube& v, std::size_t first, std::size_t last) const {
-  check_pair(x, v, "CtcDeriv::contract(x, v, first, last)");
-  check_range(x.nb_slices(), first, last, "CtcDeriv::contract(x, v, first, last)");
+  detail::check_deriv_pair(x, v, "CtcDeriv::contract(x, v, first, last)");
+  detail::check_deriv_range(x.nb_slices(), first, last, "CtcDeriv::contract(x, v, first, last)");
   return run(propag_, x, v, first, last);
 }
 
 bool CtcDeriv::contract(Tube& x, const Tube& v, const Interval& t) const {
   const char* where = "CtcDeriv::contract(x, v, t)";
-  check_pair(x, v, where);
+  detail::check_deriv_pair(x, v, where);
   if (t.is_empty()) return true;
   std::size_t first = 0, last = 0;
   slice_range(*x.tdomain(), t, first, last, where);
@@ -287,7 +310,7 @@ bool CtcDeriv::contract(TubeVector& x, const TubeVector& v) const {
 bool CtcDeriv::contract(TubeVector& x, const TubeVector& v, std::size_t first, std::size_t last) const {
   const char* where = "CtcDeriv::contract(TubeVector x, TubeVector v, first, last)";
   check_vectors(x, v, where);
-  check_range(x.nb_slices(), first, last, where);
+  detail::check_deriv_range(x.nb_slices(), first, last, where);
   return each_component(x, [&](std::size_t i) { return run(propag_, x[i], v[i], first, last); });
 }
 
