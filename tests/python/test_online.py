@@ -153,3 +153,20 @@ def test_plaza1_online_examples_keep_the_truth(tmp_path):
     assert r.returncode == 0, r.stdout[-2000:]
     assert "ground truth inside the online box at 9657 / 9657 times" in r.stdout
     assert "<svg" in (tmp_path / "plaza1_online_sizes.svg").read_text()
+
+
+def test_ctc_deriv_contract_local_equals_the_whole_sweep():
+    """After a change in a few slices of a fixed point, the local sweeps give contract()'s tube."""
+    td = s.TDomain(0, 20, 0.1)
+    v = s.Tube(td, s.Interval(-1, 1))
+    x = s.Tube(td)
+    x.set_gate(0, s.Interval(0))
+    ctc = s.CtcDeriv()
+    ctc.contract(x, v)
+    x.set_gate(100, s.Interval(9.5, 10))
+    whole = x.copy()
+    ctc.contract(whole, v)
+    ok, changed = ctc.contract_local(x, v, 99, 100)
+    assert ok and x == whole
+    assert 2 * 50 in changed  # gate 50 (t = 5) learnt x(5) >= 4.5
+    assert x.gate(50) == s.Interval(4.5, 5)

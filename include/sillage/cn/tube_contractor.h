@@ -33,9 +33,12 @@
 //
 // What the node does per run: contract() on the whole arguments, the
 // network's own tubes for Tube& (a snapshot before, to report what shrank),
-// copies intersected back for the others. What woke the node is not passed:
-// a contractor that works only where its tubes changed (CtcEval around [t])
-// derives TubeNode (tube_node.h) instead. A contractor whose
+// copies intersected back for the others. What woke the node is not passed,
+// but a contractor on (Tube&, const Tube&) that also has
+// `bool contract_local(Tube& x, const Tube& v, first, last, const TubeChanges&)`
+// is called that way after its first run, with the slices that hold what
+// woke it (CtcDeriv). Another contractor that works only where its tubes
+// changed (CtcEval around [t]) derives TubeNode (tube_node.h). A contractor whose
 // `bool enforces_derivative() const` is true on a signature (Tube&, const
 // Tube&, ...) tells the network that it enforces x' = v (CtcDeriv).
 //
@@ -127,11 +130,14 @@ class TubeContractorNodeBase : public TubeNode {
   // The pairs (x, v) of component c for derivative_pairs.
   void pair_of_first_two(std::vector<DerivativePair>& out) const;
   // A run that works where the first two tube arguments (x, v) changed: per
-  // component c whose x or v has dirty atoms, local(c, x, v, first, last,
+  // component c whose x or v has dirty atoms, local(x, v, first, last,
   // changes) with the slices first..last that hold them (a gate brings both
-  // its slices). Sets r.empty_at when local returns false.
+  // its slices). When local returns false, r.empty_at is where x's former
+  // value stopped being consistent (found with `whole`, the contraction of
+  // the whole tube; empty_prefix.h).
   using Local = std::function<bool(Tube&, const Tube&, std::size_t, std::size_t, const TubeChanges&)>;
-  bool run_local(NodeRun& r, const Local& local) const;
+  using Whole = std::function<bool(Tube&, const Tube&)>;
+  bool run_local(NodeRun& r, const Local& local, const Whole& whole) const;
 
  private:
   // Sets r.empty_at: where along time the first contracted tube stopped being consistent.
@@ -170,11 +176,15 @@ class TubeContractorNode<Derived, R(A...)> : public TubeContractorNodeBase {
     // after its first run: the cost of a run is then the reach of the change, not the tube's.
     if constexpr (requires(const Derived& d, Tube& x, const Tube& w, const TubeChanges& ch) {
                     d.contract_local(x, w, std::size_t{0}, std::size_t{0}, ch);
+                    d.contract(x, w);
                   }) {
       if (!r.all) {
-        return run_local(r, [this](Tube& x, const Tube& w, std::size_t a, std::size_t b, const TubeChanges& ch) {
-          return ctc_.contract_local(x, w, a, b, ch);
-        });
+        return run_local(
+            r,
+            [this](Tube& x, const Tube& w, std::size_t a, std::size_t b, const TubeChanges& ch) {
+              return ctc_.contract_local(x, w, a, b, ch);
+            },
+            [this](Tube& x, const Tube& w) { return call_result(ctc_.contract(x, w)); });
       }
     }
     const CancelToken& cancel = r.cancel_token();

@@ -132,7 +132,7 @@ TubeContractorNodeBase::TubeContractorNodeBase(std::string name, const std::vect
   }
 }
 
-bool TubeContractorNodeBase::run_local(NodeRun& r, const Local& local) const {
+bool TubeContractorNodeBase::run_local(NodeRun& r, const Local& local, const Whole& whole) const {
   const std::size_t n = components(), x0 = layout_.first[0], v0 = layout_.first[1];
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   thread_local std::vector<std::size_t> lo, hi;
@@ -149,8 +149,13 @@ bool TubeContractorNodeBase::run_local(NodeRun& r, const Local& local) const {
   }
   for (std::size_t c = 0; c < n; ++c) {
     if (lo[c] == kNone) continue;
-    if (!local(tube(x0 + c)->tube(), tube(v0 + c)->tube(), lo[c], hi[c], changes(r, x0 + c))) {
-      r.empty_at = offset(x0 + c) + slice_atom(lo[c]);
+    Tube& x = tube(x0 + c)->tube();
+    const Tube& v = tube(v0 + c)->tube();
+    thread_local TubeSnapshot before;  // to tell where an emptiness lies (a copy: cheap beside the sweeps)
+    before.take(x);
+    if (!local(x, v, lo[c], hi[c], changes(r, x0 + c))) {
+      const std::size_t a = first_empty_prefix(before.restore(x.tdomain()), [&](Tube& y) { return whole(y, v); });
+      if (a < x.nb_slices() * 2 + 1) r.empty_at = offset(x0 + c) + a;
       return false;
     }
   }
