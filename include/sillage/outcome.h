@@ -34,7 +34,8 @@ struct Summary {
   // (BudgetExceeded's message); Cancelled: where ("sivia: cancelled");
   // NoSolution: the provenance of the emptiness; Converged: "".
   std::string reason;
-  // Calls of the progress hook (Budget::progress) during the run.
+  // Rounds of the run: the calls of the progress hook (Budget::progress), and
+  // for a run stopped within a round (a network's contract_run()) that round too.
   std::size_t rounds = 0;
   // Units of work counted against the budget (boxes, paving nodes, contractor calls).
   std::size_t work = 0;
