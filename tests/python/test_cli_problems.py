@@ -40,6 +40,8 @@ def gates(out, var):
 def test_truth_inside(tmp_path, name, samples):
     res = solve(name, tmp_path)
     assert res["status"] == "solved"
+    assert res["summary"]["status"] == "converged" and res["summary"]["reason"] == ""
+    assert res["summary"]["work"] == sum(s["contractor_calls"] for s in res["schedule"])
     # One per time point (row of the truth), every component inside, not one per component.
     assert f"{samples} of {samples} truth time points inside" in (tmp_path / "report.html").read_text()
 

@@ -95,6 +95,7 @@ def test_budget_options_and_exit_status_3(tmp_path):
     assert "--max-runs N / --max-seconds S" in stopped.stderr
     result = json.loads((tmp_path / "out" / "results.json").read_text())  # the enclosures so far, written
     assert result["status"] == "stopped" and "max_boxes = 1000" in result["why"]
+    assert result["summary"]["status"] == "stopped" and "max_boxes = 1000" in result["summary"]["reason"]
     assert "Stopped before the fixed point" in (tmp_path / "out" / "report.html").read_text()
     stopped = run("solve", slow, "--max-runs", 0, "--max-seconds", 0.1, "--out", tmp_path / "out")
     assert stopped.returncode == 3 and "max_seconds" in stopped.stderr

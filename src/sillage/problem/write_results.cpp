@@ -111,6 +111,12 @@ std::string results_json(const Problem& p, const SolveResult& r, const OutputOpt
   j["status"] = r.empty ? "no solution" : !r.stopped.empty() ? "stopped" : "solved";
   if (r.empty) j["why"] = r.why_empty;
   if (!r.stopped.empty()) j["why"] = r.stopped;
+  // The one outcome type of long computations (outcome.h), as in C++ and Python.
+  j["summary"] = {{"status", status_name(r.summary.status)},
+                  {"reason", r.summary.reason},
+                  {"rounds", r.summary.rounds},
+                  {"work", r.summary.work},
+                  {"seconds", r.summary.seconds}};
   j["warnings"] = r.warnings;
   // Eval rows skipped as outside [t0, tf] (outside = "skip"), per constraint label.
   json outside = json::object();
