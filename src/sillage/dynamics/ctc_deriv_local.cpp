@@ -19,10 +19,14 @@ using detail::DerivSweep;
 constexpr std::size_t kFirstStep = 16;  // slices of the first block beyond the change
 
 // The values of the slices [base, base + s.size()) and their gates before
-// the first sweep that covered them, to report what shrank at the end.
+// the first sweep that covered them, to report what shrank at the end. Its
+// buffers are per thread and reused: a network runs this at every update.
 class Originals {
  public:
-  Originals(std::span<const Interval> s, std::span<const Interval> g) : sl_(s), ga_(g) {}
+  Originals(std::span<const Interval> s, std::span<const Interval> g) : sl_(s), ga_(g) {
+    s_.clear();
+    g_.clear();
+  }
   // Records slices a..b and gates a..b+1 not recorded yet (the range grows at one end at a time).
   void cover(std::size_t a, std::size_t b) {
     if (s_.empty()) {
@@ -51,8 +55,10 @@ class Originals {
  private:
   std::span<const Interval> sl_, ga_;  // the tube's arrays
   std::size_t base_ = 0;
-  std::vector<Interval> s_, g_;
+  static thread_local std::vector<Interval> s_, g_;
 };
+
+thread_local std::vector<Interval> Originals::s_, Originals::g_;
 
 }  // namespace
 
