@@ -47,6 +47,7 @@ EXAMPLES = [
     ("plaza1", "py", "plaza1.py"),
     ("plaza1_online", "cpp", "example_plaza1_online"),
     ("plaza1_online", "py", "plaza1_online.py"),
+    ("problem_stream", "py", "problem_stream.py"),
     ("loops_survey", "cpp", "example_loops_survey"),
     ("loops_plaza1", "cpp", "example_loops_plaza1"),
     ("loops_plaza1", "py", "loops_plaza1.py"),

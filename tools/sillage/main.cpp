@@ -1,10 +1,12 @@
-// The sillage command (docs/cli.md):
+// The sillage command (docs/cli.md, docs/online.md):
 //   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions]
 //                 [--scheduling fifo|priority] [--threads N] [--max-runs N] [--max-seconds S]
 //                 [--quiet] [--save-tubes] [--full-tubes]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
+//   sillage stream PROBLEM.toml [--strict] [--window S]     (online_commands.h)
+//   sillage replay PROBLEM.toml [--out DIR] [--speed N] [--window S] [--no-batch] [--quiet]
 // Exit codes: 0 solved (or valid), 1 no solution (an empty domain, explained), 2 bad input,
 // 3 stopped by a budget before the fixed point.
 #include <unistd.h>
@@ -18,6 +20,8 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+#include "online_commands.h"
 
 #include "sillage/problem/check_summary.h"
 #include "sillage/figures/tube_figure.h"
@@ -220,10 +224,27 @@ int main(int argc, char** argv) {
   auto* pl = app.add_subcommand("plot", "SVG figure of a tube file");
   pl->add_option("tubefile", tube_file, "a file written by save()")->required();
   pl->add_option("--out", out, "the SVG file")->required();
+  bool strict = false, no_batch = false;
+  double speed = 0;
+  std::optional<double> window;
+  auto* st = app.add_subcommand("stream", "run a problem online: rows as JSON Lines on stdin, estimates on stdout");
+  st->add_option("problem", problem, "the problem file (TOML)")->required();
+  st->add_flag("--strict", strict, "stop at the first bad line (exit status 2) instead of reporting it and going on");
+  st->add_option("--window", window, "seconds of past kept (0: everything; default: the file's [online] window)")
+      ->check(CLI::NonNegativeNumber);
+  auto* rp = app.add_subcommand("replay", "feed a problem's own tables online in stamp order; compare with the batch solve");
+  rp->add_option("problem", problem, "the problem file (TOML)")->required();
+  rp->add_option("--out", out, "output directory (default out/<problem name>_replay)");
+  rp->add_option("--speed", speed, "N x real time (default 0: as fast as possible)")->check(CLI::NonNegativeNumber);
+  rp->add_option("--window", window, "seconds of past kept (0: everything; default: the file's [online] window)")
+      ->check(CLI::NonNegativeNumber);
+  rp->add_flag("--no-batch", no_batch, "do not solve the file in batch for the comparison");
+  rp->add_flag("--quiet", quiet, "no summary");
   // A mistyped command is named (CLI11 would only say that one is required).
   const std::string first = argc > 1 ? argv[1] : "";
-  if (!first.empty() && first[0] != '-' && first != "solve" && first != "check" && first != "show" && first != "plot") {
-    std::fprintf(stderr, "sillage: found the command '%s', expected solve, check, show or plot (sillage --help)\n",
+  if (!first.empty() && first[0] != '-' && first != "solve" && first != "check" && first != "show" && first != "plot" &&
+      first != "stream" && first != "replay") {
+    std::fprintf(stderr, "sillage: found the command '%s', expected solve, check, show, plot, stream or replay (sillage --help)\n",
                  argv[1]);
     return kBadInput;
   }
@@ -239,6 +260,8 @@ int main(int argc, char** argv) {
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);
+    if (*st) return cli::stream(problem, strict, window);
+    if (*rp) return cli::replay(problem, out, speed, window, !no_batch, quiet);
   } catch (const Error& e) {
     std::fprintf(stderr, "sillage: %s\n", e.what());
     return kBadInput;

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "sillage/cn/contractor_network.h"
+#include "sillage/expr/function.h"
 #include "sillage/tube/tube_vector.h"
 
 namespace sillage {
@@ -56,6 +57,7 @@ struct OnlineStats {
   std::size_t slices = 0;         // slices in memory (the window), per tube
   std::size_t forgotten = 0;      // slices dropped so far
   std::size_t observations = 0;   // observations in the window
+  std::size_t pending = 0;        // observations held until time passes their [t]
   std::size_t retired = 0;        // observations retired so far
   std::size_t contractors = 0;    // contractors in the network
   std::size_t contractor_runs = 0;  // runs of all updates
@@ -80,6 +82,11 @@ class OnlineEstimator {
   void add_input(const std::string& name, std::size_t dim);
   // A tube bounded by `value` at every time (a speed limit, a turn rate).
   void add_bounded(const std::string& name, const IntervalVector& value);
+  // A tube bounded by bound(t), a function of the one variable t whose image
+  // has the tube's dimension ("[-oo, oo]" leaves a component free), evaluated
+  // on each new slice and gate; x0 its value at t0 (default: the bound's).
+  // E.g. Function({"t"}, "(-9/20*cos(t/5) + [-0.001, 0.001], [-oo, oo])").
+  void add_bounded(const std::string& name, const Function& bound, const IntervalVector& x0 = {});
   // x' = v between two declared tubes of one dimension (CtcDeriv per component).
   void add_deriv(const std::string& x, const std::string& v);
   // A box contractor applied at every time to the concatenation of the tubes
@@ -96,14 +103,23 @@ class OnlineEstimator {
   // of another dimension, NaN or empty.
   void advance(double t, const std::vector<std::pair<std::string, IntervalVector>>& inputs = {});
   // A measurement of the state `state` at a time t in [t] (uncertain): ctc
-  // acts on (x(t), extras...), e.g. a range to a beacon. [t] after now() is
-  // cut at now() (a measurement received cannot have been taken later:
-  // advance to the time it arrived first). Error, with nothing changed, if
-  // [t] is empty or NaN, begins after now() (the future), begins before the
-  // window's start (too old), or the state has no derivative declared.
-  // Returns the observation's number (0, 1, ... in arrival order).
+  // acts on (x(t), extras...), e.g. a range to a beacon; the extras are
+  // intervals or boxes. When [t] reaches past now() the observation is held
+  // (pending()) until time has passed its end, then applied: its time may
+  // lie a little ahead of the last advance, and none of it is cut off.
+  // Error, with nothing changed, if [t] is empty, begins after now() (the
+  // future), begins before the window's start (too old), the state has no
+  // derivative declared, or ctc's dimension is not the arguments'. Returns
+  // the observation's number (0, 1, ... in arrival order).
   std::size_t observe(const Interval& t, const std::string& state, std::shared_ptr<const Ctc> ctc,
                       const std::vector<DomainRef>& extras = {});
+  // The same for several states at one time t in [t]: ctc acts on
+  // (x1(t), x2(t), ..., extras...), e.g. a clock's reading and a range taken
+  // together (h(t) = tau, y(t) = z).
+  std::size_t observe(const Interval& t, const std::vector<std::string>& states, std::shared_ptr<const Ctc> ctc,
+                      const std::vector<DomainRef>& extras = {});
+  // Observations held until time passes the end of their [t].
+  std::size_t pending() const;
 
   // The current time (t0 before the first advance).
   double now() const { return now_; }

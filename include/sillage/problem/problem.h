@@ -190,6 +190,22 @@ struct NetworkSpec {
   SourcePos pos;
 };
 
+// [online]: how `sillage stream` and `sillage replay` run the problem
+// (online_problem.h, docs/online.md). window: the seconds of past kept
+// (none: everything); forget_every: the past beyond it gathered before it is
+// dropped (0: window / 8); lead: how far ahead of now an observation may be
+// stamped (held until time reaches it, refused beyond); outputs: the tube
+// variables written per update (empty: all); output_every: the seconds of
+// time between two estimates written (0: after every advance).
+struct OnlineSpec {
+  std::optional<double> window;
+  double forget_every = 0;
+  double lead = 5;
+  std::vector<std::string> outputs;
+  double output_every = 0;
+  SourcePos pos;
+};
+
 struct Problem {
   std::string file, text;  // the path as given, and its text
   std::string hash;        // FNV-1a 64 of the text and the tables' names, columns and numbers, hex
@@ -199,6 +215,7 @@ struct Problem {
   std::vector<ConstraintSpec> constraints;
   OutputSpec output;
   NetworkSpec network;
+  OnlineSpec online;
 
   const VarSpec* var(const std::string& name) const;
   const DataSpec* table(const std::string& name) const;

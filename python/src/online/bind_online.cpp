@@ -33,7 +33,7 @@ std::vector<std::pair<std::string, IntervalVector>> inputs_arg(const py::object&
 
 }  // namespace
 
-SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
+SILLAGE_BINDING(online, "cn", "ctc", "expr", "interval", "tube") {
   py::class_<OnlineOptions>(m, "OnlineOptions", DOC(OnlineOptions))
       .def(py::init([](double window, double forget_every, double ratio) {
              return OnlineOptions{window, forget_every, ratio};
@@ -44,7 +44,7 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
 
   py::class_<OnlineStats>(m, "OnlineStats", DOC(OnlineStats))
-      .SILLAGE_READONLY_FIELDS(OnlineStats, updates, last_seconds, total_seconds, slices, forgotten, observations,
+      .SILLAGE_READONLY_FIELDS(OnlineStats, updates, last_seconds, total_seconds, slices, forgotten, observations, pending,
                                retired, contractors, contractor_runs, relayouts, layout_seconds)
       .def("__repr__", &fields_repr, "Name(field=value, ...) of every field.");
 
@@ -54,7 +54,11 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
       .def("add_state", &OnlineEstimator::add_state, py::arg("name"), py::arg("dim"),
            py::arg("x0") = IntervalVector(), DOC(OnlineEstimator, add_state))
       .SILLAGE_DEF(OnlineEstimator, add_input, py::arg("name"), py::arg("dim"))
-      .SILLAGE_DEF(OnlineEstimator, add_bounded, py::arg("name"), py::arg("value"))
+      .def("add_bounded", py::overload_cast<const std::string&, const IntervalVector&>(&OnlineEstimator::add_bounded),
+           py::arg("name"), py::arg("value"), DOC(OnlineEstimator, add_bounded, string_IntervalVector))
+      .def("add_bounded",
+           py::overload_cast<const std::string&, const Function&, const IntervalVector&>(&OnlineEstimator::add_bounded),
+           py::arg("name"), py::arg("bound"), py::arg("x0") = IntervalVector(), DOC(OnlineEstimator, add_bounded, string_Function_IntervalVector))
       .SILLAGE_DEF(OnlineEstimator, add_deriv, py::arg("x"), py::arg("v"))
       .def(
           "add",
@@ -78,16 +82,21 @@ SILLAGE_BINDING(online, "cn", "ctc", "interval", "tube") {
           py::arg("t"), py::arg("inputs") = py::none(), DOC(OnlineEstimator, advance))
       .def(
           "observe",
-          [](OnlineEstimator& est, const Interval& t, const std::string& state, const py::object& ctc,
+          [](OnlineEstimator& est, const Interval& t, const py::object& state, const py::object& ctc,
              const py::iterable& extras) {
             std::vector<DomainRef> refs;
             for (const auto& h : extras) refs.push_back(to_domain_ref(h, refs.size() + 1));
+            const auto states = py::isinstance<py::str>(state) ? std::vector<std::string>{state.cast<std::string>()}
+                                                              : state.cast<std::vector<std::string>>();
             const auto held = hold_ctc(ctc);
             py::gil_scoped_release unlocked;
-            return est.observe(t, state, held, refs);
+            return est.observe(t, states, held, refs);
           },
           py::arg("t"), py::arg("state"), py::arg("ctc"), py::arg("extras") = py::list(),
-          DOC(OnlineEstimator, observe))
+          "A measurement of the state (a name, or a list of names taken at the same time) at a time in [t]: "
+          "ctc acts on (x1(t), ..., extras...). Held (pending()) until time passes the end of [t]. Returns the "
+          "observation's number.")
+      .SILLAGE_DEFS(OnlineEstimator, pending)
       .def("now", py::overload_cast<>(&OnlineEstimator::now, py::const_), DOC(OnlineEstimator, now, void))
       .def("now", py::overload_cast<const std::string&>(&OnlineEstimator::now, py::const_), py::arg("name"),
            DOC(OnlineEstimator, now, string))

@@ -3,11 +3,13 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/cn/domain.h"
 #include "sillage/error.h"
 
 namespace sillage {
@@ -19,7 +21,8 @@ enum class Kind { State, Input, Bounded };
 struct TubeDecl {
   std::string name;
   Kind kind;
-  IntervalVector value;  // State: x0; Bounded: the bound; Input: the whole space
+  IntervalVector value;  // State: x0; Bounded: the bound (x0 with a bound of t); Input: the whole space
+  std::optional<Function> bound;  // Bounded by a function of t
   std::shared_ptr<TubeVector> tube;
   std::string deriv;  // v, when x' = v was declared
   bool in_network = false;
@@ -29,6 +32,14 @@ struct TubeDecl {
 struct Observation {
   Interval t;
   std::size_t first, count;
+};
+
+// An observation whose [t] reaches past now, held until time passes its end.
+struct Pending {
+  Interval t;
+  std::vector<std::string> states;
+  std::shared_ptr<const Ctc> ctc;
+  std::vector<DomainRef> extras;
 };
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
@@ -45,6 +56,7 @@ struct OnlineEstimator::Impl {
   std::shared_ptr<TDomain> td;
   ContractorNetwork cn;
   std::vector<Observation> observations;
+  std::vector<Pending> pending;  // in arrival order
   std::size_t nb_observed = 0;
   OnlineStats stats;
   ContractStats last;
@@ -68,7 +80,22 @@ struct OnlineEstimator::Impl {
     if (find(name)) throw Error(std::string("OnlineEstimator::") + where + ": " + quoted(name) + " is already declared");
     if (value.size() == 0) throw Error(std::string("OnlineEstimator::") + where + ": " + quoted(name) + " has dimension 0");
     if (value.is_empty()) throw Error(std::string("OnlineEstimator::") + where + ": the value of " + quoted(name) + " is empty");
-    tubes.push_back({name, kind, value, nullptr, "", false});
+    tubes.push_back({name, kind, value, std::nullopt, nullptr, "", false});
+  }
+  // Slice k and its gates of a bounded tube within the bound.
+  static void bound_slice(TubeDecl& d, const TDomain& td, std::size_t k) {
+    IntervalVector slice = d.value, end = d.value, start = d.value;
+    if (d.bound) {
+      slice = d.bound->eval_vector(IntervalVector{td.slice_domain(k)});
+      end = d.bound->eval_vector(IntervalVector{Interval(td.t(k + 1))});
+      if (k == 0) start = d.bound->eval_vector(IntervalVector{Interval(td.t(0))}) & d.value;
+    }
+    for (std::size_t i = 0; i < d.value.size(); ++i) {
+      Tube::Writer w = (*d.tube)[i].write();
+      w.slices()[k] &= detail::unknown_where_undefined(slice[i]);
+      w.gates()[k + 1] &= detail::unknown_where_undefined(end[i]);
+      if (k == 0) w.gates()[0] &= start[i];
+    }
   }
   // A tube, or "name[i]" its component i.
   std::pair<TubeDecl*, std::ptrdiff_t> named(const std::string& name, const char* where) {
@@ -109,7 +136,7 @@ struct OnlineEstimator::Impl {
     td = TDomain::create({t0, t1});
     for (auto& d : tubes) {
       d.tube = std::make_shared<TubeVector>(td, d.value.size());
-      if (d.kind == Kind::Bounded) d.tube->set(d.value);
+      if (d.kind == Kind::Bounded) bound_slice(d, *td, 0);
       if (d.kind == Kind::State) d.tube->set_gate(0, d.value);
     }
     for (const auto& add : constraints) add();
@@ -132,8 +159,48 @@ struct OnlineEstimator::Impl {
     }
     stats.retired += observations.size() - kept.size();
     observations = std::move(kept);
+    const std::size_t held = pending.size();  // held too long for a window this short: dropped
+    std::erase_if(pending, [&](const Pending& p) { return p.t.lb() < start; });
+    stats.retired += held - pending.size();
     cn.retire(gone);  // lays the network out anew as well
     return true;
+  }
+  // The observation's nodes: per state a CtcEval x(t) = q_j at the one t,
+  // then ctc on (q_1, ..., extras).
+  void apply(const Interval& t, const std::vector<std::string>& states, std::shared_ptr<const Ctc> ctc,
+             const std::vector<DomainRef>& extras) {
+    const auto tt = std::make_shared<Interval>(t);
+    const std::size_t first = cn.nb_ctc();
+    std::vector<DomainRef> args;
+    std::vector<std::pair<TubeDecl*, std::shared_ptr<IntervalVector>>> evals;
+    for (const std::string& state : states) {
+      TubeDecl& x = at(state, "observe");
+      evals.emplace_back(&x, std::make_shared<IntervalVector>(x.value.size()));
+      args.push_back(evals.back().second);
+    }
+    args.insert(args.end(), extras.begin(), extras.end());
+    cn.add(std::move(ctc), args);  // checks the sizes: nothing added on an error
+    try {
+      for (auto& [x, q] : evals) {
+        cn.add(std::make_shared<CtcEval>(), {tt, q, x->tube, find(x->deriv)->tube});
+        x->in_network = true;
+      }
+    } catch (...) {
+      std::vector<std::size_t> added;
+      for (std::size_t i = first; i < cn.nb_ctc(); ++i) added.push_back(i);
+      cn.retire(added);
+      throw;
+    }
+    observations.push_back({t, first, 1 + states.size()});
+  }
+  // The held observations whose time is now past, in arrival order.
+  void apply_due(double now) {
+    std::vector<Pending> still;
+    for (Pending& p : pending) {
+      if (p.t.ub() <= now) apply(p.t, p.states, std::move(p.ctc), p.extras);
+      else still.push_back(std::move(p));
+    }
+    pending = std::move(still);
   }
   void contract(double started) {
     last = cn.update();
@@ -173,6 +240,19 @@ void OnlineEstimator::add_input(const std::string& name, std::size_t dim) {
 
 void OnlineEstimator::add_bounded(const std::string& name, const IntervalVector& value) {
   impl_->declare(name, Kind::Bounded, value, "add_bounded");
+}
+
+void OnlineEstimator::add_bounded(const std::string& name, const Function& bound, const IntervalVector& x0) {
+  if (bound.nb_vars() != 1) {
+    throw DimensionError("OnlineEstimator::add_bounded: the bound of " + quoted(name) +
+                         " is a function of t alone, not of " + std::to_string(bound.nb_vars()) + " variables");
+  }
+  if (x0.size() != 0 && x0.size() != bound.image_dim()) {
+    throw DimensionError("OnlineEstimator::add_bounded: x0 of " + quoted(name) + " has " + std::to_string(x0.size()) +
+                         " components, the bound " + std::to_string(bound.image_dim()));
+  }
+  impl_->declare(name, Kind::Bounded, x0.size() != 0 ? x0 : IntervalVector(bound.image_dim()), "add_bounded");
+  impl_->tubes.back().bound = bound;
 }
 
 void OnlineEstimator::add_deriv(const std::string& x, const std::string& v) {
@@ -218,15 +298,8 @@ void OnlineEstimator::advance(double t, const std::vector<std::pair<std::string,
     m.start(now_, t);
   } else {
     m.td->extend(t);
-    for (auto& d : m.tubes) {
-      if (d.kind != Kind::Bounded) continue;
-      const std::size_t k = d.tube->nb_slices() - 1;
-      for (std::size_t i = 0; i < d.value.size(); ++i) {
-        Tube::Writer w = (*d.tube)[i].write();
-        w.slices()[k] &= d.value[i];
-        w.gates()[k + 1] &= d.value[i];
-      }
-    }
+    for (auto& d : m.tubes)
+      if (d.kind == Kind::Bounded) Impl::bound_slice(d, *m.td, m.td->nb_slices() - 1);
     const double laying = clock_seconds();
     const bool forgot = std::isfinite(options_.window) && m.forget(t, options_);
     if (!forgot) m.cn.relayout();
@@ -244,11 +317,17 @@ void OnlineEstimator::advance(double t, const std::vector<std::pair<std::string,
   for (const auto& d : m.tubes) {
     if (d.in_network) m.cn.touched(d.tube, Interval(before, t));
   }
+  m.apply_due(now_);
   m.contract(started);
 }
 
 std::size_t OnlineEstimator::observe(const Interval& t, const std::string& state, std::shared_ptr<const Ctc> ctc,
                                      const std::vector<DomainRef>& extras) {
+  return observe(t, std::vector<std::string>{state}, std::move(ctc), extras);
+}
+
+std::size_t OnlineEstimator::observe(const Interval& t, const std::vector<std::string>& states,
+                                     std::shared_ptr<const Ctc> ctc, const std::vector<DomainRef>& extras) {
   const double started = clock_seconds();
   Impl& m = *impl_;
   const std::string what = "OnlineEstimator::observe([t] = " + t.str() + ")";
@@ -263,26 +342,34 @@ std::size_t OnlineEstimator::observe(const Interval& t, const std::string& state
     throw Error(what + ": begins before the window [" + number_text(m.td->t0()) + ", " + number_text(now_) +
                 "] (older than the window: its past is forgotten)");
   }
-  TubeDecl& x = m.at(state, "observe");
-  if (x.deriv.empty()) throw Error(what + ": the state " + quoted(state) + " has no derivative (add_deriv)");
-  const TubeDecl& v = *m.find(x.deriv);
-  const auto tt = std::make_shared<Interval>(t & Interval(m.td->t0(), now_));
-  const auto q = std::make_shared<IntervalVector>(x.value.size());
-  const std::size_t first = m.cn.nb_ctc();
-  std::vector<DomainRef> args{q};
-  args.insert(args.end(), extras.begin(), extras.end());
-  m.cn.add(std::move(ctc), args);  // checks the sizes: nothing added on an error
-  try {
-    m.cn.add(std::make_shared<CtcEval>(), {tt, q, x.tube, v.tube});
-  } catch (...) {
-    m.cn.retire({first});
-    throw;
+  if (states.empty()) throw Error(what + ": no state named");
+  std::size_t dims = 0;
+  for (const std::string& state : states) {
+    const TubeDecl& x = m.at(state, "observe");
+    if (x.deriv.empty()) throw Error(what + ": the state " + quoted(state) + " has no derivative (add_deriv)");
+    dims += x.value.size();
   }
-  x.in_network = true;
-  m.observations.push_back({*tt, first, 2});
+  for (std::size_t i = 0; i < extras.size(); ++i) {
+    for (const auto& part : extras[i].parts()) {
+      if (!dynamic_cast<const IntervalDomain*>(part.domain.get()) && !dynamic_cast<const BoxDomain*>(part.domain.get()))
+        throw Error(what + ": extra " + std::to_string(i) + " is a " + part.domain->kind() + ", not an interval or a box");
+      dims += part.count;
+    }
+  }
+  if (dims != ctc->nb_vars()) {
+    throw DimensionError(what + ": " + ctc->describe() + " acts on " + std::to_string(ctc->nb_vars()) +
+                         " components, the states and extras have " + std::to_string(dims));
+  }
+  if (t.ub() > now_) {  // held: its time may lie ahead of the last advance
+    m.pending.push_back({t, states, std::move(ctc), extras});
+    return m.nb_observed++;
+  }
+  m.apply(t, states, std::move(ctc), extras);
   m.contract(started);
   return m.nb_observed++;
 }
+
+std::size_t OnlineEstimator::pending() const { return impl_->pending.size(); }
 
 double OnlineEstimator::window_start() const { return impl_->td ? impl_->td->t0() : now_; }
 
@@ -302,6 +389,7 @@ OnlineStats OnlineEstimator::stats() const {
   OnlineStats s = impl_->stats;
   s.slices = impl_->td ? impl_->td->nb_slices() : 0;
   s.observations = impl_->observations.size();
+  s.pending = impl_->pending.size();
   s.contractors = impl_->cn.nb_ctc();
   return s;
 }

@@ -35,6 +35,7 @@ using detail::eval_row_time;
 using detail::RowObservation;
 using detail::csv_cell;
 using detail::cell_text;
+using detail::read_vars;
 
 namespace {
 
@@ -79,20 +80,6 @@ std::optional<std::vector<std::string>> direct_columns(const ConstraintSpec& c, 
     cols[j] = col;
   }
   return cols;
-}
-
-// The indices of f's variables that its expressions read: a table's row is
-// converted to intervals only in the columns an expression uses (plaza1's
-// odometry has 8 columns, its expressions read one: converting them all was a
-// third of plaza1.toml's build).
-std::vector<std::size_t> read_vars(const Function& f) {
-  std::unordered_set<std::string> names;
-  for (const Expr& e : detail::topological_order(f.exprs()))
-    if (e.op() == Op::Var) names.insert(e.node().name);
-  std::vector<std::size_t> read;
-  for (std::size_t i = 0; i < f.nb_vars(); ++i)
-    if (names.count(f.var_names()[i])) read.push_back(i);
-  return read;
 }
 
 // The slices of x from a table (row k: slice k of [time] points), after the

@@ -6,7 +6,9 @@
 #include <span>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
+#include "sillage/expr/tape.h"
 #include "sillage/interval/rounding.h"
 
 namespace sillage::detail {
@@ -49,6 +51,16 @@ bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<con
   for (const auto& [col, value] : c.where)
     if (values[table.column(col)] != value) return false;
   return true;
+}
+
+std::vector<std::size_t> read_vars(const Function& f) {
+  std::unordered_set<std::string> names;
+  for (const Expr& e : detail::topological_order(f.exprs()))
+    if (e.op() == Op::Var) names.insert(e.node().name);
+  std::vector<std::size_t> read;
+  for (std::size_t i = 0; i < f.nb_vars(); ++i)
+    if (names.count(f.var_names()[i])) read.push_back(i);
+  return read;
 }
 
 Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values,

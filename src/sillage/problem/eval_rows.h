@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sillage/ctc/ctc.h"
+#include "sillage/expr/function.h"
 #include "sillage/interval/interval.h"
 #include "sillage/io/csv.h"
 #include "sillage/problem/problem.h"
@@ -22,6 +23,12 @@ Interval csv_cell(double d);
 // The shortest text that reads back as d ("13.3", where number_text gives 17
 // digits): a cell as written, for messages.
 std::string cell_text(double d);
+
+// The indices of f's variables that its expressions read: a table's row is
+// converted to intervals only in the columns an expression uses (plaza1's
+// odometry has 8 columns, its expressions read one), and a streamed row
+// needs only those.
+std::vector<std::size_t> read_vars(const Function& f);
 
 // The first row c keeps whose join key is in no row of the joined table: an
 // error at c's join, naming the row's file and line; none if c has no join.

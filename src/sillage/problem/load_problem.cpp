@@ -70,7 +70,7 @@ Problem ProblemLoader::run() {
     throw ProblemError(doc_.pos(e.source()), "invalid TOML: " + std::string(e.description()),
                        "a TOML file (https://toml.io)");
   }
-  const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output", "network"});
+  const Fields top(doc_, root, "the file", {"time", "data", "var", "constraint", "output", "network", "online"});
   if (const toml::node* d = top.find("data"))
     for (auto&& [key, node] : top.table(*d, "tables [data.NAME]")) read_data(std::string(key.str()), key, node);
   p_.hash = hex(with_tables(fnv1a(p_.text), p_.data));
@@ -81,6 +81,7 @@ Problem ProblemLoader::run() {
   for (const toml::node& c : top.array(cs, "[[constraint]] tables")) read_constraint(top, c);
   if (const toml::node* o = top.find("output")) read_output(top.table(*o, "a table [output]"));
   if (const toml::node* n = top.find("network")) read_network(top.table(*n, "a table [network]"));
+  if (const toml::node* n = top.find("online")) read_online(top.table(*n, "a table [online]"));
   return std::move(p_);
 }
 

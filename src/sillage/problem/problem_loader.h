@@ -72,6 +72,7 @@ class ProblemLoader {
   void read_loops(const Fields& f, const toml::node& ln);
   // [network] (load_network.cpp)
   void read_network(const toml::table& t);
+  void read_online(const toml::table& t);
   // Shared look-ups (load_lookup.cpp)
   const DataSpec& data_table(const Fields& f, const toml::node& dn);
   // "v, x[0..2]": the variables, for messages; only the tube ones if tubes_only.
