@@ -20,13 +20,13 @@ def test_online_problem_feeds_rows_and_calls_back():
     p = s.load_problem(str(CLOCK))
     op = s.OnlineProblem(p)
     times = []
-    op.on_advance(lambda: times.append(op.estimator().now()))
+    op.on_update(lambda: times.append(op.estimator().now()))
     rows = op.recorded_rows()
     assert rows[0].table == "" and rows[0].t == pytest.approx(0.01)
     assert rows[-1].table == "clock" and rows[-1].t is None  # no time column: last
     for r in rows:
         op.feed(r)
-    assert len(times) == 1300 and times[-1] == pytest.approx(13)
+    assert len(times) == 1308 and times[-1] == pytest.approx(13)  # 1300 advances, then the 8 readings
     est = json.loads(s.estimate_line(op))
     assert est["status"] == "converged" and list(est)[:3] == ["t", "status", "window"]
     assert set(op.outputs()) == {"x", "h", "y"}
@@ -52,11 +52,11 @@ def test_replay_problem_holds_the_truth_and_the_batch():
     r = s.replay_problem(p)
     assert r.summary.status == s.Status.Converged
     assert r.truth_samples == 131 and r.truth_inside == 131 and not r.truth_misses
-    assert r.online_holds_batch() == len(r.t) == 1300
+    assert r.online_holds_batch() == len(r.t) == 1308
     assert r.mean_side_ratio() >= 1
     assert 0 < r.latency_quantile(0.5) <= r.latency_quantile(0.99)
     report = json.loads(s.replay_json(p, r))
-    assert report["updates"] == 1300 and report["truth"]["inside"] == 131
+    assert report["updates"] == 1308 and report["truth"]["inside"] == 131
     assert s.replay_svg(p, r).startswith("<svg") or "<svg" in s.replay_svg(p, r)
 
 
@@ -123,8 +123,8 @@ def test_replay_command_writes_its_report(tmp_path):
     assert r.returncode == 0, r.stdout + r.stderr
     assert "131 of 131 samples inside" in r.stdout
     report = json.loads((tmp_path / "replay.json").read_text())
-    assert report["status"] == "converged" and report["batch"]["online_holds_batch"] == 1300
-    assert len((tmp_path / "online.jsonl").read_text().splitlines()) == 1300
+    assert report["status"] == "converged" and report["batch"]["online_holds_batch"] == 1308
+    assert len((tmp_path / "online.jsonl").read_text().splitlines()) == 1308
     assert (tmp_path / "replay.svg").read_text().lstrip().startswith("<")
     bad = run(["replay", str(CLOCK), "--out", str(tmp_path), "--speed", "-1"], "")
     assert bad.returncode == 2

@@ -34,7 +34,7 @@ int stream(const std::string& file, bool strict, std::optional<double> window) {
   const Problem p = load_problem(file);
   OnlineProblem op(p, with_window(p, window));
   double written = -INFINITY;
-  op.on_advance([&] {
+  op.on_update([&] {
     const double now = op.estimator().now();
     if (now - written < p.online.output_every && !inconsistent(op)) return;
     written = now;
@@ -72,7 +72,7 @@ int replay(const std::string& file, std::string out, double speed, std::optional
   o.speed = speed;
   o.online = with_window(p, window);
   o.batch = batch;
-  o.on_advance = [&](const OnlineProblem& op) { std::fputs((estimate_line(op) + "\n").c_str(), f); };
+  o.on_update = [&](const OnlineProblem& op) { std::fputs((estimate_line(op) + "\n").c_str(), f); };
   ReplayResult r;
   try {
     r = replay_problem(p, o);

@@ -58,10 +58,11 @@ class OnlineProblem {
   // A row arrives. Error, with nothing changed, for a table no constraint
   // reads online, a missing or unknown column, a NaN, a clock row without
   // t or not after now, an observation older than the window or stamped
-  // beyond now + lead. A row may advance time several times (on_advance).
+  // beyond now + lead. A row may advance time several times (on_update).
   void feed(const StreamRow& row);
-  // Called after each advance of time (an estimate to write).
-  void on_advance(std::function<void()> f);
+  // Called after each update of the estimate (one to write): each advance
+  // of time, and at the end of a row whose observations changed it since.
+  void on_update(std::function<void()> f);
 
   // The rows of the problem's own tables in the order a robot receives them
   // (what `sillage replay` feeds): clock rows at their time; an observation

@@ -21,8 +21,8 @@ struct ReplayOptions {
   double speed = 0;
   // The estimator's window and forgetting (default: the file's [online]).
   std::optional<OnlineOptions> online;
-  // Called after each advance of time (e.g. to write the estimate).
-  std::function<void(const OnlineProblem&)> on_advance;
+  // Called after each update of the estimate (OnlineProblem::on_update), e.g. to write it.
+  std::function<void(const OnlineProblem&)> on_update;
   // Solve the file in batch too, for the comparison (false: online only).
   bool batch = true;
 };
@@ -31,13 +31,14 @@ struct ReplayOptions {
 struct ReplayResult {
   // The variables kept ([online] outputs).
   std::vector<std::string> outputs;
-  // The time after each advance.
+  // The time of each update (an advance of time, or observations at the same time).
   std::vector<double> t;
-  // Per advance, per output: the online box at that time (filtering).
+  // Per update, per output: the online box at that time (filtering).
   std::vector<std::vector<IntervalVector>> online;
-  // Per advance, per output: the batch box at the same time (smoothing; empty without the batch).
+  // Per update, per output: the batch box at the same time (smoothing; empty without the batch).
   std::vector<std::vector<IntervalVector>> batch;
-  // Seconds per row fed.
+  // Seconds per row fed (the estimator's work: the time on_update and the
+  // replay's own bookkeeping took is left out).
   std::vector<double> latency;
   // Rows fed.
   std::size_t rows = 0;
@@ -68,7 +69,7 @@ struct ReplayResult {
 };
 
 // Feeds the problem's recorded rows (OnlineProblem::recorded_rows) through
-// its OnlineProblem, keeps the estimate after every advance, checks the
+// its OnlineProblem, keeps the estimate after every update, checks the
 // truth as time passes and solves the file in batch for the comparison. A
 // refused row is kept in `refused` and the replay goes on; an inconsistency
 // stops it (summary NoSolution).

@@ -5,7 +5,7 @@
 //   {"table": "ranges", "t": 3900.1, "columns": {"t_s": 3900.0, "beacon_id": 2, "range_m": 17.3}}
 // ("t": when it arrived; for a row of the clock table the end of its period),
 // or a tick, time advancing without data: {"t": 3900.2}.
-// Out, one object per advance of time:
+// Out, one object per update of the estimate:
 //   {"t": 3900.2, "status": "converged", "window": [3840.2, 3900.2],
 //    "p": [[lb, ub], [lb, ub]], "psi": [[lb, ub]]}
 // bounds as the shortest decimals that read back as the same doubles, null

@@ -1,6 +1,6 @@
 // A problem file run online (sillage/problem/online_problem.h): OnlineProblem,
 // the stream's JSON Lines and the replay against the batch solve. The GIL is
-// kept: each row is microseconds, and on_advance calls back into Python.
+// kept: each row is microseconds, and on_update calls back into Python.
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
@@ -27,7 +27,7 @@ SILLAGE_BINDING(online_problem, "problem", "online") {
       .def(py::init<const Problem&, std::optional<OnlineOptions>>(), py::arg("problem"),
            py::arg("options") = py::none(), DOC(OnlineProblem, OnlineProblem))
       .SILLAGE_DEF(OnlineProblem, feed, py::arg("row"))
-      .SILLAGE_DEF(OnlineProblem, on_advance, py::arg("f"))
+      .SILLAGE_DEF(OnlineProblem, on_update, py::arg("f"))
       .SILLAGE_DEFS(OnlineProblem, recorded_rows, outputs, waiting)
       .def("estimator", py::overload_cast<>(&OnlineProblem::estimator), py::return_value_policy::reference_internal,
            DOC(OnlineProblem, estimator))
@@ -40,13 +40,13 @@ SILLAGE_BINDING(online_problem, "problem", "online") {
 
   py::class_<ReplayOptions>(m, "ReplayOptions", DOC(ReplayOptions))
       .def(py::init([](double speed, std::optional<OnlineOptions> online,
-                       std::function<void(const OnlineProblem&)> on_advance, bool batch) {
-             return ReplayOptions{speed, online, std::move(on_advance), batch};
+                       std::function<void(const OnlineProblem&)> on_update, bool batch) {
+             return ReplayOptions{speed, online, std::move(on_update), batch};
            }),
-           py::arg("speed") = 0.0, py::arg("online") = py::none(), py::arg("on_advance") = py::none(),
-           py::arg("batch") = true, "speed (N x real time, 0: as fast as possible), online, on_advance, batch.")
+           py::arg("speed") = 0.0, py::arg("online") = py::none(), py::arg("on_update") = py::none(),
+           py::arg("batch") = true, "speed (N x real time, 0: as fast as possible), online, on_update, batch.")
       .SILLAGE_FIELDS(ReplayOptions, speed, online, batch)
-      .def_readwrite("on_advance", &ReplayOptions::on_advance, "Called after each advance of time with the OnlineProblem.")
+      .def_readwrite("on_update", &ReplayOptions::on_update, "Called after each update of the estimate with the OnlineProblem.")
       .def("__repr__", [](const ReplayOptions& o) {
         return "ReplayOptions(speed=" + number_text(o.speed) + ", batch=" + (o.batch ? "True" : "False") + ")";
       });

@@ -88,7 +88,8 @@ struct OnlineProblem::Impl {
   std::map<std::string, std::vector<EvalPlan>> evals;  // per table
   std::vector<Waiting> waiting;
   std::map<std::string, std::set<std::string>> needed;  // per table: the columns its rows must give
-  std::function<void()> advanced;
+  std::function<void()> updated;
+  std::size_t reported = 0;  // the estimator's updates when the last estimate was reported
   double delta = 0;         // the slice width of a δ problem (0: time points)
   std::size_t ticks = 0;    // grid points passed (δ)
 
@@ -286,7 +287,14 @@ struct OnlineProblem::Impl {
   void advance(double t, const std::vector<std::pair<std::string, IntervalVector>>& given) {
     est->advance(t, given);
     release();
-    if (advanced) advanced();
+    report();
+  }
+  // The estimate to the callback, when it changed since the last report.
+  void report() {
+    const std::size_t n = est->stats().updates;
+    if (n == reported) return;
+    reported = n;
+    if (updated) updated();
   }
   // The waiting observations whose time has begun.
   void release() {
@@ -399,9 +407,10 @@ void OnlineProblem::feed(const StreamRow& row) {
     m.tick(*row.t);
   }
   if (observed) m.observation_rows(row, values);
+  m.report();
 }
 
-void OnlineProblem::on_advance(std::function<void()> f) { impl_->advanced = std::move(f); }
+void OnlineProblem::on_update(std::function<void()> f) { impl_->updated = std::move(f); }
 
 const std::vector<std::string>& OnlineProblem::outputs() const { return impl_->outputs; }
 

@@ -91,7 +91,7 @@ TEST(OnlineProblem, ReplayHoldsTheTruthAndTheBatchBox) {
   const ReplayResult r = replay_problem(p);
   EXPECT_EQ(r.summary.status, Status::Converged);
   EXPECT_TRUE(r.refused.empty()) << r.refused.front();
-  ASSERT_EQ(r.t.size(), 6u);
+  ASSERT_GE(r.t.size(), 6u);  // each advance, and the ranges applied after their clock row
   for (std::size_t k = 0; k < r.t.size(); ++k) {
     const IntervalVector& x = r.online[k][0];
     EXPECT_TRUE(x[0].contains(r.t[k]) && x[1].contains(0)) << "t = " << r.t[k] << ": " << x;  // p(t) = (t, 0)
