@@ -170,3 +170,27 @@ def test_ctc_deriv_contract_local_equals_the_whole_sweep():
     assert ok and x == whole
     assert 2 * 50 in changed  # gate 50 (t = 5) learnt x(5) >= 4.5
     assert x.gate(50) == s.Interval(4.5, 5)
+
+
+def test_figure_eight_loop_proven_online_once_the_robot_is_back():
+    """The t-plane of the window's velocity, at any time (tests/cpp/online/test_online_loops.cpp)."""
+    est = s.OnlineEstimator(0.0)
+    est.add_bounded("v", s.Function(["t"], "(-10*sin(t) + [-0.01, 0.01], 10*cos(2*t) + [-0.01, 0.01])"))
+    est.add_state("x", 2, s.IntervalVector([s.Interval(9.9, 10.1), s.Interval(-0.1, 0.1)]))
+    est.add_deriv("x", "v")
+
+    def proven():
+        v = est.tube("v")
+        tp = s.TPlane(v.tdomain())
+        tp.compute_detections(0.01, v)
+        tp.compute_proofs(v)
+        return [l for l in tp.detections() if l.complete() and l.proven()]
+
+    for k in range(1, 81):
+        est.advance(0.05 * k)
+    assert not proven()
+    for k in range(81, 121):
+        est.advance(0.05 * k)
+    loops = proven()
+    assert len(loops) == 1
+    assert loops[0].t_box()[0].contains(math.pi / 2) and loops[0].t_box()[1].contains(3 * math.pi / 2)
