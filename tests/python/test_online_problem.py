@@ -126,5 +126,22 @@ def test_replay_command_writes_its_report(tmp_path):
     assert report["status"] == "converged" and report["batch"]["online_holds_batch"] == 1308
     assert len((tmp_path / "online.jsonl").read_text().splitlines()) == 1308
     assert (tmp_path / "replay.svg").read_text().lstrip().startswith("<")
+    html = (tmp_path / "replay.html").read_text()
+    assert "131 of 131 samples inside the online tubes" in html and html.count("<svg") == 1
     bad = run(["replay", str(CLOCK), "--out", str(tmp_path), "--speed", "-1"], "")
     assert bad.returncode == 2
+
+
+def test_replay_report_in_headless_chromium(tmp_path):
+    """The replay's page loads in a real browser without a console message, its figure drawn."""
+    from test_cli_report import PROBE, chromium_console
+    r = run(["replay", str(CLOCK), "--out", str(tmp_path), "--quiet"], "")
+    assert r.returncode == 0, r.stderr
+    probe = tmp_path / "probe.html"
+    probe.write_text((tmp_path / "replay.html").read_text().replace("</body>", PROBE + "</body>"))
+    lines = chromium_console(probe)
+    sizes = [l for l in lines if l.startswith("SVG ")]
+    assert [l for l in lines if not l.startswith("SVG ")] == []
+    assert len(sizes) == 1
+    w, h = map(float, sizes[0][4:].split("x"))
+    assert w > 100 and h > 100

@@ -83,6 +83,7 @@ int replay(const std::string& file, std::string out, double speed, std::optional
   std::fclose(f);
   write_text_file(out, "replay.json", replay_json(p, r));
   write_text_file(out, "replay.svg", replay_svg(p, r));
+  write_text_file(out, "replay.html", replay_html(p, r));
   const bool empty = r.summary.status == Status::NoSolution;
   if (!quiet) {
     const double span = r.t.empty() ? 0 : r.t.back() - p.time.t0;
@@ -99,7 +100,7 @@ int replay(const std::string& file, std::string out, double speed, std::optional
     if (r.batch_solve)
       std::printf("  batch solve: the online box holds it at %zu of %zu times; online/batch box side %.2f on average\n",
                   r.online_holds_batch(), r.batch.size(), r.mean_side_ratio(0));
-    std::printf("  wrote %s/online.jsonl, replay.json and replay.svg\n", out.c_str());
+    std::printf("  wrote %s/replay.html, online.jsonl, replay.json and replay.svg\n", out.c_str());
   }
   return empty ? kNoSolution : kDone;
 }

@@ -11,7 +11,7 @@ namespace sillage::cli {
 int stream(const std::string& file, bool strict, std::optional<double> window);
 
 // The file's own tables fed in stamp order (speed × real time, 0: as fast as
-// possible); writes DIR/online.jsonl, replay.json and replay.svg.
+// possible); writes DIR/replay.html, online.jsonl, replay.json and replay.svg.
 int replay(const std::string& file, std::string out, double speed, std::optional<double> window, bool batch, bool quiet);
 
 }  // namespace sillage::cli

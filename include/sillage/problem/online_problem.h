@@ -37,6 +37,10 @@
 
 namespace sillage {
 
+namespace detail {
+struct OnlineProblemImpl;
+}  // namespace detail
+
 // One row as it arrives (a line of `sillage stream`): its table (empty: a
 // tick, time advancing without data), when it arrived (none: now; the end
 // of its period for a row of the clock table), and its columns by name.
@@ -81,8 +85,7 @@ class OnlineProblem {
   const OnlineEstimator& estimator() const;
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<detail::OnlineProblemImpl> impl_;
 };
 
 // The estimator's options from the file: [online] window and forget_every,

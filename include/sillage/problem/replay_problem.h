@@ -83,4 +83,9 @@ std::string replay_svg(const Problem& p, const ReplayResult& r);
 // factor, truth, online against batch, the rows refused.
 std::string replay_json(const Problem& p, const ReplayResult& r);
 
+// The replay's report as one offline HTML page: what was fed, the latency
+// percentiles, the truth, the online estimate against the batch and the
+// figure (replay_svg), the rows refused.
+std::string replay_html(const Problem& p, const ReplayResult& r);
+
 }  // namespace sillage

@@ -65,6 +65,7 @@ SILLAGE_BINDING(online_problem, "problem", "online") {
   m.def("replay_problem", &replay_problem, py::arg("problem"), py::arg("options") = ReplayOptions(),
         DOC(replay_problem));
   m.def("replay_svg", &replay_svg, py::arg("problem"), py::arg("result"), DOC(replay_svg));
+  m.def("replay_html", &replay_html, py::arg("problem"), py::arg("result"), DOC(replay_html));
   m.def("replay_json", &replay_json, py::arg("problem"), py::arg("result"), DOC(replay_json));
   m.def("parse_stream_line", &parse_stream_line, py::arg("line"), DOC(parse_stream_line));
   m.def("stream_line", &stream_line, py::arg("row"), DOC(stream_line));
