@@ -132,6 +132,13 @@ struct ConstraintSpec {
   // it is skipped and counted in nb_outside (sillage check, the report, results.json).
   bool skip_outside = false;
   std::size_t nb_outside = 0;
+  // Eval: outliers. q = N: at most N of the rows are wrong (a CtcQEval over
+  // them, listed evals only); with q_window = W seconds, at most N among the
+  // rows stamped in any W seconds, or with q_rows = M among any M
+  // consecutive rows (one CtcQEval per half-overlapping window of them).
+  std::optional<std::size_t> q;
+  double q_window = 0;
+  std::size_t q_rows = 0;
   SourcePos pos;
 };
 

@@ -106,9 +106,24 @@ class QEvalNode : public TubeNode {
     detail::check_observation_list(x_.size(), x_[0]->tube().tdomain()->t0_tf(), ctc_.observations(), where());
   }
 
+  // Naming, after an emptiness, the fixes no trajectory satisfied.
+  std::string describe() const override {
+    const auto& obs = ctc_.observations();
+    const std::string q = "q = " + std::to_string(ctc_.q());
+    if (bad_.empty()) return "CtcQEval (" + q + ", " + std::to_string(obs.size()) + " fixes)";
+    std::string s = "CtcQEval (" + q + ": " + std::to_string(bad_.size()) + " of its " + std::to_string(obs.size()) +
+                    " fixes violated by every trajectory:";
+    for (std::size_t k = 0; k < bad_.size() && k < 5; ++k) {
+      const std::string& name = obs[bad_[k]].name;
+      s += (k ? ", " : " ") + (name.empty() ? "fix " + std::to_string(bad_[k]) : name);
+    }
+    return s + (bad_.size() > 5 ? ", ...)" : ")");
+  }
+
   bool run(NodeRun& r) const override {
     const auto& obs = ctc_.observations();
     const std::size_t m = obs.size(), n = x_.size();
+    bad_.clear();
     if (static_cast<std::size_t>(ctc_.q()) >= m) return true;
     std::vector<Tube> work;  // x, contracted by one observation at a time and restored
     std::vector<Tube*> y;
@@ -150,9 +165,10 @@ class QEvalNode : public TubeNode {
         }
       }
       violated += !live;
+      if (!live) bad_.push_back(i);
     }
     // More than q observations violated by every trajectory of x: none is left.
-    if (violated > static_cast<std::size_t>(ctc_.q())) return empty_tubes(r, 0, x_.size());
+    if (violated > static_cast<std::size_t>(ctc_.q())) return inconsistent(r);
     // Atom by atom: the L - c live observations that left it whole hold all of it; a value
     // must lie in m - q observations, so in need = (m - q) - (L - c) of the c that changed it,
     // that is, at most q - violated of those c may exclude it.
@@ -181,6 +197,18 @@ class QEvalNode : public TubeNode {
   }
 
  private:
+  // x emptied, the network told where: the first slice of the first fix violated.
+  bool inconsistent(NodeRun& r) const {
+    const TDomain& td = *x_.front()->tube().tdomain();
+    const Interval t = ctc_.observations()[bad_.front()].t & td.t0_tf();
+    std::size_t first = 0, last = 0;
+    slice_range(td, t, first, last, "ContractorNetwork(CtcQEval)");
+    r.empty_at = offset(0) + slice_atom(first);
+    r.empty_time = t;
+    return empty_tubes(r, 0, x_.size());
+  }
+
+  mutable std::vector<std::size_t> bad_;  // the fixes the last run found violated by every trajectory
   CtcQEval ctc_;
   std::vector<std::shared_ptr<TubeDomain>> x_, v_;
 };

@@ -13,6 +13,7 @@
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_eval_list.h"
+#include "sillage/dynamics/ctc_qeval.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"
 #include "sillage/dynamics/ctc_second_deriv.h"
@@ -434,6 +435,10 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         // position fixes): no node, domain and name per row (plaza1's 3529
         // ranges were 7 058 nodes and 17 647 domains).
         const bool listed = detail::eval_rows_listed(p, c, r);
+        if (c.q && !listed)
+          throw ProblemError(c.pos, "q on " + c.label,
+                             "q on an eval over one tube with its derivative whose observation reads only that tube "
+                             "and the row's columns (its rows one CtcQEval)");
         const std::size_t nz = ys[0]->spec->kind == VarKind::Tube ? 1 : ys[0]->spec->dim;
         std::shared_ptr<const std::vector<int>> slots;  // per reference: its component of z, or -1 (a value)
         if (listed && !direct) {
@@ -502,7 +507,16 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
           cn.add(std::static_pointer_cast<const Ctc>(obs), args);
           cn.set_ctc_name(cn.nb_ctc() - 1, row_name);
         }
-        if (!fixes.empty()) {
+        if (!fixes.empty() && c.q) {  // outliers: a CtcQEval per group of rows
+          std::vector<Interval> times;
+          for (const TubeObservation& o : fixes) times.push_back(o.t);
+          for (const std::vector<std::size_t>& g : detail::outlier_groups(c, times)) {
+            std::vector<TubeObservation> group;
+            for (const std::size_t i : g) group.push_back(fixes[i]);
+            cn.add(std::make_shared<CtcQEval>(static_cast<int>(*c.q), std::move(group)),
+                   {ys[0]->whole(), b.var(c.vs[0]).whole()});
+          }
+        } else if (!fixes.empty()) {
           cn.add(std::make_shared<CtcEvalList>(std::move(fixes)), {ys[0]->whole(), b.var(c.vs[0]).whole()});
         }
         break;

@@ -52,6 +52,17 @@ std::string check_summary(const Problem& p) {
       // One CtcEvalList holding the rows, or per row a CtcEval and its observation; the CtcDeriv it implies.
       const bool listed = detail::eval_rows_listed(p, c, detail::eval_observation(p, c));
       n = (listed ? 1 : 2 * p.table(c.data)->table.nb_rows()) + detail::implied_derivs(p, c).size();
+      if (listed && c.q) {  // one CtcQEval per group of rows instead of the CtcEvalList
+        const CsvTable& t = p.table(c.data)->table;
+        const Interval terr = Function({"t"}, c.time_error).eval(IntervalVector{Interval(0)});
+        std::vector<Interval> times;
+        for (std::size_t row = 0; row < t.nb_rows(); ++row) {
+          if (!detail::eval_row_kept(c, t, t.row(row))) continue;
+          const Interval rt = detail::eval_row_time(c, t, t.row(row), terr, Interval(p.time.t0, p.time.tf));
+          if (!rt.is_empty()) times.push_back(rt);
+        }
+        n = n + detail::outlier_groups(c, times).size() - 1;  // n >= 1 here
+      }
       if (!listed) domains += 3 * p.table(c.data)->table.nb_rows();
       bytes += 6 * 16 * p.table(c.data)->table.nb_rows();
     }

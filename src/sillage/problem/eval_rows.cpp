@@ -63,6 +63,42 @@ std::vector<std::size_t> read_vars(const Function& f) {
   return read;
 }
 
+std::vector<std::vector<std::size_t>> outlier_groups(const ConstraintSpec& c, const std::vector<Interval>& row_times) {
+  const std::size_t q = c.q.value_or(0), n = row_times.size();
+  std::vector<std::vector<std::size_t>> groups;
+  const auto keep = [&](std::vector<std::size_t> g) {
+    if (g.size() > q) groups.push_back(std::move(g));
+  };
+  if (c.q_rows > 0) {
+    const std::size_t step = std::max<std::size_t>(1, c.q_rows / 2);
+    for (std::size_t first = 0; first < n; first += step) {
+      std::vector<std::size_t> g;
+      for (std::size_t i = first; i < std::min(n, first + c.q_rows); ++i) g.push_back(i);
+      keep(std::move(g));
+      if (first + c.q_rows >= n) break;
+    }
+  } else if (c.q_window > 0 && n > 0) {
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return row_times[a].mid() < row_times[b].mid(); });
+    const double s0 = row_times[order.front()].mid(), last = row_times[order.back()].mid();
+    std::size_t from = 0;
+    for (std::size_t k = 0;; ++k) {
+      const double a = s0 + static_cast<double>(k) * c.q_window / 2, b = a + c.q_window;
+      while (from < n && row_times[order[from]].mid() < a) ++from;
+      std::vector<std::size_t> g;
+      for (std::size_t j = from; j < n && row_times[order[j]].mid() <= b; ++j) g.push_back(order[j]);
+      keep(std::move(g));
+      if (b >= last) break;
+    }
+  } else {
+    std::vector<std::size_t> g(n);
+    for (std::size_t i = 0; i < n; ++i) g[i] = i;
+    keep(std::move(g));
+  }
+  return groups;
+}
+
 Interval eval_row_time(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values,
                        const Interval& terr, const Interval& domain) {
   if (c.time_columns.empty()) return domain;

@@ -56,6 +56,13 @@ std::vector<std::size_t> implied_derivs(const Problem& p, const ConstraintSpec& 
 // that tube and the row's columns only.
 bool eval_rows_listed(const Problem& p, const ConstraintSpec& c, const RewrittenExpr& r);
 
+// The groups of an eval's kept rows that each hold at most c.q wrong ones
+// (indices into row_times, the kept rows' times in order): all of them, or
+// those stamped (the middle of their time) in each window [s0 + kW/2,
+// s0 + kW/2 + W] (q_window), or rows [kM/2, kM/2 + M) (q_rows). A group of
+// q rows or fewer is left out: all of them may be wrong, it states nothing.
+std::vector<std::vector<std::size_t>> outlier_groups(const ConstraintSpec& c, const std::vector<Interval>& row_times);
+
 // A row's observation as a contractor on z alone (the fix of CtcEvalList):
 // the constraint's contractor acts on its references in order, each either a
 // component of z (slot >= 0) or the next of the row's measured values

@@ -29,7 +29,7 @@ void ProblemLoader::read_constraint(const Fields& top, const toml::node& node) {
   } else if (ks == "p_implies_z") {
     read_p_implies_z(Fields(doc_, t, where, {"kind", "p", "w", "z", "eps", "fast"}), c);
   } else if (ks == "eval") {
-    read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr", "outside"}), c, where);
+    read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr", "outside", "q", "q_window", "q_rows"}), c, where);
   } else {
     throw ProblemError(doc_.pos(*kn), describe(*kn), expected_kind);
   }

@@ -2,6 +2,7 @@
 #include "sillage/problem/problem_loader.h"
 
 #include <charconv>
+#include <cstdio>
 #include <span>
 
 #include "sillage/expr/function.h"
@@ -163,12 +164,46 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
     c.skip_outside = v == "skip";
   }
   c.nb_outside = outside_rows(c, *d, Interval(p_.time.t0, p_.time.tf));
+  read_outliers(f, c);
   c.label = where + ": " + c.expr + " = 0 at " + names + "(" +
             (c.time_columns.empty()       ? std::string("t unknown")
              : c.time_columns.size() == 1 ? c.time_columns[0]
                                           : "[" + c.time_columns[0] + ", " + c.time_columns[1] + "]") +
             ") for every row of '" +
-            c.data + "'" + (c.where.empty() ? "" : " kept by 'where'");
+            c.data + "'" + (c.where.empty() ? "" : " kept by 'where'") + outliers_text(c);
+}
+
+void ProblemLoader::read_outliers(const Fields& f, ConstraintSpec& c) {
+  const toml::node* q = f.find("q");
+  const toml::node* w = f.find("q_window");
+  const toml::node* r = f.find("q_rows");
+  if (!q) {
+    if (w || r) throw ProblemError(doc_.pos(w ? *w : *r), w ? "q_window without q" : "q_rows without q", "q = N, the rows that may be wrong");
+    return;
+  }
+  const std::int64_t n = f.integer(*q, "a number of rows that may be wrong (an integer >= 0)");
+  if (n < 0) throw ProblemError(doc_.pos(*q), "q = " + doc_.raw(*q), "a number of rows that may be wrong (an integer >= 0)");
+  c.q = static_cast<std::size_t>(n);
+  if (w && r) throw ProblemError(doc_.pos(*r), "both q_window and q_rows", "one of them: per W seconds or per M rows");
+  if (w) {
+    c.q_window = f.number(*w, "seconds > 0");
+    if (!(c.q_window > 0)) throw ProblemError(doc_.pos(*w), "q_window = " + doc_.raw(*w), "seconds > 0");
+    if (c.time_columns.empty()) throw ProblemError(doc_.pos(*w), "q_window without a time column", "time = \"column\" with it");
+  }
+  if (r) {
+    const std::int64_t m = f.integer(*r, "a number of rows > q");
+    if (m <= n) throw ProblemError(doc_.pos(*r), "q_rows = " + doc_.raw(*r), "a number of rows > q = " + std::to_string(n));
+    c.q_rows = static_cast<std::size_t>(m);
+  }
+}
+
+std::string outliers_text(const ConstraintSpec& c) {
+  if (!c.q) return "";
+  char buf[96];
+  if (c.q_window > 0) std::snprintf(buf, sizeof buf, ", at most %zu wrong in any %g s", *c.q, c.q_window);
+  else if (c.q_rows > 0) std::snprintf(buf, sizeof buf, ", at most %zu wrong in any %zu rows", *c.q, c.q_rows);
+  else std::snprintf(buf, sizeof buf, ", at most %zu wrong", *c.q);
+  return buf;
 }
 
 }  // namespace sillage::detail

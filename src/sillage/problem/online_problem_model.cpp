@@ -186,6 +186,7 @@ bool detail::OnlineProblemImpl::implied_deriv(const std::string& y) const {
 }
 
 void detail::OnlineProblemImpl::plan_eval(const ConstraintSpec& c, std::set<std::string>& with_deriv) {
+  if (c.q) throw not_online(c.pos, c.label, "outliers (q) are not online yet");
   EvalPlan e;
   e.c = &c;
   for (std::size_t j = 0; j < c.ys.size(); ++j) {

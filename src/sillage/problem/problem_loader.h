@@ -27,6 +27,8 @@ bool valid_name(const std::string& s);
 std::string column_list(const CsvTable& table);
 // The error for a column the table `name` does not have: its columns listed (load_lookup.cpp).
 ProblemError missing_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
+// ", at most 3 wrong in any 60 s": an eval's outliers as its label says them ("" without q).
+std::string outliers_text(const ConstraintSpec& c);
 // A column the problem reads: the table `name` has it and its cells are all
 // finite numbers; a ProblemError at pos otherwise (load_lookup.cpp).
 void require_column(const SourcePos& pos, const std::string& column, const std::string& name, const CsvTable& table);
@@ -73,6 +75,7 @@ class ProblemLoader {
   // [network] (load_network.cpp)
   void read_network(const toml::table& t);
   void read_online(const toml::table& t);
+  void read_outliers(const Fields& f, ConstraintSpec& c);
   // Shared look-ups (load_lookup.cpp)
   const DataSpec& data_table(const Fields& f, const toml::node& dn);
   // "v, x[0..2]": the variables, for messages; only the tube ones if tubes_only.
