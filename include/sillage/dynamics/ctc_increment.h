@@ -26,6 +26,8 @@ class CtcIncrement : public TubeContractor<CtcIncrement, bool(Tube&, const Tube&
   // The increment contractor.
   CtcIncrement() = default;
   std::string name() const override { return "CtcIncrement"; }
+  // Its network node stays right when the tubes gain slices (it holds nothing per slice).
+  bool follows_appends() const { return true; }
 
   // DimensionError if x and i are not on one TDomain.
   bool contract(Tube& x, const Tube& i) const;

@@ -26,6 +26,8 @@ class CtcSecondDeriv : public TubeContractor<CtcSecondDeriv, bool(Tube&, const T
   // The second-derivative contractor.
   CtcSecondDeriv() = default;
   std::string name() const override { return "CtcSecondDeriv"; }
+  // Its network node stays right when the tubes gain slices (it holds nothing per slice).
+  bool follows_appends() const { return true; }
 
   // DimensionError if x and a are not on one TDomain. Tube vectors: in a
   // network, cn.add(ctc, {x, a}), component by component.

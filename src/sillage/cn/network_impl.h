@@ -89,6 +89,11 @@ class ContractorNetworkImpl {
   // (relaid out), in the same order; from an empty network when `rebind`
   // (retire: the domains no node uses are dropped).
   void rebuild_nodes(bool rebind);
+  // relayout() when every changed domain only gained atoms at its end and
+  // every node on them follows appends: those domains and nodes grown in
+  // place, the others untouched (O(nodes on them)). False, with nothing
+  // changed, when that does not hold (rebuild_nodes then).
+  bool grow_in_place();
   bool acts_on(const CnNode& node, const TDomain& td) const;
   void check_not_contracting(const char* where) const;
 
@@ -96,6 +101,8 @@ class ContractorNetworkImpl {
   std::vector<std::string> names_;  // per domain, "" if unnamed
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
+  std::vector<std::vector<std::size_t>> users_;  // per domain, the nodes with a range on it, ascending
+  std::vector<std::size_t> grown_from_;  // grow_in_place's scratch: per domain, its former atom count or kNoAtom
   // Per node, its watched atoms that shrank since it last ran (contract()).
   DirtyAtoms dirty_;
   std::vector<std::shared_ptr<const CnNode>> nodes_;

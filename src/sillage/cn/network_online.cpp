@@ -41,8 +41,8 @@ void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::v
         end = 2 * k1 + 3;    // up to gate k1 + 1
       }
       for (std::size_t a = first; a < end; ++a) {
-        watchers_[d].for_each(a, [&](std::size_t node, std::size_t, std::size_t bit) {
-          if (dirty_.mark(node, bit) && !queued[node]) {
+        watchers_[d].for_each(a, [&](std::size_t node, std::size_t g) {
+          if (dirty_.mark(node, g, a) && !queued[node]) {
             queued[node] = 1;
             round.push_back(node);
           }
@@ -57,7 +57,45 @@ void ContractorNetworkImpl::relayout() {
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     if (domains_[d]->layout_changed() && !domains_[d]->relaid()) domains_[d]->check_layout(label(d));
   }
-  rebuild_nodes(false);
+  if (!grow_in_place()) rebuild_nodes(false);
+}
+
+bool ContractorNetworkImpl::grow_in_place() {
+  std::vector<std::size_t> grown;
+  std::vector<std::shared_ptr<Domain>> now;
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (!domains_[d]->layout_changed()) continue;
+    if (!domains_[d]->appended_only()) return false;
+    for (const std::size_t i : users_[d]) {
+      if (!records_[i].make || !nodes_[i]->follows_appends()) return false;
+    }
+    grown.push_back(d);
+    now.push_back(domains_[d]->relaid());
+    if (!now.back()) return false;
+  }
+  // The nodes on them, each once (users_ lists are ascending).
+  std::vector<std::size_t> nodes;
+  for (const std::size_t d : grown) {
+    const std::size_t mid = nodes.size();
+    nodes.insert(nodes.end(), users_[d].begin(), users_[d].end());
+    std::inplace_merge(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(mid), nodes.end());
+  }
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  grown_from_.resize(domains_.size(), kNoAtom);
+  for (std::size_t j = 0; j < grown.size(); ++j) {
+    const std::size_t d = grown[j];
+    grown_from_[d] = domains_[d]->nb_atoms();
+    domains_[d] = std::move(now[j]);
+    watchers_[d].grow(domains_[d]->nb_atoms());
+  }
+  for (const std::size_t i : nodes) {
+    // Made by this network for itself (records_[i].make): no one else holds it.
+    auto& node = const_cast<CnNode&>(*nodes_[i]);
+    node.follow_appends(grown_from_, domains_);
+    dirty_.relayout_node(i, node);
+  }
+  for (const std::size_t d : grown) grown_from_[d] = kNoAtom;
+  return true;
 }
 
 void ContractorNetworkImpl::retire(std::vector<std::size_t> nodes) {
@@ -125,6 +163,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     names_.clear();
     index_.clear();
     watchers_.clear();
+    users_.clear();
     checked_.clear();
   }
   // relayout: which domains changed, and the atoms of those that only grew at the end.
@@ -137,7 +176,10 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
       if (domains_[d]->appended_only()) grown_from[d] = domains_[d]->nb_atoms();
       if (auto now = domains_[d]->relaid()) domains_[d] = std::move(now);
     }
-    for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
+    for (std::size_t d = 0; d < domains_.size(); ++d) {
+      watchers_[d] = Watchers(domains_[d]->nb_atoms());
+      users_[d].clear();
+    }
   }
   dirty_.clear_nodes();
   // Every node again, in the same order (the watchers name nodes by index): as
@@ -154,12 +196,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     if (rebind || (touches && records[i].make && !(grows && old[i]->follows_appends()))) {
       node = records[i].make(bind(records[i].refs));
     } else if (touches) {  // made by this network for itself: no one else holds it
-      auto& grown = const_cast<CnNode&>(*old[i]);
-      std::vector<std::size_t> ds;
-      for (const auto& a : grown.ranges()) {
-        if (changed[a.domain] && std::find(ds.begin(), ds.end(), a.domain) == ds.end()) ds.push_back(a.domain);
-      }
-      for (const std::size_t d : ds) grown.follow_append(d, grown_from[d], domains_[d]->nb_atoms());
+      const_cast<CnNode&>(*old[i]).follow_appends(grown_from, domains_);
     }
     add_node(std::move(node));
     records_.back() = std::move(records[i]);

@@ -10,6 +10,13 @@ void Watchers::add(const Watch& w) {
   parts_.push_back(w);
 }
 
+void Watchers::grow(std::size_t nb_atoms) {
+  for (Watch& w : whole_) w.count = nb_atoms;
+  // No partial watch covers the new atoms: their entries are none.
+  if (!begin_.empty()) begin_.resize(nb_atoms + 1, begin_.back());
+  nb_atoms_ = nb_atoms;
+}
+
 void Watchers::index() {
   if (indexed_ == parts_.size()) return;
   indexed_ = parts_.size();
@@ -21,7 +28,7 @@ void Watchers::index() {
   at_.resize(begin_[nb_atoms_]);
   std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
   for (const Watch& w : parts_) {
-    for (std::size_t a = w.first; a < w.first + w.count; ++a) at_[next[a]++] = {w.node, w.offset - w.first, w.bit - w.first};
+    for (std::size_t a = w.first; a < w.first + w.count; ++a) at_[next[a]++] = {w.node, w.range};
   }
 }
 
