@@ -37,7 +37,7 @@
 // but a contractor on (Tube&, const Tube&) that also has
 // `bool contract_local(Tube& x, const Tube& v, first, last, const TubeChanges&)`
 // is called that way after its first run, with the slices that hold what
-// woke it (CtcDeriv). Another contractor that works only where its tubes
+// woke it (CtcDeriv, CtcIncrement, CtcSecondDeriv). Another contractor that works only where its tubes
 // changed (CtcEval around [t]) derives TubeNode (tube_node.h). A contractor whose
 // `bool enforces_derivative() const` is true on a signature (Tube&, const
 // Tube&, ...) tells the network that it enforces x' = v (CtcDeriv).
