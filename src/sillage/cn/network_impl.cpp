@@ -256,7 +256,6 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
   metered.progress = nullptr;
   BudgetMeter meter(metered, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
                     "contractor calls");
-  for (auto& w : watchers_) w.index();
   dirty_.reset();
   std::vector<DerivativePair> derivatives;
   for (const auto& node : nodes_) node->derivative_pairs(derivatives);

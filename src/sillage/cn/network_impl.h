@@ -91,7 +91,8 @@ class ContractorNetworkImpl {
   void rebuild_nodes(bool rebind);
   // relayout() when every changed domain only gained atoms at its end and
   // every node on them follows appends: those domains and nodes grown in
-  // place, the others untouched (O(nodes on them)). False, with nothing
+  // place, the others untouched (O(nodes on them); the dirty bits laid out
+  // again only for the nodes that watch a whole grown domain). False, with nothing
   // changed, when that does not hold (rebuild_nodes then).
   bool grow_in_place();
   bool acts_on(const CnNode& node, const TDomain& td) const;
@@ -103,6 +104,7 @@ class ContractorNetworkImpl {
   std::vector<Watchers> watchers_;  // per domain
   std::vector<std::vector<std::size_t>> users_;  // per domain, the nodes with a range on it, ascending
   std::vector<std::size_t> grown_from_;  // grow_in_place's scratch: per domain, its former atom count or kNoAtom
+  std::vector<char> grown_done_;         // grow_in_place's scratch: per node, grown already
   // Per node, its watched atoms that shrank since it last ran (contract()).
   DirtyAtoms dirty_;
   std::vector<std::shared_ptr<const CnNode>> nodes_;

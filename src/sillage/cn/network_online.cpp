@@ -26,7 +26,6 @@ void ContractorNetworkImpl::touched(const DomainRef& d, const Interval& t) {
 }
 
 void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued) {
-  for (auto& w : watchers_) w.index();
   for (const Touch& touch : touched_) {
     for (const auto& p : touch.ref.parts()) {
       const std::size_t d = index_.at(p.domain->key());
@@ -73,14 +72,6 @@ bool ContractorNetworkImpl::grow_in_place() {
     now.push_back(domains_[d]->relaid());
     if (!now.back()) return false;
   }
-  // The nodes on them, each once (users_ lists are ascending).
-  std::vector<std::size_t> nodes;
-  for (const std::size_t d : grown) {
-    const std::size_t mid = nodes.size();
-    nodes.insert(nodes.end(), users_[d].begin(), users_[d].end());
-    std::inplace_merge(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(mid), nodes.end());
-  }
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   grown_from_.resize(domains_.size(), kNoAtom);
   for (std::size_t j = 0; j < grown.size(); ++j) {
     const std::size_t d = grown[j];
@@ -88,13 +79,21 @@ bool ContractorNetworkImpl::grow_in_place() {
     domains_[d] = std::move(now[j]);
     watchers_[d].grow(domains_[d]->nb_atoms());
   }
-  for (const std::size_t i : nodes) {
-    // Made by this network for itself (records_[i].make): no one else holds it.
-    auto& node = const_cast<CnNode&>(*nodes_[i]);
-    node.follow_appends(grown_from_, domains_);
-    dirty_.relayout_node(i, node);
+  // The nodes on them, each once (a node on several grown domains is marked by the first).
+  grown_done_.resize(nodes_.size(), 0);
+  for (const std::size_t d : grown) {
+    for (const std::size_t i : users_[d]) {
+      if (grown_done_[i]) continue;
+      grown_done_[i] = 1;
+      // Made by this network for itself (records_[i].make): no one else holds it.
+      auto& node = const_cast<CnNode&>(*nodes_[i]);
+      if (node.follow_appends(grown_from_, domains_)) dirty_.relayout_node(i, node);
+    }
   }
-  for (const std::size_t d : grown) grown_from_[d] = kNoAtom;
+  for (const std::size_t d : grown) {
+    grown_from_[d] = kNoAtom;
+    for (const std::size_t i : users_[d]) grown_done_[i] = 0;
+  }
   return true;
 }
 
@@ -196,7 +195,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     if (rebind || (touches && records[i].make && !(grows && old[i]->follows_appends()))) {
       node = records[i].make(bind(records[i].refs));
     } else if (touches) {  // made by this network for itself: no one else holds it
-      const_cast<CnNode&>(*old[i]).follow_appends(grown_from, domains_);
+      (void)const_cast<CnNode&>(*old[i]).follow_appends(grown_from, domains_);
     }
     add_node(std::move(node));
     records_.back() = std::move(records[i]);

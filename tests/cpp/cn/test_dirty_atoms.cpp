@@ -1,5 +1,5 @@
 // The network's bookkeeping of what woke a node: DirtyAtoms (one bit per node
-// and watched atom, read back as sorted positions) and the per-atom index of
+// and watched atom, read back as sorted positions) and the per-atom lists of
 // Watchers, each against a brute-force reference on random cases, and a
 // network whose node records the dirty positions it is given.
 #include <gtest/gtest.h>
@@ -88,7 +88,7 @@ TEST(DirtyAtoms, ResetForgetsEverything) {
   EXPECT_EQ(dirty.nb_nodes(), 0u);
 }
 
-TEST(Watchers, IndexMatchesEveryWatchCoveringTheAtom) {
+TEST(Watchers, ListsEveryWatchCoveringTheAtom) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 30; ++trial) {
     const std::size_t n = 1 + rng() % 200;
@@ -100,9 +100,7 @@ TEST(Watchers, IndexMatchesEveryWatchCoveringTheAtom) {
       const detail::Watchers::Watch w{static_cast<std::size_t>(k), rng() % 5, first, count};
       all.push_back(w);
       ws.add(w);
-      if (rng() % 5 == 0) ws.index();  // an index built early is rebuilt after more adds
     }
-    ws.index();
     for (std::size_t a = 0; a < n; ++a) {
       // Whole-domain watches first, then the others, each in the order of add().
       std::vector<std::tuple<std::size_t, std::size_t>> expected, got;
@@ -127,7 +125,6 @@ TEST(Watchers, GrowKeepsTheWatchesAndExtendsTheWholeOnes) {
   ws.add({0, 1, 0, 10});  // whole
   ws.add({1, 0, 8, 2});   // the last two atoms
   ws.add({2, 3, 3, 4});
-  ws.index();
   ws.grow(14);
   const auto at = [&](std::size_t a) {
     std::vector<std::pair<std::size_t, std::size_t>> got;
@@ -138,8 +135,7 @@ TEST(Watchers, GrowKeepsTheWatchesAndExtendsTheWholeOnes) {
   EXPECT_EQ(at(4), (P{{0, 1}, {2, 3}}));
   EXPECT_EQ(at(9), (P{{0, 1}, {1, 0}}));
   EXPECT_EQ(at(13), (P{{0, 1}}));
-  ws.add({3, 0, 12, 2});  // added after the growth: indexed on the 14 atoms
-  ws.index();
+  ws.add({3, 0, 12, 2});  // added after the growth: on the 14 atoms
   EXPECT_EQ(at(13), (P{{0, 1}, {3, 0}}));
   EXPECT_EQ(at(9), (P{{0, 1}, {1, 0}}));
 }
