@@ -242,13 +242,14 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
   };
   // One pass over each domain: an empty one, or a tube with a gate off its
   // slices, is no solution before any contractor runs.
-  // update(): only the domains registered or touched since.
+  // update(): the domains registered since, and the atoms of the others touched since (check_touched).
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     check_layout(d);
     if (stats.empty || (!all && checked_[d])) continue;
     explain_empty_on_input(stats, d);
     checked_[d] = !stats.empty;
   }
+  if (!all && !stats.empty) check_touched(stats);
   if (stats.empty) return finish();
 
   // The hook is called once per round (below), not per unit of work.

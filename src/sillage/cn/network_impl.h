@@ -59,6 +59,8 @@ class ContractorNetworkImpl {
   AtomPlace name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const;
   // Fills s if domain d holds no value before the propagation (Domain::empty_on_input).
   void explain_empty_on_input(ContractStats& s, std::size_t d) const;
+  // The same given what the domain said (Domain::empty_on_input, maybe on some atoms).
+  void explain_empty_on_input(ContractStats& s, std::size_t d, const EmptyOnInput& e) const;
   // Domain d's `gate` misses its neighbouring `slice`: both named, with their values and times.
   void explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const;
   // A contractor (a Python one may) that resized a domain or sampled its
@@ -83,6 +85,11 @@ class ContractorNetworkImpl {
   // The propagation: every node first (contract) or only the fresh ones and
   // those woken by touched_ (update).
   ContractStats propagate(bool all);
+  // The atoms [first, end) of domain d that a touch at times t names (all of
+  // a domain that is no tube, or for t the whole line); false if none.
+  bool touched_atoms(std::size_t d, const Interval& t, std::size_t& first, std::size_t& end) const;
+  // Fills s if a domain checked before is empty on input where it was touched since (update()).
+  void check_touched(ContractStats& s) const;
   // Marks the watchers of the touched atoms dirty and queues them (update()).
   void wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued);
   // Builds every node again from its record on the domains as they are now

@@ -20,25 +20,44 @@ void ContractorNetworkImpl::touched(const DomainRef& d, const Interval& t) {
       throw Error("ContractorNetwork::touched: " + p.domain->noun() + " (" + p.domain->kind() +
                   ") is not in the network (add a contractor on it first)");
     }
-    checked_[it->second] = 0;
+    // A tube touched at some times is checked there at the next propagation; anything else anew.
+    if (t.is_all_reals() || !dynamic_cast<const TubeDomain*>(domains_[it->second].get())) checked_[it->second] = 0;
   }
   touched_.push_back({d, t});
+}
+
+bool ContractorNetworkImpl::touched_atoms(std::size_t d, const Interval& t, std::size_t& first, std::size_t& end) const {
+  first = 0, end = domains_[d]->nb_atoms();
+  const auto* tube = dynamic_cast<const TubeDomain*>(domains_[d].get());
+  if (!tube || t.is_all_reals()) return true;
+  const TDomain& td = *tube->tube().tdomain();
+  const Interval within = t & td.t0_tf();
+  if (within.is_empty()) return false;  // forgotten since, or not yet there
+  std::size_t k0 = 0, k1 = 0;
+  slice_range(td, within, k0, k1, "ContractorNetwork::touched");
+  first = 2 * k0;    // gate k0
+  end = 2 * k1 + 3;  // up to gate k1 + 1
+  return true;
+}
+
+void ContractorNetworkImpl::check_touched(ContractStats& s) const {
+  for (const Touch& touch : touched_) {
+    for (const auto& p : touch.ref.parts()) {
+      const std::size_t d = index_.at(p.domain->key());
+      std::size_t first = 0, end = 0;
+      if (!checked_[d] || !touched_atoms(d, touch.t, first, end)) continue;  // checked whole, or nothing there
+      explain_empty_on_input(s, d, domains_[d]->empty_on_input(first, end));
+      if (s.empty) return;
+    }
+  }
 }
 
 void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued) {
   for (const Touch& touch : touched_) {
     for (const auto& p : touch.ref.parts()) {
       const std::size_t d = index_.at(p.domain->key());
-      std::size_t first = 0, end = domains_[d]->nb_atoms();
-      if (const auto* tube = dynamic_cast<const TubeDomain*>(domains_[d].get()); tube && !touch.t.is_all_reals()) {
-        const TDomain& td = *tube->tube().tdomain();
-        const Interval t = touch.t & td.t0_tf();
-        if (t.is_empty()) continue;  // forgotten since, or not yet there
-        std::size_t k0 = 0, k1 = 0;
-        slice_range(td, t, k0, k1, "ContractorNetwork::touched");
-        first = 2 * k0;      // gate k0
-        end = 2 * k1 + 3;    // up to gate k1 + 1
-      }
+      std::size_t first = 0, end = 0;
+      if (!touched_atoms(d, touch.t, first, end)) continue;
       for (std::size_t a = first; a < end; ++a) {
         watchers_[d].for_each(a, [&](std::size_t node, std::size_t g) {
           if (dirty_.mark(node, g, a) && !queued[node]) {

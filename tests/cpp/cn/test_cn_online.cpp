@@ -190,3 +190,30 @@ TEST(CnOnline, RelayoutGrowsTheNodesThatFollowAppendsInPlace) {
   cn.relayout();  // forgetting is no append: the node is made again
   EXPECT_EQ(rec->made, 2u);
 }
+
+// update() checks a tube touched at some times there only (the rest was checked before), and
+// still finds an input written empty there, or a gate written off its slice, and names it.
+TEST(CnOnline, TouchedAtomsAreCheckedForEmptinessOnInput) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto y = std::make_shared<Tube>(td, Interval(0, 10));
+  ContractorNetwork cn;
+  cn.add(counting({"x", "y"}, "x - y"), {x, y});
+  cn.set_name(x, "x");
+  cn.contract();
+  x->write().slices()[7] = Interval::empty();
+  cn.touched(x, Interval(7.2, 7.8));
+  ContractStats s = cn.update();
+  ASSERT_TRUE(s.empty);
+  EXPECT_NE(s.emptiness.find("slice 7"), std::string::npos) << s.emptiness;
+  EXPECT_EQ(s.contractor_calls, 0u);  // found before any contractor ran
+  // Domain::empty_on_input on atoms: the slices holding them with their gates.
+  x->write().slices()[7] = Interval(1, 2);
+  x->write().gates()[3] = Interval(20, 21);  // off slices 2 and 3
+  TubeDomain dom(x);
+  EXPECT_FALSE(dom.empty_on_input(9, 12).empty);  // slices 4, 5: nothing wrong
+  EXPECT_TRUE(dom.empty_on_input(7, 8).empty);    // slice 3 (atom 7) with its gate 3
+  EXPECT_TRUE(dom.empty_on_input(6, 7).empty);    // gate 3 (atom 6)
+  EXPECT_EQ(dom.empty_on_input(4, 9).atom, 6u);   // the first flaw in time order
+  EXPECT_TRUE(dom.empty_on_input().empty);
+}
