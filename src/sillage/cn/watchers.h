@@ -3,9 +3,9 @@
 // each with the range of the node that watches it. Watches of the whole
 // domain (the usual case for tube contractors) are kept in a list that every
 // atom matches, which costs no memory per atom; watches of part of a domain
-// (a box component, the few slices a CtcEval looks at) are listed per atom,
-// in the order of add(): adding one costs its atoms, not the domain's (an
-// online estimator adds an observation at every measurement). A domain that
+// (a box component, the few slices a CtcEval looks at) are chained per atom,
+// in the order of add(), in one flat array: adding one costs its atoms, not
+// the domain's (an online estimator adds an observation at every measurement). A domain that
 // gains atoms at its end (a tube whose TDomain grew) keeps its watches: grow().
 #include <cstddef>
 #include <vector>
@@ -31,17 +31,19 @@ class Watchers {
   template <class F>
   void for_each(std::size_t a, F&& f) const {
     for (const Watch& w : whole_) f(w.node, w.range);
-    if (a >= at_.size()) return;
-    for (const Entry& e : at_[a]) f(e.node, e.range);
+    if (a >= head_.size()) return;
+    for (std::size_t i = head_[a]; i != kNone; i = at_[i].next) f(at_[i].node, at_[i].range);
   }
 
  private:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   struct Entry {
-    std::size_t node, range;
+    std::size_t node, range, next;  // next: the atom's next entry, or kNone
   };
   std::size_t nb_atoms_;
   std::vector<Watch> whole_;
-  std::vector<std::vector<Entry>> at_;  // per atom, its partial watches (sized on the first one)
+  std::vector<std::size_t> head_, tail_;  // per atom, its first and last entry (sized on the first add)
+  std::vector<Entry> at_;
 };
 
 }  // namespace sillage::detail
