@@ -48,6 +48,8 @@ void BM_Plaza1Online(benchmark::State& state) {
   state.counters["updates"] = static_cast<double>(r.latency.size());
   state.counters["median_us"] = 1e6 * plaza1::quantile(r.latency, 0.5);
   state.counters["p99_us"] = 1e6 * plaza1::quantile(r.latency, 0.99);
+  state.counters["advance_median_us"] = 1e6 * plaza1::quantile(r.advance_latency, 0.5);
+  state.counters["advance_p99_us"] = 1e6 * plaza1::quantile(r.advance_latency, 0.99);
   state.counters["max_us"] = 1e6 * plaza1::quantile(r.latency, 1.0);
   state.counters["log_s"] = sum;
   state.counters["realtime_x"] = (d.t.back() - d.t.front()) / sum;

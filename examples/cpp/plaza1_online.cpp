@@ -80,10 +80,11 @@ int example_main(int argc, char** argv) {
   std::printf("plaza1 online, window %s: %zu periods, %zu ranges, %zu updates in %.2f s (%.0f x real time)\n",
               std::isfinite(window) ? (std::to_string(static_cast<int>(window)) + " s").c_str() : "inf", r.t.size(),
               r.ranges, r.latency.size(), total, (d.t.back() - d.t.front()) / total);
-  std::printf("  per update: median %.0f us, p99 %.0f us, max %.0f us; %zu slices in memory at the end, %zu observations "
-              "retired\n",
+  std::printf("  per update: median %.0f us, p99 %.0f us, max %.0f us (per advance: median %.0f us, p99 %.0f us); %zu "
+              "slices in memory at the end, %zu observations retired\n",
               1e6 * plaza1::quantile(r.latency, 0.5), 1e6 * plaza1::quantile(r.latency, 0.99),
-              1e6 * plaza1::quantile(r.latency, 1.0), st.slices, st.retired);
+              1e6 * plaza1::quantile(r.latency, 1.0), 1e6 * plaza1::quantile(r.advance_latency, 0.5),
+              1e6 * plaza1::quantile(r.advance_latency, 0.99), st.slices, st.retired);
   std::printf("  ground truth inside the online box at %zu / %zu times\n", inside, checked);
 
   // The batch solve of the same data and model (the gyro's bias free at every step, as online):

@@ -67,6 +67,9 @@ inline std::unique_ptr<OnlineEstimator> online_estimator(const example::Plaza1Da
 // online box of p (after every update at that time).
 struct Replay {
   std::vector<double> latency;  // seconds, one per advance() or observe()
+  // Seconds, one per advance(): an observe() whose time reaches past now is
+  // held and returns at once, its work done by the advance that passes it.
+  std::vector<double> advance_latency;
   std::vector<double> t;        // the odometry times t_1 .. t_N
   std::vector<IntervalVector> now;  // p at each of them, online
   std::size_t ranges = 0;
@@ -92,6 +95,7 @@ inline Replay replay(OnlineEstimator& est, const example::Plaza1Data& d, const B
     auto start = clock();
     est.advance(d.t[k + 1], {{"dpsi", IntervalVector{dpsi}}, {"dist", IntervalVector{dist}}});
     r.latency.push_back(std::chrono::duration<double>(clock() - start).count());
+    r.advance_latency.push_back(r.latency.back());
     for (; next < order.size() && d.rt[order[next]] <= d.t[k + 1]; ++next) {
       const std::size_t j = order[next];
       const Interval tj(d.rt[j] - b.time_err, d.rt[j] + b.time_err);

@@ -115,9 +115,11 @@ class CnNode {
   std::size_t nb_atoms_ = 0;
 
   friend class detail::ContractorNetworkImpl;
-  // The ranges (and watched ranges) covering the `from` atoms of domain d
-  // now cover its `to` atoms (the network, for a node that follows_appends()).
-  void follow_append(std::size_t d, std::size_t from, std::size_t to);
+  // The ranges (and watched ranges) covering the from[d] atoms of a domain d
+  // that grew (kNoAtom: it did not) now cover its domains[d]->nb_atoms()
+  // (the network, for a node that follows_appends()). True if a watched
+  // range grew with them.
+  bool follow_appends(const std::vector<std::size_t>& from, const std::vector<std::shared_ptr<Domain>>& domains);
 };
 
 // A box contractor on the concatenation of its atoms: read, contract, write

@@ -50,6 +50,13 @@ class Domain {
   // value (by default its first empty atom; a tube also finds a gate
   // disjoint from a neighbouring slice, the first flaw in time order).
   virtual EmptyOnInput empty_on_input() const;
+  // The same for atoms [first, end) only, when the others are known to hold
+  // values (checked before, not changed since): a tube checks its slices
+  // and gates there. The whole domain by default.
+  virtual EmptyOnInput empty_on_input(std::size_t first, std::size_t end) const {
+    (void)first, (void)end;
+    return empty_on_input();
+  }
   // The wrapped object: two domains with the same key are the same variable.
   virtual const void* key() const = 0;
   // "Interval", "IntervalVector(3)", ...

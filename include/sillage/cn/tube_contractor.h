@@ -37,10 +37,14 @@
 // but a contractor on (Tube&, const Tube&) that also has
 // `bool contract_local(Tube& x, const Tube& v, first, last, const TubeChanges&)`
 // is called that way after its first run, with the slices that hold what
-// woke it (CtcDeriv). Another contractor that works only where its tubes
+// woke it (CtcDeriv, CtcIncrement, CtcSecondDeriv). Another contractor that works only where its tubes
 // changed (CtcEval around [t]) derives TubeNode (tube_node.h). A contractor whose
 // `bool enforces_derivative() const` is true on a signature (Tube&, const
 // Tube&, ...) tells the network that it enforces x' = v (CtcDeriv).
+//
+// A contractor that holds nothing per slice says so by `bool follows_appends()
+// const` returning true: its node is then kept, grown, when its tubes gain
+// slices at their end (TDomain::extend, online estimation) rather than built anew.
 //
 // contract() must be const and may only remove values that no trajectory
 // takes; the node holds a copy of the contractor (make_node copies *this).
@@ -206,6 +210,13 @@ class TubeContractorNode<Derived, R(A...)> : public TubeContractorNodeBase {
       if (!store(r, c, v, call(v), call)) return false;
     }
     return true;
+  }
+
+  // A contractor whose `bool follows_appends() const` is true keeps its node
+  // when its tubes gain slices (CnNode::follows_appends).
+  bool follows_appends() const override {
+    if constexpr (requires(const Derived& d) { d.follows_appends(); }) return ctc_.follows_appends();
+    return false;
   }
 
   void derivative_pairs(std::vector<DerivativePair>& out) const override {

@@ -32,6 +32,9 @@ class TubeCtcNode : public TubeNode {
   TubeCtcNode(std::shared_ptr<const Ctc> ctc, const std::vector<BoundDomain>& args);
   std::string describe() const override { return ctc_->describe(); }
   bool run(NodeRun& r) const override;
+  // Nothing in it depends on the number of slices: grown in place when its
+  // tubes gain slices (online estimation).
+  bool follows_appends() const override { return true; }
 
  private:
   // Contracts the time atoms `atoms` (sorted) by contract_time_elements

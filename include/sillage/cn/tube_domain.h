@@ -28,6 +28,8 @@ class TubeDomain : public Domain, public TubeAtoms {
   // One pass over the tube: its first empty slice or gate, or gate disjoint
   // from a neighbouring slice (a tube that holds no continuous trajectory).
   EmptyOnInput empty_on_input() const override;
+  // The slices holding atoms [first, end) and their gates (a gate with both its slices).
+  EmptyOnInput empty_on_input(std::size_t first, std::size_t end) const override;
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;

@@ -59,14 +59,18 @@ class TubeNode : public CnNode, public TubeAtoms {
   // "ContractorNetwork::add(<name>)": the start of every argument error.
   std::string where() const { return "ContractorNetwork::add(" + name_ + ")"; }
   std::size_t nb_args() const { return tubes_.size(); }
-  // The tube of argument r, null when it is an Interval or box argument.
+  // The tube of argument r, null when it is an Interval or box argument. Its
+  // tube() is the node's; its atom count is that of registration (the
+  // node's ranges() say how many it has now).
   const std::shared_ptr<TubeDomain>& tube(std::size_t r) const { return tubes_[r]; }
   // Arguments [first, first + n): whole tubes (all their slices and gates)
   // on the TDomain of the node's first tube; DimensionError naming the
   // contractor and `what` otherwise.
   std::vector<std::shared_ptr<TubeDomain>> whole_tubes(std::size_t first, std::size_t n, const char* what) const;
-  // Number of time atoms (2N+1) of the tubes, 0 without a tube.
-  std::size_t nb_time_atoms() const { return nb_time_atoms_; }
+  // Number of time atoms (2N+1) of the tubes, 0 without a tube: the count of
+  // the first tube range, which grows with the tubes when the network keeps
+  // the node through appends (follows_appends).
+  std::size_t nb_time_atoms() const { return first_tube_ < nb_args() ? ranges()[first_tube_].count : 0; }
 
   // The time atoms to contract again, sorted: all on the first run, else
   // those of the tube ranges that shrank, a slice with its two gates.
@@ -90,7 +94,7 @@ class TubeNode : public CnNode, public TubeAtoms {
  private:
   std::string name_;
   std::vector<std::shared_ptr<TubeDomain>> tubes_;
-  std::size_t nb_time_atoms_ = 0;
+  std::size_t first_tube_ = static_cast<std::size_t>(-1);  // the first tube argument
 };
 
 }  // namespace sillage

@@ -67,6 +67,8 @@ class CtcDeriv : public TubeContractor<CtcDeriv, bool(Tube&, const Tube&)> {
   // Whether contract(x, v) reaches the fixed point of x' = v (both sweeps):
   // in a network, other nodes then leave that propagation to this one.
   bool enforces_derivative() const { return propag_ == TimePropag::FWD_BWD; }
+  // Its network node stays right when the tubes gain slices (it holds nothing per slice).
+  bool follows_appends() const { return true; }
 
   // Contracts x in place with x' ∈ v (x.version() steps if it changed). Returns
   // false if x is now empty. DimensionError if x and v are not on the same

@@ -16,7 +16,9 @@
 //     included, lies in atan2(Δ) + [−A − track, A + track] (mod 2π).
 // Outward rounded throughout (Interval operations). One call sweeps the
 // positions forward and backward and then the heading, repeated while the
-// heading shrinks by more than 1 % (at most 5 times).
+// heading shrinks by more than 1 % (at most 5 times). In a network, after
+// its first run, the node contracts from where its tubes changed
+// (contract_local).
 //
 // Empty: a gate or a slice becomes empty, or d is empty; every domain
 // contracted is then set empty and contract returns false.
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "sillage/cn/network_ctc.h"
+#include "sillage/cn/tube_changes.h"
 #include "sillage/tube/tube.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -46,6 +49,16 @@ class CtcHeading : public NetworkCtc {
   bool contract(TubeVector& p, Tube& psi, const Tube& d, const Tube& w) const;
   // The same on component tubes (the network's form).
   bool contract(Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& w) const;
+  // The same after a change in slices first..last of the five tubes (and
+  // their gates first..last+1) when they were a fixed point of contract()
+  // before: each pass starts where the steps changed, sweeps the positions
+  // while their gates move and bounds the heading next to the gates that
+  // moved, with contract()'s result bit for bit (the network's node uses it
+  // after its first run). The changes receive what shrank. Error if
+  // first > last or last >= N.
+  bool contract_local(Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& w, std::size_t first,
+                      std::size_t last, const TubeChanges& px_changes = {}, const TubeChanges& py_changes = {},
+                      const TubeChanges& psi_changes = {}) const;
 
  private:
   double track_;

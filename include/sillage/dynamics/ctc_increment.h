@@ -26,9 +26,18 @@ class CtcIncrement : public TubeContractor<CtcIncrement, bool(Tube&, const Tube&
   // The increment contractor.
   CtcIncrement() = default;
   std::string name() const override { return "CtcIncrement"; }
+  // Its network node stays right when the tubes gain slices (it holds nothing per slice).
+  bool follows_appends() const { return true; }
 
   // DimensionError if x and i are not on one TDomain.
   bool contract(Tube& x, const Tube& i) const;
+  // The same after a change in slices first..last of i or x (and gates
+  // first..last+1 of x) when x was a fixed point of contract() before: the
+  // sweeps start at the change and stop where the gates stop moving, with
+  // contract()'s result bit for bit (the network's node uses it after its
+  // first run). `changes` receives what shrank. Error if first > last or
+  // last >= N; DimensionError as contract().
+  bool contract_local(Tube& x, const Tube& i, std::size_t first, std::size_t last, const TubeChanges& changes) const;
   // The same for a tube vector x, component by component.
   bool contract(TubeVector& x, const TubeVector& i) const;
 };

@@ -26,10 +26,18 @@ class CtcSecondDeriv : public TubeContractor<CtcSecondDeriv, bool(Tube&, const T
   // The second-derivative contractor.
   CtcSecondDeriv() = default;
   std::string name() const override { return "CtcSecondDeriv"; }
+  // Its network node stays right when the tubes gain slices (it holds nothing per slice).
+  bool follows_appends() const { return true; }
 
   // DimensionError if x and a are not on one TDomain. Tube vectors: in a
   // network, cn.add(ctc, {x, a}), component by component.
   bool contract(Tube& x, const Tube& a) const;
+  // The same on slices first..last alone, after a change there (slices of x
+  // or a, gates first..last+1 of x) when x was a fixed point of contract()
+  // before: each slice depends on its own gates only, so this is contract()'s
+  // result bit for bit (the network's node uses it after its first run).
+  // `changes` receives what shrank. Error if first > last or last >= N.
+  bool contract_local(Tube& x, const Tube& a, std::size_t first, std::size_t last, const TubeChanges& changes) const;
 };
 
 }  // namespace sillage

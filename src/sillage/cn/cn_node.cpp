@@ -41,17 +41,22 @@ std::size_t CnNode::range_of(std::size_t pos) const {
   return g;
 }
 
-void CnNode::follow_append(std::size_t d, std::size_t from, std::size_t to) {
+bool CnNode::follow_appends(const std::vector<std::size_t>& from,
+                            const std::vector<std::shared_ptr<Domain>>& domains) {
+  bool watched = false;
   for (std::size_t g = 0; g < ranges_.size(); ++g) {
-    if (ranges_[g].domain != d || ranges_[g].first != 0 || ranges_[g].count != from) continue;
+    const std::size_t d = ranges_[g].domain;
+    if (from[d] == kNoAtom || ranges_[g].first != 0 || ranges_[g].count != from[d]) continue;
+    const std::size_t to = domains[d]->nb_atoms();
     ranges_[g].count = to;
-    if (watched_[g].first == 0 && watched_[g].count == from) watched_[g].count = to;
+    if (watched_[g].first == 0 && watched_[g].count == from[d]) watched_[g].count = to, watched = true;
   }
   nb_atoms_ = 0;
   for (std::size_t g = 0; g < ranges_.size(); ++g) {
     offsets_[g] = nb_atoms_;
     nb_atoms_ += ranges_[g].count;
   }
+  return watched;
 }
 
 void CnNode::watch_only(std::size_t r, std::size_t first, std::size_t count) {

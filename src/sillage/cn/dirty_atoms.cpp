@@ -5,49 +5,60 @@
 
 namespace sillage::detail {
 
-void DirtyAtoms::add_node(const CnNode& node, std::vector<std::size_t>& bit_of) {
-  // Each node starts on a word of its own: take() scans only its words.
-  std::size_t bit = words_.size() * 64;
-  bit_of.assign(node.ranges().size(), 0);
+std::size_t DirtyAtoms::lay_out(const CnNode& node, Span* spans) {
+  std::size_t bit = 0;
   for (std::size_t g = 0; g < node.ranges().size(); ++g) {
     const AtomRange& w = node.watched()[g];
-    if (w.count == 0) continue;
-    bit_of[g] = bit;
-    spans_.push_back({bit, w.count, node.offset(g) + (w.first - node.ranges()[g].first)});
+    spans[g] = {w.first, w.count, bit};
     bit += w.count;
   }
-  words_.resize((bit + 63) / 64, 0);
+  return bit;
+}
+
+void DirtyAtoms::add_node(const CnNode& node) {
   first_span_.push_back(spans_.size());
+  spans_.resize(spans_.size() + node.ranges().size());
+  const std::size_t bits = lay_out(node, spans_.data() + first_span_.back());
+  words_.emplace_back((bits + 63) / 64, 0);
   wakes_.push_back(0);
+}
+
+void DirtyAtoms::relayout_node(std::size_t i, const CnNode& node) {
+  const std::size_t bits = lay_out(node, spans_.data() + first_span_[i]);
+  words_[i].assign((bits + 63) / 64, 0);
+  wakes_[i] = 0;
 }
 
 void DirtyAtoms::clear_nodes() {
   words_.clear();
   spans_.clear();
-  first_span_.assign(1, 0);
+  first_span_.clear();
   wakes_.clear();
 }
 
 void DirtyAtoms::reset() {
-  std::fill(words_.begin(), words_.end(), 0);
+  for (auto& w : words_) std::fill(w.begin(), w.end(), 0);
   std::fill(wakes_.begin(), wakes_.end(), 0);
 }
 
-void DirtyAtoms::take(std::size_t node, std::vector<std::size_t>& out) {
+void DirtyAtoms::take(std::size_t node, const CnNode& n, std::vector<std::size_t>& out) {
   out.clear();
   wakes_[node] = 0;
-  for (std::size_t s = first_span_[node]; s < first_span_[node + 1]; ++s) {
-    const Span& sp = spans_[s];
+  std::vector<std::uint64_t>& words = words_[node];
+  for (std::size_t g = 0; g < n.ranges().size(); ++g) {
+    const Span& sp = spans_[first_span_[node] + g];
+    // Bit b of the span is the node's position pos + (b - sp.bit).
+    const std::size_t pos = n.offset(g) + (sp.first - n.ranges()[g].first);
     const std::size_t end = sp.bit + sp.count;
     for (std::size_t b = sp.bit; b < end;) {
       // The bits of this span in the word holding b.
       const std::size_t word = b >> 6, lo = b & 63, hi = std::min<std::size_t>(64, lo + (end - b));
       const std::uint64_t mask = (hi == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << hi) - 1) & (~std::uint64_t{0} << lo);
-      std::uint64_t bits = words_[word] & mask;
-      words_[word] &= ~mask;
+      std::uint64_t bits = words[word] & mask;
+      words[word] &= ~mask;
       while (bits) {
         const auto j = static_cast<std::size_t>(std::countr_zero(bits));
-        out.push_back(sp.pos + (word * 64 + j - sp.bit));
+        out.push_back(pos + (word * 64 + j - sp.bit));
         bits &= bits - 1;
       }
       b = word * 64 + hi;

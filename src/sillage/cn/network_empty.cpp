@@ -68,7 +68,10 @@ void ContractorNetworkImpl::explain_disjoint(ContractStats& s, std::size_t d, st
 
 // The domains are left as given, as for an empty domain: the report says why.
 void ContractorNetworkImpl::explain_empty_on_input(ContractStats& s, std::size_t d) const {
-  const EmptyOnInput e = domains_[d]->empty_on_input();
+  explain_empty_on_input(s, d, domains_[d]->empty_on_input());
+}
+
+void ContractorNetworkImpl::explain_empty_on_input(ContractStats& s, std::size_t d, const EmptyOnInput& e) const {
   if (!e.empty) return;
   if (e.misses == kNoAtom) {
     explain_empty(s, d, e.atom, "", Interval::empty());

@@ -36,6 +36,7 @@ std::size_t ContractorNetworkImpl::add_domain(const std::shared_ptr<Domain>& dom
   names_.emplace_back();
   checked_.push_back(0);
   watchers_.emplace_back(domain->nb_atoms());
+  users_.emplace_back();
   index_.emplace(domain->key(), d);
   return d;
 }
@@ -112,6 +113,7 @@ void ContractorNetworkImpl::add_bound(const std::vector<DomainRef>& domains, con
       names_.pop_back();
       checked_.pop_back();
       watchers_.pop_back();
+      users_.pop_back();
     }
     throw;
   }
@@ -127,12 +129,12 @@ void ContractorNetworkImpl::add_node(std::shared_ptr<const CnNode> node) {
     }
   }
   const std::size_t id = nodes_.size();
-  std::vector<std::size_t> bit_of;
-  dirty_.add_node(*node, bit_of);
+  dirty_.add_node(*node);
   for (std::size_t g = 0; g < node->ranges().size(); ++g) {
     const AtomRange& a = node->ranges()[g];
     const AtomRange& w = node->watched()[g];
-    if (w.count > 0) watchers_[a.domain].add({id, w.first, w.count, node->offset(g) + (w.first - a.first), bit_of[g]});
+    if (w.count > 0) watchers_[a.domain].add({id, g, w.first, w.count});
+    if (users_[a.domain].empty() || users_[a.domain].back() != id) users_[a.domain].push_back(id);
   }
   nodes_.push_back(std::move(node));
   records_.emplace_back();
@@ -240,13 +242,14 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
   };
   // One pass over each domain: an empty one, or a tube with a gate off its
   // slices, is no solution before any contractor runs.
-  // update(): only the domains registered or touched since.
+  // update(): the domains registered since, and the atoms of the others touched since (check_touched).
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     check_layout(d);
     if (stats.empty || (!all && checked_[d])) continue;
     explain_empty_on_input(stats, d);
     checked_[d] = !stats.empty;
   }
+  if (!all && !stats.empty) check_touched(stats);
   if (stats.empty) return finish();
 
   // The hook is called once per round (below), not per unit of work.
@@ -254,7 +257,6 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
   metered.progress = nullptr;
   BudgetMeter meter(metered, "ContractorNetwork::contract", "the network's budget (set_budget)", "", 0,
                     "contractor calls");
-  for (auto& w : watchers_) w.index();
   dirty_.reset();
   std::vector<DerivativePair> derivatives;
   for (const auto& node : nodes_) node->derivative_pairs(derivatives);
@@ -278,7 +280,7 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
       queued[i] = 0;
       changed.clear();
       const CnNode& node = *nodes_[i];
-      dirty_.take(i, dirty);
+      dirty_.take(i, node, dirty);
       NodeRun run{domains_, ratio_, fresh_[i] != 0, dirty, changed};
       run.derivatives = derivatives;
       run.cancel = &budget_.cancel;
@@ -310,9 +312,10 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
         // The range holding position k, then the atom it is.
         const std::size_t g = node.range_of(k);
         const AtomRange& a = node.ranges()[g];
-        watchers_[a.domain].for_each(a.first + k - node.offset(g), [&](std::size_t w, std::size_t, std::size_t bit) {
+        const std::size_t atom = a.first + k - node.offset(g);
+        watchers_[a.domain].for_each(atom, [&](std::size_t w, std::size_t wg) {
           // A node never wakes itself; one already recorded for this atom is queued.
-          if (w != i && dirty_.mark(w, bit) && !queued[w]) {
+          if (w != i && dirty_.mark(w, wg, atom) && !queued[w]) {
             queued[w] = 1;
             next.push_back(w);
           }

@@ -59,6 +59,8 @@ class ContractorNetworkImpl {
   AtomPlace name_empty(ContractStats& s, std::size_t d, std::size_t a, const std::string& by) const;
   // Fills s if domain d holds no value before the propagation (Domain::empty_on_input).
   void explain_empty_on_input(ContractStats& s, std::size_t d) const;
+  // The same given what the domain said (Domain::empty_on_input, maybe on some atoms).
+  void explain_empty_on_input(ContractStats& s, std::size_t d, const EmptyOnInput& e) const;
   // Domain d's `gate` misses its neighbouring `slice`: both named, with their values and times.
   void explain_disjoint(ContractStats& s, std::size_t d, std::size_t gate, std::size_t slice) const;
   // A contractor (a Python one may) that resized a domain or sampled its
@@ -83,12 +85,23 @@ class ContractorNetworkImpl {
   // The propagation: every node first (contract) or only the fresh ones and
   // those woken by touched_ (update).
   ContractStats propagate(bool all);
+  // The atoms [first, end) of domain d that a touch at times t names (all of
+  // a domain that is no tube, or for t the whole line); false if none.
+  bool touched_atoms(std::size_t d, const Interval& t, std::size_t& first, std::size_t& end) const;
+  // Fills s if a domain checked before is empty on input where it was touched since (update()).
+  void check_touched(ContractStats& s) const;
   // Marks the watchers of the touched atoms dirty and queues them (update()).
   void wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued);
   // Builds every node again from its record on the domains as they are now
   // (relaid out), in the same order; from an empty network when `rebind`
   // (retire: the domains no node uses are dropped).
   void rebuild_nodes(bool rebind);
+  // relayout() when every changed domain only gained atoms at its end and
+  // every node on them follows appends: those domains and nodes grown in
+  // place, the others untouched (O(nodes on them); the dirty bits laid out
+  // again only for the nodes that watch a whole grown domain). False, with nothing
+  // changed, when that does not hold (rebuild_nodes then).
+  bool grow_in_place();
   bool acts_on(const CnNode& node, const TDomain& td) const;
   void check_not_contracting(const char* where) const;
 
@@ -96,6 +109,9 @@ class ContractorNetworkImpl {
   std::vector<std::string> names_;  // per domain, "" if unnamed
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
+  std::vector<std::vector<std::size_t>> users_;  // per domain, the nodes with a range on it, ascending
+  std::vector<std::size_t> grown_from_;  // grow_in_place's scratch: per domain, its former atom count or kNoAtom
+  std::vector<char> grown_done_;         // grow_in_place's scratch: per node, grown already
   // Per node, its watched atoms that shrank since it last ran (contract()).
   DirtyAtoms dirty_;
   std::vector<std::shared_ptr<const CnNode>> nodes_;

@@ -20,29 +20,47 @@ void ContractorNetworkImpl::touched(const DomainRef& d, const Interval& t) {
       throw Error("ContractorNetwork::touched: " + p.domain->noun() + " (" + p.domain->kind() +
                   ") is not in the network (add a contractor on it first)");
     }
-    checked_[it->second] = 0;
+    // A tube touched at some times is checked there at the next propagation; anything else anew.
+    if (t.is_all_reals() || !dynamic_cast<const TubeDomain*>(domains_[it->second].get())) checked_[it->second] = 0;
   }
   touched_.push_back({d, t});
 }
 
-void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued) {
-  for (auto& w : watchers_) w.index();
+bool ContractorNetworkImpl::touched_atoms(std::size_t d, const Interval& t, std::size_t& first, std::size_t& end) const {
+  first = 0, end = domains_[d]->nb_atoms();
+  const auto* tube = dynamic_cast<const TubeDomain*>(domains_[d].get());
+  if (!tube || t.is_all_reals()) return true;
+  const TDomain& td = *tube->tube().tdomain();
+  const Interval within = t & td.t0_tf();
+  if (within.is_empty()) return false;  // forgotten since, or not yet there
+  std::size_t k0 = 0, k1 = 0;
+  slice_range(td, within, k0, k1, "ContractorNetwork::touched");
+  first = 2 * k0;    // gate k0
+  end = 2 * k1 + 3;  // up to gate k1 + 1
+  return true;
+}
+
+void ContractorNetworkImpl::check_touched(ContractStats& s) const {
   for (const Touch& touch : touched_) {
     for (const auto& p : touch.ref.parts()) {
       const std::size_t d = index_.at(p.domain->key());
-      std::size_t first = 0, end = domains_[d]->nb_atoms();
-      if (const auto* tube = dynamic_cast<const TubeDomain*>(domains_[d].get()); tube && !touch.t.is_all_reals()) {
-        const TDomain& td = *tube->tube().tdomain();
-        const Interval t = touch.t & td.t0_tf();
-        if (t.is_empty()) continue;  // forgotten since, or not yet there
-        std::size_t k0 = 0, k1 = 0;
-        slice_range(td, t, k0, k1, "ContractorNetwork::touched");
-        first = 2 * k0;      // gate k0
-        end = 2 * k1 + 3;    // up to gate k1 + 1
-      }
+      std::size_t first = 0, end = 0;
+      if (!checked_[d] || !touched_atoms(d, touch.t, first, end)) continue;  // checked whole, or nothing there
+      explain_empty_on_input(s, d, domains_[d]->empty_on_input(first, end));
+      if (s.empty) return;
+    }
+  }
+}
+
+void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::vector<char>& queued) {
+  for (const Touch& touch : touched_) {
+    for (const auto& p : touch.ref.parts()) {
+      const std::size_t d = index_.at(p.domain->key());
+      std::size_t first = 0, end = 0;
+      if (!touched_atoms(d, touch.t, first, end)) continue;
       for (std::size_t a = first; a < end; ++a) {
-        watchers_[d].for_each(a, [&](std::size_t node, std::size_t, std::size_t bit) {
-          if (dirty_.mark(node, bit) && !queued[node]) {
+        watchers_[d].for_each(a, [&](std::size_t node, std::size_t g) {
+          if (dirty_.mark(node, g, a) && !queued[node]) {
             queued[node] = 1;
             round.push_back(node);
           }
@@ -57,7 +75,45 @@ void ContractorNetworkImpl::relayout() {
   for (std::size_t d = 0; d < domains_.size(); ++d) {
     if (domains_[d]->layout_changed() && !domains_[d]->relaid()) domains_[d]->check_layout(label(d));
   }
-  rebuild_nodes(false);
+  if (!grow_in_place()) rebuild_nodes(false);
+}
+
+bool ContractorNetworkImpl::grow_in_place() {
+  std::vector<std::size_t> grown;
+  std::vector<std::shared_ptr<Domain>> now;
+  for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (!domains_[d]->layout_changed()) continue;
+    if (!domains_[d]->appended_only()) return false;
+    for (const std::size_t i : users_[d]) {
+      if (!records_[i].make || !nodes_[i]->follows_appends()) return false;
+    }
+    grown.push_back(d);
+    now.push_back(domains_[d]->relaid());
+    if (!now.back()) return false;
+  }
+  grown_from_.resize(domains_.size(), kNoAtom);
+  for (std::size_t j = 0; j < grown.size(); ++j) {
+    const std::size_t d = grown[j];
+    grown_from_[d] = domains_[d]->nb_atoms();
+    domains_[d] = std::move(now[j]);
+    watchers_[d].grow(domains_[d]->nb_atoms());
+  }
+  // The nodes on them, each once (a node on several grown domains is marked by the first).
+  grown_done_.resize(nodes_.size(), 0);
+  for (const std::size_t d : grown) {
+    for (const std::size_t i : users_[d]) {
+      if (grown_done_[i]) continue;
+      grown_done_[i] = 1;
+      // Made by this network for itself (records_[i].make): no one else holds it.
+      auto& node = const_cast<CnNode&>(*nodes_[i]);
+      if (node.follow_appends(grown_from_, domains_)) dirty_.relayout_node(i, node);
+    }
+  }
+  for (const std::size_t d : grown) {
+    grown_from_[d] = kNoAtom;
+    for (const std::size_t i : users_[d]) grown_done_[i] = 0;
+  }
+  return true;
 }
 
 void ContractorNetworkImpl::retire(std::vector<std::size_t> nodes) {
@@ -125,6 +181,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     names_.clear();
     index_.clear();
     watchers_.clear();
+    users_.clear();
     checked_.clear();
   }
   // relayout: which domains changed, and the atoms of those that only grew at the end.
@@ -137,7 +194,10 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
       if (domains_[d]->appended_only()) grown_from[d] = domains_[d]->nb_atoms();
       if (auto now = domains_[d]->relaid()) domains_[d] = std::move(now);
     }
-    for (std::size_t d = 0; d < domains_.size(); ++d) watchers_[d] = Watchers(domains_[d]->nb_atoms());
+    for (std::size_t d = 0; d < domains_.size(); ++d) {
+      watchers_[d] = Watchers(domains_[d]->nb_atoms());
+      users_[d].clear();
+    }
   }
   dirty_.clear_nodes();
   // Every node again, in the same order (the watchers name nodes by index): as
@@ -154,12 +214,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     if (rebind || (touches && records[i].make && !(grows && old[i]->follows_appends()))) {
       node = records[i].make(bind(records[i].refs));
     } else if (touches) {  // made by this network for itself: no one else holds it
-      auto& grown = const_cast<CnNode&>(*old[i]);
-      std::vector<std::size_t> ds;
-      for (const auto& a : grown.ranges()) {
-        if (changed[a.domain] && std::find(ds.begin(), ds.end(), a.domain) == ds.end()) ds.push_back(a.domain);
-      }
-      for (const std::size_t d : ds) grown.follow_append(d, grown_from[d], domains_[d]->nb_atoms());
+      (void)const_cast<CnNode&>(*old[i]).follow_appends(grown_from, domains_);
     }
     add_node(std::move(node));
     records_.back() = std::move(records[i]);

@@ -63,16 +63,22 @@ EmptyOnInput first_flaw(Span s, Span g, std::size_t b, std::size_t e) {
 
 }  // namespace
 
+EmptyOnInput TubeDomain::empty_on_input() const { return empty_on_input(0, 2 * x_->nb_slices() + 1); }
+
 // By blocks: a fast pass over each, the exact one only where it alarms.
-EmptyOnInput TubeDomain::empty_on_input() const {
+EmptyOnInput TubeDomain::empty_on_input(std::size_t first, std::size_t end) const {
   constexpr std::size_t kBlock = 1024;
   const Span s = x_->slices(), g = x_->gates();
-  for (std::size_t b = 0; b < s.size(); b += kBlock) {
-    const std::size_t e = std::min(b + kBlock, s.size());
+  end = std::min(end, g.size() + s.size());
+  if (first >= end) return {};
+  // Slices k0..k1-1: atom 2k (gate k) is in slices k-1 and k, atom 2k+1 in slice k.
+  const std::size_t k0 = first >= 2 ? (first - 1) / 2 : 0, k1 = std::min(s.size(), (end - 1) / 2 + 1);
+  for (std::size_t b = k0; b < k1; b += kBlock) {
+    const std::size_t e = std::min(b + kBlock, k1);
     if (surely_consistent(s, g, b, e)) continue;
     if (const EmptyOnInput f = first_flaw(s, g, b, e); f.empty) return f;
   }
-  if (g.back().is_empty()) return {true, gate_atom(s.size())};
+  if (k1 == s.size() && g.back().is_empty()) return {true, gate_atom(s.size())};
   return {};
 }
 

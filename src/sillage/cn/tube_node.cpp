@@ -23,7 +23,7 @@ TubeNode::TubeNode(std::string name, const std::vector<BoundDomain>& args)
   tubes_.reserve(args.size());
   for (const auto& a : args) {
     tubes_.push_back(std::dynamic_pointer_cast<TubeDomain>(a.domain));
-    if (tubes_.back() && nb_time_atoms_ == 0) nb_time_atoms_ = tubes_.back()->nb_atoms();
+    if (tubes_.back() && first_tube_ == static_cast<std::size_t>(-1)) first_tube_ = tubes_.size() - 1;
   }
 }
 
@@ -52,14 +52,14 @@ std::vector<std::size_t> TubeNode::dirty_time_atoms(const NodeRun& run, bool& co
   std::vector<std::size_t> atoms;
   constants = false;
   if (run.all) {
-    atoms.resize(nb_time_atoms_);
-    for (std::size_t i = 0; i < nb_time_atoms_; ++i) atoms[i] = i;
+    atoms.resize(nb_time_atoms());
+    for (std::size_t i = 0; i < nb_time_atoms(); ++i) atoms[i] = i;
     return atoms;
   }
   // Several tubes interleave their atoms: a short list is sorted, a long one
   // merged through flags.
-  const bool long_list = 3 * run.dirty.size() > nb_time_atoms_ / 16;
-  std::vector<char> mark(long_list ? nb_time_atoms_ : 0, 0);
+  const bool long_list = 3 * run.dirty.size() > nb_time_atoms() / 16;
+  std::vector<char> mark(long_list ? nb_time_atoms() : 0, 0);
   std::size_t g = 0;
   for (const std::size_t pos : run.dirty) {  // sorted: the range only moves forward
     while (g + 1 < tubes_.size() && offset(g + 1) <= pos) ++g;
@@ -75,7 +75,7 @@ std::vector<std::size_t> TubeNode::dirty_time_atoms(const NodeRun& run, bool& co
     }
   }
   if (long_list) {
-    for (std::size_t j = 0; j < nb_time_atoms_; ++j)
+    for (std::size_t j = 0; j < nb_time_atoms(); ++j)
       if (mark[j]) atoms.push_back(j);
   } else {
     std::sort(atoms.begin(), atoms.end());
@@ -85,7 +85,7 @@ std::vector<std::size_t> TubeNode::dirty_time_atoms(const NodeRun& run, bool& co
 }
 
 bool TubeNode::dirty_slices(const NodeRun& run, std::size_t r, std::size_t& first, std::size_t& last) const {
-  const std::size_t n = tubes_.at(r) ? tubes_[r]->nb_atoms() / 2 : 0;
+  const std::size_t n = tubes_.at(r) ? ranges()[r].count / 2 : 0;
   if (n == 0) return false;
   if (run.all) {
     first = 0;

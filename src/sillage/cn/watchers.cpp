@@ -7,22 +7,19 @@ void Watchers::add(const Watch& w) {
     whole_.push_back(w);
     return;
   }
-  parts_.push_back(w);
+  if (head_.size() < nb_atoms_) head_.resize(nb_atoms_, kNone), tail_.resize(nb_atoms_, kNone);
+  for (std::size_t a = w.first; a < w.first + w.count; ++a) {
+    const std::size_t i = at_.size();
+    at_.push_back({w.node, w.range, kNone});
+    (tail_[a] == kNone ? head_[a] : at_[tail_[a]].next) = i;
+    tail_[a] = i;
+  }
 }
 
-void Watchers::index() {
-  if (indexed_ == parts_.size()) return;
-  indexed_ = parts_.size();
-  // Count per atom, then place: the entries of an atom in the order of add().
-  begin_.assign(nb_atoms_ + 1, 0);
-  for (const Watch& w : parts_)
-    for (std::size_t a = w.first; a < w.first + w.count; ++a) ++begin_[a + 1];
-  for (std::size_t a = 0; a < nb_atoms_; ++a) begin_[a + 1] += begin_[a];
-  at_.resize(begin_[nb_atoms_]);
-  std::vector<std::size_t> next(begin_.begin(), begin_.end() - 1);
-  for (const Watch& w : parts_) {
-    for (std::size_t a = w.first; a < w.first + w.count; ++a) at_[next[a]++] = {w.node, w.offset - w.first, w.bit - w.first};
-  }
+void Watchers::grow(std::size_t nb_atoms) {
+  for (Watch& w : whole_) w.count = nb_atoms;
+  // No partial watch covers the new atoms: their chains are empty (head_ grows on the next add).
+  nb_atoms_ = nb_atoms;
 }
 
 }  // namespace sillage::detail

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "sillage/cn/tube_originals.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/deriv_sweep.h"
 
@@ -17,48 +18,6 @@ namespace {
 using detail::DerivSweep;
 
 constexpr std::size_t kFirstStep = 16;  // slices of the first block beyond the change
-
-// The values of the slices [base, base + s.size()) and their gates before
-// the first sweep that covered them, to report what shrank at the end. Its
-// buffers are per thread and reused: a network runs this at every update.
-class Originals {
- public:
-  Originals(std::span<const Interval> s, std::span<const Interval> g) : sl_(s), ga_(g) {
-    s_.clear();
-    g_.clear();
-  }
-  // Records slices a..b and gates a..b+1 not recorded yet (the range grows at one end at a time).
-  void cover(std::size_t a, std::size_t b) {
-    if (s_.empty()) {
-      base_ = a;
-      s_.assign(sl_.begin() + a, sl_.begin() + b + 1);
-      g_.assign(ga_.begin() + a, ga_.begin() + b + 2);
-      return;
-    }
-    if (a < base_) {
-      s_.insert(s_.begin(), sl_.begin() + a, sl_.begin() + base_);
-      g_.insert(g_.begin(), ga_.begin() + a, ga_.begin() + base_);
-      base_ = a;
-    }
-    const std::size_t end = base_ + s_.size();  // first slice not recorded
-    if (b + 1 > end) {
-      s_.insert(s_.end(), sl_.begin() + end, sl_.begin() + b + 1);
-      g_.insert(g_.end(), ga_.begin() + end + 1, ga_.begin() + b + 2);
-    }
-  }
-  const Interval& gate(std::size_t k) const { return g_[k - base_]; }
-  void report(const TubeChanges& changes) const {
-    for (std::size_t i = 0; i < s_.size(); ++i) changes.slice(base_ + i, s_[i], sl_[base_ + i]);
-    for (std::size_t i = 0; i < g_.size(); ++i) changes.gate(base_ + i, g_[i], ga_[base_ + i]);
-  }
-
- private:
-  std::span<const Interval> sl_, ga_;  // the tube's arrays
-  std::size_t base_ = 0;
-  static thread_local std::vector<Interval> s_, g_;
-};
-
-thread_local std::vector<Interval> Originals::s_, Originals::g_;
 
 }  // namespace
 
@@ -80,7 +39,8 @@ bool CtcDeriv::contract_local(Tube& x, const Tube& v, std::size_t first, std::si
   {
     Tube::Writer w = x.write();
     const auto s = w.slices(), g = w.gates();
-    Originals before(s, g);
+    thread_local detail::TubeOriginals before;  // reused: a network runs this at every update
+    before.start(s, g);
     const double* t = x.tdomain()->times().data();
     const Interval* vs = v.data().slices.data();
     // One block: false on emptiness (an empty gate of v leaves no derivative, as contract()).

@@ -50,6 +50,26 @@ void turn_rows(const Interval* co, const Interval* si, const Interval& vx, const
   detail::arith_rows_avx2(RowOp::Add, ry, RowArg{ry}, RowArg{tmp}, m);
 }
 
+// The window starting at slice a: the least b with t_b − t_a >= window
+// (from b, the previous window's end); false if there is none (the last
+// windows are shorter: skipped).
+bool next_window(const TDomain& td, const CtcHeadingWindow& ctc, std::size_t a, std::size_t& b) {
+  const auto t = td.times();
+  const std::size_t n = t.size() - 1;
+  b = std::max(b, a + 1);
+  while (b <= n && t[b] - t[a] < ctc.window()) ++b;
+  return b <= n;
+}
+
+// Whether a window holds a changed atom (`dirty`: prefix counts as below).
+bool any_dirty_window(const TDomain& td, const CtcHeadingWindow& ctc, const std::vector<std::size_t>& dirty) {
+  std::size_t b = 0;
+  for (std::size_t a = 0; a < td.nb_slices() && next_window(td, ctc, a, b); a += ctc.stride()) {
+    if (dirty[2 * b + 1] != dirty[2 * a]) return true;
+  }
+  return false;
+}
+
 // `dirty` (null: every window): prefix counts of the time atoms that changed
 // since the last run (dirty[i] = how many below atom i); a window [a, b] is
 // contracted again only if one of its atoms 2a..2b changed. `in`: the inputs
@@ -70,10 +90,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
   bool ok = in.update(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(), ctc.track());
   std::size_t b = 0;
   for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
-    // The window: the least b with t_b − t_a >= window (none: the last windows are shorter, skipped).
-    b = std::max(b, a + 1);
-    while (b <= n && td->t(b) - td->t(a) < ctc.window()) ++b;
-    if (b > n) break;
+    if (!next_window(*td, ctc, a, b)) break;
     if (dirty && (*dirty)[2 * b + 1] == (*dirty)[2 * a]) continue;  // nothing changed in the window
     const std::size_t c = (a + b) / 2;
     const auto& [vx, vy, cone] = in.sum(a, b, c);
@@ -134,10 +151,13 @@ class HeadingWindowNode : public detail::HeadingNodeBase {
     std::vector<std::size_t> dirty(nb_time_atoms() + 1, 0);
     for (const std::size_t i : atoms) ++dirty[i + 1];
     for (std::size_t i = 0; i < nb_time_atoms(); ++i) dirty[i + 1] += dirty[i];
+    const bool every = r.all || constants;
+    // No window holds what changed: nothing to do (most runs of an online update).
+    if (!every && !any_dirty_window(*tube_arg(0).tdomain(), ctc_, dirty)) return true;
     const std::lock_guard<std::mutex> lock(*mutex_);
     return run_heading(r, [&](detail::HeadingEmptyAt& at) {
       return contract_window(tube_arg(0), tube_arg(1), tube_arg(2), tube_arg(3), tube_arg(4), tube_arg(5), ctc_, at,
-                             *inputs_, r.all || constants ? nullptr : &dirty);
+                             *inputs_, every ? nullptr : &dirty);
     });
   }
 

@@ -40,15 +40,15 @@ HeadingNodeBase::HeadingNodeBase(const std::string& name, const std::vector<Boun
   if (args.size() != count) {
     throw DimensionError(where() + ": expects " + what + ", got " + std::to_string(args.size()) + " tubes");
   }
-  t_ = whole_tubes(0, count, what);
+  whole_tubes(0, count, what);
 }
 
 bool HeadingNodeBase::run_heading(NodeRun& r, const std::function<bool(HeadingEmptyAt&)>& contract) const {
   thread_local TubeSnapshot before[3];  // scratch: per thread, never shared by two runs
-  for (std::size_t i = 0; i < 3; ++i) before[i].take(t_[i]->tube());
+  for (std::size_t i = 0; i < 3; ++i) before[i].take(tube_arg(i));
   HeadingEmptyAt at;
   const bool ok = contract(at);
-  for (std::size_t i = 0; i < 3; ++i) changes(r, i).diff(before[i], t_[i]->tube());
+  for (std::size_t i = 0; i < 3; ++i) changes(r, i).diff(before[i], tube_arg(i));
   if (!ok && at.atom != kNoAtom) r.empty_at = offset(at.tube) + at.atom;
   return ok;
 }

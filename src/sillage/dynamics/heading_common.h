@@ -53,13 +53,15 @@ bool finish_heading(bool ok, Tube& px, Tube& py, Tube& psi);
 // the first three and reports to the network what shrank and where it
 // found emptiness.
 class HeadingNodeBase : public TubeNode {
+ public:
+  // Nothing in it depends on the number of slices (a window node's cache
+  // follows them): grown in place when its tubes gain slices (online estimation).
+  bool follows_appends() const override { return true; }
+
  protected:
   HeadingNodeBase(const std::string& name, const std::vector<BoundDomain>& args, std::size_t count, const char* what);
-  Tube& tube_arg(std::size_t i) const { return t_[i]->tube(); }
+  Tube& tube_arg(std::size_t i) const { return tube(i)->tube(); }
   bool run_heading(NodeRun& r, const std::function<bool(HeadingEmptyAt&)>& contract) const;
-
- private:
-  std::vector<std::shared_ptr<TubeDomain>> t_;
 };
 
 }  // namespace sillage::detail

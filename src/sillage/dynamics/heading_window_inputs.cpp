@@ -41,24 +41,30 @@ bool WindowInputs::update(const TDomain& td, const TubeData& d, const TubeData& 
                           double track) {
   const auto ts = td.times();
   const std::size_t n = d.slices.size();
-  const bool same_layout = times_.size() == ts.size() &&
-                           std::equal(ts.begin(), ts.end(), times_.begin(),
-                                      [](double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }) &&
-                           std::bit_cast<std::uint64_t>(accel) == std::bit_cast<std::uint64_t>(accel_) &&
-                           std::bit_cast<std::uint64_t>(track) == std::bit_cast<std::uint64_t>(track_);
-  if (!same_layout) {
-    times_.assign(ts.begin(), ts.end());
+  const auto same_time = [](double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); };
+  // The times known are those of the domain or the start of them (it grew at its end: online estimation).
+  const bool same_start = !times_.empty() && times_.size() <= ts.size() &&
+                          std::equal(times_.begin(), times_.end(), ts.begin(), same_time) &&
+                          same_time(accel, accel_) && same_time(track, track_);
+  const std::size_t old = same_start ? times_.size() - 1 : 0;  // the slices known
+  if (!same_start) {
     accel_ = accel, track_ = track;
-    d_.assign(d.slices.begin(), d.slices.end());
-    dpsi_.assign(dpsi.slices.begin(), dpsi.slices.end());
-    w_.assign(w.slices.begin(), w.slices.end());
-    dist_.resize(n), spread_.resize(n), turn_.resize(n), bend_.resize(n);
     sums_.assign(n + 1, Entry{});
-    for (std::size_t j = 0; j < n; ++j) compute_turn(td, j), compute_slice(j);
-  } else {
+  }
+  if (!same_start || old < n) {  // the new slices, computed
+    times_.assign(ts.begin(), ts.end());
+    d_.resize(old), dpsi_.resize(old), w_.resize(old);
+    d_.insert(d_.end(), d.slices.begin() + static_cast<std::ptrdiff_t>(old), d.slices.end());
+    dpsi_.insert(dpsi_.end(), dpsi.slices.begin() + static_cast<std::ptrdiff_t>(old), dpsi.slices.end());
+    w_.insert(w_.end(), w.slices.begin() + static_cast<std::ptrdiff_t>(old), w.slices.end());
+    dist_.resize(n), spread_.resize(n), turn_.resize(n), bend_.resize(n);
+    sums_.resize(n + 1);
+    for (std::size_t j = old; j < n; ++j) compute_turn(td, j), compute_slice(j);
+  }
+  if (old > 0) {
     // The windows over a changed slice lose their sums: the first changed slice after each start.
-    std::vector<std::size_t> next_change(n + 1, n);
-    for (std::size_t j = n; j-- > 0;) {
+    std::vector<std::size_t> next_change(old + 1, n);
+    for (std::size_t j = old; j-- > 0;) {
       next_change[j] = next_change[j + 1];
       const bool same_w = same_bits(w_[j], w.slices[j]);
       if (same_bits(d_[j], d.slices[j]) && same_bits(dpsi_[j], dpsi.slices[j]) && same_w) continue;
@@ -67,7 +73,7 @@ bool WindowInputs::update(const TDomain& td, const TubeData& d, const TubeData& 
       compute_slice(j);
       next_change[j] = j;
     }
-    for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t a = 0; a < old; ++a) {
       if (sums_[a].valid && next_change[a] < sums_[a].b) sums_[a].valid = false;
     }
   }

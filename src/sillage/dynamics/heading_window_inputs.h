@@ -23,8 +23,9 @@ struct WindowSum {
 class WindowInputs {
  public:
   // Brings the per-slice values up to date with the slices of d, Δψ and w
-  // (all of them when the times, accel or track changed) and forgets the
-  // sums of the windows over a changed slice. False if some [d](j) ∩ [0, ∞)
+  // (all of them when the times, accel or track changed; only the new ones
+  // when the domain grew at its end) and forgets the sums of the windows
+  // over a changed slice. False if some [d](j) ∩ [0, ∞)
   // is empty.
   bool update(const TDomain& td, const TubeData& d, const TubeData& dpsi, const TubeData& w, double accel,
               double track);

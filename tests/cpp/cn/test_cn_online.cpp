@@ -3,10 +3,12 @@
 // follows a TDomain that grew or forgot, retire() removes contractors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
 #include "cn/counting_ctc.h"
 #include "sillage/cn/contractor_network.h"
+#include "sillage/cn/tube_node.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/error.h"
@@ -117,4 +119,101 @@ TEST(CnOnline, RetireRemovesContractorsAndTheDomainsOnlyTheyUsed) {
   EXPECT_TRUE(s.empty);
   EXPECT_EQ(s.empty_node, 2u);
   EXPECT_THROW(cn.retire({7}), Error);
+}
+
+namespace {
+
+// A node on whole tubes that follows appends and records, per run, the
+// positions that woke it; its contractor counts the nodes it made.
+class RecordingNode : public TubeNode {
+ public:
+  RecordingNode(const std::vector<BoundDomain>& args, std::vector<std::vector<std::size_t>>& seen)
+      : TubeNode("Recording", args), seen_(seen) {
+    whole_tubes(0, nb_args(), "the arguments");
+  }
+  bool follows_appends() const override { return true; }
+  bool run(NodeRun& r) const override {
+    if (!r.all) seen_.emplace_back(r.dirty.begin(), r.dirty.end());
+    return true;
+  }
+  std::size_t position(std::size_t range, std::size_t atom) const { return offset(range) + atom; }
+
+ private:
+  std::vector<std::vector<std::size_t>>& seen_;
+};
+
+class Recording : public NetworkCtc {
+ public:
+  std::string name() const override { return "Recording"; }
+  std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override {
+    ++made;
+    auto node = std::make_shared<RecordingNode>(args, seen);
+    last = node;
+    return node;
+  }
+  mutable std::size_t made = 0;
+  mutable std::vector<std::vector<std::size_t>> seen;
+  mutable std::shared_ptr<const RecordingNode> last;
+};
+
+}  // namespace
+
+// A TDomain that grows at its end: the nodes that follow appends are kept (not made again), their
+// ranges, watches and dirty bits grown in place, so that an atom of a new slice wakes them with its
+// position on the grown layout.
+TEST(CnOnline, RelayoutGrowsTheNodesThatFollowAppendsInPlace) {
+  auto td = TDomain::create({0.0, 1.0});
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto y = std::make_shared<Tube>(td, Interval(0, 10));
+  ContractorNetwork cn;
+  const auto rec = std::make_shared<Recording>();
+  cn.add(rec, {x, y});
+  cn.add(std::make_shared<CtcDeriv>(), {x, y});  // follows appends too
+  cn.contract();
+  for (int step = 2; step <= 6; ++step) {
+    td->extend(static_cast<double>(step));
+    cn.relayout();
+    const std::size_t k = td->nb_slices() - 1;  // the new slice
+    y->write().slices()[k] = Interval(1, 2);
+    rec->seen.clear();
+    cn.touched(y, Interval(step - 0.5, step - 0.25));  // the new slice alone: its atom 2k + 1
+    cn.update();
+    ASSERT_EQ(rec->made, 1u);  // the same node all along
+    ASSERT_FALSE(rec->seen.empty());
+    // y's new slice, then what CtcDeriv shrank in x: the new gate (and slice).
+    const std::size_t pos = rec->last->position(1, 2 * k + 1);
+    EXPECT_NE(std::find(rec->seen.front().begin(), rec->seen.front().end(), pos), rec->seen.front().end())
+        << "step " << step;
+    EXPECT_EQ(pos, (2 * k + 3) + (2 * k + 1));  // x's range now has 2k + 3 atoms
+  }
+  td->forget_before(3.0);
+  cn.relayout();  // forgetting is no append: the node is made again
+  EXPECT_EQ(rec->made, 2u);
+}
+
+// update() checks a tube touched at some times there only (the rest was checked before), and
+// still finds an input written empty there, or a gate written off its slice, and names it.
+TEST(CnOnline, TouchedAtomsAreCheckedForEmptinessOnInput) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto y = std::make_shared<Tube>(td, Interval(0, 10));
+  ContractorNetwork cn;
+  cn.add(counting({"x", "y"}, "x - y"), {x, y});
+  cn.set_name(x, "x");
+  cn.contract();
+  x->write().slices()[7] = Interval::empty();
+  cn.touched(x, Interval(7.2, 7.8));
+  ContractStats s = cn.update();
+  ASSERT_TRUE(s.empty);
+  EXPECT_NE(s.emptiness.find("slice 7"), std::string::npos) << s.emptiness;
+  EXPECT_EQ(s.contractor_calls, 0u);  // found before any contractor ran
+  // Domain::empty_on_input on atoms: the slices holding them with their gates.
+  x->write().slices()[7] = Interval(1, 2);
+  x->write().gates()[3] = Interval(20, 21);  // off slices 2 and 3
+  TubeDomain dom(x);
+  EXPECT_FALSE(dom.empty_on_input(9, 12).empty);  // slices 4, 5: nothing wrong
+  EXPECT_TRUE(dom.empty_on_input(7, 8).empty);    // slice 3 (atom 7) with its gate 3
+  EXPECT_TRUE(dom.empty_on_input(6, 7).empty);    // gate 3 (atom 6)
+  EXPECT_EQ(dom.empty_on_input(4, 9).atom, 6u);   // the first flaw in time order
+  EXPECT_TRUE(dom.empty_on_input().empty);
 }

@@ -1,5 +1,5 @@
 // The network's bookkeeping of what woke a node: DirtyAtoms (one bit per node
-// and watched atom, read back as sorted positions) and the per-atom index of
+// and watched atom, read back as sorted positions) and the per-atom lists of
 // Watchers, each against a brute-force reference on random cases, and a
 // network whose node records the dirty positions it is given.
 #include <gtest/gtest.h>
@@ -36,7 +36,6 @@ TEST(DirtyAtoms, PositionsSortedOncePerAtomAgainstASet) {
   for (int trial = 0; trial < 50; ++trial) {
     detail::DirtyAtoms dirty;
     std::vector<Idle> nodes;
-    std::vector<std::vector<std::size_t>> bits;  // per node, per range
     const int nb_nodes = 1 + static_cast<int>(rng() % 4);
     for (int i = 0; i < nb_nodes; ++i) {
       std::vector<AtomRange> ranges, watch;
@@ -47,9 +46,8 @@ TEST(DirtyAtoms, PositionsSortedOncePerAtomAgainstASet) {
         watch.push_back({g, first, first + n <= count ? n : 0});
       }
       nodes.emplace_back(ranges, watch);
-      bits.emplace_back();
-      dirty.add_node(nodes.back(), bits.back());
     }
+    for (const Idle& n : nodes) dirty.add_node(n);
     dirty.reset();
     // Wake random watched atoms, some many times; the reference is a set of positions.
     std::vector<std::set<std::size_t>> expected(nodes.size());
@@ -60,16 +58,16 @@ TEST(DirtyAtoms, PositionsSortedOncePerAtomAgainstASet) {
       if (w.count == 0) continue;
       const std::size_t a = rng() % w.count;
       const bool first = expected[i].insert(nodes[i].offset(g) + w.first + a).second;
-      EXPECT_EQ(dirty.mark(i, bits[i][g] + a), first);
+      EXPECT_EQ(dirty.mark(i, g, w.first + a), first);
       ++wakes[i];
     }
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       EXPECT_EQ(dirty.wakes(i), wakes[i]);
       std::vector<std::size_t> got;
-      dirty.take(i, got);
+      dirty.take(i, nodes[i], got);
       EXPECT_EQ(got, std::vector<std::size_t>(expected[i].begin(), expected[i].end()));
       EXPECT_EQ(dirty.wakes(i), 0u);
-      dirty.take(i, got);
+      dirty.take(i, nodes[i], got);
       EXPECT_TRUE(got.empty());
     }
   }
@@ -78,19 +76,19 @@ TEST(DirtyAtoms, PositionsSortedOncePerAtomAgainstASet) {
 TEST(DirtyAtoms, ResetForgetsEverything) {
   detail::DirtyAtoms dirty;
   Idle node({{0, 0, 10}}, {{0, 0, 10}});
-  std::vector<std::size_t> bits, got;
-  dirty.add_node(node, bits);
+  std::vector<std::size_t> got;
+  dirty.add_node(node);
   dirty.reset();
-  EXPECT_TRUE(dirty.mark(0, bits[0] + 3));
+  EXPECT_TRUE(dirty.mark(0, 0, 3));
   dirty.reset();
   EXPECT_EQ(dirty.wakes(0), 0u);
-  dirty.take(0, got);
+  dirty.take(0, node, got);
   EXPECT_TRUE(got.empty());
   dirty.clear_nodes();
   EXPECT_EQ(dirty.nb_nodes(), 0u);
 }
 
-TEST(Watchers, IndexMatchesEveryWatchCoveringTheAtom) {
+TEST(Watchers, ListsEveryWatchCoveringTheAtom) {
   std::mt19937 rng(11);
   for (int trial = 0; trial < 30; ++trial) {
     const std::size_t n = 1 + rng() % 200;
@@ -99,27 +97,70 @@ TEST(Watchers, IndexMatchesEveryWatchCoveringTheAtom) {
     for (int k = 0; k < 25; ++k) {
       const bool whole = rng() % 4 == 0;
       const std::size_t first = whole ? 0 : rng() % n, count = whole ? n : 1 + rng() % (n - first);
-      const detail::Watchers::Watch w{static_cast<std::size_t>(k), first, count, rng() % 1000, rng() % 1000};
+      const detail::Watchers::Watch w{static_cast<std::size_t>(k), rng() % 5, first, count};
       all.push_back(w);
       ws.add(w);
-      if (rng() % 5 == 0) ws.index();  // an index built early is rebuilt after more adds
     }
-    ws.index();
     for (std::size_t a = 0; a < n; ++a) {
       // Whole-domain watches first, then the others, each in the order of add().
-      std::vector<std::tuple<std::size_t, std::size_t, std::size_t>> expected, got;
+      std::vector<std::tuple<std::size_t, std::size_t>> expected, got;
       for (int pass = 0; pass < 2; ++pass) {
         for (const auto& w : all) {
           const bool whole = w.first == 0 && w.count == n;
           if (whole == (pass == 0) && w.first <= a && a < w.first + w.count) {
-            expected.emplace_back(w.node, w.offset + a - w.first, w.bit + a - w.first);
+            expected.emplace_back(w.node, w.range);
           }
         }
       }
-      ws.for_each(a, [&](std::size_t node, std::size_t pos, std::size_t bit) { got.emplace_back(node, pos, bit); });
+      ws.for_each(a, [&](std::size_t node, std::size_t range) { got.emplace_back(node, range); });
       EXPECT_EQ(got, expected) << "atom " << a;
     }
   }
+}
+
+// A domain that gains atoms at its end: the watches of the whole domain cover them, the others
+// not, and the atoms it had keep their watches.
+TEST(Watchers, GrowKeepsTheWatchesAndExtendsTheWholeOnes) {
+  detail::Watchers ws(10);
+  ws.add({0, 1, 0, 10});  // whole
+  ws.add({1, 0, 8, 2});   // the last two atoms
+  ws.add({2, 3, 3, 4});
+  ws.grow(14);
+  const auto at = [&](std::size_t a) {
+    std::vector<std::pair<std::size_t, std::size_t>> got;
+    ws.for_each(a, [&](std::size_t node, std::size_t range) { got.emplace_back(node, range); });
+    return got;
+  };
+  using P = std::vector<std::pair<std::size_t, std::size_t>>;
+  EXPECT_EQ(at(4), (P{{0, 1}, {2, 3}}));
+  EXPECT_EQ(at(9), (P{{0, 1}, {1, 0}}));
+  EXPECT_EQ(at(13), (P{{0, 1}}));
+  ws.add({3, 0, 12, 2});  // added after the growth: on the 14 atoms
+  EXPECT_EQ(at(13), (P{{0, 1}, {3, 0}}));
+  EXPECT_EQ(at(9), (P{{0, 1}, {1, 0}}));
+}
+
+// A node whose ranges grew is laid out again alone: its positions follow its new offsets, and
+// the other nodes' bits are untouched.
+TEST(DirtyAtoms, RelayoutNodeFollowsGrownRanges) {
+  Idle a({{0, 0, 5}, {1, 0, 5}}, {{0, 0, 5}, {1, 0, 5}});
+  Idle b({{0, 0, 5}}, {{0, 1, 2}});
+  detail::DirtyAtoms dirty;
+  dirty.add_node(a);
+  dirty.add_node(b);
+  dirty.reset();
+  EXPECT_TRUE(dirty.mark(1, 0, 2));
+  // Domain 0 grows from 5 to 9 atoms: a's first range (watched whole) with it, not b's watch.
+  const Idle grown({{0, 0, 9}, {1, 0, 5}}, {{0, 0, 9}, {1, 0, 5}});
+  dirty.relayout_node(0, grown);
+  EXPECT_TRUE(dirty.mark(0, 0, 8));
+  EXPECT_TRUE(dirty.mark(0, 1, 0));
+  EXPECT_FALSE(dirty.mark(0, 0, 8));
+  std::vector<std::size_t> got;
+  dirty.take(0, grown, got);
+  EXPECT_EQ(got, (std::vector<std::size_t>{8, 9}));  // range 1 now starts at position 9
+  dirty.take(1, b, got);
+  EXPECT_EQ(got, (std::vector<std::size_t>{2}));  // b's watch (atoms 1, 2) did not grow
 }
 
 namespace {

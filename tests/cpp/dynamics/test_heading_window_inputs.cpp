@@ -67,6 +67,39 @@ TEST(WindowInputs, RememberedSumsAreTheFreshOnes) {
   }
 }
 
+// A domain that grows at its end (online estimation): the slices it had are kept, the new ones
+// computed, and every window sum is still the fresh one's, bit for bit.
+TEST(WindowInputs, GrowingDomainGivesTheFreshSums) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto td = TDomain::create(0.0, 2.0, 0.1);
+  Tube d(td), dpsi(td), w(td);
+  const auto fill = [&](std::size_t from) {
+    for (std::size_t j = from; j < td->nb_slices(); ++j) {
+      d.set(around(rng, 0.1, 0.02), j);
+      dpsi.set(around(rng, 0.05, 0.01), j);
+      w.set(Interval(-1, 1), j);
+    }
+  };
+  fill(0);
+  detail::WindowInputs kept;
+  for (int step = 0; step < 30; ++step) {
+    const std::size_t before = td->nb_slices();
+    td->extend(td->tf() + 0.05 + 0.1 * u(rng));  // new slices, the whole line
+    if (step % 2) td->extend(td->tf() + 0.1);
+    fill(before);
+    if (step % 3 == 0) d.set(around(rng, 0.1, 0.03), static_cast<std::size_t>(u(rng) * before));  // an old slice too
+    detail::WindowInputs fresh;
+    ASSERT_EQ(kept.update(*td, d.data(), dpsi.data(), w.data(), 2.0, 0.05),
+              fresh.update(*td, d.data(), dpsi.data(), w.data(), 2.0, 0.05));
+    const std::size_t n = td->nb_slices();
+    for (std::size_t a = 0; a + 10 <= n; a += 4) {
+      const detail::WindowSum x = kept.sum(a, a + 10, a + 5), y = fresh.sum(a, a + 10, a + 5);
+      ASSERT_TRUE(same_bits(x.vx, y.vx) && same_bits(x.vy, y.vy) && same_bits(x.cone, y.cone)) << step << " " << a;
+    }
+  }
+}
+
 TEST(WindowInputs, NodeFollowsInputsChangedBetweenContracts) {
   // A straight path along x at 1 m/s; the heading known to be near 0; d changed between runs.
   auto td = TDomain::create(0.0, 10.0, 0.1);
