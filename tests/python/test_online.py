@@ -172,6 +172,46 @@ def test_ctc_deriv_contract_local_equals_the_whole_sweep():
     assert x.gate(50) == s.Interval(4.5, 5)
 
 
+@pytest.mark.parametrize("name", ["CtcIncrement", "CtcSecondDeriv"])
+def test_pair_contract_local_equals_the_whole_contraction(name):
+    """CtcIncrement and CtcSecondDeriv: local after a change of a fixed point = contract(), bit for bit."""
+    td = s.TDomain(0, 10, 0.1)
+    u = s.Tube(td, s.Interval(-0.2, 0.2))
+    x = s.Tube(td, s.Interval(-5, 5))
+    x.set_gate(0, s.Interval(0))
+    ctc = getattr(s, name)()
+    ctc.contract(x, u)
+    for k in (59, 60, 61):
+        x.set_gate(k, x.gate(k) & s.Interval(-0.5, 0.5))
+    whole = x.copy()
+    ctc.contract(whole, u)
+    ok, changed = ctc.contract_local(x, u, 58, 61)
+    assert ok and x == whole and changed
+
+
+def test_heading_contract_local_equals_the_whole_contraction():
+    td = s.TDomain(0, 10, 0.5)
+    px, py = s.Tube(td), s.Tube(td)
+    px.set_gate(0, s.Interval(0))
+    py.set_gate(0, s.Interval(0))
+    psi = s.Tube(td, s.Interval(-0.1, 0.1))
+    d = s.Tube(td, s.Interval(0.4, 0.6))
+    w = s.Tube(td, s.Interval(-0.05, 0.05))
+    ctc = s.CtcHeading(0.01)
+    p = s.TubeVector([px, py])
+    for _ in range(100):  # a fixed point of contract() first
+        before = (p[0].copy(), p[1].copy(), psi.copy())
+        ctc.contract(p, psi, d, w)
+        if (p[0], p[1], psi) == before:
+            break
+    px, py = p[0].copy(), p[1].copy()
+    px.set_gate(10, px.gate(10) & s.Interval(4.6, 5.0))
+    p_whole, psi_whole = s.TubeVector([px, py]), psi.copy()
+    ctc.contract(p_whole, psi_whole, d, w)
+    ok, cx, cy, cpsi = ctc.contract_local(px, py, psi, d, w, 9, 10)
+    assert ok and px == p_whole[0] and py == p_whole[1] and psi == psi_whole
+
+
 def test_figure_eight_loop_proven_online_once_the_robot_is_back():
     """The t-plane of the window's velocity, at any time (tests/cpp/online/test_online_loops.cpp)."""
     est = s.OnlineEstimator(0.0)

@@ -2,6 +2,7 @@
 // Interval / IntervalVector / Tube / TubeVector objects, in place; a
 // NetworkCtc, so ContractorNetwork.add(CtcEval(), [t, z, y, w]) binds it.
 #include "bindings.h"
+#include "contract_local_binding.h"
 #include "docstrings.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_increment.h"
@@ -40,7 +41,10 @@ SILLAGE_BINDING(ctc_eval, "cn", "interval", "tube") {
            py::arg("i"),
            DOC(CtcIncrement, contract, Tube_Tube))
       .def("contract", py::overload_cast<TubeVector&, const TubeVector&>(&CtcIncrement::contract, py::const_),
-           py::arg("x"), py::arg("i"), DOC(CtcIncrement, contract, TubeVector_TubeVector));
+           py::arg("x"), py::arg("i"), DOC(CtcIncrement, contract, TubeVector_TubeVector))
+      // Python: returns (ok, changed), `changed` the atoms of x that shrank (2k: gate k, 2k+1: slice k).
+      .def("contract_local", &contract_local_pair<CtcIncrement>, py::arg("x"), py::arg("i"), py::arg("first"),
+           py::arg("last"), DOC(CtcIncrement, contract_local));
 }
 
 }  // namespace sillage::python

@@ -7,6 +7,10 @@
 #include <cstddef>
 #include <string>
 
+#include <vector>
+
+#include <pybind11/stl.h>
+
 #include "bindings.h"
 #include "docstrings.h"
 #include "sillage/dynamics/ctc_heading.h"
@@ -29,7 +33,23 @@ the slice. Outward rounded. ContractorNetwork.add(CtcHeading(track), [p, psi, d,
       .def("contract",
            py::overload_cast<TubeVector&, Tube&, const Tube&, const Tube&>(&CtcHeading::contract, py::const_),
            py::arg("p"), py::arg("psi"), py::arg("d"), py::arg("w"), nogil,
-           DOC(CtcHeading, contract, TubeVector_Tube_Tube_Tube));
+           DOC(CtcHeading, contract, TubeVector_Tube_Tube_Tube))
+      .def(
+          "contract_local",
+          [](const CtcHeading& c, Tube& px, Tube& py, Tube& psi, const Tube& d, const Tube& w, std::size_t first,
+             std::size_t last) {
+            std::vector<std::size_t> cx, cy, cpsi;
+            bool ok = true;
+            {
+              py::gil_scoped_release unlocked;
+              ok = c.contract_local(px, py, psi, d, w, first, last, TubeChanges(cx, 0, 0.0), TubeChanges(cy, 0, 0.0),
+                                    TubeChanges(cpsi, 0, 0.0));
+            }
+            return py::make_tuple(ok, cx, cy, cpsi);
+          },
+          // Python: returns (ok, px_changed, py_changed, psi_changed), the atoms that shrank (2k: gate k, 2k+1: slice k).
+          py::arg("px"), py::arg("py"), py::arg("psi"), py::arg("d"), py::arg("w"), py::arg("first"), py::arg("last"),
+          DOC(CtcHeading, contract_local));
 
   py::class_<CtcHeadingWindow, NetworkCtc, std::shared_ptr<CtcHeadingWindow>>(m, "CtcHeadingWindow", R"doc(
 p(t_b) - p(t_a) = integral over [t_a, t_b] of s (cos, sin)(psi + e), over windows of

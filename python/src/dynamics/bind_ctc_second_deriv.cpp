@@ -4,6 +4,7 @@
 #include <string>
 
 #include "bindings.h"
+#include "contract_local_binding.h"
 #include "docstrings.h"
 #include "sillage/dynamics/ctc_second_deriv.h"
 
@@ -18,7 +19,10 @@ acceleration for a heading, is much tighter inside short slices than a rate boun
 ContractorNetwork.add(CtcSecondDeriv(), [x, a]).)doc")
       .def(py::init<>(), DOC(CtcSecondDeriv, CtcSecondDeriv))
       .def("__repr__", [](const CtcSecondDeriv&) { return std::string("CtcSecondDeriv()"); })
-      .SILLAGE_DEF(CtcSecondDeriv, contract, py::arg("x"), py::arg("a"), nogil);
+      .SILLAGE_DEF(CtcSecondDeriv, contract, py::arg("x"), py::arg("a"), nogil)
+      // Python: returns (ok, changed), `changed` the atoms of x that shrank (2k: gate k, 2k+1: slice k).
+      .def("contract_local", &contract_local_pair<CtcSecondDeriv>, py::arg("x"), py::arg("a"), py::arg("first"),
+           py::arg("last"), DOC(CtcSecondDeriv, contract_local));
 }
 
 }  // namespace sillage::python

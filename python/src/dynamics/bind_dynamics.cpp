@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "bindings.h"
+#include "contract_local_binding.h"
 #include "docstrings.h"
 #include "sillage/cn/network_ctc.h"
 #include "sillage/dynamics/ctc_deriv.h"
@@ -41,20 +42,9 @@ SILLAGE_BINDING(dynamics, "cn", "interval", "tube") {
            DOC(CtcDeriv, contract, TubeVector_TubeVector_size_t_size_t))
       .def("contract", py::overload_cast<TubeVector&, const TubeVector&, const Interval&>(&C::contract, py::const_),
            py::arg("x"), py::arg("v"), py::arg("t"), nogil, DOC(CtcDeriv, contract, TubeVector_TubeVector_Interval))
-      .def(
-          "contract_local",
-          [](const C& c, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
-            // What shrank, as atoms (2k: gate k, 2k+1: slice k), and whether x is non-empty.
-            std::vector<std::size_t> changed;
-            bool ok = true;
-            {
-              py::gil_scoped_release unlocked;
-              ok = c.contract_local(x, v, first, last, TubeChanges(changed, 0, 0.0));
-            }
-            return py::make_tuple(ok, changed);
-          },
-          // Python: returns (ok, changed), `changed` the atoms that shrank (2k: gate k, 2k+1: slice k).
-          py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"), DOC(CtcDeriv, contract_local))
+      // Python: returns (ok, changed), `changed` the atoms that shrank (2k: gate k, 2k+1: slice k).
+      .def("contract_local", &contract_local_pair<C>, py::arg("x"), py::arg("v"), py::arg("first"), py::arg("last"),
+           DOC(CtcDeriv, contract_local))
       .def("__repr__", [](const C& c) {
         switch (c.time_propag()) {
           case TimePropag::FORWARD:
