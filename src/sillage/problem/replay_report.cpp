@@ -74,7 +74,7 @@ std::string replay_svg(const Problem& p, const ReplayResult& r) {
   const double t0 = r.t.empty() ? p.time.t0 : r.t.front(), t1 = r.t.empty() ? t0 + 1 : r.t.back();
   Figure fig(IntervalVector{{0, std::max(t1 - t0, 1e-9)}, {y0, y1 + (y1 == y0 ? 1 : 0)}}, 760, 340);
   fig.set_title("sillage replay " + p.file + ": box side now (online) against the batch solve");
-  fig.set_labels("t - t0", "log10 box side");
+  fig.set_labels("t - t0", "log10 box side (in each variable's unit)");
   static const char* colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   for (std::size_t j = 0; j < r.outputs.size(); ++j) {
     const std::string c = colours[j % 6];
@@ -126,6 +126,8 @@ std::string replay_html(const Problem& p, const ReplayResult& r) {
   const auto row = [](const std::string& k, const std::string& v) { return "<tr><td>" + k + "</td><td>" + v + "</td></tr>\n"; };
   const bool empty = r.summary.status == Status::NoSolution;
   const double span = r.t.empty() ? 0 : r.t.back() - p.time.t0;
+  char wall[64];
+  std::snprintf(wall, sizeof wall, "%.3f s (%.0f × real time)", r.seconds, r.seconds > 0 ? span / r.seconds : 0.0);
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>sillage replay: " +
                   xml_escape(p.file) +
                   "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:auto;padding:1em}"
@@ -135,8 +137,7 @@ std::string replay_html(const Problem& p, const ReplayResult& r) {
   h += empty ? "<p class=\"empty\" id=\"status\">No solution: " + xml_escape(r.summary.reason) + "</p>\n"
              : "<p id=\"status\">Replayed online: the file's tables fed in stamp order (docs/online.md).</p>\n";
   h += "<table id=\"replay\">\n" + row("rows fed", std::to_string(r.rows)) + row("updates", std::to_string(r.t.size())) +
-       row("wall clock", number_text(r.seconds) + " s (" + std::to_string(static_cast<long long>(r.seconds > 0 ? span / r.seconds : 0)) +
-           " × real time)") +
+       row("wall clock", wall) +
        row("latency per row", "median " + us(0.5) + " µs, p90 " + us(0.9) + " µs, p99 " + us(0.99) + " µs, max " + us(1) + " µs") +
        row("rows refused", std::to_string(r.refused.size()));
   if (p.output.truth)
