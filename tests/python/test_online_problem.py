@@ -145,3 +145,14 @@ def test_replay_report_in_headless_chromium(tmp_path):
     assert len(sizes) == 1
     w, h = map(float, sizes[0][4:].split("x"))
     assert w > 100 and h > 100
+
+
+def test_replay_never_overwrites_an_input(tmp_path):
+    """A problem file named like an output of the replay, --out its own folder: refused, untouched."""
+    data = PROBLEMS / "data"
+    text = CLOCK.read_text().replace('file = "data/', f'file = "{data.as_posix()}/')
+    problem = tmp_path / "replay.json"
+    problem.write_text(text)
+    r = run(["replay", str(problem), "--out", str(tmp_path)], "")
+    assert r.returncode == 2 and "would overwrite the problem file" in r.stderr, r.stderr
+    assert problem.read_text() == text

@@ -64,6 +64,7 @@ int stream(const std::string& file, bool strict, std::optional<double> window) {
 int replay(const std::string& file, std::string out, double speed, std::optional<double> window, bool batch, bool quiet) {
   const Problem p = load_problem(file);
   if (out.empty()) out = (std::filesystem::path("out") / (std::filesystem::path(file).stem().string() + "_replay")).string();
+  check_output_dir(p, out, {"online.jsonl", "replay.json", "replay.svg", "replay.html"});  // never an input overwritten
   std::filesystem::create_directories(out);
   const std::string jsonl = (std::filesystem::path(out) / "online.jsonl").string();
   std::FILE* f = std::fopen(jsonl.c_str(), "w");

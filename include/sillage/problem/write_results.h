@@ -40,6 +40,8 @@ std::vector<std::string> output_names(const Problem& p, bool tube_files);
 // input of p (the problem file or a data table: e.g. --out at the problem's
 // own folder, where a table shares a tube's name), naming both; nothing is written.
 void check_output_dir(const Problem& p, const std::string& dir, bool tube_files);
+// The same for the files `names` (sillage replay's: replay.html, online.jsonl, ...).
+void check_output_dir(const Problem& p, const std::string& dir, const std::vector<std::string>& names);
 // Writes results.json and the CSV files into dir (created, check_output_dir first); Error if it cannot.
 void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o = {});
 

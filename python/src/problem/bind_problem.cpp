@@ -178,7 +178,12 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
   m.SILLAGE_FN(peak_memory_estimate, py::arg("problem"), py::arg("slices"));
   m.SILLAGE_FN(check_memory, py::arg("problem"), py::arg("slices"), py::arg("what"));
   m.SILLAGE_FN(output_names, py::arg("problem"), py::arg("tube_files") = false);
-  m.SILLAGE_FN(check_output_dir, py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false);
+  m.def("check_output_dir", py::overload_cast<const Problem&, const std::string&, bool>(&check_output_dir),
+        py::arg("problem"), py::arg("dir"), py::arg("tube_files") = false,
+        DOC(check_output_dir, Problem_string_bool));
+  m.def("check_output_dir",
+        py::overload_cast<const Problem&, const std::string&, const std::vector<std::string>&>(&check_output_dir),
+        py::arg("problem"), py::arg("dir"), py::arg("names"), DOC(check_output_dir, Problem_string_vector_string));
   m.SILLAGE_FN(constraint_order, py::arg("problem"));
 }
 

@@ -218,9 +218,13 @@ std::vector<std::string> output_names(const Problem& p, bool tube_files) {
 }
 
 void check_output_dir(const Problem& p, const std::string& dir, bool tube_files) {
+  check_output_dir(p, dir, output_names(p, tube_files));
+}
+
+void check_output_dir(const Problem& p, const std::string& dir, const std::vector<std::string>& names) {
   std::vector<std::pair<std::string, std::string>> inputs{{p.file, "the problem file"}};
   for (const DataSpec& d : p.data) inputs.push_back({d.path, "the table '" + d.name + "' (" + d.pos.str() + ")"});
-  for (const std::string& name : output_names(p, tube_files)) {
+  for (const std::string& name : names) {
     const std::filesystem::path out = std::filesystem::path(dir) / name;
     for (const auto& [path, what] : inputs) {
       std::error_code ec;  // false with an error when either does not exist: nothing to overwrite
