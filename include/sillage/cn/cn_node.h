@@ -97,9 +97,11 @@ class CnNode {
   // whole tube, to fixed point (CtcDeriv's node); none by default.
   virtual void derivative_pairs(std::vector<DerivativePair>& /*out*/) const {}
   // Whether the node stays right when a tube it acts on gains slices at its
-  // end (TDomain::extend), its ranges over that whole tube growing with it:
-  // nothing in it depends on the number of slices. The network then keeps it
-  // rather than building it anew (online estimation). False by default.
+  // end (TDomain::extend) or loses them at its start (TDomain::forget_before),
+  // its ranges over that whole tube following it (a range over part of it
+  // moving with its slices): nothing in it depends on the number of slices
+  // or on their indices. The network then keeps it rather than building it
+  // anew (online estimation). False by default.
   virtual bool follows_appends() const { return false; }
 
  protected:
@@ -120,6 +122,17 @@ class CnNode {
   // (the network, for a node that follows_appends()). True if a watched
   // range grew with them.
   bool follow_appends(const std::vector<std::size_t>& from, const std::vector<std::shared_ptr<Domain>>& domains);
+  // The same when the domains also dropped atoms at their start (dropped[d]
+  // of them: a TDomain that forgot its past): a range over a whole domain
+  // covers it whole again, a range over part of it moves back by dropped[d],
+  // cut where it began before the new start.
+  void follow_shift(const std::vector<std::size_t>& from, const std::vector<std::size_t>& dropped,
+                    const std::vector<std::shared_ptr<Domain>>& domains);
+  // The ranges' domains renumbered: domain d is now index[d] (the network
+  // dropped the domains no node uses any more).
+  void renumber_domains(const std::vector<std::size_t>& index);
+  // offsets_ and nb_atoms_ from the ranges.
+  void count_atoms();
 };
 
 // A box contractor on the concatenation of its atoms: read, contract, write

@@ -164,15 +164,20 @@ class ContractorNetwork {
   void touched(const DomainRef& d, const Interval& t = Interval());
   // After a TDomain of the network's tubes grew (TDomain::extend), forgot
   // its past (forget_before) or gained time points: re-lays out those tubes
-  // and rebuilds every contractor on the new slices from its add(). A
+  // and the contractors on them. Those that follow appends
+  // (CnNode::follows_appends) follow a domain that grew or forgot in place;
+  // otherwise (time points sampled inside, or a contractor that does not
+  // follow) every contractor is rebuilt on the new slices from its add(). A
   // contractor given by add_node cannot be rebuilt: Error if one acts on a
-  // changed tube. Nothing is contracted.
+  // changed tube then. Nothing is contracted.
   void relayout();
   // Removes the contractors numbered `nodes` (add() order; the ones after
   // move down, and their names with them), then forgets the domains no
   // remaining contractor uses (their objects keep their values) and lays
-  // the rest out anew, as relayout(). Error if an index is out of range or a
-  // remaining contractor was given by add_node.
+  // the rest out anew, as relayout() (in place when it can: an online
+  // estimator retires its old observations as its window moves). Error if
+  // an index is out of range or, when the contractors must be rebuilt, a
+  // remaining one was given by add_node.
   void retire(std::vector<std::size_t> nodes);
 
   // Number of contractors added.

@@ -10,6 +10,7 @@
 // happens to the containers of the user's shared_ptrs.
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "sillage/interval/interval_vector.h"
@@ -73,6 +74,10 @@ class Domain {
   // True when the layout changed only by atoms appended at the end (a
   // tube's TDomain that grew): the atoms it had keep their indices.
   virtual bool appended_only() const { return false; }
+  // When the layout changed only by atoms dropped at the start and appended
+  // at the end (a tube's TDomain that forgot its past and grew): how many
+  // were dropped (the atom a it had is now a - dropped). None otherwise.
+  virtual std::optional<std::size_t> dropped_atoms() const { return std::nullopt; }
   // The word for this kind of domain in reports: "interval", "box", "tube".
   virtual std::string noun() const { return "domain"; }
   // Where atom i lies (kind "" by default).

@@ -33,11 +33,15 @@ class TubeDomain : public Domain, public TubeAtoms {
   const void* key() const override { return x_.get(); }
   std::string kind() const override;
   void check_layout(const std::string& label) const override;
-  bool layout_changed() const override { return x_->nb_slices() != nb_slices_ || x_->tdomain() != td_; }
+  // Slices added or forgotten (as many forgotten as added is a change too), or another TDomain.
+  bool layout_changed() const override {
+    return x_->nb_slices() != nb_slices_ || x_->tdomain() != td_ || td_->nb_forgotten() != forgotten_;
+  }
   std::string noun() const override { return "tube"; }
   AtomPlace place(std::size_t i) const override;
   std::shared_ptr<Domain> relaid() const override;
   bool appended_only() const override;
+  std::optional<std::size_t> dropped_atoms() const override;
 
   Tube& tube() const { return *x_; }
   const std::shared_ptr<Tube>& object() const { return x_; }

@@ -43,7 +43,8 @@ struct OnlineOptions {
   // W: seconds of past kept behind now (infinity: everything, online smoothing).
   double window = std::numeric_limits<double>::infinity();
   // Past beyond W accumulated before it is dropped, in seconds (0: W / 8);
-  // dropping lays the network out anew, so it is done in batches.
+  // dropping moves every tube's arrays and shifts every node (a pass over
+  // the network), so it is done in batches.
   double forget_every = 0.0;
   // The network's shrink ratio (ContractorNetwork::set_ratio).
   double ratio = 0.01;
@@ -61,7 +62,7 @@ struct OnlineStats {
   std::size_t retired = 0;        // observations retired so far
   std::size_t contractors = 0;    // contractors in the network
   std::size_t contractor_runs = 0;  // runs of all updates
-  std::size_t relayouts = 0;      // layouts of the network rebuilt
+  std::size_t relayouts = 0;      // layouts of the network followed (every advance)
   double layout_seconds = 0.0;    // the part of total_seconds spent laying the network out
 };
 

@@ -1,5 +1,6 @@
 #include "sillage/cn/cn_node.h"
 
+#include <algorithm>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -51,12 +52,48 @@ bool CnNode::follow_appends(const std::vector<std::size_t>& from,
     ranges_[g].count = to;
     if (watched_[g].first == 0 && watched_[g].count == from[d]) watched_[g].count = to, watched = true;
   }
+  count_atoms();
+  return watched;
+}
+
+namespace {
+
+// Range r of a domain that had `from` atoms, now `to` after dropping `dropped` at its start.
+void shift(AtomRange& r, std::size_t from, std::size_t dropped, std::size_t to) {
+  if (r.first == 0 && r.count == from) {
+    r.count = to;
+    return;
+  }
+  const std::size_t first = std::max(r.first, dropped) - dropped;
+  const std::size_t end = std::max(r.first + r.count, dropped) - dropped;
+  r.first = first, r.count = end - first;
+}
+
+}  // namespace
+
+void CnNode::follow_shift(const std::vector<std::size_t>& from, const std::vector<std::size_t>& dropped,
+                          const std::vector<std::shared_ptr<Domain>>& domains) {
+  for (std::size_t g = 0; g < ranges_.size(); ++g) {
+    const std::size_t d = ranges_[g].domain;
+    if (from[d] == kNoAtom) continue;
+    const std::size_t to = domains[d]->nb_atoms();
+    shift(ranges_[g], from[d], dropped[d], to);
+    shift(watched_[g], from[d], dropped[d], to);
+  }
+  count_atoms();
+}
+
+void CnNode::renumber_domains(const std::vector<std::size_t>& index) {
+  for (auto& r : ranges_) r.domain = index[r.domain];
+  for (auto& w : watched_) w.domain = index[w.domain];
+}
+
+void CnNode::count_atoms() {
   nb_atoms_ = 0;
   for (std::size_t g = 0; g < ranges_.size(); ++g) {
     offsets_[g] = nb_atoms_;
     nb_atoms_ += ranges_[g].count;
   }
-  return watched;
 }
 
 void CnNode::watch_only(std::size_t r, std::size_t first, std::size_t count) {

@@ -24,6 +24,9 @@ void DirtyAtoms::add_node(const CnNode& node) {
 }
 
 void DirtyAtoms::relayout_node(std::size_t i, const CnNode& node) {
+  for (std::size_t g = 0; g < node.ranges().size(); ++g) {
+    if (spans_[first_span_[i] + g].lo < spans_[first_span_[i] + g].hi) --marked_spans_;
+  }
   const std::size_t bits = lay_out(node, spans_.data() + first_span_[i]);
   words_[i].assign((bits + 63) / 64, 0);
   wakes_[i] = 0;
@@ -34,11 +37,27 @@ void DirtyAtoms::clear_nodes() {
   spans_.clear();
   first_span_.clear();
   wakes_.clear();
+  marked_spans_ = 0;
 }
 
 void DirtyAtoms::reset() {
-  for (auto& w : words_) std::fill(w.begin(), w.end(), 0);
+  if (marked_spans_ == 0) {  // nothing marked: only the counters
+    std::fill(wakes_.begin(), wakes_.end(), 0);
+    return;
+  }
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    const std::size_t end = i + 1 < first_span_.size() ? first_span_[i + 1] : spans_.size();
+    for (std::size_t g = first_span_[i]; g < end; ++g) clear(words_[i], spans_[g]);
+  }
   std::fill(wakes_.begin(), wakes_.end(), 0);
+}
+
+void DirtyAtoms::clear(std::vector<std::uint64_t>& words, Span& s) {
+  if (s.lo < s.hi) {
+    std::fill(words.begin() + static_cast<std::ptrdiff_t>(s.lo), words.begin() + static_cast<std::ptrdiff_t>(s.hi), 0);
+    --marked_spans_;
+  }
+  s.lo = kNoWord, s.hi = 0;
 }
 
 void DirtyAtoms::take(std::size_t node, const CnNode& n, std::vector<std::size_t>& out) {
@@ -46,11 +65,15 @@ void DirtyAtoms::take(std::size_t node, const CnNode& n, std::vector<std::size_t
   wakes_[node] = 0;
   std::vector<std::uint64_t>& words = words_[node];
   for (std::size_t g = 0; g < n.ranges().size(); ++g) {
-    const Span& sp = spans_[first_span_[node] + g];
-    // Bit b of the span is the node's position pos + (b - sp.bit).
+    Span& sp = spans_[first_span_[node] + g];
+    if (sp.lo >= sp.hi) continue;
+    // Bit b of the span is the node's position pos + (b - sp.bit); only its marked words are read.
     const std::size_t pos = n.offset(g) + (sp.first - n.ranges()[g].first);
-    const std::size_t end = sp.bit + sp.count;
-    for (std::size_t b = sp.bit; b < end;) {
+    const std::size_t end = std::min(sp.bit + sp.count, 64 * sp.hi);
+    const std::size_t begin = std::max(sp.bit, 64 * sp.lo);
+    sp.lo = kNoWord, sp.hi = 0;
+    --marked_spans_;
+    for (std::size_t b = begin; b < end;) {
       // The bits of this span in the word holding b.
       const std::size_t word = b >> 6, lo = b & 63, hi = std::min<std::size_t>(64, lo + (end - b));
       const std::uint64_t mask = (hi == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << hi) - 1) & (~std::uint64_t{0} << lo);

@@ -32,6 +32,11 @@ std::size_t ContractorNetworkImpl::add_domain(const std::shared_ptr<Domain>& dom
     return it->second;
   }
   const std::size_t d = domains_.size();
+  if (const auto* tube = dynamic_cast<const TubeDomain*>(domain.get())) {
+    const auto& td = tube->tube().tdomain();
+    if (std::none_of(time_layouts_.begin(), time_layouts_.end(), [&](const auto& l) { return l.td == td; }))
+      time_layouts_.push_back({td, td->nb_slices(), td->nb_forgotten()});
+  }
   domains_.push_back(domain);
   names_.emplace_back();
   checked_.push_back(0);
@@ -128,17 +133,21 @@ void ContractorNetworkImpl::add_node(std::shared_ptr<const CnNode> node) {
       throw DimensionError("ContractorNetwork::add_node: " + node->name() + " refers to unknown domain atoms");
     }
   }
-  const std::size_t id = nodes_.size();
-  dirty_.add_node(*node);
-  for (std::size_t g = 0; g < node->ranges().size(); ++g) {
-    const AtomRange& a = node->ranges()[g];
-    const AtomRange& w = node->watched()[g];
-    if (w.count > 0) watchers_[a.domain].add({id, g, w.first, w.count});
-    if (users_[a.domain].empty() || users_[a.domain].back() != id) users_[a.domain].push_back(id);
-  }
+  watch(nodes_.size(), *node);
   nodes_.push_back(std::move(node));
   records_.emplace_back();
   fresh_.push_back(1);
+}
+
+void ContractorNetworkImpl::watch(std::size_t id, const CnNode& node) {
+  dirty_.add_node(node);
+  for (std::size_t g = 0; g < node.ranges().size(); ++g) {
+    const AtomRange& a = node.ranges()[g];
+    const AtomRange& w = node.watched()[g];
+    if (w.count > 0) watchers_[a.domain].add({id, g, w.first, w.count});
+    Users& u = users_[a.domain];
+    if (u.nodes.empty() || u.nodes.back() != id) u.nodes.push_back(id), u.follow = -1;
+  }
 }
 
 bool ContractorNetworkImpl::acts_on(const CnNode& node, const TDomain& td) const {
@@ -189,6 +198,20 @@ void ContractorNetworkImpl::check_layouts_after(const CnNode& node) const {
     const Domain& d = *domains_[a.domain];
     if (d.layout_changed()) d.check_layout(label(a.domain) + ", changed during contract() (" + node.describe() + "),");
   }
+}
+
+void ContractorNetworkImpl::check_layouts_before(const CnNode& node) const {
+  for (const auto& a : node.ranges()) check_layout(a.domain);
+}
+
+void ContractorNetworkImpl::note_time_layouts() {
+  for (TimeLayout& l : time_layouts_) l.slices = l.td->nb_slices(), l.forgotten = l.td->nb_forgotten();
+}
+
+bool ContractorNetworkImpl::time_layouts_unchanged() const {
+  return std::all_of(time_layouts_.begin(), time_layouts_.end(), [](const TimeLayout& l) {
+    return l.td->nb_slices() == l.slices && l.td->nb_forgotten() == l.forgotten;
+  });
 }
 
 void ContractorNetworkImpl::set_ctc_name(std::size_t i, const std::string& name) {
@@ -242,13 +265,20 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
   };
   // One pass over each domain: an empty one, or a tube with a gate off its
   // slices, is no solution before any contractor runs.
-  // update(): the domains registered since, and the atoms of the others touched since (check_touched).
+  // update(): the domains registered since, and the atoms of the others touched since (check_touched);
+  // while no TDomain moved, the layouts of the nodes that run only (before each run).
+  const bool quick = !all && time_layouts_unchanged();
   for (std::size_t d = 0; d < domains_.size(); ++d) {
+    if (!all && checked_[d]) {
+      if (!quick) check_layout(d);
+      continue;
+    }
     check_layout(d);
-    if (stats.empty || (!all && checked_[d])) continue;
+    if (stats.empty) continue;
     explain_empty_on_input(stats, d);
     checked_[d] = !stats.empty;
   }
+  if (!quick) note_time_layouts();
   if (!all && !stats.empty) check_touched(stats);
   if (stats.empty) return finish();
 
@@ -281,6 +311,7 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
       changed.clear();
       const CnNode& node = *nodes_[i];
       dirty_.take(i, node, dirty);
+      if (quick) check_layouts_before(node);
       NodeRun run{domains_, ratio_, fresh_[i] != 0, dirty, changed};
       run.derivatives = derivatives;
       run.cancel = &budget_.cancel;
@@ -333,7 +364,9 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
     }
   }
-  for (std::size_t d = 0; d < domains_.size(); ++d) {
+  // Changed by a node that does not act on it (each node's own are checked after its run): found here,
+  // or by update() before a node reads it.
+  for (std::size_t d = 0; d < domains_.size() && !quick; ++d) {
     if (domains_[d]->layout_changed()) domains_[d]->check_layout(label(d) + ", changed during contract(),");
   }
   return finish();

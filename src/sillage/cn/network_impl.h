@@ -67,6 +67,8 @@ class ContractorNetworkImpl {
   // TDomain during contract() made the nodes' layouts stale: DimensionError
   // rather than a result computed on the wrong atoms.
   void check_layouts_after(const CnNode& node) const;
+  // DimensionError if a domain of the node lost its layout (update() between two relayouts).
+  void check_layouts_before(const CnNode& node) const;
   // Same for a node whose run() returned false.
   void explain_node_empty(ContractStats& s, std::size_t i, const NodeRun& run) const;
   // Node i's describe(), with its name (set_ctc_name) if it has one.
@@ -96,12 +98,30 @@ class ContractorNetworkImpl {
   // (relaid out), in the same order; from an empty network when `rebind`
   // (retire: the domains no node uses are dropped).
   void rebuild_nodes(bool rebind);
-  // relayout() when every changed domain only gained atoms at its end and
-  // every node on them follows appends: those domains and nodes grown in
-  // place, the others untouched (O(nodes on them); the dirty bits laid out
+  // relayout() when every changed domain (changed_, relaid_) only gained
+  // atoms at its end and every node on them follows appends: those domains
+  // and nodes grown in place, the others untouched (O(nodes on them); the dirty bits laid out
   // again only for the nodes that watch a whole grown domain). False, with nothing
   // changed, when that does not hold (rebuild_nodes then).
   bool grow_in_place();
+  // Records the TDomains' layouts as known right (time_layouts_).
+  void note_time_layouts();
+  // True if no TDomain of the network moved since note_time_layouts().
+  bool time_layouts_unchanged() const;
+  // Whether every node on domain d can follow its growth (cached in users_[d]).
+  bool users_follow(std::size_t d);
+  // relayout() or retire() without building any node again: every domain
+  // that changed only shifted (Domain::dropped_atoms), every node kept was
+  // made by this network and follows the shift (CnNode::follows_appends).
+  // The nodes `gone` (empty: none) removed, the domains only they used
+  // dropped, the rest renumbered in order; watchers and dirty bits laid out
+  // anew (O(nodes + watched atoms)). False, with nothing changed, when that
+  // does not hold (rebuild_nodes then).
+  bool relay_in_place(const std::vector<char>& gone);
+  // Registers node number `id`'s watches, users and dirty bits.
+  void watch(std::size_t id, const CnNode& node);
+  // The touches (touched()) of domains no longer in the network, dropped.
+  void forget_dropped_touches();
   bool acts_on(const CnNode& node, const TDomain& td) const;
   void check_not_contracting(const char* where) const;
 
@@ -109,7 +129,26 @@ class ContractorNetworkImpl {
   std::vector<std::string> names_;  // per domain, "" if unnamed
   std::unordered_map<const void*, std::size_t> index_;  // key() -> domain index
   std::vector<Watchers> watchers_;  // per domain
-  std::vector<std::vector<std::size_t>> users_;  // per domain, the nodes with a range on it, ascending
+  // Per domain, the nodes with a range on it, ascending, and whether all of
+  // them can follow its growth (this network's own, following appends; -1:
+  // not known since the last node was added on it).
+  struct Users {
+    std::vector<std::size_t> nodes;
+    int follow = -1;
+  };
+  std::vector<Users> users_;
+  // The TDomains of the tube domains, with their slices and forgotten
+  // slices when the layouts were last known right (a full check, or a
+  // relayout): while none of them moved, update() checks the layouts of the
+  // nodes it runs only, not of every domain.
+  struct TimeLayout {
+    std::shared_ptr<const TDomain> td;
+    std::size_t slices, forgotten;
+  };
+  std::vector<TimeLayout> time_layouts_;
+  // relayout()'s scratch: the domains whose layout changed, and each laid out as it is now.
+  std::vector<std::size_t> changed_;
+  std::vector<std::shared_ptr<Domain>> relaid_;
   std::vector<std::size_t> grown_from_;  // grow_in_place's scratch: per domain, its former atom count or kNoAtom
   std::vector<char> grown_done_;         // grow_in_place's scratch: per node, grown already
   // Per node, its watched atoms that shrank since it last ran (contract()).

@@ -3,6 +3,7 @@
 // contractors retired. Each rebuild costs one pass over the nodes; the
 // propagation itself (update()) stays slice-granular.
 #include <algorithm>
+#include <optional>
 #include <unordered_map>
 
 #include "sillage/cn/network_impl.h"
@@ -72,36 +73,44 @@ void ContractorNetworkImpl::wake_touched(std::vector<std::size_t>& round, std::v
 
 void ContractorNetworkImpl::relayout() {
   check_not_contracting("relayout");
+  changed_.clear(), relaid_.clear();
   for (std::size_t d = 0; d < domains_.size(); ++d) {
-    if (domains_[d]->layout_changed() && !domains_[d]->relaid()) domains_[d]->check_layout(label(d));
+    if (!domains_[d]->layout_changed()) continue;
+    auto now = domains_[d]->relaid();
+    if (!now) domains_[d]->check_layout(label(d));
+    changed_.push_back(d), relaid_.push_back(std::move(now));
   }
-  if (!grow_in_place()) rebuild_nodes(false);
+  const bool grown = grow_in_place();
+  relaid_.clear();
+  if (!grown && !relay_in_place({})) rebuild_nodes(false);
+}
+
+bool ContractorNetworkImpl::users_follow(std::size_t d) {
+  Users& u = users_[d];
+  if (u.follow < 0) {
+    u.follow = std::all_of(u.nodes.begin(), u.nodes.end(),
+                           [&](std::size_t i) { return records_[i].make && nodes_[i]->follows_appends(); });
+  }
+  return u.follow != 0;
 }
 
 bool ContractorNetworkImpl::grow_in_place() {
-  std::vector<std::size_t> grown;
-  std::vector<std::shared_ptr<Domain>> now;
-  for (std::size_t d = 0; d < domains_.size(); ++d) {
-    if (!domains_[d]->layout_changed()) continue;
-    if (!domains_[d]->appended_only()) return false;
-    for (const std::size_t i : users_[d]) {
-      if (!records_[i].make || !nodes_[i]->follows_appends()) return false;
-    }
-    grown.push_back(d);
-    now.push_back(domains_[d]->relaid());
-    if (!now.back()) return false;
+  for (std::size_t j = 0; j < changed_.size(); ++j) {
+    const std::size_t d = changed_[j];
+    if (!relaid_[j] || !domains_[d]->appended_only() || !users_follow(d)) return false;
   }
+  const std::vector<std::size_t>& grown = changed_;
   grown_from_.resize(domains_.size(), kNoAtom);
   for (std::size_t j = 0; j < grown.size(); ++j) {
     const std::size_t d = grown[j];
     grown_from_[d] = domains_[d]->nb_atoms();
-    domains_[d] = std::move(now[j]);
+    domains_[d] = std::move(relaid_[j]);
     watchers_[d].grow(domains_[d]->nb_atoms());
   }
   // The nodes on them, each once (a node on several grown domains is marked by the first).
   grown_done_.resize(nodes_.size(), 0);
   for (const std::size_t d : grown) {
-    for (const std::size_t i : users_[d]) {
+    for (const std::size_t i : users_[d].nodes) {
       if (grown_done_[i]) continue;
       grown_done_[i] = 1;
       // Made by this network for itself (records_[i].make): no one else holds it.
@@ -111,8 +120,9 @@ bool ContractorNetworkImpl::grow_in_place() {
   }
   for (const std::size_t d : grown) {
     grown_from_[d] = kNoAtom;
-    for (const std::size_t i : users_[d]) grown_done_[i] = 0;
+    for (const std::size_t i : users_[d].nodes) grown_done_[i] = 0;
   }
+  note_time_layouts();
   return true;
 }
 
@@ -126,6 +136,7 @@ void ContractorNetworkImpl::retire(std::vector<std::size_t> nodes) {
   }
   std::vector<char> gone(nodes_.size(), 0);
   for (const std::size_t i : nodes) gone[i] = 1;
+  if (relay_in_place(gone)) return;
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     if (!gone[i] && !records_[i].make) {
       throw Error("ContractorNetwork::retire: contractor " + std::to_string(i) + " (" + describe_node(i) +
@@ -151,6 +162,86 @@ void ContractorNetworkImpl::retire(std::vector<std::size_t> nodes) {
   fresh_.resize(kept);
   ctc_names_.resize(kept);
   rebuild_nodes(true);
+}
+
+bool ContractorNetworkImpl::relay_in_place(const std::vector<char>& gone) {
+  const std::size_t nd = domains_.size();
+  // The domains that changed, each only shifted: from[d] its former atom count, dropped[d] at its start.
+  std::vector<std::size_t> from(nd, kNoAtom), dropped(nd, 0);
+  std::vector<std::shared_ptr<Domain>> now(nd);
+  for (std::size_t d = 0; d < nd; ++d) {
+    if (!domains_[d]->layout_changed()) continue;
+    const std::optional<std::size_t> shift = domains_[d]->dropped_atoms();
+    if (!shift || !(now[d] = domains_[d]->relaid())) return false;
+    from[d] = domains_[d]->nb_atoms(), dropped[d] = *shift;
+  }
+  // Every node kept is this network's own (it renumbers them), and follows the shifts.
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (!gone.empty() && gone[i]) continue;
+    if (!records_[i].make) return false;
+    for (const auto& a : nodes_[i]->ranges()) {
+      if (from[a.domain] != kNoAtom && !nodes_[i]->follows_appends()) return false;
+    }
+  }
+  // Nothing fails below.
+  for (std::size_t d = 0; d < nd; ++d) {
+    if (now[d]) domains_[d] = std::move(now[d]);
+  }
+  // The nodes kept, in order, following their domains; the domains only the retired ones used, dropped.
+  std::vector<char> used(nd, 0), orphaned(nd, 0);
+  std::size_t kept = 0;
+  ctc_names_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const bool retired = !gone.empty() && gone[i];
+    for (const auto& a : nodes_[i]->ranges()) (retired ? orphaned : used)[a.domain] = 1;
+    if (retired) continue;
+    // Made by this network for itself (records_[i].make): no one else holds it.
+    const_cast<CnNode&>(*nodes_[i]).follow_shift(from, dropped, domains_);
+    if (kept != i) {  // no self-move (it would empty a record or a name)
+      nodes_[kept] = std::move(nodes_[i]);
+      records_[kept] = std::move(records_[i]);
+      fresh_[kept] = fresh_[i];
+      ctc_names_[kept] = std::move(ctc_names_[i]);
+    }
+    ++kept;
+  }
+  nodes_.resize(kept), records_.resize(kept), fresh_.resize(kept), ctc_names_.resize(kept);
+  std::vector<std::size_t> index(nd, kNoAtom);
+  std::size_t nb = 0;
+  for (std::size_t d = 0; d < nd; ++d) {
+    if (orphaned[d] && !used[d]) {
+      index_.erase(domains_[d]->key());
+      continue;
+    }
+    index[d] = nb;
+    if (nb != d) {
+      domains_[nb] = std::move(domains_[d]);
+      names_[nb] = std::move(names_[d]);
+      checked_[nb] = checked_[d];
+      index_[domains_[nb]->key()] = nb;
+    }
+    ++nb;
+  }
+  domains_.resize(nb), names_.resize(nb), checked_.resize(nb);
+  // Who watches what, from the nodes as they are now.
+  watchers_.clear(), users_.assign(nb, {});
+  for (std::size_t d = 0; d < nb; ++d) watchers_.emplace_back(domains_[d]->nb_atoms());
+  dirty_.clear_nodes();
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (nb < nd) const_cast<CnNode&>(*nodes_[i]).renumber_domains(index);
+    watch(i, *nodes_[i]);
+  }
+  grown_from_.clear(), grown_done_.clear();
+  forget_dropped_touches();
+  note_time_layouts();
+  return true;
+}
+
+void ContractorNetworkImpl::forget_dropped_touches() {
+  std::erase_if(touched_, [&](const Touch& t) {
+    const auto& parts = t.ref.parts();
+    return std::any_of(parts.begin(), parts.end(), [&](const auto& p) { return !index_.contains(p.domain->key()); });
+  });
 }
 
 void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
@@ -196,7 +287,7 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     }
     for (std::size_t d = 0; d < domains_.size(); ++d) {
       watchers_[d] = Watchers(domains_[d]->nb_atoms());
-      users_[d].clear();
+      users_[d] = {};
     }
   }
   dirty_.clear_nodes();
@@ -226,6 +317,8 @@ void ContractorNetworkImpl::rebuild_nodes(bool rebind) {
     names_[d] = it->second.name;
     checked_[d] = it->second.checked;
   }
+  if (rebind) forget_dropped_touches();
+  note_time_layouts();
 }
 
 }  // namespace sillage::detail

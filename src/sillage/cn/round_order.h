@@ -11,7 +11,7 @@ namespace sillage::detail {
 
 class RoundOrder {
  public:
-  RoundOrder(Scheduling s, std::size_t nb_nodes) : scheduling_(s), share_(nb_nodes, 1.0) {}
+  RoundOrder(Scheduling s, std::size_t nb_nodes) : scheduling_(s), share_(s == Scheduling::Priority ? nb_nodes : 0, 1.0) {}
   // Node i shrank `changed` of its `atoms` atoms in its last run.
   void ran(std::size_t i, std::size_t changed, std::size_t atoms);
   // Orders the nodes of a round; dirty.wakes(i): the wake-ups of node i since
@@ -20,7 +20,7 @@ class RoundOrder {
 
  private:
   Scheduling scheduling_;
-  std::vector<double> share_;  // per node: the share of its atoms shrunk last time
+  std::vector<double> share_;  // per node (Priority only): the share of its atoms shrunk last time
 };
 
 }  // namespace sillage::detail

@@ -22,6 +22,18 @@ bool TubeDomain::appended_only() const {
          td_->t(nb_slices_) == tf_;
 }
 
+// Slices forgotten at the start, appended at the end, none sampled among
+// those kept: the time point that ended the domain is still there, as many
+// places earlier as slices were forgotten.
+std::optional<std::size_t> TubeDomain::dropped_atoms() const {
+  if (!same_tdomain()) return std::nullopt;
+  const std::size_t forgotten = td_->nb_forgotten() - forgotten_;
+  if (forgotten > nb_slices_) return std::nullopt;
+  const std::size_t end = nb_slices_ - forgotten;  // where the last time point is now
+  if (end > x_->nb_slices() || td_->t(end) != tf_) return std::nullopt;
+  return 2 * forgotten;
+}
+
 Interval TubeDomain::atom(std::size_t i) const {
   return time_atom(x_->data(), i);
 }
@@ -100,6 +112,10 @@ void TubeDomain::check_layout(const std::string& label) const {
   if (x_->tdomain() != td_) {
     throw DimensionError("ContractorNetwork: " + label +
                          " was registered on another TDomain (assign tubes of the same TDomain)");
+  }
+  if (td_->nb_forgotten() != forgotten_) {
+    throw DimensionError("ContractorNetwork: " + label + " forgot " + std::to_string(td_->nb_forgotten() - forgotten_) +
+                         " slices since it was registered (relayout() after TDomain::forget_before)");
   }
 }
 

@@ -61,18 +61,25 @@ bool next_window(const TDomain& td, const CtcHeadingWindow& ctc, std::size_t a, 
   return b <= n;
 }
 
-// Whether a window holds a changed atom (`dirty`: prefix counts as below).
+// Whether one of the sorted time atoms `dirty` lies in [lo, hi].
+bool any_in(const std::vector<std::size_t>& dirty, std::size_t lo, std::size_t hi) {
+  const auto it = std::lower_bound(dirty.begin(), dirty.end(), lo);
+  return it != dirty.end() && *it <= hi;
+}
+
+// Whether a window holds a changed atom (`dirty`: sorted, as below).
 bool any_dirty_window(const TDomain& td, const CtcHeadingWindow& ctc, const std::vector<std::size_t>& dirty) {
+  if (dirty.empty()) return false;
   std::size_t b = 0;
   for (std::size_t a = 0; a < td.nb_slices() && next_window(td, ctc, a, b); a += ctc.stride()) {
-    if (dirty[2 * b + 1] != dirty[2 * a]) return true;
+    if (any_in(dirty, 2 * a, 2 * b)) return true;
   }
   return false;
 }
 
-// `dirty` (null: every window): prefix counts of the time atoms that changed
-// since the last run (dirty[i] = how many below atom i); a window [a, b] is
-// contracted again only if one of its atoms 2a..2b changed. `in`: the inputs
+// `dirty` (null: every window): the time atoms that changed since the last
+// run, sorted; a window [a, b] is contracted again only if one of its atoms
+// 2a..2b changed. `in`: the inputs
 // and sums of the windows, as left by the last contraction (a node's) or new.
 bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const Tube& dpsi_t, const Tube& w_t,
                      const CtcHeadingWindow& ctc, detail::HeadingEmptyAt& at, detail::WindowInputs& in,
@@ -91,7 +98,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
   std::size_t b = 0;
   for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
     if (!next_window(*td, ctc, a, b)) break;
-    if (dirty && (*dirty)[2 * b + 1] == (*dirty)[2 * a]) continue;  // nothing changed in the window
+    if (dirty && !any_in(*dirty, 2 * a, 2 * b)) continue;  // nothing changed in the window
     const std::size_t c = (a + b) / 2;
     const auto& [vx, vy, cone] = in.sum(a, b, c);
     // Heading: the directions of the displacement against those of V.
@@ -145,12 +152,9 @@ class HeadingWindowNode : public detail::HeadingNodeBase {
   HeadingWindowNode(const CtcHeadingWindow& ctc, const std::vector<BoundDomain>& args)
       : HeadingNodeBase("CtcHeadingWindow", args, 6, "p (2 components), psi, d, dpsi and w"), ctc_(ctc) {}
   bool run(NodeRun& r) const override {
-    // The windows holding a changed atom (of any of the six tubes), as prefix counts.
+    // The time atoms changed (of any of the six tubes), sorted: the windows holding one run again.
     bool constants = false;
-    const std::vector<std::size_t> atoms = dirty_time_atoms(r, constants);
-    std::vector<std::size_t> dirty(nb_time_atoms() + 1, 0);
-    for (const std::size_t i : atoms) ++dirty[i + 1];
-    for (std::size_t i = 0; i < nb_time_atoms(); ++i) dirty[i + 1] += dirty[i];
+    const std::vector<std::size_t> dirty = dirty_time_atoms(r, constants);
     const bool every = r.all || constants;
     // No window holds what changed: nothing to do (most runs of an online update).
     if (!every && !any_dirty_window(*tube_arg(0).tdomain(), ctc_, dirty)) return true;

@@ -11,6 +11,7 @@
 #include "sillage/cn/tube_node.h"
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_eval.h"
 #include "sillage/error.h"
 #include "sillage/tube/tube_vector.h"
 
@@ -186,9 +187,76 @@ TEST(CnOnline, RelayoutGrowsTheNodesThatFollowAppendsInPlace) {
         << "step " << step;
     EXPECT_EQ(pos, (2 * k + 3) + (2 * k + 1));  // x's range now has 2k + 3 atoms
   }
+  // Forgetting the past shifts the node too (not made again): the slices
+  // kept wake it at their new positions.
   td->forget_before(3.0);
-  cn.relayout();  // forgetting is no append: the node is made again
-  EXPECT_EQ(rec->made, 2u);
+  td->extend(7.0);
+  cn.relayout();
+  EXPECT_EQ(rec->made, 1u);
+  ASSERT_EQ(td->nb_slices(), 4u);  // [3, 4] ... [6, 7]
+  for (std::size_t k : {0u, 1u, 3u}) {
+    y->write().slices()[k] &= Interval(1, 1.5 + 0.1 * static_cast<double>(k));
+    rec->seen.clear();
+    cn.touched(y, Interval(td->t(k) + 0.25, td->t(k) + 0.5));
+    cn.update();
+    ASSERT_FALSE(rec->seen.empty());
+    const std::size_t pos = rec->last->position(1, 2 * k + 1);
+    EXPECT_NE(std::find(rec->seen.front().begin(), rec->seen.front().end(), pos), rec->seen.front().end())
+        << "slice " << k;
+    EXPECT_EQ(pos, 9u + (2 * k + 1));  // x's range now has 2 * 4 + 1 atoms
+  }
+  // CtcDeriv followed as well: x' = y in [1, 2] on the slices kept, bit for bit as a network made now.
+  ContractorNetwork fresh;
+  auto x2 = std::make_shared<Tube>(*x);
+  auto y2 = std::make_shared<Tube>(*y);
+  fresh.add(std::make_shared<CtcDeriv>(), {x2, y2});
+  fresh.contract();
+  cn.contract();
+  EXPECT_EQ(x->gates().size(), x2->gates().size());
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) EXPECT_EQ(x->gate(k), x2->gate(k)) << "gate " << k;
+}
+
+// Retiring contractors on a TDomain that forgot its past: the nodes kept are
+// shifted in place, the domains only the retired ones used are dropped, and
+// the network contracts as one built anew on what is left.
+TEST(CnOnline, RetireAfterForgettingShiftsTheNodesKept) {
+  auto td = TDomain::create(0.0, 10.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(-100, 100));
+  auto v = std::make_shared<Tube>(td, Interval(1, 2));
+  x->set_gate(0, Interval(0));
+  ContractorNetwork cn;
+  const auto rec = std::make_shared<Recording>();
+  cn.add(rec, {x, v});
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  std::vector<std::shared_ptr<Interval>> ts, zs;
+  for (int i = 1; i <= 8; ++i) {  // x(t_i) in [z_i], t_i within a slice
+    ts.push_back(std::make_shared<Interval>(i + 0.2, i + 0.4));
+    zs.push_back(std::make_shared<Interval>(-100, 100));
+    cn.add(std::make_shared<CtcEval>(), {ts.back(), zs.back(), x, v});
+  }
+  cn.contract();
+  const std::size_t domains = cn.nb_dom();
+  td->forget_before(4.0);  // slices [0, 4) gone: the evaluations at 1.2, 2.2, 3.2 retire
+  td->extend(11.0);
+  cn.retire({2, 3, 4});
+  EXPECT_EQ(rec->made, 1u);  // shifted, not made again
+  EXPECT_EQ(cn.nb_ctc(), 7u);
+  EXPECT_EQ(cn.nb_dom(), domains - 6);  // their times and values dropped
+  // A tighter value at 5.3 reaches x there through the shifted evaluation node.
+  *zs[4] = Interval(7, 7.5);
+  cn.touched(zs[4]);
+  EXPECT_FALSE(cn.update().empty);
+  ASSERT_EQ(td->t(1), 5.0);
+  EXPECT_TRUE(x->gate(1).is_subset(Interval(6.1, 7.4))) << x->gate(1);  // x(5) = x(t) - [1, 2](t - 5)
+  // The same network built anew on the tubes as they are: the same values, bit for bit.
+  auto x2 = std::make_shared<Tube>(*x);
+  auto v2 = std::make_shared<Tube>(*v);
+  ContractorNetwork fresh;
+  fresh.add(std::make_shared<CtcDeriv>(), {x2, v2});
+  for (std::size_t i = 3; i < 8; ++i) fresh.add(std::make_shared<CtcEval>(), {ts[i], zs[i], x2, v2});
+  fresh.contract();
+  cn.contract();
+  for (std::size_t k = 0; k <= td->nb_slices(); ++k) EXPECT_EQ(x->gate(k), x2->gate(k)) << "gate " << k;
 }
 
 // update() checks a tube touched at some times there only (the rest was checked before), and
@@ -216,4 +284,40 @@ TEST(CnOnline, TouchedAtomsAreCheckedForEmptinessOnInput) {
   EXPECT_TRUE(dom.empty_on_input(6, 7).empty);    // gate 3 (atom 6)
   EXPECT_EQ(dom.empty_on_input(4, 9).atom, 6u);   // the first flaw in time order
   EXPECT_TRUE(dom.empty_on_input().empty);
+}
+
+// Between two relayouts update() checks the layouts of the contractors it runs
+// only: a box resized behind the network's back is still an error, found
+// before a contractor reads it, not a contraction on the wrong atoms.
+TEST(CnOnline, UpdateFindsABoxResizedBetweenRelayouts) {
+  auto td = TDomain::create(0.0, 4.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto b = std::make_shared<IntervalVector>(IntervalVector{{0, 10}, {0, 10}});
+  ContractorNetwork cn;
+  cn.add(counting({"a", "b"}, "a - b"), {b});
+  cn.add(std::make_shared<CtcDeriv>(), {x, x});
+  cn.contract();
+  td->extend(5.0);
+  cn.relayout();
+  EXPECT_FALSE(cn.update().empty);  // nothing moved since the relayout
+  *b = IntervalVector(3, Interval(0, 10));
+  cn.touched(b);
+  EXPECT_THROW(cn.update(), DimensionError);
+}
+
+// As many slices forgotten as appended is a change of layout too: the atoms
+// moved although their number did not.
+TEST(CnOnline, ForgettingAsManyAsAppendedIsALayoutChange) {
+  auto td = TDomain::create(0.0, 4.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto v = std::make_shared<Tube>(td, Interval(1, 2));
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.contract();
+  td->extend(5.0);
+  td->forget_before(1.0);
+  ASSERT_EQ(td->nb_slices(), 4u);
+  EXPECT_THROW(cn.update(), DimensionError);  // stale until relayout()
+  cn.relayout();
+  EXPECT_FALSE(cn.update().empty);
 }
