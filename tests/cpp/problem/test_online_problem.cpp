@@ -147,8 +147,12 @@ TEST(OnlineProblem, KidnappedRobotIsUnknownUntilItsFix) {
   ASSERT_FALSE(r.t.empty());
   for (std::size_t k = 0; k < r.t.size(); ++k) {
     const bool bounded = r.online[k][0][0].is_bounded();
-    if (r.t[k] < 36.9) EXPECT_FALSE(bounded) << "t = " << r.t[k];
-    if (r.t[k] > 37.1) EXPECT_TRUE(bounded) << "t = " << r.t[k];
+    if (r.t[k] < 36.9) {
+      EXPECT_FALSE(bounded) << "t = " << r.t[k];
+    }
+    if (r.t[k] > 37.1) {
+      EXPECT_TRUE(bounded) << "t = " << r.t[k];
+    }
   }
   EXPECT_EQ(r.online_holds_batch(), r.t.size());
 }
