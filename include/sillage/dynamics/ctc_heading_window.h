@@ -57,7 +57,9 @@ class CtcHeadingWindow : public NetworkCtc {
   double track() const { return track_; }
   // The bound on |psi''| (rad/s^2; inf: none).
   double turn_accel() const { return turn_accel_; }
-  // A window starts every `stride` slices.
+  // A window starts every `stride` slices, counted from the TDomain's first
+  // slice ever (TDomain::nb_forgotten): online, the windows stay those of
+  // the whole mission as the past is forgotten.
   std::size_t stride() const { return stride_; }
   std::string name() const override { return "CtcHeadingWindow"; }
   std::shared_ptr<const CnNode> make_node(const std::vector<BoundDomain>& args) const override;

@@ -61,6 +61,13 @@ bool next_window(const TDomain& td, const CtcHeadingWindow& ctc, std::size_t a, 
   return b <= n;
 }
 
+// The first window's start: windows start at the slices numbered a multiple
+// of the stride since the TDomain's first day, so that a domain that forgot
+// its past (online) keeps the windows a batch solve of the whole mission has.
+std::size_t first_window(const TDomain& td, const CtcHeadingWindow& ctc) {
+  return (ctc.stride() - td.nb_forgotten() % ctc.stride()) % ctc.stride();
+}
+
 // Whether one of the sorted time atoms `dirty` lies in [lo, hi].
 bool any_in(const std::vector<std::size_t>& dirty, std::size_t lo, std::size_t hi) {
   const auto it = std::lower_bound(dirty.begin(), dirty.end(), lo);
@@ -71,7 +78,7 @@ bool any_in(const std::vector<std::size_t>& dirty, std::size_t lo, std::size_t h
 bool any_dirty_window(const TDomain& td, const CtcHeadingWindow& ctc, const std::vector<std::size_t>& dirty) {
   if (dirty.empty()) return false;
   std::size_t b = 0;
-  for (std::size_t a = 0; a < td.nb_slices() && next_window(td, ctc, a, b); a += ctc.stride()) {
+  for (std::size_t a = first_window(td, ctc); a < td.nb_slices() && next_window(td, ctc, a, b); a += ctc.stride()) {
     if (any_in(dirty, 2 * a, 2 * b)) return true;
   }
   return false;
@@ -96,7 +103,7 @@ bool contract_window(Tube& px_t, Tube& py_t, Tube& psi_t, const Tube& d_t, const
   detail::HeadingTube px(px_t), py(py_t), psi(psi_t);
   bool ok = in.update(*td, d_t.data(), dpsi_t.data(), w_t.data(), ctc.turn_accel(), ctc.track());
   std::size_t b = 0;
-  for (std::size_t a = 0; a < n && ok; a += ctc.stride()) {
+  for (std::size_t a = first_window(*td, ctc); a < n && ok; a += ctc.stride()) {
     if (!next_window(*td, ctc, a, b)) break;
     if (dirty && !any_in(*dirty, 2 * a, 2 * b)) continue;  // nothing changed in the window
     const std::size_t c = (a + b) / 2;

@@ -257,3 +257,19 @@ TEST(CtcHeadingWindow, ArgumentErrors) {
   EXPECT_THROW(cn.add(std::make_shared<CtcHeadingWindow>(1.0), {std::make_shared<TubeVector>(td, 2), std::make_shared<Tube>(td)}),
                DimensionError);
 }
+
+// Windows start every `stride` slices counted from the TDomain's first day:
+// a domain that forgot its past (online) keeps the windows of the whole
+// mission, so that the online and batch solves apply the same constraints.
+TEST(CtcHeadingWindow, WindowsKeepTheirPlaceWhenThePastIsForgotten) {
+  auto td = TDomain::create(0.0, 12.0, 1.0);
+  TubeVector p(td, 2);
+  Tube psi(td, Interval(-0.01, 0.01)), d(td, Interval(1.0)), dpsi(td, Interval(0.0)), w(td, Interval(-0.1, 0.1));
+  ASSERT_EQ(td->forget_before(1.0), 1u);  // slice [0, 1] gone: slice k is slice k + 1 of the first day
+  p.set_gate(3, IntervalVector{Interval(0.0), Interval(0.0)});  // p(4) = 0
+  // Windows of 2 s every 4 slices: [4, 6], [8, 10] (not [1, 3], [5, 7], [9, 11]).
+  ASSERT_TRUE(CtcHeadingWindow(2.0, 0.0, INFINITY, 4).contract(p, psi, d, dpsi, w));
+  EXPECT_TRUE(p[0].gate(5).is_bounded()) << p[0].gate(5);  // p(6) from p(4)
+  EXPECT_TRUE(p[0].gate(5).contains(2.0)) << p[0].gate(5);
+  EXPECT_FALSE(p[0].gate(6).is_bounded()) << p[0].gate(6);  // p(7): no window ends there
+}
