@@ -182,3 +182,19 @@ def test_when_no_statement_alone_does_a_set_is_found(tmp_path):
     assert e.items[r.items[0]].label == "[var.x] value"
     assert e.items[r.items[1]].kind == sillage.ItemKind.Constraint
     assert r.values[0].disjoint()
+
+
+def test_the_plaza1_example_blames_the_flipped_start_heading(tmp_path):
+    """examples/python/explain_empty.py: plaza1.toml with its start heading flipped by pi (real
+    data; skipped without it): the heading gate first, its stated value impossible, the truth kept."""
+    root = Path(__file__).resolve().parents[2]
+    if not (root.parent / "shared" / "data" / "plaza1" / "odometry.csv").exists():
+        pytest.skip("no plaza1 data")
+    import os
+    import sys
+    run = subprocess.run([sys.executable, str(root / "examples" / "python" / "explain_empty.py"), "--out", str(tmp_path)],
+                         capture_output=True, text=True, timeout=600, env=dict(os.environ, MPLBACKEND="Agg"))
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-2000:]
+    assert "1. relaxing [var.psi] at t = 3856.8573" in run.stdout
+    assert "impossible given the rest of the file" in run.stdout
+    assert (tmp_path / "explain_empty_py.png").exists()

@@ -196,3 +196,36 @@ TEST(ExplainEmpty, WhenNoStatementAloneDoesASetIsFoundAndCheckedMinimal) {
   EXPECT_TRUE(r.values[0].disjoint()) << e.str();  // x is then 2 or 3, not in [0, 1]
   EXPECT_NE(e.str().find("each of them is needed"), std::string::npos) << e.str();
 }
+
+// The user's case on real data: examples/problems/plaza1.toml with its start heading flipped by π
+// (the CMU Plaza 1 log; the emptiness shows 86 s later, in CtcHeading).
+TEST(ExplainEmpty, Plaza1WithItsStartHeadingFlippedBlamesTheHeadingGate) {
+  const std::filesystem::path data = std::filesystem::path(SILLAGE_SHARED_DIR) / "data";
+  if (!std::filesystem::exists(data / "plaza1" / "odometry.csv")) GTEST_SKIP() << "no plaza1 data";
+  std::string text = problem_test::read_file(problem_test::problems_dir() + "/plaza1.toml");
+  const std::string stated = "-2.060753 + [-0.05, 0.05]";
+  ASSERT_NE(text.find(stated), std::string::npos);
+  text.replace(text.find(stated), stated.size(), "1.080840 + [-0.05, 0.05]");  // -2.060753 + π
+  ::setenv("SILLAGE_DATA", data.c_str(), 1);
+  const Problem p = problem_test::parse(text);
+  ::unsetenv("SILLAGE_DATA");
+  const SolveResult r = solve_problem(p);
+  ASSERT_TRUE(r.empty);
+  EXPECT_NE(r.why_empty.find("CtcHeading"), std::string::npos) << r.why_empty;  // the last contractor: not the cause
+  ExplainOptions o;
+  o.max_seconds = 300;
+  const Explanation e = explain_empty(p, r, o);
+  EXPECT_TRUE(e.complete) << e.stopped;
+  ASSERT_FALSE(e.relaxations.empty());
+  const ExplainItem& it = first_item(e);
+  EXPECT_EQ(it.label, "[var.psi] at t = 3856.8573") << e.str();
+  EXPECT_EQ(it.pos.line, 38);
+  const ProvenValue& v = e.relaxations[0].values.at(0);
+  EXPECT_TRUE(v.disjoint()) << e.str();
+  // The heading of the ground truth's first sample (the file's own value), or the same a turn away, is kept.
+  bool truth = false;
+  for (const Interval& piece : v.pieces) truth |= piece.contains(-2.060753) || piece.contains(-2.060753 + 2 * M_PI);
+  EXPECT_TRUE(truth) << e.str();
+  ASSERT_TRUE(r.before_empty.has_value());
+  EXPECT_FALSE((*r.before_empty->var("p").tubes)[0].is_empty());
+}
