@@ -31,7 +31,7 @@ struct ExplainItem {
   // What is relaxed.
   ItemKind kind = ItemKind::Bound;
   // The statement as the file writes it: "[var.psi] at t = 3856.8573", "[var.p] value[1]",
-  // "[var.dpsi] slices from odometry", "constraint 4 (heading): ...", "ranges lines 120 to 239".
+  // "[var.dpsi] slices from odometry", "constraint 4 (heading): ...", "ranges lines 120 to 239 (120 rows of constraint 9 (eval), ranges.csv:120-239)".
   std::string label;
   // Where the file states it.
   SourcePos pos;
@@ -59,7 +59,8 @@ struct ExplainItem {
 std::vector<ExplainItem> explain_items(const Problem& p);
 
 // The kept rows of a Rows item of p in `parts` runs of about as many rows (fewer when it has
-// fewer rows), each a Rows item labelled by its lines in the table's file.
+// fewer rows), each a Rows item labelled by its lines in the table's file ("ranges lines 2 to 6
+// (5 rows of constraint 4 (eval), ranges.csv:2-6)").
 std::vector<ExplainItem> row_runs(const Problem& p, const ExplainItem& rows, std::size_t parts);
 
 // p with the items relaxed (indices into `items`).

@@ -1,6 +1,7 @@
 #include "sillage/problem/explain_items.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <tuple>
 
@@ -147,9 +148,11 @@ std::vector<ExplainItem> row_runs(const Problem& p, const ExplainItem& rows, std
     it.nb_rows = b - a;
     it.time = in.hull(a, b);
     const std::size_t l0 = table.line(kept[a]), l1 = table.line(kept[b - 1]);
+    const std::string lines = l0 == l1 ? std::to_string(l0) : std::to_string(l0) + "-" + std::to_string(l1);
     it.label = c.data + (l0 == l1 ? " line " + std::to_string(l0) : " lines " + std::to_string(l0) + " to " + std::to_string(l1)) +
                " (" + std::to_string(it.nb_rows) + (it.nb_rows == 1 ? " row" : " rows") + " of " +
-               c.label.substr(0, c.label.find(':')) + ")";
+               c.label.substr(0, c.label.find(':')) + ", " + std::filesystem::path(table.source()).filename().string() +
+               ":" + lines + ")";
     runs.push_back(std::move(it));
   }
   return runs;

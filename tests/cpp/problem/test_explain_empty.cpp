@@ -172,7 +172,7 @@ TEST(ExplainEmpty, RelaxingOnlyRemovesStatements) {
   EXPECT_EQ(q.constraints.size(), p.constraints.size() - 1);
   const std::vector<ExplainItem> runs = row_runs(p, items[9], 4);
   ASSERT_EQ(runs.size(), 4u);
-  EXPECT_EQ(runs[0].label, "ranges lines 2 to 6 (5 rows of constraint 4 (eval))");
+  EXPECT_EQ(runs[0].label, "ranges lines 2 to 6 (5 rows of constraint 4 (eval), exact.csv:2-6)");
   const Problem without = relaxed_problem(p, runs, {1, 2});
   EXPECT_EQ(without.table(without.constraints[3].data)->table.nb_rows(), 10u);
   EXPECT_EQ(p.table("ranges")->table.nb_rows(), 20u);  // the problem's own table untouched
@@ -228,4 +228,12 @@ TEST(ExplainEmpty, Plaza1WithItsStartHeadingFlippedBlamesTheHeadingGate) {
   EXPECT_TRUE(truth) << e.str();
   ASSERT_TRUE(r.before_empty.has_value());
   EXPECT_FALSE((*r.before_empty->var("p").tubes)[0].is_empty());
+}
+
+TEST(ExplainEmpty, ACancelledTokenStopsTheSearch) {
+  const Problem p = problem_test::parse(robot(ranges_file("exact3", 0, 3), std::to_string(kHeading - M_PI), "0.1"));
+  const SolveResult r = solve_problem(p);
+  ExplainOptions o;
+  o.budget.cancel.cancel();
+  EXPECT_THROW((void)explain_empty(p, r, o), Cancelled);
 }
