@@ -116,7 +116,13 @@ int solve(const std::string& file, std::string out, SolveOptions o, int threads,
   for (const std::string& w : r.warnings) std::fprintf(stderr, "sillage: warning: %s\n", w.c_str());
   // No solution: which statements to relax, unless --explain-seconds 0.
   std::optional<Explanation> e;
-  if (r.empty && explain_seconds > 0) e = cli::explain_failure(p, r, explain_seconds, o.budget, quiet);
+  if (r.empty && explain_seconds > 0) {
+    try {
+      e = cli::explain_failure(p, r, explain_seconds, o.budget, quiet);
+    } catch (const Error& x) {  // the answer (no solution) and its outputs stand without it
+      std::fprintf(stderr, "sillage: no explanation: %s\n", x.what());
+    }
+  }
   OutputOptions written;
   if (full_tubes) written.max_slices = 0;
   write_results(p, r, out, written, e ? &*e : nullptr);

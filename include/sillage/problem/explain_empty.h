@@ -93,6 +93,8 @@ struct ExplainTrial {
   // A probe of a gate's value (ProvenValue::window): the component and the cell, e.g.
   // "psi(3856.8573) in [0.6, 1]"; "" for a relaxation.
   std::string probe;
+  // Why the relaxed problem could not be solved (an Error of its build: outcome Stopped); "" otherwise.
+  std::string error;
 };
 
 // How explain_empty searches: the trials' δ and budgets, the narrowing of rows.

@@ -38,7 +38,7 @@ SILLAGE_BINDING(explain, "problem", "budget", "cn", "interval") {
                (r.minimal ? ", minimal" : "") + ")";
       });
   py::class_<ExplainTrial>(m, "ExplainTrial", DOC(ExplainTrial))
-      .SILLAGE_READONLY_FIELDS(ExplainTrial, items, outcome, seconds, probe)
+      .SILLAGE_READONLY_FIELDS(ExplainTrial, items, outcome, seconds, probe, error)
       .def("__repr__", [](const ExplainTrial& t) {
         return "ExplainTrial(" + std::to_string(t.items.size()) + " items, " + outcome_name(t.outcome) +
                (t.probe.empty() ? "" : ", probe " + t.probe) + ")";

@@ -64,8 +64,16 @@ TrialOutcome ExplainSearch::run(const Problem& q, const std::vector<std::size_t>
   SolveOptions so = trial_options_;
   if (std::isfinite(left)) so.budget.max_seconds = so.budget.max_seconds > 0 ? std::min(so.budget.max_seconds, left) : left;
   const auto t0 = std::chrono::steady_clock::now();
-  const SolveResult r = solve_problem(q, so);
-  const TrialOutcome outcome = !r.stopped.empty() ? TrialOutcome::Stopped : r.empty ? TrialOutcome::Empty : TrialOutcome::NotEmpty;
+  SolveResult r;
+  std::string error;
+  try {
+    r = solve_problem(q, so);
+  } catch (const Error& x) {  // a relaxation the build refuses: undecided, the search goes on
+    error = x.what();
+  }
+  const TrialOutcome outcome = !error.empty() || !r.stopped.empty() ? TrialOutcome::Stopped
+                               : r.empty                           ? TrialOutcome::Empty
+                                                                   : TrialOutcome::NotEmpty;
   const double seconds = since(t0);
   if (found && outcome == TrialOutcome::NotEmpty) {
     found->items = relaxed;
@@ -73,19 +81,27 @@ TrialOutcome ExplainSearch::run(const Problem& q, const std::vector<std::size_t>
     found->seconds = seconds;
   }
   const std::lock_guard<std::mutex> lock(mutex_);
-  e.trials.push_back({relaxed, outcome, seconds, probe});
+  e.trials.push_back({relaxed, outcome, seconds, probe, error});
   return outcome;
 }
 
 void ExplainSearch::finish() {
-  std::size_t stopped = 0;
-  for (const ExplainTrial& t : e.trials) stopped += t.outcome == TrialOutcome::Stopped;
-  e.complete = e.stopped.empty() && stopped == 0 && not_run_ == 0;
+  std::size_t stopped = 0, errors = 0;
+  std::string first_error;
+  for (const ExplainTrial& t : e.trials) {
+    stopped += t.outcome == TrialOutcome::Stopped && t.error.empty();
+    errors += !t.error.empty();
+    if (first_error.empty()) first_error = t.error;
+  }
+  const std::size_t not_run = not_run_.load();
+  e.complete = e.stopped.empty() && stopped == 0 && errors == 0 && not_run == 0;
   if (e.stopped.empty() && !e.complete) {
-    e.stopped = "the search's " + number_text(o.max_seconds) + " s were spent: " +
-                std::to_string(e.trials.size() - stopped) + " trials decided, " + std::to_string(stopped) +
-                " stopped by the budget, " + std::to_string(not_run_.load()) +
-                " not run (ExplainOptions::max_seconds; sillage --explain-seconds)";
+    e.stopped = std::to_string(e.trials.size() - stopped - errors) + " trials decided";
+    if (stopped || not_run)
+      e.stopped += ", " + std::to_string(stopped) + " stopped by a budget, " + std::to_string(not_run) +
+                   " not run: the search's " + number_text(o.max_seconds) +
+                   " s were spent (ExplainOptions::max_seconds; sillage --explain-seconds) or a contraction's budget";
+    if (errors) e.stopped += ", " + std::to_string(errors) + " not solvable once relaxed (" + first_error + ")";
   }
   e.seconds = since(start_);
 }
