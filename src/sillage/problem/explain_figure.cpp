@@ -39,9 +39,10 @@ std::vector<FigureMark> blamed_marks(const Problem& p, const Explanation& e, con
       if (it.kind == ItemKind::Bound && it.index != i) continue;
       const Interval t = it.kind == ItemKind::Gate ? it.time : all;
       for (const ProvenValue& v : r.values) {
-        if (!is_component(v.what, var, i)) continue;
+        // A value the relaxed problem leaves unbounded says nothing against the stated one: not marked.
+        if (!is_component(v.what, var, i) || !v.proven.is_bounded()) continue;
         marks.push_back({IntervalVector{t, v.stated}, kStated});
-        if (v.pieces.empty() && v.proven.is_bounded()) marks.push_back({IntervalVector{t, v.proven}, kProven});
+        if (v.pieces.empty()) marks.push_back({IntervalVector{t, v.proven}, kProven});
         for (const Interval& piece : v.pieces) marks.push_back({IntervalVector{t, piece}, kProven});
       }
     }

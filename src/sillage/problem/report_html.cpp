@@ -100,6 +100,34 @@ std::string rows_outside(const Problem& p) {
   return std::to_string(n) + (which.empty() ? "" : " (" + which + ")");
 }
 
+// The maps of [output] maps on the domains b (`what` after each title: " before the contradiction").
+std::string map_figures(const Problem& p, const BuiltProblem& b, const std::string& what) {
+  std::ostringstream h;
+  for (const auto& [var, pair] : p.output.maps) {
+    const VarDomain& v = b.var(var);
+    const auto* cols = truth_columns(p, var);
+    std::optional<Trajectory> ti, tj;
+    if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
+    const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
+    const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
+    std::vector<Vector> points;  // the landmarks: in the map's window, dots distinct from the truth's line
+    if (marks) {
+      const CsvTable& t = p.table(marks->data)->table;
+      for (std::size_t r = 0; r < t.nb_rows(); ++r)
+        points.push_back(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]});
+    }
+    h << figure_block(
+        [&] {
+          return tube_vector_figure(*v.tubes, pair.first, pair.second, title + what, {}, ti ? &*ti : nullptr,
+                                    tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
+                                    comp_name(v, pair.second));
+        },
+        "Map " + title + what + (cols ? " (truth as a red line)" : "") +
+            (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
+  }
+  return h.str();
+}
+
 // No solution: what to relax (the explanation), best first.
 std::string explanation_section(const Explanation& e) {
   std::ostringstream h;
@@ -139,6 +167,7 @@ std::string before_empty_figures(const Problem& p, const BuiltProblem& b, const 
        "constraints met before the contradiction"
     << (e ? " (red: a blamed statement's value; green: the value the relaxed problem proves; orange: blamed rows)" : "")
     << ".</p>\n";
+  h << map_figures(p, b, " before the contradiction");
   std::size_t shown = 0;
   for (const VarDomain& v : b.vars) {
     if (!v.tubes) continue;
@@ -249,28 +278,7 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
   if (r.empty && r.before_empty) h << before_empty_figures(p, *r.before_empty, e);
   else if (r.empty) h << "<p class=\"note\">No figure: the domains are empty.</p>\n";
   else {
-    for (const auto& [var, pair] : p.output.maps) {
-      const VarDomain& v = b.var(var);
-      const auto* cols = truth_columns(p, var);
-      std::optional<Trajectory> ti, tj;
-      if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
-      const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
-      const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
-      std::vector<Vector> points;  // the landmarks: in the map's window, dots distinct from the truth's line
-      if (marks) {
-        const CsvTable& t = p.table(marks->data)->table;
-        for (std::size_t r = 0; r < t.nb_rows(); ++r)
-          points.push_back(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]});
-      }
-      h << figure_block(
-          [&] {
-            return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr,
-                                      tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
-                                      comp_name(v, pair.second));
-          },
-          "Map " + title + (cols ? " (truth as a red line)" : "") +
-              (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
-    }
+    h << map_figures(p, b, "");
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())
       for (const VarDomain& v : b.vars)

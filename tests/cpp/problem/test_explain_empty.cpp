@@ -92,6 +92,15 @@ TEST(ExplainEmpty, AFlippedStartHeadingIsNamedFirstWithTheHeadingTheRestProves) 
   for (const Relaxation& x : e.relaxations) ranges |= e.items[x.items[0]].kind == ItemKind::Rows;
   EXPECT_TRUE(ranges) << e.str();
   // The failing solve kept its domains before the contradiction: non-empty, psi(0) as stated.
+  // The report: the explanation at the top, the tubes before the contradiction with the gate marked.
+  const std::string html = report_html(p, r, &e);
+  EXPECT_LT(html.find("id=\"explanation\""), html.find("<h2>Problem</h2>"));
+  EXPECT_NE(html.find("id=\"before_empty\""), std::string::npos);
+  EXPECT_NE(html.find("stated (blamed)"), std::string::npos);
+  EXPECT_EQ(html.find("No figure: the domains are empty"), std::string::npos);
+  const std::string json = results_json(p, r, {}, &e);
+  EXPECT_NE(json.find("\"before_empty\": true"), std::string::npos);
+  EXPECT_NE(json.find("\"label\": \"[var.psi] at t = 0\""), std::string::npos) << json.substr(0, 2000);
   ASSERT_TRUE(r.before_empty.has_value());
   const Tube& psi = (*r.before_empty->var("psi").tubes)[0];
   EXPECT_FALSE(psi.is_empty());
