@@ -58,6 +58,7 @@ EXAMPLES = [
     ("bathymetry_mission", "cpp", "example_bathymetry_mission"),
     ("bathymetry_mission", "py", "bathymetry_mission.py"),
     ("problem_file", "py", "problem_file.py"),
+    ("explain_empty", "py", "explain_empty.py"),
     ("problem_refinement", "py", "problem_refinement.py"),
     ("temporal_slam_small", "py", "temporal_slam_small.py"),
     ("bathymetry_slam", "cpp", "example_bathymetry_slam"),

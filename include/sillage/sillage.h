@@ -108,6 +108,8 @@
 
 #include "sillage/problem/build_network.h"
 #include "sillage/problem/check_summary.h"
+#include "sillage/problem/explain_empty.h"
+#include "sillage/problem/explain_items.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/online_problem.h"
 #include "sillage/problem/problem.h"

@@ -14,7 +14,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples" / "python"
 DATA = ROOT.parent / "shared" / "data"
-NEEDS_DATA = {"plaza1.py": "plaza1", "loops_plaza1.py": "plaza1", "plaza1_slam.py": "plaza1", "plaza1_online.py": "plaza1"}
+NEEDS_DATA = {"plaza1.py": "plaza1", "loops_plaza1.py": "plaza1", "plaza1_slam.py": "plaza1", "plaza1_online.py": "plaza1",
+              "explain_empty.py": "plaza1"}
 HELPERS = {"example_args.py", "bound_audit.py", "plaza1_bounds.py", "plaza1_data.py"}  # modules of the examples, not examples
 ALL = sorted(p.name for p in EXAMPLES.glob("*.py") if p.name not in HELPERS)
 
@@ -28,7 +29,7 @@ def run(name, tmp_path, *args, tighten=None):
 
 
 def test_every_example_is_covered():
-    assert len(ALL) == 23 and "plaza1.py" in ALL and "rump.py" in ALL
+    assert len(ALL) == 24 and "plaza1.py" in ALL and "rump.py" in ALL
 
 
 @pytest.mark.parametrize("name", ALL)

@@ -1,7 +1,8 @@
 // The sillage command (docs/cli.md, docs/online.md):
 //   sillage solve PROBLEM.toml [--out DIR] [--delta auto|VALUE] [--refine halving|regions]
 //                 [--scheduling fifo|priority] [--threads N] [--max-runs N] [--max-seconds S]
-//                 [--quiet] [--save-tubes] [--full-tubes]
+//                 [--quiet] [--save-tubes] [--full-tubes] [--explain-seconds S]
+//   sillage explain PROBLEM.toml [--delta auto|VALUE] [--seconds S] [--threads N] [--max-runs N] [--max-seconds S]
 //   sillage check PROBLEM.toml
 //   sillage show TUBEFILE
 //   sillage plot TUBEFILE --out F.svg
@@ -21,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "explain_command.h"
 #include "online_commands.h"
 
 #include "sillage/problem/check_summary.h"
@@ -84,15 +86,19 @@ void save_tubes(const SolveResult& r, const std::string& out) {
   }
 }
 
-int solve(const std::string& file, std::string out, const std::string& delta_text, bool regions,
-          const std::string& scheduling, int threads, bool quiet, bool tubes, bool full_tubes, const Budget& budget) {
-  std::optional<ThreadLimit> limit;
-  if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
+SolveOptions solve_options(const std::string& delta_text, bool regions, const std::string& scheduling, const Budget& budget) {
   SolveOptions o;
   o.budget = budget;
   o.delta = parse_delta(delta_text, o.auto_delta);
   if (regions) o.refinement = DeltaRefinement::Regions;
   if (!scheduling.empty()) o.scheduling = scheduling == "priority" ? Scheduling::Priority : Scheduling::Fifo;
+  return o;
+}
+
+int solve(const std::string& file, std::string out, SolveOptions o, int threads, bool quiet, bool tubes,
+          bool full_tubes, double explain_seconds) {
+  std::optional<ThreadLimit> limit;
+  if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
   const auto start = std::chrono::steady_clock::now();
   const Problem p = load_problem(file);
   check_solve_options(p, o, "--");
@@ -108,10 +114,19 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
   const SolveResult r = solve_problem(p, o);
   if (progress) std::fprintf(stderr, "\n");
   for (const std::string& w : r.warnings) std::fprintf(stderr, "sillage: warning: %s\n", w.c_str());
+  // No solution: which statements to relax, unless --explain-seconds 0.
+  std::optional<Explanation> e;
+  if (r.empty && explain_seconds > 0) {
+    try {
+      e = cli::explain_failure(p, r, explain_seconds, o.budget, quiet);
+    } catch (const Error& x) {  // the answer (no solution) and its outputs stand without it
+      std::fprintf(stderr, "sillage: no explanation: %s\n", x.what());
+    }
+  }
   OutputOptions written;
   if (full_tubes) written.max_slices = 0;
-  write_results(p, r, out, written);
-  write_text_file(out, "report.html", report_html(p, r));
+  write_results(p, r, out, written, e ? &*e : nullptr);
+  write_text_file(out, "report.html", report_html(p, r, e ? &*e : nullptr));
   if (tubes) save_tubes(r, out);
   if (!quiet) {
     const ScheduleStep& last = r.schedule.back();
@@ -119,6 +134,7 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
                 file.c_str(), r.empty ? "NO SOLUTION" : r.stopped.empty() ? "solved" : "STOPPED", last.delta, last.slices, last.stats.contractor_calls,
                 r.build_seconds(), r.contract_seconds());
     if (r.empty) std::printf("  %s\n", r.why_empty.c_str());
+    if (e) std::fputs(e->str().c_str(), stdout);
     if (!r.stopped.empty()) std::printf("  STOPPED before the fixed point (the domains are enclosures): %s\n", r.stopped.c_str());
     if (p.output.truth && !r.empty) {
       const TruthCheck c = check_truth(p, r.built);
@@ -129,6 +145,7 @@ int solve(const std::string& file, std::string out, const std::string& delta_tex
                 tubes ? " and one .tube file" : "");
   } else if (r.empty) {  // quiet drops the summary, never the answer's explanation
     std::printf("%s: NO SOLUTION\n  %s\n", file.c_str(), r.why_empty.c_str());
+    if (e) std::fputs(e->str().c_str(), stdout);
   }
   if (!r.stopped.empty()) {
     std::fprintf(stderr, "sillage: stopped before the fixed point: %s (sillage solve --max-runs N / --max-seconds S)\n",
@@ -196,6 +213,7 @@ int main(int argc, char** argv) {
   int threads = 0;
   Budget budget;
   bool quiet = false, save_tube_files = false, full_tubes = false;
+  double explain_seconds = 30;
   auto* s = app.add_subcommand("solve", "solve a problem file; write DIR/report.html, results.json, NAME.csv");
   s->add_option("problem", problem, "the problem file (TOML)")->required();
   s->add_option("--out", out, "output directory (default out/<problem name>)");
@@ -217,6 +235,20 @@ int main(int argc, char** argv) {
               "write every slice in results.json and the CSV files (default: at most 10000 per tube, hulls of "
               "consecutive slices beyond)");
   s->add_flag("--quiet", quiet, "no progress line, no summary (a NO SOLUTION is still explained)");
+  s->add_option("--explain-seconds", explain_seconds,
+                "no solution: seconds to search for the statements to relax (default 30; 0: no search)")
+      ->check(CLI::NonNegativeNumber);
+  auto* ex = app.add_subcommand("explain", "solve a problem file; without solution, print which statements to relax");
+  ex->add_option("problem", problem, "the problem file (TOML)")->required();
+  ex->add_option("--delta", delta, "slice width: auto or a value (default: the file's)");
+  ex->add_option("--seconds", explain_seconds, "seconds of the search (default 30; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
+  ex->add_option("--threads", threads, "worker threads (default: all)")
+      ->check(whole_number("a number of threads", 1, 1 << 16));
+  ex->add_option("--max-runs", budget.max_boxes, "contractor runs of each contraction (default 10000000; 0: no limit)")
+      ->check(whole_number("a number of contractor runs (0: no limit)", 0, kMaxRuns));
+  ex->add_option("--max-seconds", budget.max_seconds, "wall-clock seconds of each contraction (default 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
   auto* c = app.add_subcommand("check", "validate a problem file and print the network it would build");
   c->add_option("problem", problem, "the problem file (TOML)")->required();
   auto* sh = app.add_subcommand("show", "summary of a tube file (tube_io)");
@@ -242,9 +274,9 @@ int main(int argc, char** argv) {
   rp->add_flag("--quiet", quiet, "no summary");
   // A mistyped command is named (CLI11 would only say that one is required).
   const std::string first = argc > 1 ? argv[1] : "";
-  if (!first.empty() && first[0] != '-' && first != "solve" && first != "check" && first != "show" && first != "plot" &&
+  if (!first.empty() && first[0] != '-' && first != "solve" && first != "explain" && first != "check" && first != "show" && first != "plot" &&
       first != "stream" && first != "replay") {
-    std::fprintf(stderr, "sillage: found the command '%s', expected solve, check, show, plot, stream or replay (sillage --help)\n",
+    std::fprintf(stderr, "sillage: found the command '%s', expected solve, explain, check, show, plot, stream or replay (sillage --help)\n",
                  argv[1]);
     return kBadInput;
   }
@@ -255,8 +287,14 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kBadInput;
   }
   try {
-    if (*s) return solve(problem, out, delta, refine == "regions", scheduling, threads, quiet, save_tube_files, full_tubes,
-                         budget);
+    if (*s)
+      return solve(problem, out, solve_options(delta, refine == "regions", scheduling, budget), threads, quiet,
+                   save_tube_files, full_tubes, explain_seconds);
+    if (*ex) {
+      std::optional<ThreadLimit> limit;
+      if (threads > 0) limit.emplace(static_cast<std::size_t>(threads));
+      return cli::explain(problem, solve_options(delta, false, "", budget), explain_seconds);
+    }
     if (*c) return check(problem);
     if (*sh) return show(tube_file);
     if (*pl) return plot(tube_file, out);

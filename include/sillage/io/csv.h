@@ -55,6 +55,10 @@ class CsvTable {
   void check_numeric(std::size_t c) const;
   // The values of a column of numbers, in file order (the errors of column()).
   std::vector<double> values(const std::string& name) const;
+  // The same table without rows [first, last) (OutOfRangeError unless
+  // first <= last <= nb_rows()): the rows left keep their lines in the file,
+  // so that messages still point at them (sillage explain drops runs of rows).
+  CsvTable without_rows(std::size_t first, std::size_t last) const;
 
  private:
   std::string source_;

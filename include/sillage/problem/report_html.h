@@ -6,6 +6,7 @@
 // the thickness), the truth check and the run statistics.
 #include <string>
 
+#include "sillage/problem/explain_empty.h"
 #include "sillage/problem/solve_problem.h"
 
 namespace sillage {
@@ -22,6 +23,9 @@ struct TruthCheck {
 // problem gives no truth); in Python check_truth(problem, result).
 TruthCheck check_truth(const Problem& p, const BuiltProblem& b);
 
-std::string report_html(const Problem& p, const SolveResult& r);
+// The page of the solve r of p. No solution: the explanation e at the top when given (what to
+// relax, the values proven), and the tubes as they were just before the contradiction
+// (r.before_empty) with the blamed statements marked, in place of the empty figures.
+std::string report_html(const Problem& p, const SolveResult& r, const Explanation* e = nullptr);
 
 }  // namespace sillage

@@ -44,6 +44,9 @@ struct SolveOptions {
   // over the bounded tube components) is above this quantile of all the
   // slices' (0.5: the thicker half).
   double split_quantile = 0.5;
+  // No solution: also keep the domains just before the contractor that emptied one of them ran
+  // (SolveResult::before_empty), at the cost of the failing step contracted again.
+  bool keep_before_empty = true;
   // Called after each step (progress line).
   std::function<void(const struct ScheduleStep&)> on_step;
 };
@@ -63,6 +66,11 @@ struct SolveResult {
   // True if the problem has no solution (an empty domain).
   bool empty = false;
   std::string why_empty;  // ContractStats::emptiness + the constraint and its place in the file
+  // No solution: the domains just before the contractor that emptied one ran (the failing step
+  // contracted again, cut one contractor run short: the propagation is deterministic). Every value
+  // they exclude is in no solution; they show where the constraints met before the contradiction.
+  // None when solved, when empty on input, or with SolveOptions::keep_before_empty false.
+  std::optional<BuiltProblem> before_empty;
   // Why the contraction stopped before its fixed point ("": it did not): a budget of
   // SolveOptions::budget spent (BudgetExceeded's message). The domains are still enclosures of
   // every solution, only not as tight as the fixed point's; no further δ is tried.
@@ -84,8 +92,8 @@ struct SolveResult {
 // Builds the network of the problem and contracts it to the fixed point (GIL released); delta: a
 // slice width (default: the file's), auto_delta: refine δ from coarse until the result changes by
 // less than tolerance or the budget is spent; scheduling: the order within a round (default: the file's
-// [network] scheduling). In Python also delta="auto", refine="halving" | "regions" and
-// scheduling="fifo" | "priority", the names of the `sillage solve` options. The options are
+// [network] scheduling). In Python also delta="auto", refine="halving" | "regions",
+// scheduling="fifo" | "priority" (the names of the `sillage solve` options) and keep_before_empty. The options are
 // checked by check_solve_options.
 SolveResult solve_problem(const Problem& p, const SolveOptions& options = {});
 

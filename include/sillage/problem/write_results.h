@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/problem/explain_empty.h"
 #include "sillage/problem/solve_problem.h"
 
 namespace sillage {
@@ -29,8 +30,11 @@ struct OutputOptions {
 // Every g-th of the n + 1 time points, and the last (g = 1: all of them), for o.max_slices.
 std::size_t decimation(std::size_t n, const OutputOptions& o);
 
-// The JSON text of results.json.
-std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o = {});
+// The JSON text of results.json; with the explanation e of a result without solution, its
+// "explanation" (explanation_json) and "before_empty" (whether the domains before the
+// contradiction were kept).
+std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o = {},
+                         const Explanation* e = nullptr);
 // The CSV text of one tube variable.
 std::string tube_csv(const VarDomain& v, const OutputOptions& o = {});
 // The names of the files `sillage solve` writes into its directory for p:
@@ -42,8 +46,10 @@ std::vector<std::string> output_names(const Problem& p, bool tube_files);
 void check_output_dir(const Problem& p, const std::string& dir, bool tube_files);
 // The same for the files `names` (sillage replay's: replay.html, online.jsonl, ...).
 void check_output_dir(const Problem& p, const std::string& dir, const std::vector<std::string>& names);
-// Writes results.json and the CSV files into dir (created, check_output_dir first); Error if it cannot.
-void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o = {});
+// Writes results.json (with the explanation e, if given) and the CSV files into dir (created,
+// check_output_dir first); Error if it cannot.
+void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o = {},
+                   const Explanation* e = nullptr);
 
 // Writes text to dir/name; Error naming the path if it cannot.
 void write_text_file(const std::string& dir, const std::string& name, const std::string& text);

@@ -20,9 +20,9 @@ namespace {
 
 // {name: Tube | TubeVector | Interval | IntervalVector}, copies of the solved domains
 // (a Tube is the solved object itself, shared).
-py::dict domains(SolveResult& r) {
+py::dict domains(BuiltProblem& b) {
   py::dict d;
-  for (VarDomain& v : r.built.vars) {
+  for (VarDomain& v : b.vars) {
     const char* name = v.spec->name.c_str();
     if (v.tubes && v.spec->kind == VarKind::Tube) d[name] = v.tubes->shared_component(0);
     else if (v.tubes) d[name] = TubeVector(*v.tubes);
@@ -80,8 +80,9 @@ SolveOptions options_of(const py::object& delta, bool auto_delta, DeltaRefinemen
 std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delta, bool auto_delta,
                                         double tolerance, double budget_seconds, DeltaRefinement refinement,
                                         const std::optional<std::string>& refine, const py::object& scheduling,
-                                        const std::optional<Budget>& budget) {
+                                        const std::optional<Budget>& budget, bool keep_before_empty) {
   SolveOptions o = options_of(delta, auto_delta, refinement, refine, scheduling);
+  o.keep_before_empty = keep_before_empty;
   o.tolerance = tolerance;
   o.budget_seconds = budget_seconds;
   if (budget) o.budget = *budget;
@@ -92,7 +93,7 @@ std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delt
 
 }  // namespace
 
-SILLAGE_BINDING(problem, "budget", "cn", "tube") {
+SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
   py::enum_<DeltaRefinement>(m, "DeltaRefinement", DOC(DeltaRefinement))
       .value("Halving", DeltaRefinement::Halving)
       .value("Regions", DeltaRefinement::Regions);
@@ -114,8 +115,12 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
   py::class_<SolveResult, std::shared_ptr<SolveResult>>(
       m, "SolveResult", DOC(SolveResult))
       .SILLAGE_READONLY_FIELDS(SolveResult, empty, why_empty, scheduling, stopped, warnings, summary)
-      .def_property_readonly("domains", &domains,
+      .def_property_readonly("domains", [](SolveResult& r) { return domains(r.built); },
                              "{name: Tube | TubeVector | Interval | IntervalVector}, the contracted domains.")
+      .def_property_readonly("before_empty", [](SolveResult& r) -> py::object {
+        if (!r.before_empty) return py::none();
+        return domains(*r.before_empty);
+      }, DOC(SolveResult, before_empty))
       .def_property_readonly("schedule", &schedule,
                              "One dict per δ tried: delta, slices, mean_thickness, build_seconds, "
                              "contract_seconds, stats.")
@@ -144,7 +149,8 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
         py::arg("refinement") = DeltaRefinement::Halving, py::arg("refine") = py::none(),
-        py::arg("scheduling") = py::none(), py::arg("budget") = py::none(), DOC(solve_problem));
+        py::arg("scheduling") = py::none(), py::arg("budget") = py::none(), py::arg("keep_before_empty") = true,
+        DOC(solve_problem));
   m.def(
       "check_solve_options",
       [](const Problem& p, const py::object& delta, bool auto_delta, DeltaRefinement refinement,
@@ -158,13 +164,14 @@ SILLAGE_BINDING(problem, "budget", "cn", "tube") {
       "solve",
       [](const std::string& path, const py::object& delta, bool auto_delta, double tolerance,
          double budget_seconds, DeltaRefinement refinement, const std::optional<std::string>& refine,
-         const py::object& scheduling, const std::optional<Budget>& budget) {
+         const py::object& scheduling, const std::optional<Budget>& budget, bool keep_before_empty) {
         return solve_with(load_problem(path), delta, auto_delta, tolerance, budget_seconds, refinement, refine,
-                          scheduling, budget);
+                          scheduling, budget, keep_before_empty);
       },
       py::arg("path"), py::arg("delta") = py::none(), py::arg("auto_delta") = false, py::arg("tolerance") = 0.01,
       py::arg("budget_seconds") = 60.0, py::arg("refinement") = DeltaRefinement::Halving,
       py::arg("refine") = py::none(), py::arg("scheduling") = py::none(), py::arg("budget") = py::none(),
+      py::arg("keep_before_empty") = true,
       "solve_problem(load_problem(path)): the problem file solved; .domains holds the sillage objects.");
   m.def(
       "find_loops",

@@ -248,6 +248,18 @@ std::size_t CsvTable::line(std::size_t i) const {
   return lines_[i];
 }
 
+CsvTable CsvTable::without_rows(std::size_t first, std::size_t last) const {
+  if (first > last || last > nb_rows())
+    throw OutOfRangeError(source_ + ": no rows [" + std::to_string(first) + ", " + std::to_string(last) + ") (" +
+                          rows_text() + ")");
+  CsvTable t = *this;
+  const std::size_t n = columns_.size();
+  t.cells_.erase(t.cells_.begin() + static_cast<std::ptrdiff_t>(first * n),
+                 t.cells_.begin() + static_cast<std::ptrdiff_t>(last * n));
+  t.lines_.erase(t.lines_.begin() + static_cast<std::ptrdiff_t>(first), t.lines_.begin() + static_cast<std::ptrdiff_t>(last));
+  return t;
+}
+
 std::string CsvTable::where(std::size_t i) const { return source_ + ":" + std::to_string(line(i)); }
 
 std::string CsvTable::rows_text() const {

@@ -1,6 +1,5 @@
 #include "sillage/problem/report_html.h"
 
-#include <cfenv>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -12,6 +11,8 @@
 #include "sillage/problem/problem_loops.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
+#include "sillage/problem/explain_figure.h"
+#include "sillage/problem/interval_text.h"
 
 namespace sillage {
 
@@ -23,25 +24,7 @@ std::string fmt(double x, const char* f = "%.6g") {
   return buf;
 }
 
-// x in 6 digits rounded toward `mode` (glibc's printf follows the rounding
-// mode): a lower bound printed down, an upper one up, so the text encloses the set.
-std::string fmt_directed(double x, int mode) {
-  const int saved = std::fegetround();
-  std::fesetround(mode);
-  const std::string s = fmt(x);
-  std::fesetround(saved);
-  return s;
-}
-
-std::string itv(const Interval& x) {
-  if (x.is_empty()) return "∅";
-  std::string s = "[";  // appended: "[" + a temporary is a false -Wrestrict of GCC 12
-  s += fmt_directed(x.lb(), FE_DOWNWARD);
-  s += ", ";
-  s += fmt_directed(x.ub(), FE_UPWARD);
-  s += ']';
-  return s;
-}
+std::string itv(const Interval& x) { return detail::interval_text(x); }
 
 std::string comp_name(const VarDomain& v, std::size_t i) {
   const bool scalar = v.spec->kind == VarKind::Tube || v.spec->kind == VarKind::Interval;
@@ -117,6 +100,88 @@ std::string rows_outside(const Problem& p) {
   return std::to_string(n) + (which.empty() ? "" : " (" + which + ")");
 }
 
+// The maps of [output] maps on the domains b (`what` after each title: " before the contradiction").
+std::string map_figures(const Problem& p, const BuiltProblem& b, const std::string& what) {
+  std::ostringstream h;
+  for (const auto& [var, pair] : p.output.maps) {
+    const VarDomain& v = b.var(var);
+    const auto* cols = truth_columns(p, var);
+    std::optional<Trajectory> ti, tj;
+    if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
+    const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
+    const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
+    std::vector<Vector> points;  // the landmarks: in the map's window, dots distinct from the truth's line
+    if (marks) {
+      const CsvTable& t = p.table(marks->data)->table;
+      for (std::size_t r = 0; r < t.nb_rows(); ++r)
+        points.push_back(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]});
+    }
+    h << figure_block(
+        [&] {
+          return tube_vector_figure(*v.tubes, pair.first, pair.second, title + what, {}, ti ? &*ti : nullptr,
+                                    tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
+                                    comp_name(v, pair.second));
+        },
+        "Map " + title + what + (cols ? " (truth as a red line)" : "") +
+            (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
+  }
+  return h.str();
+}
+
+// No solution: what to relax (the explanation), best first.
+std::string explanation_section(const Explanation& e) {
+  std::ostringstream h;
+  h << "<h2>Why there is no solution</h2>\n";
+  if (e.relaxations.empty())
+    h << "<p id=\"explanation\" class=\"note\">" << (e.complete ? "No set of the file's statements was found whose relaxation removes the contradiction."
+                                                              : "No relaxation was found in the time given.") << "</p>\n";
+  else {
+    h << "<ol id=\"explanation\">";
+    for (const Relaxation& r : e.relaxations) {
+      h << "<li>relaxing ";
+      for (std::size_t k = 0; k < r.items.size(); ++k)
+        h << (k ? ", " : "") << "<b>" << xml_escape(e.items[r.items[k]].str()) << "</b>";
+      h << " restores a solution (no contradiction found)";
+      if (!r.values.empty()) h << "<ul>";
+      for (const ProvenValue& v : r.values)
+        h << "<li>" << xml_escape(v.what) << " is then proven in " << xml_escape(v.proven_text())
+          << (v.window.is_unbounded() ? "" : " (searched within " + itv(v.window) + ")") << "; the file states " << itv(v.stated)
+          << (v.disjoint() ? ": <span class=\"empty\">impossible given the rest of the file</span>" : "") << "</li>";
+      if (!r.values.empty()) h << "</ul>";
+      h << "</li>";
+    }
+    h << "</ol>\n<p class=\"note\">\"Restores a solution\": with that statement relaxed (a bound made the whole line; a "
+         "gate, table, constraint or rows dropped) the contraction is not empty. Every solution needs that, but it does "
+         "not prove one. The values proven hold for every solution of the relaxed problem.</p>\n";
+  }
+  h << "<p class=\"note\">" << e.trials.size() << " trials at δ = " << fmt(e.delta) << " (" << e.slices << " slices) in "
+    << fmt(e.seconds, "%.2f") << " s" << (e.complete ? "" : "; partial: " + xml_escape(e.stopped)) << ".</p>\n";
+  return h.str();
+}
+
+// No solution: each tube component as it was just before the contradiction, the blamed statements marked.
+std::string before_empty_figures(const Problem& p, const BuiltProblem& b, const Explanation* e) {
+  std::ostringstream h;
+  h << "<p class=\"note\" id=\"before_empty\">The tubes as the propagation had contracted them just before the "
+       "contractor that emptied a domain ran: every value outside them is in no solution; they show where the "
+       "constraints met before the contradiction"
+    << (e ? " (red: a blamed statement's value; green: the value the relaxed problem proves; orange: blamed rows)" : "")
+    << ".</p>\n";
+  h << map_figures(p, b, " before the contradiction");
+  std::size_t shown = 0;
+  for (const VarDomain& v : b.vars) {
+    if (!v.tubes) continue;
+    for (std::size_t i = 0; i < v.spec->dim && shown < 24; ++i, ++shown) {
+      const std::string name = comp_name(v, i);
+      const std::vector<detail::FigureMark> marks =
+          e ? detail::blamed_marks(p, *e, v.spec->name, i) : std::vector<detail::FigureMark>{};
+      h << figure_block([&] { return detail::marked_tube_figure((*v.tubes)[i], name, "[" + name + "](t) before the contradiction", marks); },
+                        "The tube [" + name + "](·) just before the contradiction" + (marks.empty() ? "" : ", the blamed statements marked"));
+    }
+  }
+  return h.str();
+}
+
 }  // namespace
 
 TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
@@ -147,7 +212,7 @@ TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
   return c;
 }
 
-std::string report_html(const Problem& p, const SolveResult& r) {
+std::string report_html(const Problem& p, const SolveResult& r, const Explanation* e) {
   const BuiltProblem& b = r.built;
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>sillage: " << xml_escape(p.file)
@@ -169,6 +234,8 @@ std::string report_html(const Problem& p, const SolveResult& r) {
     for (const std::string& w : r.warnings) h << "<li class=\"empty\">Warning: " << xml_escape(w) << "</li>";
     h << "</ul>\n";
   }
+
+  if (r.empty && e && e->empty) h << explanation_section(*e);
 
   h << "<h2>Problem</h2>\n<p>hash " << p.hash << "</p><pre>" << xml_escape(p.text) << "</pre>\n";
 
@@ -208,30 +275,10 @@ std::string report_html(const Problem& p, const SolveResult& r) {
   h << "</table>\n";
 
   h << "<h2>Figures</h2>\n";
-  if (r.empty) h << "<p class=\"note\">No figure: the domains are empty.</p>\n";
+  if (r.empty && r.before_empty) h << before_empty_figures(p, *r.before_empty, e);
+  else if (r.empty) h << "<p class=\"note\">No figure: the domains are empty.</p>\n";
   else {
-    for (const auto& [var, pair] : p.output.maps) {
-      const VarDomain& v = b.var(var);
-      const auto* cols = truth_columns(p, var);
-      std::optional<Trajectory> ti, tj;
-      if (cols) ti = truth_trajectory(p, (*cols)[pair.first]), tj = truth_trajectory(p, (*cols)[pair.second]);
-      const std::string title = comp_name(v, pair.first) + " × " + comp_name(v, pair.second);
-      const auto* marks = p.output.landmarks ? &*p.output.landmarks : nullptr;
-      std::vector<Vector> points;  // the landmarks: in the map's window, dots distinct from the truth's line
-      if (marks) {
-        const CsvTable& t = p.table(marks->data)->table;
-        for (std::size_t r = 0; r < t.nb_rows(); ++r)
-          points.push_back(Vector{t.row(r)[t.column(marks->x)], t.row(r)[t.column(marks->y)]});
-      }
-      h << figure_block(
-          [&] {
-            return tube_vector_figure(*v.tubes, pair.first, pair.second, title, {}, ti ? &*ti : nullptr,
-                                      tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
-                                      comp_name(v, pair.second));
-          },
-          "Map " + title + (cols ? " (truth as a red line)" : "") +
-              (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
-    }
+    h << map_figures(p, b, "");
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())
       for (const VarDomain& v : b.vars)

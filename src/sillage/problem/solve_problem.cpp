@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "sillage/problem/before_empty.h"
 #include "sillage/problem/eval_rows.h"
 #include "sillage/problem/problem_warnings.h"
 #include "sillage/problem/refined_points.h"
@@ -129,6 +130,7 @@ void solve_steps(const Problem& p, const SolveOptions& o, SolveResult& r) {
     if (step.stats.empty) {
       r.empty = true;
       r.why_empty = explain(p, r.built, step.stats);
+      if (o.keep_before_empty) r.before_empty = detail::before_empty(p, points, delta, o, step.stats);
       return;
     }
     if (fixed) return;

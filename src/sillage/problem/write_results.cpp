@@ -104,12 +104,14 @@ json stats_json(const ScheduleStep& s) {
 
 }  // namespace
 
-std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o) {
+std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o, const Explanation* e) {
   json j;
   j["problem"] = p.file;
   j["hash"] = p.hash;
   j["status"] = r.empty ? "no solution" : !r.stopped.empty() ? "stopped" : "solved";
   if (r.empty) j["why"] = r.why_empty;
+  if (r.empty) j["before_empty"] = r.before_empty.has_value();
+  if (e) j["explanation"] = json::parse(explanation_json(*e));
   if (!r.stopped.empty()) j["why"] = r.stopped;
   // The one outcome type of long computations (outcome.h), as in C++ and Python.
   j["summary"] = {{"status", status_name(r.summary.status)},
@@ -235,12 +237,13 @@ void check_output_dir(const Problem& p, const std::string& dir, const std::vecto
   }
 }
 
-void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o) {
+void write_results(const Problem& p, const SolveResult& r, const std::string& dir, const OutputOptions& o,
+                   const Explanation* e) {
   check_output_dir(p, dir, false);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error("cannot create the directory " + dir + ": " + ec.message());
-  write_text_file(dir, "results.json", results_json(p, r, o));
+  write_text_file(dir, "results.json", results_json(p, r, o, e));
   for (const VarDomain& v : r.built.vars)
     if (v.tubes) write_text_file(dir, v.spec->name + ".csv", tube_csv(v, o));
 }
