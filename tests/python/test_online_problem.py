@@ -156,3 +156,17 @@ def test_replay_never_overwrites_an_input(tmp_path):
     r = run(["replay", str(problem), "--out", str(tmp_path)], "")
     assert r.returncode == 2 and "would overwrite the problem file" in r.stderr, r.stderr
     assert problem.read_text() == text
+
+
+def test_replay_problem_is_cancelled_by_its_token(tmp_path):
+    # A replay at 1x real time of a 13 s log, cancelled from another thread after 0.2 s:
+    # sillage.Cancelled at once, not at the end of the log.
+    import threading
+    import time
+    p = s.load_problem(str(CLOCK))
+    token = s.CancelToken()
+    threading.Timer(0.2, token.cancel).start()
+    started = time.monotonic()
+    with pytest.raises(s.Cancelled):
+        s.replay_problem(p, s.ReplayOptions(speed=1.0, budget=s.Budget(cancel=token)))
+    assert time.monotonic() - started < 1.0

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sillage/budget.h"
 #include "sillage/problem/online_problem.h"
 #include "sillage/problem/solve_problem.h"
 
@@ -25,6 +26,10 @@ struct ReplayOptions {
   std::function<void(const OnlineProblem&)> on_update;
   // Solve the file in batch too, for the comparison (false: online only).
   bool batch = true;
+  // The batch solve's budget (SolveOptions::budget); its cancel token is
+  // also checked before each row and during the waits of a given speed:
+  // cancelled, Cancelled out of replay_problem (Python: Ctrl-C).
+  Budget budget;
 };
 
 // What a replay measured and kept.
@@ -72,7 +77,8 @@ struct ReplayResult {
 // its OnlineProblem, keeps the estimate after every update, checks the
 // truth as time passes and solves the file in batch for the comparison. A
 // refused row is kept in `refused` and the replay goes on; an inconsistency
-// stops it (summary NoSolution).
+// stops it (summary NoSolution); a cancellation of o.budget.cancel raises
+// Cancelled (Python: the GIL released, Ctrl-C stops it between two rows).
 ReplayResult replay_problem(const Problem& p, const ReplayOptions& o = {});
 
 // The figure of a replay: per output, the side of the online box over time

@@ -6,6 +6,7 @@
 
 #include "bindings.h"
 #include "docstrings.h"
+#include "interruptible.h"
 #include "sillage/problem/online_problem.h"
 #include "sillage/problem/replay_problem.h"
 #include "sillage/error.h"
@@ -13,7 +14,7 @@
 
 namespace sillage::python {
 
-SILLAGE_BINDING(online_problem, "problem", "online") {
+SILLAGE_BINDING(online_problem, "budget", "problem", "online") {
   py::class_<StreamRow>(m, "StreamRow", DOC(StreamRow))
       .def(py::init([](std::string table, std::optional<double> t, std::map<std::string, double> columns) {
              return StreamRow{std::move(table), t, std::move(columns)};
@@ -40,12 +41,13 @@ SILLAGE_BINDING(online_problem, "problem", "online") {
 
   py::class_<ReplayOptions>(m, "ReplayOptions", DOC(ReplayOptions))
       .def(py::init([](double speed, std::optional<OnlineOptions> online,
-                       std::function<void(const OnlineProblem&)> on_update, bool batch) {
-             return ReplayOptions{speed, online, std::move(on_update), batch};
+                       std::function<void(const OnlineProblem&)> on_update, bool batch, const Budget& budget) {
+             return ReplayOptions{speed, online, std::move(on_update), batch, budget};
            }),
            py::arg("speed") = 0.0, py::arg("online") = py::none(), py::arg("on_update") = py::none(),
-           py::arg("batch") = true, "speed (N x real time, 0: as fast as possible), online, on_update, batch.")
-      .SILLAGE_FIELDS(ReplayOptions, speed, online, batch)
+           py::arg("batch") = true, py::arg("budget") = Budget{},
+           "speed (N x real time, 0: as fast as possible), online, on_update, batch, budget.")
+      .SILLAGE_FIELDS(ReplayOptions, speed, online, batch, budget)
       .def_readwrite("on_update", &ReplayOptions::on_update, "Called after each update of the estimate with the OnlineProblem.")
       .def("__repr__", [](const ReplayOptions& o) {
         return "ReplayOptions(speed=" + number_text(o.speed) + ", batch=" + (o.batch ? "True" : "False") + ")";
@@ -62,8 +64,17 @@ SILLAGE_BINDING(online_problem, "problem", "online") {
                status_name(r.summary.status) + ", truth " + std::to_string(r.truth_inside) + "/" +
                std::to_string(r.truth_samples) + ")";
       });
-  m.def("replay_problem", &replay_problem, py::arg("problem"), py::arg("options") = ReplayOptions(),
-        DOC(replay_problem));
+  // On a worker thread, the GIL released: Ctrl-C (or options.budget.cancel) stops it between two rows.
+  m.def(
+      "replay_problem",
+      [](const Problem& p, const ReplayOptions& o) {
+        return run_interruptible(o.budget.cancel, [&](const CancelToken& token) {
+          ReplayOptions with = o;
+          with.budget.cancel = token;
+          return replay_problem(p, with);
+        });
+      },
+      py::arg("problem"), py::arg("options") = ReplayOptions(), DOC(replay_problem));
   m.def("replay_svg", &replay_svg, py::arg("problem"), py::arg("result"), DOC(replay_svg));
   m.def("replay_html", &replay_html, py::arg("problem"), py::arg("result"), DOC(replay_html));
   m.def("replay_json", &replay_json, py::arg("problem"), py::arg("result"), DOC(replay_json));

@@ -76,11 +76,22 @@ ReplayResult replay_problem(const Problem& p, const ReplayOptions& o) {
   });
   const std::vector<StreamRow> rows = op.recorded_rows();
   const auto start = std::chrono::steady_clock::now();
+  const auto check_cancel = [&] {
+    if (o.budget.cancel.cancelled()) {
+      throw Cancelled("replay_problem: at row " + std::to_string(r.rows + 1) + " of " + std::to_string(rows.size()) +
+                      " (t = " + number_text(op.estimator().now()) + ")");
+    }
+  };
   for (const StreamRow& row : rows) {
+    check_cancel();
     if (o.speed > 0 && row.t) {  // wait for the row's time, N times faster than it was recorded
       const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                    std::chrono::duration<double>((*row.t - p.time.t0) / o.speed));
-      std::this_thread::sleep_until(due);
+      // In steps of at most 50 ms, so that a cancellation is seen while waiting.
+      while (Clock::now() < due) {
+        std::this_thread::sleep_until(std::min(due, Clock::now() + std::chrono::milliseconds(50)));
+        check_cancel();
+      }
     }
     const auto fed = Clock::now();
     aside = {};
@@ -96,7 +107,9 @@ ReplayResult replay_problem(const Problem& p, const ReplayOptions& o) {
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.summary = op.estimator().last_update().summary;
   if (o.batch) {
-    r.batch_solve = solve_problem(p);
+    SolveOptions so;
+    so.budget = o.budget;
+    r.batch_solve = solve_problem(p, so);
     const BuiltProblem& b = r.batch_solve->built;
     for (const double t : r.t) {
       std::vector<IntervalVector> boxes;

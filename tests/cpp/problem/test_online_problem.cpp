@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <unistd.h>
 
 #include "problem_text.h"
@@ -273,4 +275,23 @@ TEST(StreamLines, StreamLineReadsBackAsTheSameRow) {
   EXPECT_EQ(back.t, row.t);
   EXPECT_EQ(back.columns, row.columns);  // bit for bit
   EXPECT_EQ(stream_line(StreamRow{"", 2.0, {}}), R"({"t":2.0})");
+}
+
+// A replay is cancelled by its budget's token: before a row, or while it waits
+// for a row's time at a given speed (then at once, not at the end of the log).
+TEST(OnlineProblem, ReplayIsCancelledByItsToken) {
+  const Problem p = example("drifting_clock.toml");
+  ReplayOptions o;
+  o.budget.cancel.cancel();
+  EXPECT_THROW(replay_problem(p, o), Cancelled);
+  ReplayOptions slow;
+  slow.speed = 1.0;  // 13 s of log
+  std::thread stopper([token = slow.budget.cancel] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    token.cancel();
+  });
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THROW(replay_problem(p, slow), Cancelled);
+  stopper.join();
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
