@@ -131,7 +131,7 @@ std::vector<ProvenValue> proven_values(const Problem& p, const Problem& q, const
       const std::size_t i = it.index;
       const Interval proven = d.tubes ? (*d.tubes)[i].codomain() : d.interval ? *d.interval : (*d.box)[i];
       out.push_back({component(v, i) + (d.tubes ? " over [t0, tf]" : ""), constant_value(v.value[i].expr, domain), proven,
-                     Interval()});
+                     Interval(), {}});
       continue;
     }
     // A gate: the tube over the time as written (between two doubles), through its derivative
@@ -142,7 +142,7 @@ std::vector<ProvenValue> proven_values(const Problem& p, const Problem& q, const
     for (std::size_t i = 0; i < v.dim; ++i) {
       const Tube& x = (*d.tubes)[i];
       const Interval proven = dv ? x.eval(at, (*b.var(dv->v).tubes)[i]) : x(at);
-      out.push_back({component(v, i) + "(" + cell_text(g.t) + ")", constant_value(g.value[i].expr, at), proven, Interval()});
+      out.push_back({component(v, i) + "(" + cell_text(g.t) + ")", constant_value(g.value[i].expr, at), proven, Interval(), {}});
     }
   }
   return out;

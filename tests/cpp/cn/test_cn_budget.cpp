@@ -127,7 +127,9 @@ TEST(CnOutcome, TheHookIsCalledOncePerRound) {
   for (std::size_t i = 0; i < seen.size(); ++i) {
     EXPECT_EQ(seen[i].round, i + 1);
     EXPECT_STREQ(seen[i].where, "ContractorNetwork::contract");
-    if (i > 0) EXPECT_GE(seen[i].work, seen[i - 1].work);
+    if (i > 0) {
+      EXPECT_GE(seen[i].work, seen[i - 1].work);
+    }
   }
   EXPECT_EQ(seen.back().work, s.contractor_calls);
 }
