@@ -279,6 +279,10 @@ ContractStats ContractorNetworkImpl::propagate(bool all) {
     checked_[d] = !stats.empty;
   }
   if (!quick) note_time_layouts();
+  // The touched domains are read below (their atoms wake the nodes): their layouts first.
+  for (const Touch& touch : touched_) {
+    for (const auto& part : touch.ref.parts()) check_layout(index_.at(part.domain->key()));
+  }
   if (!all && !stats.empty) check_touched(stats);
   if (stats.empty) return finish();
 

@@ -321,3 +321,17 @@ TEST(CnOnline, ForgettingAsManyAsAppendedIsALayoutChange) {
   cn.relayout();
   EXPECT_FALSE(cn.update().empty);
 }
+
+// A tube moved to another TDomain and touched between two relayouts: its
+// atoms are not those the nodes watch, an error before any of them is woken.
+TEST(CnOnline, UpdateFindsATouchedTubeOnAnotherTDomain) {
+  auto td = TDomain::create(0.0, 4.0, 1.0);
+  auto x = std::make_shared<Tube>(td, Interval(0, 10));
+  auto v = std::make_shared<Tube>(td, Interval(1, 2));
+  ContractorNetwork cn;
+  cn.add(std::make_shared<CtcDeriv>(), {x, v});
+  cn.contract();
+  *v = Tube(TDomain::create(0.0, 4.0, 0.1), Interval(1, 2));  // 40 slices, not 4
+  cn.touched(v, Interval(3.5, 4.0));
+  EXPECT_THROW(cn.update(), DimensionError);
+}
