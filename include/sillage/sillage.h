@@ -10,6 +10,7 @@
 #include "sillage/run_result.h"
 #include "sillage/threads.h"
 
+#include "sillage/interval/angle.h"
 #include "sillage/interval/backward.h"
 #include "sillage/interval/elementary.h"
 #include "sillage/interval/interval.h"
@@ -22,6 +23,7 @@
 
 #include "sillage/ctc/ctc.h"
 #include "sillage/ctc/ctc_algebra.h"
+#include "sillage/ctc/ctc_angle_equation.h"
 #include "sillage/ctc/ctc_binary.h"
 #include "sillage/ctc/ctc_box.h"
 #include "sillage/ctc/ctc_function.h"
@@ -74,7 +76,9 @@
 
 #include "sillage/dynamics/ctc_biased_increment.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_deriv_angle.h"
 #include "sillage/dynamics/ctc_eval.h"
+#include "sillage/dynamics/ctc_eval_angle.h"
 #include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_heading.h"
 #include "sillage/dynamics/ctc_heading_window.h"

@@ -62,6 +62,9 @@ struct GateSpec {
 struct SliceDataSpec {
   std::string data;
   BoundSpec value;
+  // held = true (slices only): the table is the [time] points' own, each row
+  // held until the next (a command): N + 1 rows, slice k from row k.
+  bool held = false;
 };
 
 struct VarSpec {
@@ -72,6 +75,11 @@ struct VarSpec {
   std::vector<GateSpec> at;      // tubes only
   std::optional<SliceDataSpec> slices;  // scalar tubes only, with time points from data
   std::optional<SliceDataSpec> gates;   // scalar tubes only, with time points from data
+  // angle = true: a scalar tube whose values are known modulo 2π (a heading):
+  // its deriv is CtcDerivAngle, its evals CtcEvalAngle, and an expression
+  // reads it under sin/cos/tan or as a term of its top-level sum (the
+  // equation is then modulo 2π). Its truth is checked modulo 2π.
+  bool angle = false;
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
@@ -122,7 +130,8 @@ struct ConstraintSpec {
   std::vector<std::string> time_columns;
   std::string time_error = "0";
   std::map<std::string, std::string> errors;
-  std::map<std::string, double> where;  // rows kept: column == value (all of them)
+  // rows kept: lo <= column <= hi for every entry (column = value: lo = hi)
+  std::map<std::string, std::pair<double, double>> where;
   // join = {data, on}: each row also has the columns of the row of table
   // join_data with the same value in column join_on (ranges -> beacons).
   std::string join_data, join_on;

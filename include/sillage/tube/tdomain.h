@@ -49,6 +49,9 @@ struct TubeData {
   TubeArray gates;   // [x](t_k), size N+1
   std::uint64_t version = 0;
   TreeCache tree_cache;
+  // Values known modulo 2π (interval/angle.h): a gate and its slices may be
+  // different turns, so nothing intersects them as real intervals.
+  bool angle = false;
 
   void touch() { ++version; }
   // Splits slice k in two: both halves and the new gate copy the codomain.

@@ -71,6 +71,12 @@ class Tube {
   const Interval& gate(std::size_t k) const;   // [x](t_k), OutOfRangeError if k > N
   std::span<const Interval> slices() const { return data_->slices; }
   std::span<const Interval> gates() const { return data_->gates; }
+  // An angle tube holds values known modulo 2π (interval/angle.h): its gates
+  // are not intersected with its slices as real intervals (a pointwise
+  // contractor in a network), and CtcDerivAngle, CtcEvalAngle contract it. A
+  // copy keeps the mark.
+  void set_angle(bool on) { data_->angle = on; }
+  bool is_angle() const { return data_->angle; }  // whether it is an angle tube (set_angle)
   // Increases at every modification of this tube (including TDomain::sample).
   std::uint64_t version() const { return data_->version; }
   // The synthesis tree of the current slices and gates (thesis Fig. 3.9),

@@ -230,7 +230,8 @@ void init_tube_class(py::module_& m) {
            DOC(Tube, Tube, TDomain_vector_Interval))
       .def(py::init<TD, const std::vector<Interval>&, const std::vector<Interval>&>(), py::arg("tdomain"),
            py::arg("slices"), py::arg("gates"), DOC(Tube, Tube, TDomain_vector_Interval_vector_Interval))
-      .SILLAGE_DEFS(Tube, tdomain, nb_slices)
+      .SILLAGE_DEFS(Tube, tdomain, nb_slices, is_angle)
+      .SILLAGE_DEF(Tube, set_angle, py::arg("on"))
       // Signed indices: -1 is an OutOfRangeError, not an argument mismatch.
       .def("slice", [](const T& x, py::ssize_t k) { return x.slice(index_arg(k, "Tube.slice", "slice")); },
            py::arg("k"), "[x](k), the codomain of slice k (0 <= k < N).")

@@ -11,6 +11,9 @@
 
 #include "sillage/ctc/ctc_function.h"
 #include "sillage/dynamics/ctc_deriv.h"
+#include "sillage/dynamics/ctc_deriv_angle.h"
+#include "sillage/dynamics/ctc_eval_angle.h"
+#include "sillage/problem/angle_terms.h"
 #include "sillage/dynamics/ctc_eval.h"
 #include "sillage/dynamics/ctc_eval_list.h"
 #include "sillage/dynamics/ctc_qeval.h"
@@ -31,6 +34,7 @@ namespace sillage {
 using detail::RewrittenExpr;
 using detail::VarRef;
 using detail::rewrite_refs;
+using detail::equation_ctc;
 using detail::eval_row_kept;
 using detail::eval_row_time;
 using detail::RowObservation;
@@ -316,6 +320,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
     if (v.is_tube()) {
       std::vector<Tube> comps;
       for (const BoundSpec& bs : v.value) comps.push_back(tube_of(b.td, bs));
+      if (v.angle) comps[0].set_angle(true);
       if (v.slices) set_slices(comps[0], p, *v.slices);
       if (v.gates) table_gate_fixes(time_fixes[b.vars.size()], p, *v.gates, b.td->t0_tf());
       d.tubes = std::make_shared<TubeVector>(std::move(comps));
@@ -351,6 +356,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
     const VarSpec* v = p.var(n);
     return v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
   };
+  const std::set<std::string> angles = detail::angle_names(p);
   b.first_node.assign(p.constraints.size(), 0);
   b.order = constraint_order(p);
   for (const std::size_t ci : b.order) {
@@ -359,9 +365,11 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
     switch (c.kind) {
       case ConstraintKind::Expr: {
         const RewrittenExpr r = rewrite_refs(c.expr, c.expr_pos, dims, vec, "");
+        std::vector<std::size_t> order;
+        const auto ctc = equation_ctc(r, angles, c.expr_pos, c.label, order);
         std::vector<DomainRef> args;
-        for (const VarRef& ref : r.refs) args.push_back(b.var(ref.var).component(ref.component));
-        cn.add(std::make_shared<CtcFunction>(Function(r.ids(), r.text)), args);
+        for (const std::size_t i : order) args.push_back(b.var(r.refs[i].var).component(r.refs[i].component));
+        cn.add(ctc, args);
         break;
       }
       case ConstraintKind::Deriv:
@@ -369,7 +377,8 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       case ConstraintKind::Increment: {
         const VarDomain &x = b.var(c.x), &v = b.var(c.v);
         std::shared_ptr<const NetworkCtc> ctc;
-        if (c.kind == ConstraintKind::Deriv) ctc = std::make_shared<CtcDeriv>();
+        if (c.kind == ConstraintKind::Deriv && angles.count(c.x)) ctc = std::make_shared<CtcDerivAngle>();
+        else if (c.kind == ConstraintKind::Deriv) ctc = std::make_shared<CtcDeriv>();
         else if (c.kind == ConstraintKind::SecondDeriv) ctc = std::make_shared<CtcSecondDeriv>();
         else ctc = std::make_shared<CtcIncrement>();
         cn.add(ctc, {x.whole(), v.whole()});
@@ -413,11 +422,17 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
         // y' = v is stated with the eval: enforced over the whole tube when no
         // deriv constraint does it, so that the rows' fronts are left to it (each
         // CtcEval sweeping its own over the tube was quadratic in the rows).
-        for (const std::size_t j : detail::implied_derivs(p, c))
-          cn.add(std::make_shared<CtcDeriv>(), {ys[j]->whole(), b.var(c.vs[j]).whole()});
+        for (const std::size_t j : detail::implied_derivs(p, c)) {
+          const DomainRef v = b.var(c.vs[j]).whole();
+          if (angles.count(c.ys[j])) cn.add(std::make_shared<CtcDerivAngle>(), {ys[j]->whole(), v});
+          else cn.add(std::make_shared<CtcDeriv>(), {ys[j]->whole(), v});
+        }
         const RewrittenExpr r = detail::eval_observation(p, c);
         const Function f(r.ids(), r.text);
         const auto eval = std::make_shared<CtcEval>();
+        const auto eval_angle = std::make_shared<CtcEvalAngle>();
+        std::vector<std::size_t> obs_order;  // the refs in the order of the observation's box
+        const auto row_obs = equation_ctc(r, angles, c.expr_pos, c.label, obs_order);
         const auto obs = std::make_shared<CtcFunction>(f);
         const Interval terr = constant_text(c.time_error, c.pos);
         std::map<std::string, Interval> errs;
@@ -485,14 +500,16 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
             else zn[j] = std::make_shared<IntervalVector>(y.spec->dim);
             std::vector<DomainRef> eval_args{t, z1[j] ? DomainRef(z1[j]) : DomainRef(zn[j]), y.whole()};
             if (!c.vs[j].empty()) eval_args.push_back(b.var(c.vs[j]).whole());
-            cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
+            if (angles.count(c.ys[j])) cn.add(std::static_pointer_cast<const NetworkCtc>(eval_angle), eval_args);
+            else cn.add(std::static_pointer_cast<const NetworkCtc>(eval), eval_args);
             cn.set_ctc_name(cn.nb_ctc() - 1, row_name);  // it may empty y itself: the row is named then too
             cn.set_name(eval_args[1], y.spec->name + "(t)" + of_row);
           }
           cn.set_name(t, "t" + of_row);
           if (direct) continue;
           std::vector<DomainRef> args;
-          for (const VarRef& ref : r.refs) {
+          for (const std::size_t i : obs_order) {
+            const VarRef& ref = r.refs[i];
             const std::size_t j = y_index(ref.var);
             if (j < ys.size()) {
               args.push_back(z1[j] ? DomainRef(z1[j]) : DomainRef::component(zn[j], ref.component));
@@ -504,7 +521,7 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
               args.push_back(b.var(ref.var).component(ref.component));
             }
           }
-          cn.add(std::static_pointer_cast<const Ctc>(obs), args);
+          cn.add(row_obs, args);
           cn.set_ctc_name(cn.nb_ctc() - 1, row_name);
         }
         if (!fixes.empty() && c.q) {  // outliers: a CtcQEval per group of rows

@@ -48,8 +48,10 @@ void check_join_keys(const ConstraintSpec& c, const CsvTable& table, const CsvTa
 }
 
 bool eval_row_kept(const ConstraintSpec& c, const CsvTable& table, std::span<const double> values) {
-  for (const auto& [col, value] : c.where)
-    if (values[table.column(col)] != value) return false;
+  for (const auto& [col, range] : c.where) {
+    const double v = values[table.column(col)];
+    if (!(v >= range.first && v <= range.second)) return false;
+  }
   return true;
 }
 
@@ -146,7 +148,7 @@ std::vector<std::size_t> implied_derivs(const Problem& p, const ConstraintSpec& 
 }
 
 bool eval_rows_listed(const Problem& p, const ConstraintSpec& c, const RewrittenExpr& r) {
-  return c.ys.size() == 1 && !c.vs[0].empty() && std::all_of(r.refs.begin(), r.refs.end(), [&](const VarRef& ref) {
+  return c.ys.size() == 1 && !c.vs[0].empty() && !p.var(c.ys[0])->angle && std::all_of(r.refs.begin(), r.refs.end(), [&](const VarRef& ref) {
            return evaluated(c, ref.var) || eval_has_column(p, c, ref.var);
          });
 }

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <set>
 #include <span>
 
 #include "sillage/expr/function.h"
@@ -97,7 +98,17 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   if (const toml::node* wn = f.find("where")) {
     for (auto&& [key, node] : f.table(*wn, "a table {column = value}")) {
       require_column(doc_.pos(key.source()), std::string(key.str()), c.data, d->table);
-      c.where[std::string(key.str())] = f.number(node, "a value of the column (number)");
+      const std::string expected = "a value of the column (number) or a range [lo, hi]";
+      if (node.is_array()) {
+        const toml::array& a = *node.as_array();
+        if (a.size() != 2) throw ProblemError(doc_.pos(node), describe(node), expected);
+        const double lo = f.number(*a.get(0), expected), hi = f.number(*a.get(1), expected);
+        if (!(lo <= hi)) throw ProblemError(doc_.pos(node), describe(node), "a range [lo, hi] with lo <= hi");
+        c.where[std::string(key.str())] = {lo, hi};
+      } else {
+        const double v = f.number(node, expected);
+        c.where[std::string(key.str())] = {v, v};
+      }
     }
   }
   if (const toml::node* g = f.find("gates")) {
@@ -105,6 +116,7 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
     c.gates = g->as_boolean()->get();
   }
   const DataSpec* joined = nullptr;
+  std::set<std::string> in_both;  // columns of both tables, besides the join's
   if (const toml::node* jn = f.find("join")) {
     const Fields jf(doc_, f.table(*jn, "a table {data = \"NAME\", on = \"column\"}"), where + " join", {"data", "on"});
     joined = &data_table(jf, jf.require("data", "a [data.NAME] table"));
@@ -115,9 +127,8 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
       throw ProblemError(doc_.pos(on), "the column '" + c.join_on + "'", "a column of both '" + c.data + "' and '" + joined->name + "'");
     require_column(doc_.pos(on), c.join_on, c.data, d->table);
     require_column(doc_.pos(on), c.join_on, joined->name, joined->table);
-    for (const auto& col : joined->table.columns())
-      if (col != c.join_on && d->table.has_column(col))
-        throw ProblemError(doc_.pos(*jn), "the column '" + col + "' in both tables", "distinct column names besides '" + c.join_on + "'");
+    for (const auto& col : joined->table.columns())  // an error if the observation reads one (below)
+      if (col != c.join_on && d->table.has_column(col)) in_both.insert(col);
     check_join_keys(c, d->table, joined->table, doc_.pos(*jn));  // here, so that sillage check says it
   }
   const auto has_column = [&](const std::string& n) { return d->table.has_column(n) || (joined && joined->table.has_column(n)); };
@@ -129,6 +140,9 @@ void ProblemLoader::read_eval(const Fields& f, ConstraintSpec& c, const std::str
   };
   auto dims = [&](const std::string& n) -> std::optional<std::size_t> {
     if (const VarSpec* y = y_of(n)) return y->dim;
+    if (in_both.count(n))
+      throw ProblemError(c.expr_pos, "the column '" + n + "' of both '" + c.data + "' and '" + joined->name + "'",
+                         "a column of one table only in the observation (besides '" + c.join_on + "')");
     if (has_column(n)) {  // a column the observation reads: numbers only
       const DataSpec& t = d->table.has_column(n) ? *d : *joined;
       require_column(c.expr_pos, n, t.name, t.table);

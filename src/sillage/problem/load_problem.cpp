@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "sillage/problem/angle_terms.h"
 #include "sillage/problem/problem_loader.h"
 #include "sillage/read_file.h"
 
@@ -79,6 +80,7 @@ Problem ProblemLoader::run() {
   for (auto&& [key, node] : top.table(vars, "tables [var.NAME]")) read_var(std::string(key.str()), key, node);
   const toml::node& cs = top.require("constraint", "one or more [[constraint]] tables");
   for (const toml::node& c : top.array(cs, "[[constraint]] tables")) read_constraint(top, c);
+  check_angle_uses(p_);
   if (const toml::node* o = top.find("output")) read_output(top.table(*o, "a table [output]"));
   if (const toml::node* n = top.find("network")) read_network(top.table(*n, "a table [network]"));
   if (const toml::node* n = top.find("online")) read_online(top.table(*n, "a table [online]"));

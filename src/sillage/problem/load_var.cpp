@@ -59,7 +59,7 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
     throw ProblemError(kp, "the variable name '" + name + "'",
                        "a name other than t and dt (the time and the slice width in bounds and table values)");
   const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
-                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates"});
+                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates", "angle"});
   VarSpec v;
   v.name = name;
   v.pos = kp;
@@ -98,6 +98,12 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
       v.at.push_back(std::move(gs));
     }
   }
+  if (const toml::node* an = f.find("angle")) {
+    if (!an->is_boolean()) throw ProblemError(doc_.pos(*an), describe(*an), "true (values known modulo 2 pi) or false");
+    v.angle = an->as_boolean()->get();
+    if (v.angle && v.kind != VarKind::Tube)
+      throw ProblemError(doc_.pos(*an), "angle = true for the " + ks + " '" + name + "'", "angle = true on a scalar tube");
+  }
   if (const toml::node* sn = f.find("slices")) v.slices = read_from_table(f, *sn, v, false);
   if (const toml::node* gn = f.find("gates")) v.gates = read_from_table(f, *gn, v, true);
   if (p_.table(name)) throw ProblemError(kp, "the variable '" + name + "' named as a data table", "distinct names");
@@ -115,16 +121,29 @@ SliceDataSpec ProblemLoader::read_from_table(const Fields& f, const toml::node& 
   if (p_.time.points.empty())
     throw ProblemError(doc_.pos(sn), "'" + key + "' without time points from data", "[time] points = {data, column}");
   const Fields sf(doc_, f.table(sn, "a table {data = \"NAME\", value = \"expression\"}"), "the " + key + " of " + v.name,
-                  {"data", "value"});
+                  {"data", "value", "held"});
   SliceDataSpec s;
   const std::size_t rows = gates ? p_.time.points.size() : p_.time.points.size() - 1;
   const std::string per = gates ? "one row per time point" : "one row per slice";
   const toml::node& dn = sf.require("data", "a [data.NAME] table, " + per);
   const DataSpec& d = data_table(sf, dn);
   s.data = d.name;
-  if (d.table.nb_rows() != rows)
+  // held = true: the time points' own table, each row held until the next (a
+  // command): slice k from row k, the last row only ends the domain.
+  if (const toml::node* hn = sf.find("held")) {
+    if (!hn->is_boolean()) throw ProblemError(doc_.pos(*hn), describe(*hn), "true or false");
+    s.held = hn->as_boolean()->get();
+    if (s.held && (gates || d.name != p_.time.points_data))
+      throw ProblemError(doc_.pos(*hn), "held = true on " + (gates ? std::string("gates") : "the table '" + d.name + "'"),
+                         "held = true on slices from the [time] points' own table ('" + p_.time.points_data + "')");
+  }
+  if (d.table.nb_rows() != rows + (s.held ? 1 : 0))
     throw ProblemError(doc_.pos(dn), "the table '" + d.name + "' of " + std::to_string(d.table.nb_rows()) + " rows",
-                       per + ": " + std::to_string(rows) + " rows");
+                       per + ": " + std::to_string(rows) + " rows" +
+                           (!gates && d.name == p_.time.points_data
+                                ? " (held = true if each row of the time points' own table holds until the next, "
+                                  "a command)"
+                                : ""));
   const std::string of = gates ? "an expression of the row's columns" : "an expression of the row's columns and dt";
   const toml::node& vn = sf.require("value", of);
   s.value = {sf.bound_text(vn), detail::shifted(doc_.pos(vn), vn.is_string() ? 1 : 0)};

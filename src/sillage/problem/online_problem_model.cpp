@@ -81,6 +81,8 @@ void detail::OnlineProblemImpl::declare_vars() {
         throw not_online(v.pos, v.name + " slices from " + v.slices->data,
                          "the periods come from one table, here " + clock);
       clock = v.slices->data;
+      if (v.slices->held)  // online, a period's row arrives with its end
+        throw not_online(v.pos, v.name + " slices with held = true", "slices from a table of one row per period");
       inputs.push_back(&v);
       est->add_input(v.name, v.dim);
     } else if (const auto bound = bound_of(v)) {
@@ -128,6 +130,8 @@ void detail::OnlineProblemImpl::declare_constraints() {
     const VarSpec* v = p.var(n);
     return v && (v->kind == VarKind::TubeVector || v->kind == VarKind::Box);
   };
+  for (const VarSpec& v : p.vars)  // its deriv and evals online read values as real numbers
+    if (v.angle) throw not_online(v.pos, "the angle '" + v.name + "' (angle = true)", "angle tubes are not online yet");
   std::set<std::string> with_deriv;
   for (const std::size_t ci : constraint_order(p)) {
     const ConstraintSpec& c = p.constraints[ci];

@@ -1,5 +1,7 @@
 #include "sillage/problem/replay_problem.h"
 
+#include "sillage/interval/angle.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -39,8 +41,9 @@ struct TruthWalk {
         for (std::size_t i = 0; i < cols.size(); ++i) {
           const double value = row[table->column(cols[i])];
           const Interval x = (*tube)[i](time);
-          bounded = bounded && x.is_bounded();
-          if (x.contains(value)) continue;
+          const bool angle = p.var(var)->angle;  // on its arc modulo 2π; the whole circle proves nothing
+          bounded = bounded && (angle ? !angle_is_circle(x) : x.is_bounded());
+          if (angle ? angle_contains(x, value) : x.contains(value)) continue;
           inside = false;
           if (r.truth_misses.size() < 10)
             r.truth_misses.push_back(var + "[" + std::to_string(i) + "] = " + number_text(value) + " at t = " +

@@ -1,5 +1,7 @@
 #include "sillage/problem/report_html.h"
 
+#include "sillage/interval/angle.h"
+
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -200,7 +202,8 @@ TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
       for (std::size_t i = 0; i < cols.size(); ++i) {
         const double value = t.row(r)[t.column(cols[i])];
         const Interval x = (*v.tubes)[i](time);
-        if (x.contains(value) && x.is_bounded()) continue;
+        // An angle's truth is on its arc modulo 2π; the whole circle proves nothing.
+        if (v.spec->angle ? angle_contains(x, value) && !angle_is_circle(x) : x.contains(value) && x.is_bounded()) continue;
         inside = false;  // an unbounded domain holds anything: it proves nothing, so it is no pass
         if (c.first_misses.size() < 10)
           c.first_misses.push_back(comp_name(v, i) + " = " + fmt(value) + " at t = " + fmt(time) +

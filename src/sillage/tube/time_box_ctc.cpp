@@ -77,6 +77,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
   // Each tube's slices and gates (null for a constant), written in place: the
   // storage does not move during the contraction.
   std::vector<Interval*> slices(n, nullptr), gates(n, nullptr);
+  std::vector<char> angle(n, 0);  // an angle tube: its gates are not cut by its slices (modulo 2π)
   std::vector<std::optional<Tube::Writer>> writers(n);
   bool constants = false;
   std::size_t nb_slices = 0;
@@ -89,6 +90,7 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
     slices[v] = w.slices().data();
     gates[v] = w.gates().data();
     nb_slices = w.slices().size();
+    angle[v] = vars[v].tube->is_angle();
   }
   const std::size_t chunk = ChunkBoxes::chunk(constants);
   ChunkBoxes boxes(ctc, chunk);  // the tubes keep the values before contraction
@@ -138,6 +140,10 @@ std::size_t contract_time_elements(const Ctc& ctc, const std::vector<TimeVar>& v
         Interval* const elems = parity == 1 ? slices[v] : gates[v];
         if (parity == 1 && run) {
           std::copy_n(elems + k0, c, col);
+          continue;
+        }
+        if (angle[v]) {
+          for (std::size_t j = 0; j < c; ++j) col[j] = elems[ids[j] / 2];
           continue;
         }
         if (run && !changed) {  // gates k0 .. k0 + c - 1, nobody to tell: no branch per gate

@@ -63,6 +63,7 @@ std::shared_ptr<TubeData> copy_data(const TubeData& x) {
   d->slices = copied(x.slices);
   d->gates = copied(x.gates);
   d->version = x.version;
+  d->angle = x.angle;
   return d;
 }
 
@@ -151,6 +152,7 @@ Tube& Tube::operator=(const Tube& x) {
   if (data_ && td_ == x.td_) {  // same domain: keep our (attached) storage
     data_->slices = x.data_->slices;
     data_->gates = x.data_->gates;
+    data_->angle = x.data_->angle;
     data_->touch();
     return *this;
   }

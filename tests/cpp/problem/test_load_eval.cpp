@@ -36,7 +36,7 @@ TEST(LoadEval, ReadsTheNewKeys) {
   EXPECT_EQ(c.ys, std::vector<std::string>{"x"});
   EXPECT_EQ(c.vs, std::vector<std::string>{"v"});
   EXPECT_EQ(c.time_columns, (std::vector<std::string>{"t", "t"}));
-  EXPECT_EQ(c.where.at("b"), 2.0);
+  EXPECT_EQ(c.where.at("b"), std::make_pair(2.0, 2.0));
   EXPECT_TRUE(c.gates);
   ASSERT_TRUE(p.network.ratio);
   EXPECT_EQ(*p.network.ratio, 0.0);
