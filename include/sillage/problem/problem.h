@@ -72,6 +72,7 @@ struct VarSpec {
   std::vector<GateSpec> at;      // tubes only
   std::optional<SliceDataSpec> slices;  // scalar tubes only, with time points from data
   std::optional<SliceDataSpec> gates;   // scalar tubes only, with time points from data
+  std::string unit;  // as the file states it (unit = "m"), for the reports; "" if it does not
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };

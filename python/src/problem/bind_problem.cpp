@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "docstrings.h"
 #include "interruptible.h"
+#include "sillage/problem/bound_audit.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
@@ -13,6 +14,7 @@
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/write_results.h"
 #include "sillage/problem/solve_problem.h"
+#include "sillage/problem/var_sizes.h"
 
 namespace sillage::python {
 
@@ -138,6 +140,35 @@ SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
       .def("__repr__", [](const TruthCheck& c) {
         return "TruthCheck(" + std::to_string(c.inside) + " of " + std::to_string(c.samples) + " inside)";
       });
+  py::class_<SizeStats>(m, "SizeStats", DOC(SizeStats))
+      .SILLAGE_READONLY_FIELDS(SizeStats, mean, median, max, samples)
+      .def("__repr__", [](const SizeStats& s) {
+        return "SizeStats(mean=" + number_text(s.mean) + ", median=" + number_text(s.median) + ", max=" +
+               number_text(s.max) + ", samples=" + std::to_string(s.samples) + ")";
+      });
+  py::class_<VarSize>(m, "VarSize", DOC(VarSize))
+      .SILLAGE_READONLY_FIELDS(VarSize, name, unit, dim, over_time, at_truth)
+      .SILLAGE_DEFS(VarSize, str)
+      .def("__repr__", [](const VarSize& v) { return "VarSize(" + v.str() + ")"; });
+  m.def(
+      "var_sizes", [](const Problem& p, const SolveResult& r) { return var_sizes(p, r.built); },
+      py::arg("problem"), py::arg("result"), DOC(var_sizes));
+  py::class_<AuditLine>(m, "AuditLine", DOC(AuditLine))
+      .def(py::init([](std::string name, std::string unit, double allowed, double used, std::string how) {
+             return AuditLine{std::move(name), std::move(unit), allowed, used, std::move(how)};
+           }),
+           py::arg("name"), py::arg("unit"), py::arg("allowed"), py::arg("used"), py::arg("how"),
+           "A line of the bound audit: the bound, its unit, the stated bound (> 0), the largest value the truth "
+           "needs (nan: not measurable) and how it was measured.")
+      .SILLAGE_FIELDS(AuditLine, name, unit, allowed, used, how)
+      .def("percent", &audit_percent, DOC(audit_percent))
+      .def("text", &audit_text, DOC(audit_text))
+      .def("__repr__", [](const AuditLine& l) { return "AuditLine(" + audit_text(l) + ")"; });
+  m.SILLAGE_FN(audit_percent, py::arg("line"));
+  m.SILLAGE_FN(audit_text, py::arg("line"));
+  m.SILLAGE_FN(audit_problem, py::arg("problem"));
+  m.SILLAGE_FN(size_stats, py::arg("values"), py::arg("weights"));
+  m.SILLAGE_FN(sizes_table, py::arg("sizes"));
   m.SILLAGE_FN(check_delta, py::arg("problem"), py::arg("delta"), py::arg("name") = "delta");
   m.def(
       "check_truth", [](const Problem& p, const SolveResult& r) { return check_truth(p, r.built); },
