@@ -77,7 +77,7 @@ struct VarSpec {
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ, Python };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -140,6 +140,12 @@ struct ConstraintSpec {
   std::optional<std::size_t> q;
   double q_window = 0;
   std::size_t q_rows = 0;
+  // Python: the user's sillage.TubeCtc subclass `cls` of the module `module`
+  // (imported with the problem file's folder first on the path), built as
+  // cls(**params), on the tube variables `args` in order (python_constraint.h).
+  std::string module, cls;
+  std::vector<std::string> args;
+  std::map<std::string, double> params;
   SourcePos pos;
 };
 
