@@ -106,6 +106,14 @@ void audit_var(const VarSpec& v, const Truth& tr, std::vector<AuditLine>& out) {
   }
 }
 
+// An eval's name in the audit: "constraint 3 (eval) on 'ranges' where subject_id = 6" (its
+// label without the expression, which its place in the file gives).
+std::string eval_name(const ConstraintSpec& c) {
+  std::string n = c.label.substr(0, c.label.find(": ")) + " on '" + c.data + "'";
+  for (const auto& [col, value] : c.where) n += (n.find(" where ") == std::string::npos ? " where " : ", ") + col + " = " + number(value);
+  return n;
+}
+
 // One eval constraint: each kept row's expression with the truth in place of its variables.
 void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std::vector<AuditLine>& out) {
   const detail::RewrittenExpr r = detail::eval_observation(p, c);
@@ -117,7 +125,7 @@ void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std:
     if (!column(ref.var) && !tr.of.count(ref.var) && missing.find("'" + ref.var + "'") == std::string::npos)
       missing += (missing.empty() ? "'" : ", '") + ref.var + "'";
   if (!missing.empty()) {
-    out.push_back({c.label, "", NAN, NAN, "reads " + missing + ", which the truth does not give; " + c.pos.str()});
+    out.push_back({eval_name(c), "", NAN, NAN, "reads " + missing + ", which the truth does not give; " + c.pos.str()});
     return;
   }
   const Function f(r.ids(), r.text);
@@ -170,10 +178,10 @@ void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std:
     w.add(best->first, best->second, c.data + " line " + std::to_string(table.line(row)));
   }
   if (rows == 0) {
-    out.push_back({c.label, "", NAN, NAN, "no row within the truth's time span; " + c.pos.str()});
+    out.push_back({eval_name(c), "", NAN, NAN, "no row within the truth's time span; " + c.pos.str()});
     return;
   }
-  out.push_back({c.label, "", w.allowed, w.used,
+  out.push_back({eval_name(c), "", w.allowed, w.used,
                  "the expression's value at the truth vs the middle of its range, over " + std::to_string(rows) +
                      " rows, worst " + w.where + "; " + c.pos.str()});
 }

@@ -152,6 +152,7 @@ expr = "x - z*a + [-0.5, 0.5]"
   EXPECT_DOUBLE_EQ(a[1].allowed, 0.5);
   EXPECT_NEAR(audit_percent(a[1]), 20, 1e-9);
   // The row: 0.9 - 1 + [-0.5, 0.5] = [-0.6, 0.4]: 0.1 of 0.5, named by its line.
+  EXPECT_EQ(a[2].name, "constraint 2 (eval) on 'obs'");
   EXPECT_NEAR(a[2].used, 0.1, 1e-12);
   EXPECT_NEAR(a[2].allowed, 0.5, 1e-12);
   EXPECT_NE(a[2].how.find("obs line 2"), std::string::npos) << a[2].how;
