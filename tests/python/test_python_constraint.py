@@ -66,6 +66,11 @@ def test_a_python_contractor_joins_the_file(tmp_path):
     assert x.codomain().lb() == 0 and x.codomain().ub() == 0.5
 
 
+def test_emptied_repr():
+    assert repr(sillage.Emptied(1, slice=3, component=1)) == "Emptied(1, slice=3, component=1)"
+    assert repr(sillage.Emptied(0, gate=2)) == "Emptied(0, gate=2)"
+
+
 def test_emptied_says_where(tmp_path):
     r = sillage.solve(str(write(tmp_path, cls="NoneAtSlice3", args='["x", "p"]', params="")))
     assert r.empty

@@ -188,7 +188,12 @@ SILLAGE_BINDING(tube_node, "cn", "interval") {
       .def_readonly("arg", &Emptied::arg, "The index of the domain in the list given to contract().")
       .def_readonly("component", &Emptied::component, "The component of a TubeVector (0 for a Tube).")
       .def_readonly("slice", &Emptied::slice, "The slice where no solution was found, or None.")
-      .def_readonly("gate", &Emptied::gate, "The gate where no solution was found, or None.");
+      .def_readonly("gate", &Emptied::gate, "The gate where no solution was found, or None.")
+      .def("__repr__", [](const Emptied& e) {
+        return "Emptied(" + std::to_string(e.arg) + (e.slice ? ", slice=" + std::to_string(*e.slice) : "") +
+               (e.gate ? ", gate=" + std::to_string(*e.gate) : "") +
+               (e.component ? ", component=" + std::to_string(e.component) : "") + ")";
+      });
 }
 
 }  // namespace sillage::python
