@@ -1,40 +1,20 @@
 #pragma once
 // The bound audit of the real-data examples: given a ground truth, how much of
 // each stated error bound the truth used ("turn rate: max 0.71 rad/s of 2
-// allowed (36 %)"). It reports; it never changes a bound. A bound the truth
-// uses at 100 % or more is violated; one it uses at nearly 100 % was probably
-// read off the file it is applied to.
-#include <cmath>
+// allowed (36 %)"). The lines are the library's (sillage/problem/bound_audit.h,
+// which also audits a problem file); the examples write their own, from the
+// physics of each bound, and print them here.
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "sillage/problem/bound_audit.h"
+
 namespace example {
 
-struct AuditLine {
-  std::string name;     // the bound
-  std::string unit;
-  double allowed = 0;   // the stated bound (a magnitude, > 0)
-  double used = 0;      // the largest value the ground truth needs (NaN: not measurable from the truth)
-  std::string how;      // how `used` was measured
-};
-
-// used / allowed in percent (NaN if not measurable).
-inline double audit_percent(const AuditLine& l) { return 100.0 * l.used / l.allowed; }
-
-// "name: max U unit of A allowed (P %)", one line, "  <-- VIOLATED" at >= 100 %.
-inline std::string audit_text(const AuditLine& l) {
-  char buf[400];
-  if (std::isnan(l.used)) {
-    std::snprintf(buf, sizeof buf, "%s: %.4g %s allowed, not measurable from the truth (%s)", l.name.c_str(),
-                  l.allowed, l.unit.c_str(), l.how.c_str());
-  } else {
-    const double p = audit_percent(l);
-    std::snprintf(buf, sizeof buf, "%s: max %.4g %s of %.4g allowed (%.0f %%; %s)%s", l.name.c_str(), l.used,
-                  l.unit.c_str(), l.allowed, p, l.how.c_str(), p > 100.0 ? "  <-- VIOLATED" : "");
-  }
-  return buf;
-}
+using sillage::AuditLine;
+using sillage::audit_percent;
+using sillage::audit_text;
 
 // Prints the audit; returns true if no bound is violated by the truth.
 inline bool print_audit(const std::string& title, const std::vector<AuditLine>& lines) {

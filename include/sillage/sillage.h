@@ -110,6 +110,7 @@
 #include "sillage/slam/slam_row.h"
 #include "sillage/slam/temporal_slam.h"
 
+#include "sillage/problem/bound_audit.h"
 #include "sillage/problem/build_network.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/explain_empty.h"
@@ -120,10 +121,12 @@
 #include "sillage/problem/problem_error.h"
 #include "sillage/problem/problem_loops.h"
 #include "sillage/problem/problem_warnings.h"
+#include "sillage/problem/python_constraint.h"
 #include "sillage/problem/replay_problem.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/stream_lines.h"
+#include "sillage/problem/var_sizes.h"
 #include "sillage/problem/write_results.h"
 
 #include "sillage/figures/figure.h"
@@ -131,6 +134,7 @@
 #include "sillage/figures/legend.h"
 #include "sillage/figures/loop_style.h"
 #include "sillage/figures/loops_map_figure.h"
+#include "sillage/figures/map_envelope.h"
 #include "sillage/figures/style.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tplane_figure.h"

@@ -28,10 +28,11 @@ Notes on the Python API:
 from . import _sillage
 from ._sillage import *  # noqa: F401,F403
 from ._sillage import Error  # noqa: F401
+from .rigor import outward  # noqa: F401
 
 #: The version of the C++ project (project(sillage VERSION ...) in CMakeLists.txt).
 __version__ = _sillage.__version__
 
 
 _BUILTIN_NAMES = {"abs", "min", "max", "pow"}
-__all__ = [n for n in dir(_sillage) if not n.startswith("_") and n not in _BUILTIN_NAMES]
+__all__ = [n for n in dir(_sillage) if not n.startswith("_") and n not in _BUILTIN_NAMES] + ["outward"]

@@ -26,6 +26,8 @@
 #include "online_commands.h"
 
 #include "sillage/problem/check_summary.h"
+#include "sillage/problem/bound_audit.h"
+#include "sillage/problem/var_sizes.h"
 #include "sillage/figures/tube_figure.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/report_html.h"
@@ -108,8 +110,8 @@ int solve(const std::string& file, std::string out, SolveOptions o, int threads,
   if (progress)
     o.on_step = [&](const ScheduleStep& s) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "\rδ = %g (%zu slices): %zu rounds, %zu contractor runs, thickness %.4g, %.2f s   ", s.delta,
-                   s.slices, s.stats.iterations, s.stats.contractor_calls, s.mean_thickness, elapsed);
+      std::fprintf(stderr, "\rδ = %g (%zu slices): %zu rounds, %zu contractor runs, %.2f s   ", s.delta, s.slices,
+                   s.stats.iterations, s.stats.contractor_calls, elapsed);
     };
   const SolveResult r = solve_problem(p, o);
   if (progress) std::fprintf(stderr, "\n");
@@ -140,6 +142,18 @@ int solve(const std::string& file, std::string out, SolveOptions o, int threads,
       const TruthCheck c = check_truth(p, r.built);
       std::printf("  truth: %zu of %zu time points inside%s\n", c.inside, c.samples,
                   c.first_misses.empty() ? "" : (", first miss: " + c.first_misses.front()).c_str());
+    }
+    if (p.output.truth) {  // a bound the truth needs beyond 100 % voids the guarantee
+      std::printf("  bound audit: how much of each stated bound the truth used\n");
+      for (const AuditLine& l : audit_problem(p)) std::printf("    %s\n", audit_text(l).c_str());
+    }
+    if (!r.empty) {  // what a user reads first: how well each variable is known
+      std::printf("  sizes: box diameter (the largest width over the components), mean / median / max\n");
+      const std::string table = sizes_table(var_sizes(p, r.built));
+      for (std::size_t a = 0, e; a < table.size(); a = e + 1) {
+        e = table.find('\n', a);
+        std::printf("    %s\n", table.substr(a, e - a).c_str());
+      }
     }
     std::printf("  wrote %s/report.html, results.json and one CSV%s per tube\n", out.c_str(),
                 tubes ? " and one .tube file" : "");

@@ -88,6 +88,14 @@ MapView map_view(const TubeVector& x, std::size_t i, std::size_t j, const std::s
                  const std::string& name_j, const Trajectory* truth_i = nullptr, const Trajectory* truth_j = nullptr,
                  const std::vector<Vector>* landmarks = nullptr, double zoom = 5);
 
+// An empty map of x_i × x_j: the map_view window (aspect ratio kept), the
+// title, map_view's note, the axes labelled name_i and name_j (x1, x2...,
+// x_{i+1} and x_{j+1}, when empty). tube_vector_figure and
+// map_envelope_figure draw on it.
+Figure map_frame(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
+                 const Trajectory* truth_i, const Trajectory* truth_j, double width_px,
+                 const std::vector<Vector>* landmarks, const std::string& name_i, const std::string& name_j);
+
 // A figure of the map_view window (aspect ratio kept), with the projection
 // drawn by draw_tube_vector_2d and the landmarks (if given, 2-D points) as
 // dots on top; a legend names what is drawn. The axes are labelled name_i

@@ -80,11 +80,12 @@ struct VarSpec {
   // reads it under sin/cos/tan or as a term of its top-level sum (the
   // equation is then modulo 2π). Its truth is checked modulo 2π.
   bool angle = false;
+  std::string unit;  // as the file states it (unit = "m"), for the reports; "" if it does not
   SourcePos pos;
   bool is_tube() const { return kind == VarKind::Tube || kind == VarKind::TubeVector; }
 };
 
-enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ };
+enum class ConstraintKind { Expr, Deriv, Increment, Eval, Heading, SecondDeriv, HeadingWindow, PImpliesZ, Python };
 
 struct ConstraintSpec {
   ConstraintKind kind = ConstraintKind::Expr;
@@ -148,6 +149,12 @@ struct ConstraintSpec {
   std::optional<std::size_t> q;
   double q_window = 0;
   std::size_t q_rows = 0;
+  // Python: the user's sillage.TubeCtc subclass `cls` of the module `module`
+  // (imported with the problem file's folder first on the path), built as
+  // cls(**params), on the tube variables `args` in order (python_constraint.h).
+  std::string module, cls;
+  std::vector<std::string> args;
+  std::map<std::string, double> params;
   SourcePos pos;
 };
 

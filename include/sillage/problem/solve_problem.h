@@ -6,7 +6,7 @@
 // thickness of the bounded tubes) and the time budget allows the next step
 // (estimated from the last one, in proportion to the slices). Refining
 // either halves every slice, or splits only the slices of the time regions
-// where the tubes are thick (docs/cli.md, "Automatic δ", compares both).
+// where the tubes are thick (docs/benchmarks.md, "Automatic δ", compares both).
 // Every step is a guaranteed enclosure; the finest one is the result, and the
 // schedule (δ, slices, thickness, time) is kept.
 #include <cstddef>

@@ -8,8 +8,11 @@
 // with the domains before it (a prototype cannot enlarge a domain) and what
 // shrank wakes the other contractors on those slices.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <pybind11/stl.h>
 
 #include "bindings.h"
 #include "sillage/cn/contractor_network.h"
@@ -32,6 +35,41 @@ class PyTubeCtc : public TubeCtc {
     PYBIND11_OVERRIDE_PURE(py::object, TubeCtc, contract, domains);
   }
 };
+
+// What contract() returns to say where it found no solution: argument `arg`
+// of the domains list (a Tube or TubeVector), its component, and a slice or
+// a gate; the network's emptiness message then names that tube and time.
+struct Emptied {
+  std::size_t arg = 0, component = 0;
+  std::optional<std::size_t> slice, gate;
+};
+
+// The atom of the node (numbered across its ranges, as run() does) that e names, for the
+// domains list `items` (one range per Tube, per TubeVector component, per Interval or
+// IntervalVector); Error saying what is wrong otherwise.
+std::size_t emptied_atom(const Emptied& e, const py::list& items, const std::vector<AtomRange>& ranges,
+                         const std::string& name) {
+  const std::string where = name + ".contract returned Emptied(arg=" + std::to_string(e.arg) + "): ";
+  if (e.arg >= items.size()) throw Error(where + "no such argument (" + std::to_string(items.size()) + " domains)");
+  std::size_t range = 0;
+  for (std::size_t i = 0; i < e.arg; ++i)
+    range += py::isinstance<TubeVector>(items[i]) ? items[i].cast<const TubeVector&>().size() : 1;
+  const py::handle h = items[e.arg];
+  const bool vec = py::isinstance<TubeVector>(h);
+  if (!vec && !py::isinstance<Tube>(h)) throw Error(where + "expected a Tube or TubeVector argument");
+  const std::size_t n = vec ? h.cast<const TubeVector&>().size() : 1;
+  if (e.component >= n) throw Error(where + "component " + std::to_string(e.component) + " out of range (" + std::to_string(n) + ")");
+  range += e.component;
+  if (range >= ranges.size() || e.slice.has_value() == e.gate.has_value())
+    throw Error(where + "expected one of slice=k or gate=k");
+  const std::size_t atom = e.slice ? 2 * *e.slice + 1 : 2 * *e.gate;
+  if (atom >= ranges[range].count)
+    throw Error(where + (e.slice ? "slice " + std::to_string(*e.slice) : "gate " + std::to_string(*e.gate)) +
+                " out of range (" + std::to_string(ranges[range].count / 2) + " slices)");
+  std::size_t k = atom;
+  for (std::size_t g = 0; g < range; ++g) k += ranges[g].count;
+  return k;
+}
 
 // A Python object held from C++: released with the GIL.
 std::shared_ptr<py::object> keep(const py::handle& h) {
@@ -57,10 +95,14 @@ class PyTubeNode : public TubeNode {
       for (std::size_t a = 0; a < g.count; ++a) before.push_back(r.domains[g.domain]->atom(g.first + a));
     }
     bool ok = true;
+    std::size_t emptied = kNoAtom;  // where contract() said it found no solution
     {
       py::gil_scoped_acquire gil;
       const py::object res = ctc_->attr("contract")(*domains_);
-      if (!res.is_none()) {
+      if (py::isinstance<Emptied>(res)) {
+        ok = false;
+        emptied = emptied_atom(res.cast<Emptied>(), domains_->cast<py::list>(), ranges(), name());
+      } else if (!res.is_none()) {
         if (!py::isinstance<py::bool_>(res)) {
           throw ArgumentTypeError(name() + ".contract must return None, True or False, not " +
                                   std::string(py::str(py::type::handle_of(res).attr("__name__"))));
@@ -84,6 +126,7 @@ class PyTubeNode : public TubeNode {
         if (now.is_empty() && ok && r.empty_at == kNoAtom) r.empty_at = k;
       }
     }
+    if (!ok) r.empty_at = emptied;  // kNoAtom: False, no place given
     return ok && r.empty_at == kNoAtom;
   }
 
@@ -131,7 +174,26 @@ SILLAGE_BINDING(tube_node, "cn", "interval") {
              return "<" + py::str(py::type::of(self).attr("__name__")).cast<std::string>() + " (TubeCtc)>";
            })
       .def("contract", &TubeCtc::contract, py::arg("domains"),
-           "Contracts the domains in place; returns None, True, or False for 'no solution'.");
+           "Contracts the domains in place; returns None, True, False for 'no solution', or "
+           "Emptied(arg, slice=k) / Emptied(arg, gate=k) for 'no solution, found there'.");
+  py::class_<Emptied>(m, "Emptied",
+                      "What TubeCtc.contract returns when it proves that there is no solution and knows where:\n"
+                      "the argument `arg` of its domains list (a Tube or TubeVector), its `component`, and the\n"
+                      "slice or the gate. The network's emptiness message then names that tube and time instead of\n"
+                      "its first atom.")
+      .def(py::init([](std::size_t arg, std::optional<std::size_t> slice, std::optional<std::size_t> gate,
+                       std::size_t component) { return Emptied{arg, component, slice, gate}; }),
+           py::arg("arg"), py::arg("slice") = py::none(), py::arg("gate") = py::none(), py::arg("component") = 0,
+           "Emptied(arg, slice=k) or Emptied(arg, gate=k), with component=i for a TubeVector.")
+      .def_readonly("arg", &Emptied::arg, "The index of the domain in the list given to contract().")
+      .def_readonly("component", &Emptied::component, "The component of a TubeVector (0 for a Tube).")
+      .def_readonly("slice", &Emptied::slice, "The slice where no solution was found, or None.")
+      .def_readonly("gate", &Emptied::gate, "The gate where no solution was found, or None.")
+      .def("__repr__", [](const Emptied& e) {
+        return "Emptied(" + std::to_string(e.arg) + (e.slice ? ", slice=" + std::to_string(*e.slice) : "") +
+               (e.gate ? ", gate=" + std::to_string(*e.gate) : "") +
+               (e.component ? ", component=" + std::to_string(e.component) : "") + ")";
+      });
 }
 
 }  // namespace sillage::python

@@ -7,6 +7,7 @@
 
 #include "bindings.h"
 #include "docstrings.h"
+#include "sillage/figures/map_envelope.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
 
@@ -55,6 +56,21 @@ SILLAGE_BINDING(tube_figures, "trajectory", "tube") {
       py::arg("tube"), py::arg("i") = 0, py::arg("j") = 1, py::arg("title") = "", py::arg("style") = TubeStyle{},
       py::arg("truth_i") = py::none(), py::arg("truth_j") = py::none(), py::arg("width_px") = 600.0,
       py::arg("landmarks") = py::none(), py::arg("name_i") = "", py::arg("name_j") = "", DOC(tube_vector_figure));
+  m.def(
+      "map_envelope_figure",
+      [](const TubeVector& x, std::size_t i, std::size_t j, const std::string& title, const TubeStyle& style,
+         const Trajectory* truth_i, const Trajectory* truth_j, double width_px,
+         const std::optional<std::vector<Vector>>& landmarks, const std::string& name_i, const std::string& name_j,
+         std::size_t boxes) {
+        return map_envelope_figure(x, i, j, title, style, truth_i, truth_j, width_px,
+                                   landmarks ? &*landmarks : nullptr, name_i, name_j, boxes);
+      },
+      py::arg("tube"), py::arg("i") = 0, py::arg("j") = 1, py::arg("title") = "", py::arg("style") = TubeStyle{},
+      py::arg("truth_i") = py::none(), py::arg("truth_j") = py::none(), py::arg("width_px") = 600.0,
+      py::arg("landmarks") = py::none(), py::arg("name_i") = "", py::arg("name_j") = "", py::arg("boxes") = 8,
+      DOC(map_envelope_figure));
+  m.def("map_envelope", &map_envelope, py::arg("tube"), py::arg("i"), py::arg("j"), py::arg("window"),
+        py::arg("cells") = 300, DOC(map_envelope));
   m.def("thickness_values", py::overload_cast<const Tube&>(&thickness_values), py::arg("tube"),
         DOC(thickness_values, Tube));
   m.def("thickness_values", py::overload_cast<const TubeVector&, ThicknessMeasure>(&thickness_values),

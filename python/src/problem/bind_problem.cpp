@@ -1,22 +1,60 @@
 // Problem files (sillage/problem) in Python: load_problem, check_summary,
 // solve_problem and solve(path), which returns the domains as sillage objects.
+#include <filesystem>
+
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include "bindings.h"
 #include "docstrings.h"
 #include "interruptible.h"
+#include "sillage/problem/bound_audit.h"
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/load_problem.h"
 #include "sillage/problem/problem_loops.h"
 #include "sillage/problem/problem_warnings.h"
+#include "sillage/problem/python_constraint.h"
 #include "sillage/problem/report_html.h"
 #include "sillage/problem/write_results.h"
 #include "sillage/problem/solve_problem.h"
+#include "sillage/problem/var_sizes.h"
 
 namespace sillage::python {
 
+bool is_tube_ctc(const py::handle& h);  // bind_tube_node.cpp
+std::shared_ptr<const NetworkCtc> bind_tube_ctc(const py::handle& ctc, const py::list& domains);
+
 namespace {
+
+// kind = "python" (python_constraint.h): imports c.module (the problem file's folder first on
+// sys.path), builds c.cls(**c.params), a sillage.TubeCtc, on the tube variables of c.args.
+std::shared_ptr<const NetworkCtc> python_constraint(const ConstraintSpec& c, const std::string& file,
+                                                    const std::vector<const VarDomain*>& args) {
+  py::gil_scoped_acquire gil;
+  const std::string at = c.pos.str() + ": " + c.label + ": ";
+  try {
+    const std::string dir = std::filesystem::absolute(std::filesystem::path(file)).parent_path().string();
+    py::list path = py::module_::import("sys").attr("path");
+    if (!path.contains(py::str(dir))) path.insert(0, py::str(dir));
+    const py::module_ mod = py::module_::import(c.module.c_str());
+    if (!py::hasattr(mod, c.cls.c_str()))
+      throw Error(at + "found no class '" + c.cls + "' in the module " + c.module + " (" +
+                  std::string(py::str(mod.attr("__file__"))) + ")");
+    py::dict kwargs;
+    for (const auto& [k, v] : c.params) kwargs[py::str(k)] = v;
+    const py::object ctc = mod.attr(c.cls.c_str())(**kwargs);
+    if (!is_tube_ctc(ctc))
+      throw Error(at + "found " + c.module + "." + c.cls + ", which is not a sillage.TubeCtc subclass");
+    py::list domains;
+    for (const VarDomain* v : args) {
+      if (v->spec->kind == VarKind::Tube) domains.append(py::cast(v->tubes->shared_component(0)));
+      else domains.append(py::cast(v->tubes));
+    }
+    return bind_tube_ctc(ctc, domains);
+  } catch (py::error_already_set& e) {  // an import or constructor error, said where
+    throw Error(at + "cannot build " + c.module + "." + c.cls + ": " + e.what());
+  }
+}
 
 // {name: Tube | TubeVector | Interval | IntervalVector}, copies of the solved domains
 // (a Tube is the solved object itself, shared).
@@ -94,6 +132,7 @@ std::shared_ptr<SolveResult> solve_with(const Problem& p, const py::object& delt
 }  // namespace
 
 SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
+  set_python_constraint_factory(&python_constraint);
   py::enum_<DeltaRefinement>(m, "DeltaRefinement", DOC(DeltaRefinement))
       .value("Halving", DeltaRefinement::Halving)
       .value("Regions", DeltaRefinement::Regions);
@@ -138,6 +177,35 @@ SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
       .def("__repr__", [](const TruthCheck& c) {
         return "TruthCheck(" + std::to_string(c.inside) + " of " + std::to_string(c.samples) + " inside)";
       });
+  py::class_<SizeStats>(m, "SizeStats", DOC(SizeStats))
+      .SILLAGE_READONLY_FIELDS(SizeStats, mean, median, max, samples)
+      .def("__repr__", [](const SizeStats& s) {
+        return "SizeStats(mean=" + number_text(s.mean) + ", median=" + number_text(s.median) + ", max=" +
+               number_text(s.max) + ", samples=" + std::to_string(s.samples) + ")";
+      });
+  py::class_<VarSize>(m, "VarSize", DOC(VarSize))
+      .SILLAGE_READONLY_FIELDS(VarSize, name, unit, dim, over_time, at_truth)
+      .SILLAGE_DEFS(VarSize, str)
+      .def("__repr__", [](const VarSize& v) { return "VarSize(" + v.str() + ")"; });
+  m.def(
+      "var_sizes", [](const Problem& p, const SolveResult& r) { return var_sizes(p, r.built); },
+      py::arg("problem"), py::arg("result"), DOC(var_sizes));
+  py::class_<AuditLine>(m, "AuditLine", DOC(AuditLine))
+      .def(py::init([](std::string name, std::string unit, double allowed, double used, std::string how) {
+             return AuditLine{std::move(name), std::move(unit), allowed, used, std::move(how)};
+           }),
+           py::arg("name"), py::arg("unit"), py::arg("allowed"), py::arg("used"), py::arg("how"),
+           "A line of the bound audit: the bound, its unit, the stated bound (> 0), the largest value the truth "
+           "needs (nan: not measurable) and how it was measured.")
+      .SILLAGE_FIELDS(AuditLine, name, unit, allowed, used, how)
+      .def("percent", &audit_percent, DOC(audit_percent))
+      .def("text", &audit_text, DOC(audit_text))
+      .def("__repr__", [](const AuditLine& l) { return "AuditLine(" + audit_text(l) + ")"; });
+  m.SILLAGE_FN(audit_percent, py::arg("line"));
+  m.SILLAGE_FN(audit_text, py::arg("line"));
+  m.SILLAGE_FN(audit_problem, py::arg("problem"));
+  m.SILLAGE_FN(size_stats, py::arg("values"), py::arg("weights"));
+  m.SILLAGE_FN(sizes_table, py::arg("sizes"));
   m.SILLAGE_FN(check_delta, py::arg("problem"), py::arg("delta"), py::arg("name") = "delta");
   m.def(
       "check_truth", [](const Problem& p, const SolveResult& r) { return check_truth(p, r.built); },

@@ -289,11 +289,9 @@ MapView map_view(const TubeVector& x, std::size_t i, std::size_t j, const std::s
   return v;
 }
 
-Figure tube_vector_figure(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
-                          const TubeStyle& style, const Trajectory* truth_i, const Trajectory* truth_j,
-                          double width_px, const std::vector<Vector>* landmarks, const std::string& name_i,
-                          const std::string& name_j) {
-  check_style(style, "tube_vector_figure");
+Figure map_frame(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
+                 const Trajectory* truth_i, const Trajectory* truth_j, double width_px,
+                 const std::vector<Vector>* landmarks, const std::string& name_i, const std::string& name_j) {
   // Built with append: `"x" + std::to_string(..)` trips a GCC 12 -Wrestrict false positive.
   std::string ni = name_i, nj = name_j;
   if (ni.empty()) ni.append("x").append(std::to_string(i + 1));
@@ -303,6 +301,15 @@ Figure tube_vector_figure(const TubeVector& x, std::size_t i, std::size_t j, con
   fig.set_title(title);
   fig.set_note(view.note);
   fig.set_labels(ni, nj);
+  return fig;
+}
+
+Figure tube_vector_figure(const TubeVector& x, std::size_t i, std::size_t j, const std::string& title,
+                          const TubeStyle& style, const Trajectory* truth_i, const Trajectory* truth_j,
+                          double width_px, const std::vector<Vector>* landmarks, const std::string& name_i,
+                          const std::string& name_j) {
+  check_style(style, "tube_vector_figure");
+  Figure fig = map_frame(x, i, j, title, truth_i, truth_j, width_px, landmarks, name_i, name_j);
   draw_tube_vector_2d(fig, x, i, j, style, truth_i, truth_j);
   if (landmarks != nullptr && style.landmark_px > 0) {
     for (const Vector& p : *landmarks) fig.draw_point(p, style.landmark_px, style.landmarks);

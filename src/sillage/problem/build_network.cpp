@@ -25,6 +25,7 @@
 #include "sillage/expr/function.h"
 #include "sillage/expr/tape.h"
 #include "sillage/problem/eval_rows.h"
+#include "sillage/problem/python_constraint.h"
 #include "sillage/problem/var_refs.h"
 #include "sillage/slam/ctc_p_implies_z.h"
 #include "sillage/tube/tube.h"
@@ -216,6 +217,7 @@ std::vector<std::size_t> constraint_order(const Problem& p) {
         case ConstraintKind::SecondDeriv: return 4;
         case ConstraintKind::HeadingWindow: return 5;
         case ConstraintKind::PImpliesZ: return 6;  // a t-plane per run: the dearest
+        case ConstraintKind::Python: return 5;     // the interpreter, whole tubes per run
       }
       return 6;
     };
@@ -405,6 +407,16 @@ BuiltProblem build_on(const Problem& p, std::shared_ptr<TDomain> td) {
       case ConstraintKind::PImpliesZ:
         cn.add(std::make_shared<CtcPImpliesZ>(c.eps, c.fast), {b.var(c.p).tubes, b.var(c.w).tubes, b.var(c.z).tubes});
         break;
+      case ConstraintKind::Python: {  // the user's sillage.TubeCtc, through the Python module's factory
+        std::vector<const VarDomain*> args;
+        std::vector<DomainRef> refs;
+        for (const std::string& a : c.args) {
+          args.push_back(&b.var(a));
+          refs.push_back(b.var(a).whole());
+        }
+        cn.add(make_python_constraint(c, p.file, args), refs);
+        break;
+      }
       case ConstraintKind::Eval: {
         const DataSpec& data = *p.table(c.data);
         const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;

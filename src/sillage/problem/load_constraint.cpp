@@ -11,8 +11,8 @@ void ProblemLoader::read_constraint(const Fields& top, const toml::node& node) {
   ConstraintSpec c;
   c.pos = doc_.pos(node);
   const std::string expected_kind =
-      "kind = \"expr\", \"deriv\", \"second_deriv\", \"increment\", \"eval\", \"heading\", \"heading_window\" or "
-      "\"p_implies_z\"";
+      "kind = \"expr\", \"deriv\", \"second_deriv\", \"increment\", \"eval\", \"heading\", \"heading_window\", "
+      "\"p_implies_z\" or \"python\"";
   if (!kn) throw ProblemError(c.pos, "constraint " + std::to_string(index) + " without a kind", expected_kind);
   const std::string ks = top.string(*kn, expected_kind);
   const std::string where = "constraint " + std::to_string(index) + " (" + ks + ")";
@@ -28,6 +28,8 @@ void ProblemLoader::read_constraint(const Fields& top, const toml::node& node) {
         Fields(doc_, t, where, {"kind", "p", "psi", "dist", "dpsi", "omega", "track", "window", "turn_accel", "stride"}), c);
   } else if (ks == "p_implies_z") {
     read_p_implies_z(Fields(doc_, t, where, {"kind", "p", "w", "z", "eps", "fast"}), c);
+  } else if (ks == "python") {
+    read_python(Fields(doc_, t, where, {"kind", "module", "class", "args", "params"}), c);
   } else if (ks == "eval") {
     read_eval(Fields(doc_, t, where, {"kind", "data", "y", "v", "time", "time_error", "errors", "where", "gates", "join", "expr", "outside", "q", "q_window", "q_rows"}), c, where);
   } else {

@@ -59,7 +59,7 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
     throw ProblemError(kp, "the variable name '" + name + "'",
                        "a name other than t and dt (the time and the slice width in bounds and table values)");
   const Fields f(doc_, Fields(doc_, toml::table{}, "", {}).table(node, "a table [var." + name + "]"),
-                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates", "angle"});
+                 "[var." + name + "]", {"kind", "dim", "value", "at", "slices", "gates", "angle", "unit"});
   VarSpec v;
   v.name = name;
   v.pos = kp;
@@ -80,6 +80,7 @@ void ProblemLoader::read_var(const std::string& name, const toml::key& key, cons
   } else if (vector) {
     throw ProblemError(kp, "no 'dim' for the " + ks + " '" + name + "'", "dim = N");
   }
+  if (const toml::node* u = f.find("unit")) v.unit = f.string(*u, "a unit for the reports, e.g. \"m\"");
   v.value.assign(v.dim, BoundSpec{});
   if (const toml::node* val = f.find("value")) v.value = read_bounds(f, *val, v.dim, v.is_tube());
   if (const toml::node* at = f.find("at")) {

@@ -170,6 +170,8 @@ void detail::OnlineProblemImpl::declare_constraints() {
       }
       case ConstraintKind::PImpliesZ:
         throw not_online(c.pos, c.label, "the temporal SLAM's loops need the whole path");
+      case ConstraintKind::Python:
+        throw not_online(c.pos, c.label, "a Python contractor runs in batch solves only (sillage.solve)");
       case ConstraintKind::Eval:
         plan_eval(c, with_deriv);
         break;

@@ -40,6 +40,7 @@ const char* kind_name(ConstraintKind k) {
     case ConstraintKind::SecondDeriv: return "second_deriv";
     case ConstraintKind::HeadingWindow: return "heading_window";
     case ConstraintKind::PImpliesZ: return "p_implies_z";
+    case ConstraintKind::Python: return "python";
   }
   return "?";
 }

@@ -68,6 +68,7 @@ class ProblemLoader {
   void read_odometry(const Fields& f, ConstraintSpec& c, TubeKeys scalars);  // load_heading.cpp
   void read_eval(const Fields& f, ConstraintSpec& c, const std::string& where);  // load_eval.cpp
   void read_p_implies_z(const Fields& f, ConstraintSpec& c);  // load_p_implies_z.cpp
+  void read_python(const Fields& f, ConstraintSpec& c);       // load_python.cpp
   // [output] (load_output.cpp, load_loops.cpp)
   std::pair<std::string, std::size_t> tube_ref(const Fields& f, const toml::node& n, bool allow_whole);
   void read_output(const toml::table& t);

@@ -1,6 +1,6 @@
 #include "sillage/problem/report_html.h"
 
-#include "sillage/interval/angle.h"
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -8,13 +8,17 @@
 #include <sstream>
 
 #include "sillage/figures/html.h"
+#include "sillage/interval/angle.h"
 #include "sillage/figures/loops_map_figure.h"
+#include "sillage/figures/map_envelope.h"
 #include "sillage/figures/tplane_figure.h"
 #include "sillage/problem/problem_loops.h"
 #include "sillage/figures/thickness_figure.h"
 #include "sillage/figures/tube_figure.h"
+#include "sillage/problem/bound_audit.h"
 #include "sillage/problem/explain_figure.h"
 #include "sillage/problem/interval_text.h"
+#include "sillage/problem/var_sizes.h"
 
 namespace sillage {
 
@@ -120,11 +124,12 @@ std::string map_figures(const Problem& p, const BuiltProblem& b, const std::stri
     }
     h << figure_block(
         [&] {
-          return tube_vector_figure(*v.tubes, pair.first, pair.second, title + what, {}, ti ? &*ti : nullptr,
-                                    tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
-                                    comp_name(v, pair.second));
+          return map_envelope_figure(*v.tubes, pair.first, pair.second, title + what, {}, ti ? &*ti : nullptr,
+                                     tj ? &*tj : nullptr, 600, marks ? &points : nullptr, comp_name(v, pair.first),
+                                     comp_name(v, pair.second));
         },
-        "Map " + title + what + (cols ? " (truth as a red line)" : "") +
+        "Map " + title + what + ": the envelope of the boxes of every slice (within a grid cell), a few of them drawn" +
+            (cols ? ", the truth as a red line" : "") +
             (marks ? ", landmarks of '" + marks->data + "' as yellow dots" : ""));
   }
   return h.str();
@@ -184,6 +189,78 @@ std::string before_empty_figures(const Problem& p, const BuiltProblem& b, const 
   return h.str();
 }
 
+// The sizes of the variables (var_sizes.h): what a user reads first.
+std::string sizes_section(const Problem& p, const BuiltProblem& b) {
+  const std::vector<VarSize> sizes = var_sizes(p, b);
+  const bool truth = p.output.truth.has_value();
+  std::ostringstream h;
+  h << "<h2>Sizes</h2>\n<p class=\"note\">The box diameter of each variable: the largest width over its components, "
+       "over time (mean and median weighted by the slices' durations)"
+    << (truth ? " and at the truth's time points" : "") << "; in the unit the file states ([var.NAME] unit).</p>\n"
+    << "<table id=\"sizes\"><tr><th>variable</th><th>unit</th><th>mean</th><th>median</th><th>max</th>";
+  if (truth) h << "<th>mean at truth times</th><th>median</th><th>max</th>";
+  h << "</tr>\n";
+  for (const VarSize& v : sizes) {
+    h << "<tr><td>" << xml_escape(v.name) << "</td><td>" << xml_escape(v.unit) << "</td><td>" << fmt(v.over_time.mean, "%.4g")
+      << "</td><td>" << fmt(v.over_time.median, "%.4g") << "</td><td>" << fmt(v.over_time.max, "%.4g") << "</td>";
+    if (v.at_truth)
+      h << "<td>" << fmt(v.at_truth->mean, "%.4g") << "</td><td>" << fmt(v.at_truth->median, "%.4g") << "</td><td>"
+        << fmt(v.at_truth->max, "%.4g") << "</td>";
+    else if (truth)
+      h << "<td></td><td></td><td></td>";
+    h << "</tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
+}
+
+// The truth check of [output.truth].
+std::string truth_section(const Problem& p, const BuiltProblem& b) {
+  std::ostringstream h;
+  h << "<h2>Truth check</h2>\n";
+  const TruthCheck c = check_truth(p, b);
+  h << "<p id=\"truth\">" << c.inside << " of " << c.samples
+    << " truth time points inside the tubes (every component of the truth inside).</p>\n";
+  if (!c.first_misses.empty()) {
+    h << "<ul>";
+    for (const std::string& m : c.first_misses) h << "<li>" << xml_escape(m) << "</li>";
+    h << "</ul>\n";
+  }
+  return h.str();
+}
+
+// The bound audit of the file against its truth (bound_audit.h).
+std::string audit_section(const Problem& p) {
+  std::ostringstream h;
+  h << "<h2>Bound audit</h2>\n<p class=\"note\">How much of each stated bound the truth used: its distance from the "
+       "middle of the bound over the bound's half-width (100 %: at an edge; above: violated, the guarantee is void). "
+       "It changes no bound.</p>\n<table id=\"audit\"><tr><th>bound</th><th>used</th><th>allowed</th><th>%</th>"
+       "<th>how</th></tr>\n";
+  for (const AuditLine& l : audit_problem(p)) {
+    const double pc = audit_percent(l);
+    const std::string unit = l.unit.empty() ? "" : " " + xml_escape(l.unit);
+    h << "<tr" << (pc > 100 ? " class=\"empty\"" : "") << "><td>" << xml_escape(l.name) << "</td><td>"
+      << (std::isnan(l.used) ? "not measurable" : fmt(l.used, "%.4g") + unit) << "</td><td>"
+      << (std::isnan(l.allowed) ? "" : fmt(l.allowed, "%.4g") + unit) << "</td><td>"
+      << (std::isnan(pc) ? "" : fmt(pc, "%.0f") + (pc > 100 ? " VIOLATED" : "")) << "</td><td>" << xml_escape(l.how)
+      << "</td></tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
+}
+
+// One thickness figure per tube variable: its box diameter over time, the measure of the sizes.
+std::string thickness_figures(const BuiltProblem& b) {
+  std::ostringstream h;
+  for (const VarDomain& v : b.vars) {
+    if (!v.tubes) continue;
+    const std::string name = v.spec->name, unit = v.spec->unit.empty() ? "" : " (" + v.spec->unit + ")";
+    h << figure_block([&] { return thickness_figure(*v.tubes, ThicknessMeasure::MaxDiameter, "Box diameter of " + name + unit); },
+                      "Box diameter of " + name + " over time (the largest width over its components)" + unit);
+  }
+  return h.str();
+}
+
 }  // namespace
 
 TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
@@ -222,7 +299,7 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
     << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:auto;padding:1em}"
        "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 6px;font-size:90%}"
        "pre{background:#f4f4f4;padding:.5em;overflow:auto}.empty{color:#b00;font-weight:bold}"
-       "figure{margin:1em 0}figcaption{font-size:90%;color:#444}.note{color:#777}</style></head><body>\n";
+       "figure{margin:1em 0}figcaption{font-size:90%;color:#444}.note{color:#777}summary{cursor:pointer}</style></head><body>\n";
   h << "<h1>sillage solve " << xml_escape(p.file) << "</h1>\n";
   if (r.empty)
     h << "<p class=\"empty\" id=\"status\">No solution: " << xml_escape(r.why_empty) << "</p>\n";
@@ -240,17 +317,12 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
 
   if (r.empty && e && e->empty) h << explanation_section(*e);
 
-  h << "<h2>Problem</h2>\n<p>hash " << p.hash << "</p><pre>" << xml_escape(p.text) << "</pre>\n";
-
-  h << "<h2>Schedule</h2>\n<table id=\"schedule\"><tr><th>δ</th><th>slices</th><th>mean thickness</th><th>rounds</th>"
-       "<th>contractor runs</th><th>build (s)</th><th>contract (s)</th></tr>\n";
-  for (const ScheduleStep& s : r.schedule)
-    h << "<tr><td>" << fmt(s.delta) << "</td><td>" << s.slices << "</td><td>" << fmt(s.mean_thickness) << "</td><td>"
-      << s.stats.iterations << "</td><td>" << s.stats.contractor_calls << "</td><td>" << fmt(s.build_seconds, "%.4f")
-      << "</td><td>" << fmt(s.contract_seconds, "%.4f") << "</td></tr>\n";
-  h << "</table>\n<p id=\"scheduling\">Scheduling: " << scheduling_name(r.scheduling)
-    << (r.scheduling == Scheduling::Priority ? " (each round by expected contraction over cost)" : " (each round in the order woken)")
-    << ".</p>\n";
+  // What a user reads first: how well each variable is known, and whether the truth is inside.
+  if (!r.empty) h << sizes_section(p, b);
+  if (p.output.truth) {
+    if (!r.empty) h << truth_section(p, b);
+    h << audit_section(p);
+  }
 
   std::vector<OutputTime> times = p.output.times;
   if (times.empty())
@@ -282,6 +354,7 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
   else if (r.empty) h << "<p class=\"note\">No figure: the domains are empty.</p>\n";
   else {
     h << map_figures(p, b, "");
+    h << thickness_figures(b);
     std::vector<std::pair<std::string, std::size_t>> plots = p.output.plot_tubes;
     if (plots.empty())
       for (const VarDomain& v : b.vars)
@@ -298,26 +371,21 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
         const std::string name = comp_name(v, i);
         h << figure_block([&] { return tube_figure((*v.tubes)[i], "[" + name + "](t)", {}, tr ? &*tr : nullptr, 600, 300, name); },
                           "The tube [" + name + "](·)" + (tr ? " and the truth" : ""));
-        h << figure_block([&] { return thickness_figure((*v.tubes)[i], "Thickness of [" + name + "]"); },
-                          "Thickness of [" + name + "](·)");
       }
     }
   }
 
   if (p.output.loops && !r.empty) h << loops_section(p, b);
 
-  h << "<h2>Truth check</h2>\n";
-  if (!p.output.truth) h << "<p class=\"note\">No ground truth given ([output.truth]).</p>\n";
-  else {
-    const TruthCheck c = check_truth(p, b);
-    h << "<p id=\"truth\">" << c.inside << " of " << c.samples
-      << " truth time points inside the tubes (every component of the truth inside).</p>\n";
-    if (!c.first_misses.empty()) {
-      h << "<ul>";
-      for (const std::string& m : c.first_misses) h << "<li>" << xml_escape(m) << "</li>";
-      h << "</ul>\n";
-    }
-  }
+  h << "<h2>Schedule</h2>\n<table id=\"schedule\"><tr><th>δ</th><th>slices</th><th>Σ mean thickness (all tubes, "
+       "the automatic δ's criterion)</th><th>rounds</th><th>contractor runs</th><th>build (s)</th><th>contract (s)</th></tr>\n";
+  for (const ScheduleStep& s : r.schedule)
+    h << "<tr><td>" << fmt(s.delta) << "</td><td>" << s.slices << "</td><td>" << fmt(s.mean_thickness) << "</td><td>"
+      << s.stats.iterations << "</td><td>" << s.stats.contractor_calls << "</td><td>" << fmt(s.build_seconds, "%.4f")
+      << "</td><td>" << fmt(s.contract_seconds, "%.4f") << "</td></tr>\n";
+  h << "</table>\n<p id=\"scheduling\">Scheduling: " << scheduling_name(r.scheduling)
+    << (r.scheduling == Scheduling::Priority ? " (each round by expected contraction over cost)" : " (each round in the order woken)")
+    << ".</p>\n";
 
   const double build = r.build_seconds(), contract = r.contract_seconds();
   h << "<h2>Run statistics</h2>\n<table id=\"stats\">"
@@ -332,7 +400,12 @@ std::string report_html(const Problem& p, const SolveResult& r, const Explanatio
     << "<tr><td>build time (all steps)</td><td>" << fmt(build, "%.4f") << " s ("
     << fmt(build + contract > 0 ? 100 * build / (build + contract) : 0, "%.1f") << " %)</td></tr>"
     << "<tr><td>contraction time (all steps)</td><td>" << fmt(contract, "%.4f") << " s</td></tr>"
-    << "</table>\n</body></html>\n";
+    << "</table>\n";
+
+  // The file itself last, folded: it is long and the reader has it.
+  h << "<h2>Problem</h2>\n<details id=\"problem\"><summary>" << xml_escape(p.file) << " (hash " << p.hash
+    << ", " << std::count(p.text.begin(), p.text.end(), '\n') << " lines)</summary><pre>" << xml_escape(p.text)
+    << "</pre></details>\n</body></html>\n";
   return h.str();
 }
 

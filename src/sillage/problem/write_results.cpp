@@ -9,6 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sillage/problem/bound_audit.h"
+#include "sillage/problem/var_sizes.h"
+
 namespace sillage {
 
 std::size_t decimation(std::size_t n, const OutputOptions& o) {
@@ -102,6 +105,22 @@ json stats_json(const ScheduleStep& s) {
           {"empty", s.stats.empty}};
 }
 
+json size_json(const SizeStats& s) {  // an unbounded size (+inf) is null, as a bound is
+  auto n = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  return {{"mean", n(s.mean)}, {"median", n(s.median)}, {"max", n(s.max)}, {"samples", s.samples}};
+}
+
+// Per variable: its box diameter over time and at the truth's times (var_sizes.h).
+json sizes_json(const std::vector<VarSize>& sizes) {
+  json out = json::object();
+  for (const VarSize& v : sizes) {
+    json j = {{"unit", v.unit}, {"over_time", size_json(v.over_time)}};
+    if (v.at_truth) j["at_truth"] = size_json(*v.at_truth);
+    out[v.name] = j;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string results_json(const Problem& p, const SolveResult& r, const OutputOptions& o, const Explanation* e) {
@@ -120,6 +139,16 @@ std::string results_json(const Problem& p, const SolveResult& r, const OutputOpt
                   {"work", r.summary.work},
                   {"seconds", r.summary.seconds}};
   j["warnings"] = r.warnings;
+  // The box diameter (the largest width over the components) of each variable; none without a solution.
+  if (!r.empty) j["sizes"] = sizes_json(var_sizes(p, r.built));
+  // With a truth: how much of each stated bound it used (bound_audit.h); null: not measurable.
+  if (p.output.truth) {
+    j["bound_audit"] = json::array();
+    auto n = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    for (const AuditLine& l : audit_problem(p))
+      j["bound_audit"].push_back({{"bound", l.name}, {"unit", l.unit}, {"allowed", n(l.allowed)}, {"used", n(l.used)},
+                                  {"percent", n(audit_percent(l))}, {"how", l.how}});
+  }
   // Eval rows skipped as outside [t0, tf] (outside = "skip"), per constraint label.
   json outside = json::object();
   for (const ConstraintSpec& c : p.constraints)

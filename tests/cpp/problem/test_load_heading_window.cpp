@@ -111,5 +111,5 @@ TEST(LoadHeadingWindow, Errors) {
   expect_error(kVars + "[[constraint]]\nkind = \"heading_window\"\np = \"p\"\npsi = \"psi\"\ndist = \"d\"\ndpsi = \"p\"\n"
                        "omega = \"w\"\nwindow = 4\n",
                "test.toml:36:8: found the tube_vector 'p', expected a scalar tube");
-  expect_error(kVars + "[[constraint]]\nkind = \"heading_windows\"\n", "\"second_deriv\", \"increment\", \"eval\", \"heading\", \"heading_window\" or \"p_implies_z\"");
+  expect_error(kVars + "[[constraint]]\nkind = \"heading_windows\"\n", "\"second_deriv\", \"increment\", \"eval\", \"heading\", \"heading_window\", \"p_implies_z\" or \"python\"");
 }
