@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "sillage/error.h"
+#include "sillage/problem/angle_terms.h"
 #include "sillage/problem/eval_rows.h"
 #include "sillage/tube/trajectory.h"
 
@@ -79,6 +81,9 @@ struct Worst {
   }
 };
 
+// How far the truth x is from the middle m of a bound: modulo 2π for an angle.
+double off(double x, double m, bool angle) { return std::abs(angle ? std::remainder(x - m, 2 * M_PI) : x - m); }
+
 // The [var] bounds: its value over the truth's times, each 'at' at its time.
 void audit_var(const VarSpec& v, const Truth& tr, std::vector<AuditLine>& out) {
   if (!tr.of.count(v.name)) return;
@@ -88,7 +93,7 @@ void audit_var(const VarSpec& v, const Truth& tr, std::vector<AuditLine>& out) {
       for (const double t : tr.times) {
         const std::optional<double> x = tr.at(v.name, i, t);
         const Interval b = bound_at(v.value[i], t);
-        if (x && b.is_bounded() && !b.is_empty()) w.add(std::abs(*x - b.mid()), b.rad(), "t = " + number(t));
+        if (x && b.is_bounded() && !b.is_empty()) w.add(off(*x, b.mid(), v.angle), b.rad(), "t = " + number(t));
       }
       if (w.ratio >= 0)
         out.push_back({"[var." + v.name + "] value of " + comp(v, i), v.unit, w.allowed, w.used,
@@ -100,7 +105,7 @@ void audit_var(const VarSpec& v, const Truth& tr, std::vector<AuditLine>& out) {
       const std::optional<double> x = tr.at(v.name, i, g.t);
       if (b.is_empty() || !b.is_bounded()) continue;
       out.push_back({"[var." + v.name + "] " + comp(v, i) + " at t = " + number(g.t), v.unit, b.rad(),
-                     x ? std::abs(*x - b.mid()) : NAN,
+                     x ? off(*x, b.mid(), v.angle) : NAN,
                      std::string(x ? "truth vs the middle of the bound" : "no truth at that time") + "; " + g.pos.str()});
     }
   }
@@ -120,6 +125,10 @@ std::string eval_name(const ConstraintSpec& c) {
 // One eval constraint: each kept row's expression with the truth in place of its variables.
 void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std::vector<AuditLine>& out) {
   const detail::RewrittenExpr r = detail::eval_observation(p, c);
+  std::set<std::string> angle_ids;  // an equation with angle terms holds modulo 2π
+  for (const detail::VarRef& ref : r.refs)
+    if (p.var(ref.var) && p.var(ref.var)->angle) angle_ids.insert(ref.id);
+  const bool modulo = !detail::angle_terms(r.text, angle_ids, c.expr_pos, c.label).angles.empty();
   const CsvTable& table = p.table(c.data)->table;
   const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;
   const auto column = [&](const std::string& n) { return table.has_column(n) || (joined && joined->has_column(n)); };
@@ -171,8 +180,9 @@ void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std:
       }
       if (known) {
         const Interval y = f.eval(args);
-        if (!y.is_empty() && y.is_bounded() && (!best || std::abs(y.mid()) / y.rad() < best->first / best->second))
-          best = {std::abs(y.mid()), y.rad()};
+        const double used = off(y.mid(), 0, modulo);
+        if (!y.is_empty() && y.is_bounded() && (!best || used / y.rad() < best->first / best->second))
+          best = {used, y.rad()};
       }
       if (rt.is_degenerate()) break;
     }

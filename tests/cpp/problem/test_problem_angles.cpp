@@ -10,6 +10,7 @@
 #include "data_tables.h"
 #include "problem_text.h"
 #include "sillage/interval/angle.h"
+#include "sillage/problem/bound_audit.h"
 #include "sillage/problem/report_html.h"
 
 using namespace sillage;
@@ -58,6 +59,16 @@ TEST(ProblemAngles, AHeadingUnknownAtTheStartIsFoundFromBearingsModuloTwoPi) {
   // bearing, and at most 1 s of ±0.05 rad/s drift to the nearest bearing.
   const Tube& psi = (*r.built.var("psi").tubes)[0];
   for (std::size_t k = 20; k <= 580; ++k) ASSERT_LT(psi.gate(k).diam(), 0.2) << k << " " << psi.gate(k);
+  // The bound audit reads the bearing modulo 2π: the truth, 30 rad on, uses
+  // a few millionths (the file's 6 digits) of the 0.02 allowed, not turns.
+  bool audited = false;
+  for (const AuditLine& l : audit_problem(p)) {
+    if (l.name.find("(eval)") == std::string::npos) continue;
+    audited = true;
+    EXPECT_NEAR(l.allowed, 0.02, 1e-12);
+    EXPECT_LT(l.used, 1e-4) << l.how;
+  }
+  EXPECT_TRUE(audited);
 }
 
 TEST(ProblemAngles, UsesThatWouldReadAnAngleAsARealAreRefused) {
