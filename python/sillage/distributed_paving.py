@@ -3,8 +3,8 @@
 SIVIA's tree below a box depends only on that box (the test, the bisection rule and eps), never on
 where the box sits in the tree. So the client runs SIVIA's first bisections itself (each a SIVIA of
 the box cut short after a few boxes: the bisections are SIVIA's own, not a copy of its rule), sends
-each box at the cut depth to a worker as a task, and joins the sub-pavings (sillage.join_pavings)
-into the tree of one process: == to it, node for node. A box that SIVIA paves within the probe's few
+each box at the cut depth to a worker as a task, and grafts the sub-pavings into the top of the
+tree (sillage.graft_pavings): the tree of one process: == to it, node for node. A box that SIVIA paves within the probe's few
 boxes is kept as it is and sent nowhere.
 
 A Function is compiled code and does not travel: a task carries the function as text (its variable
@@ -35,6 +35,9 @@ class InversionSpec:
         if self.kind == "kernel":
             return sillage.kernel_sivia_run(box, f, sillage.Function(list(self.variables), self.expr_hi), eps, options)
         return sillage.sivia_run(box, f, self.y, eps, options)
+
+
+InversionSpec.__init__.__doc__ = "An inversion from its fields, in order: kind, variables, expr, y, expr_hi."
 
 
 def pave_box(spec, box, eps, max_boxes=None):
@@ -82,15 +85,25 @@ def task_boxes(tree):
     return []
 
 
-def join(tree, pavings):
-    """The paving of the tree with the tasks' pavings (an iterator, in pre-order) in their places."""
+def top_paving(tree):
+    """The paving of the tree with a Boundary leaf for each task, and those leaves' pre-order indices."""
     import sillage
 
     if tree[0] == "paved":
-        return tree[1]
+        return tree[1], []
     if tree[0] == "task":
-        return next(pavings)
-    return sillage.join_pavings(tree[1], join(tree[2], pavings), join(tree[3], pavings))
+        return sillage.leaf_paving(tree[1], sillage.PavingTag.Boundary), [0]
+    (left, li), (right, ri) = top_paving(tree[2]), top_paving(tree[3])
+    joined = sillage.join_pavings(tree[1], left, right)
+    return joined, [1 + i for i in li] + [1 + left.nb_nodes() + i for i in ri]
+
+
+def join(tree, pavings):
+    """The paving of the tree with the tasks' pavings (in pre-order) in their places, in one pass."""
+    import sillage
+
+    top, leaves = top_paving(tree)
+    return sillage.graft_pavings(top, leaves, list(pavings))
 
 
 def default_depth(workers):
@@ -113,7 +126,7 @@ def distributed_paving(client, spec, x0, eps, depth=None, max_boxes=None, progre
     for r in results:
         if r["status"] == "error":
             raise RuntimeError(f"distributed sivia: a sub-box failed: {r['why']}")
-    return join(tree, iter(r["paving"] for r in results))
+    return join(tree, [r["paving"] for r in results])
 
 
 def _pave_record(box, spec, eps, max_boxes):

@@ -9,7 +9,7 @@ import sillage
 
 pytest.importorskip("distributed")
 from sillage import distributed  # noqa: E402
-from sillage.distributed_paving import InversionSpec, cut, task_boxes  # noqa: E402
+from sillage.distributed_paving import InversionSpec, cut, join, pave_box, task_boxes  # noqa: E402
 
 RING = (["x", "y"], "x^2 + y^2", sillage.Interval(1, 2))
 
@@ -36,14 +36,26 @@ def test_join_puts_pieces_under_a_root():
         sillage.join_pavings(sillage.IntervalVector([[0, 1], [0, 1]]), left, right)
 
 
+def test_graft_replaces_leaves_by_pavings():
+    box = sillage.IntervalVector([[0, 2], [0, 1]])
+    halves = [sillage.IntervalVector([[0, 1], [0, 1]]), sillage.IntervalVector([[1, 2], [0, 1]])]
+    top = sillage.join_pavings(box, *(sillage.leaf_paving(h, sillage.PavingTag.Boundary) for h in halves))
+    ring = [local(h, 0.1) for h in halves]
+    grafted = sillage.graft_pavings(top, [1, 2], ring)
+    assert grafted == sillage.join_pavings(box, *ring)
+    assert grafted.nb_nodes() == 1 + ring[0].nb_nodes() + ring[1].nb_nodes()
+    with pytest.raises(sillage.Error, match="expected the box of leaf 2"):
+        sillage.graft_pavings(top, [1, 2], [ring[0], ring[0]])
+    with pytest.raises(sillage.Error, match="is not a leaf"):
+        sillage.graft_pavings(top, [0], [ring[0]])
+
+
 def test_the_cut_follows_sivia_own_bisections():
     """Cut at depth 3 and joined locally (no cluster), the paving is the one of a single run."""
     spec = InversionSpec("sivia", tuple(RING[0]), RING[1], y=RING[2])
     x0 = sillage.IntervalVector([[-2, 2], [-2, 2]])
     tree = cut(spec, x0, 0.05, 3)
-    from sillage.distributed_paving import join, pave_box
-
-    joined = join(tree, iter(pave_box(spec, b, 0.05) for b in task_boxes(tree)))
+    joined = join(tree, [pave_box(spec, b, 0.05) for b in task_boxes(tree)])
     assert len(task_boxes(tree)) == 8 and joined == local(x0, 0.05)
 
 

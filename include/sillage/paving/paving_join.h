@@ -22,6 +22,15 @@ Paving leaf_paving(const IntervalVector& box, PavingTag tag);
 // pieces' domains are not inside box.
 Paving join_pavings(const IntervalVector& box, const Paving& left, const Paving& right);
 
+// The paving top with its leaves of pre-order indices `leaves` (increasing)
+// replaced by the pavings `pieces` (one each, its domain that leaf's box), in
+// one pass: the join of many sub-pavings without copying them at every level.
+// Error if a leaf is not one, the counts differ, or a piece's domain is not
+// its leaf's box.
+// The pieces are read, never copied whole (they may hold hundreds of MB).
+Paving graft_pavings(const Paving& top, const std::vector<std::size_t>& leaves,
+                     const std::vector<const Paving*>& pieces);
+
 // A paving as plain arrays and back (pickling): per node its right-child
 // offset and its kind, per node dim() pairs of bounds (lb, ub). Bit for bit.
 struct PavingArrays {

@@ -78,10 +78,13 @@ py::tuple paving_state(const Paving& p) {
 
 template <class T>
 std::vector<T> from_bytes(const py::bytes& b) {
-  const std::string s = b;
-  if (s.size() % sizeof(T)) throw Error("Paving: a pickled state whose arrays are cut short");
-  std::vector<T> v(s.size() / sizeof(T));
-  std::memcpy(v.data(), s.data(), s.size());
+  char* data = nullptr;
+  Py_ssize_t size = 0;
+  if (PyBytes_AsStringAndSize(b.ptr(), &data, &size) != 0) throw py::error_already_set();
+  const auto n = static_cast<std::size_t>(size);
+  if (n % sizeof(T)) throw Error("Paving: a pickled state whose arrays are cut short");
+  std::vector<T> v(n / sizeof(T));
+  std::memcpy(v.data(), data, n);  // read in place: no copy of the bytes first
   return v;
 }
 
@@ -180,6 +183,7 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
 
   m.SILLAGE_FN(leaf_paving, py::arg("box"), py::arg("tag"));
   m.SILLAGE_FN(join_pavings, py::arg("box"), py::arg("left"), py::arg("right"));
+  m.SILLAGE_FN(graft_pavings, py::arg("top"), py::arg("leaves"), py::arg("pieces"), nogil);
 
   py::class_<SiviaOptions>(m, "SiviaOptions", DOC(SiviaOptions))
       .def(py::init([](bool parallel, const Budget* budget) {

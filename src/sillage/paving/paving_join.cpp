@@ -1,5 +1,7 @@
 #include "sillage/paving/paving_join.h"
 
+#include <limits>
+
 #include "sillage/error.h"
 
 namespace sillage {
@@ -34,15 +36,80 @@ Paving join_pavings(const IntervalVector& box, const Paving& left, const Paving&
   return p;
 }
 
+namespace {
+
+// Read access to a paving's arrays: Paving exposes them for building only (non-const); nothing here writes.
+const std::vector<Paving::Node>& nodes_of(const Paving& p) { return const_cast<Paving&>(p).raw_nodes(); }
+const std::vector<Interval>& bounds_of(const Paving& p) { return const_cast<Paving&>(p).raw_bounds(); }
+
+// Appends the subtree of top's node i to out, pieces in place of the grafted leaves; returns its node count.
+struct Grafter {
+  const Paving& top;
+  const std::vector<std::size_t>& leaves;
+  const std::vector<const Paving*>& pieces;
+  Paving& out;
+  std::size_t next = 0;  // the next grafted leaf
+
+  std::size_t emit(std::size_t i) {
+    auto& nodes = out.raw_nodes();
+    auto& bounds = out.raw_bounds();
+    if (next < leaves.size() && leaves[next] == i) {
+      const Paving& piece = *pieces[next++];
+      nodes.insert(nodes.end(), nodes_of(piece).begin(), nodes_of(piece).end());
+      bounds.insert(bounds.end(), bounds_of(piece).begin(), bounds_of(piece).end());
+      return piece.nb_nodes();
+    }
+    const std::size_t at = nodes.size();
+    nodes.push_back(nodes_of(top)[i]);
+    const auto box = bounds_of(top).begin() + static_cast<std::ptrdiff_t>(i * top.dim());
+    bounds.insert(bounds.end(), box, box + static_cast<std::ptrdiff_t>(top.dim()));
+    if (top.is_leaf(i)) return 1;
+    const std::size_t left = emit(top.left(i));
+    nodes[at].right = static_cast<std::uint32_t>(1 + left);
+    return 1 + left + emit(top.right(i));
+  }
+};
+
+}  // namespace
+
+Paving graft_pavings(const Paving& top, const std::vector<std::size_t>& leaves,
+                     const std::vector<const Paving*>& pieces) {
+  if (leaves.size() != pieces.size())
+    throw Error("graft_pavings: " + std::to_string(leaves.size()) + " leaves and " + std::to_string(pieces.size()) +
+                " pieces, expected one piece per leaf");
+  for (std::size_t k = 0; k < leaves.size(); ++k) {
+    if (!pieces[k]) throw Error("graft_pavings: piece " + std::to_string(k) + " is none, expected a paving");
+    if (leaves[k] >= top.nb_nodes() || !top.is_leaf(leaves[k]) || (k > 0 && leaves[k] <= leaves[k - 1]))
+      throw Error("graft_pavings: node " + std::to_string(leaves[k]) +
+                  " is not a leaf of the paving after the previous one (leaves in increasing pre-order)");
+    const Paving& piece = *pieces[k];
+    if (piece.is_empty() || piece.dim() != top.dim() || piece.domain() != top.node_box(leaves[k]))
+      throw Error("graft_pavings: piece " + std::to_string(k) + " paves " + piece.domain().str() +
+                  ", expected the box of leaf " + std::to_string(leaves[k]) + ", " +
+                  top.node_box(leaves[k]).str());
+  }
+  std::size_t total = top.nb_nodes();
+  for (const Paving* p : pieces) total += p->nb_nodes() - 1;
+  if (total > std::numeric_limits<std::uint32_t>::max())
+    throw Error("graft_pavings: " + std::to_string(total) + " nodes, more than a paving's offsets hold");
+  Paving out(top.dim());
+  out.raw_nodes().reserve(total);
+  out.raw_bounds().reserve(total * top.dim());
+  if (!top.is_empty()) Grafter{top, leaves, pieces, out}.emit(0);
+  return out;
+}
+
 PavingArrays paving_arrays(const Paving& p) {
-  Paving q(p);
   PavingArrays a;
   a.dim = p.dim();
-  for (const Paving::Node& n : q.raw_nodes()) {
+  a.right.reserve(p.nb_nodes());
+  a.kind.reserve(p.nb_nodes());
+  a.bounds.reserve(2 * bounds_of(p).size());
+  for (const Paving::Node& n : nodes_of(p)) {
     a.right.push_back(n.right);
     a.kind.push_back(n.kind);
   }
-  for (const Interval& x : q.raw_bounds()) {
+  for (const Interval& x : bounds_of(p)) {
     a.bounds.push_back(x.is_empty() ? rounding::kInf : x.lb());
     a.bounds.push_back(x.is_empty() ? -rounding::kInf : x.ub());
   }
@@ -56,6 +123,8 @@ Paving paving_from_arrays(const PavingArrays& a) {
                 " kinds and " + std::to_string(a.bounds.size()) + " bounds for dimension " + std::to_string(a.dim) +
                 ", expected one kind and 2 * dim bounds per offset");
   Paving p(a.dim);
+  p.raw_nodes().reserve(n);
+  p.raw_bounds().reserve(a.bounds.size() / 2);
   for (std::size_t i = 0; i < n; ++i) {
     const bool internal = a.kind[i] == Paving::kInternal;
     if (a.kind[i] > Paving::kInternal || internal != (a.right[i] != 0) || i + a.right[i] >= n)
