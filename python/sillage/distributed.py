@@ -20,7 +20,7 @@ from .distributed_grid import TomlText, grid, parse_setting, toml_value
 from .distributed_paving import InversionSpec, distributed_paving
 from .distributed_report import write_report
 from .distributed_run import DEFAULT_RETRIES, Progress, cluster_client, run_tasks
-from .distributed_tasks import make_task, run_task
+from .distributed_tasks import make_task, run_shared_task, share_tables
 
 __all__ = ["batch", "sweep", "sivia", "kernel_sivia", "run_problem_tasks", "main"]
 
@@ -30,9 +30,10 @@ def run_problem_tasks(tasks, client=None, scheduler=None, workers=2, retries=DEF
     """The records of the tasks (distributed_tasks.make_task), solved on client's cluster, or the scheduler's
     at `scheduler`, or a new local cluster of `workers` processes."""
     if client is not None:
-        return run_tasks(client, run_task, tasks, retries=retries, progress=progress, solve_options=solve_options)
+        return run_tasks(client, run_shared_task, share_tables(client, tasks), retries=retries, progress=progress,
+                         solve_options=solve_options)
     with cluster_client(scheduler, workers) as own:
-        return run_tasks(own, run_task, tasks, retries=retries, progress=progress, solve_options=solve_options)
+        return run_problem_tasks(tasks, own, retries=retries, progress=progress, solve_options=solve_options)
 
 
 def _finish(records, out, title, start):

@@ -28,6 +28,11 @@ def _keys(records):
     return keys
 
 
+def _swept(records, keys):
+    """The keys set to more than one value (a key set to one value in every task is no axis)."""
+    return [k for k in keys if len({r.get("settings", {}).get(k) for r in records}) > 1]
+
+
 def table_rows(records):
     """One flat dict per record: COLUMNS, the swept keys, then 'width NAME' per variable."""
     keys, names = _keys(records), _variables(records)
@@ -140,7 +145,7 @@ def write_report(records, folder, title, wall_seconds=None):
 
     matplotlib.use("Agg")
     write_table(records, folder)
-    keys = _keys(records)
+    keys = _swept(records, _keys(records))
     counts = {}
     for r in records:
         counts[r["status"]] = counts.get(r["status"], 0) + 1

@@ -47,11 +47,13 @@ class Progress:
     """A line on stderr, redrawn as tasks end (only on a terminal): done/total, statuses, elapsed."""
 
     def __init__(self, total, enabled=None, stream=None):
+        """For `total` tasks, on `stream` (stderr); enabled: None for "when it is a terminal"."""
         self.stream = stream or sys.stderr
         self.enabled = self.stream.isatty() if enabled is None else enabled
         self.total, self.counts, self.start = total, {}, time.perf_counter()
 
     def update(self, record):
+        """Counts the record's status and redraws the line."""
         self.counts[record["status"]] = self.counts.get(record["status"], 0) + 1
         if self.enabled:
             done = sum(self.counts.values())
@@ -60,6 +62,7 @@ class Progress:
             self.stream.flush()
 
     def close(self):
+        """Ends the line (the next output starts on its own)."""
         if self.enabled:
             self.stream.write("\n")
 
@@ -73,27 +76,47 @@ def _lost_record(task_index, future):
     return {"index": task_index, "status": "error", "why": f"the task failed on the cluster: {why}"}
 
 
-def run_tasks(client, function, items, retries=DEFAULT_RETRIES, progress=None, **kwargs):
+def in_flight_limit(client):
+    """How many tasks are submitted ahead of their results: enough to keep every worker thread busy (4 per
+    thread, 256 at least), few enough that the scheduler never holds a whole fleet's data at once."""
+    threads = sum(w.get("nthreads", 1) for w in client.scheduler_info().get("workers", {}).values())
+    return max(256, 4 * threads)
+
+
+def run_tasks(client, function, items, retries=DEFAULT_RETRIES, progress=None, max_in_flight=None, **kwargs):
     """function(item, **kwargs) for each item on the cluster: the results in item order.
 
     A result must be a dict; a task that failed on the cluster (not in function, which records its own
-    errors) gives {'index', 'status': 'error', 'why'}. progress: a Progress, updated per result.
+    errors) gives {'index', 'status': 'error', 'why'}. progress: a Progress, updated per result. At most
+    max_in_flight tasks (default in_flight_limit) are on the cluster at a time; the next go as results come.
     """
     distributed = need_distributed()
     batch = uuid.uuid4().hex[:8]
-    futures = {client.submit(function, item, key=f"sillage-{batch}-{i}", retries=retries, pure=False, **kwargs): i
-               for i, item in enumerate(items)}
+    items = list(items)
+    limit = max_in_flight or in_flight_limit(client)
+    futures = {}
+
+    def submit(i):
+        f = client.submit(function, items[i], key=f"sillage-{batch}-{i}", retries=retries, pure=False, **kwargs)
+        futures[f] = i
+        return f
+
+    queue = distributed.as_completed([submit(i) for i in range(min(limit, len(items)))])
+    following = iter(range(min(limit, len(items)), len(items)))
     results = {}
     try:
-        for future in distributed.as_completed(list(futures)):
-            i = futures[future]
+        for future in queue:
+            i = futures.pop(future)
             results[i] = future.result() if future.status == "finished" else _lost_record(i, future)
             if progress:
                 progress.update(results[i])
+            nxt = next(following, None)
+            if nxt is not None:
+                queue.add(submit(nxt))
     except BaseException:  # Ctrl-C (KeyboardInterrupt) and any other stop: nothing left running
         client.cancel(list(futures))
         raise
     finally:
         if progress:
             progress.close()
-    return [results[i] for i in range(len(futures))]
+    return [results[i] for i in range(len(items))]

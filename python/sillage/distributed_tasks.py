@@ -6,11 +6,14 @@ paths (``ship="paths"``: a filesystem the workers share). ``run_task`` runs on a
 compact record (a dict of numbers and short strings), plus the pickled map variables of the tasks
 asked for a map.
 """
+import dataclasses
+import hashlib
 import json
 import os
 import socket
 import tempfile
 import time
+import warnings
 from dataclasses import dataclass, field
 
 SHIP_MODES = ("data", "paths")
@@ -32,6 +35,9 @@ class ProblemTask:
         """The file, then the settings: 'plaza1.toml time_error=0.2 track=0.05'."""
         name = os.path.basename(self.file)
         return " ".join([name] + [f"{k}={v}" for k, v in self.settings.items()])
+
+
+ProblemTask.__init__.__doc__ = "A task from its fields, in order: index, file, text, settings, data, keep_map."
 
 
 def toml_string(text):
@@ -150,3 +156,44 @@ def run_task(task, solve_options=None, threads=1):
         record.update(status="error", why=f"{type(e).__name__}: {e}" if not isinstance(e, sillage.Error) else str(e))
     record["seconds"] = time.perf_counter() - start
     return record
+
+
+def _tables_digest(data):
+    h = hashlib.sha256()
+    for name, (file_name, content) in sorted(data.items()):
+        h.update(f"{name}\0{file_name}\0{len(content)}\0".encode())
+        h.update(content)
+    return h.hexdigest()
+
+
+def _tables(data):
+    """A task that gives its argument: the tables of a sweep as one task of the graph."""
+    return data
+
+
+def share_tables(client, tasks):
+    """(task, None) or (task without its tables, future of the tables) per task: a set of tables that several
+    tasks read (a sweep's) goes to the cluster once, as a task that gives it (not a scattered copy, lost
+    with its worker: the scheduler keeps the task and runs it again), copied to every worker before the
+    tasks start; the tables of one task stay with it."""
+    digests = [_tables_digest(t.data) if t.data else None for t in tasks]
+    counts = {d: digests.count(d) for d in set(digests)}
+    futures, items = {}, []
+    for t, digest in zip(tasks, digests):
+        if digest is None or counts[digest] < 2:
+            items.append((t, None))
+            continue
+        if digest not in futures:
+            with warnings.catch_warnings():  # sent once on purpose: Dask's advice is for a copy per task
+                warnings.filterwarnings("ignore", message="Large object", category=UserWarning)
+                futures[digest] = client.submit(_tables, t.data, key=f"sillage-tables-{digest[:16]}", pure=False)
+        items.append((dataclasses.replace(t, data={}), futures[digest]))
+    if futures:  # on every worker: else Dask runs the tasks where the tables are, all on one worker
+        client.replicate(list(futures.values()))
+    return items
+
+
+def run_shared_task(item, solve_options=None, threads=1):
+    """run_task on a (task, tables) pair of share_tables, the tables already fetched by Dask."""
+    task, tables = item
+    return run_task(dataclasses.replace(task, data=tables) if tables else task, solve_options, threads)

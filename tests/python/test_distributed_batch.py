@@ -110,3 +110,13 @@ def test_a_worker_killed_mid_batch_loses_nothing(dask_client):
     assert all(r["status"] == "solved" for r in records)
     assert records[0]["mean_thickness"] == records[2]["mean_thickness"] == records[4]["mean_thickness"]
     dask_client.wait_for_workers(2, timeout=30)  # the nanny's new worker, for the tests after this one
+
+
+def test_tasks_go_in_a_window_and_come_back_in_order(dask_client):
+    """At most max_in_flight tasks on the cluster at a time (a fleet's data never all at once), the
+    results in the order of the items."""
+    from sillage.distributed_run import run_tasks
+    from sillage.distributed_tasks import _tables as identity
+
+    items = [{"index": i, "status": "solved"} for i in range(25)]
+    assert run_tasks(dask_client, identity, items, max_in_flight=3) == items

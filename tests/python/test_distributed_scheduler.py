@@ -2,6 +2,7 @@
 `dask worker` process on the loopback address (free ports), the batch sent to its address; and the
 command `sillage batch` / `sillage sweep` (which runs python3 -m sillage.distributed)."""
 import os
+import signal
 import socket
 import subprocess
 import sys
@@ -86,3 +87,18 @@ def test_the_command_says_what_is_wrong_with_a_setting(tmp_path):
     r = subprocess.run([str(SILLAGE), "sweep", LINE, "--set", "constraint[1].error.r=1", "--out", str(tmp_path)],
                        capture_output=True, text=True, timeout=60)
     assert r.returncode == 2 and "no 'error' in constraint[1]" in r.stderr
+
+
+def test_ctrl_c_cancels_the_batch(tmp_path):
+    """SIGINT while `sillage batch` runs on its local cluster: the tasks are cancelled, the cluster
+    closed, exit status 130 (SIGINT's default restored for the child, whatever this run ignores)."""
+    slow = str(PROBLEMS / "lowcost_beacons.toml")
+    proc = subprocess.Popen([str(SILLAGE), "batch", *[slow] * 8, "--workers", "1", "--out", str(tmp_path)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    time.sleep(4)  # the cluster up and tasks running (or still starting: a Ctrl-C then is handled the same)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err[-2000:]
+    assert "cancelled (Ctrl-C)" in err
+    assert not (tmp_path / "report.html").exists()
