@@ -38,8 +38,12 @@ def cluster_client(scheduler=None, workers=2):
         return
     if workers < 1:
         raise ValueError(f"workers: found {workers}, expected a number of worker processes >= 1")
-    with distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
+    import dask
+
+    # On the loopback, compressing the results (pavings: hundreds of MB) costs more CPU than it saves.
+    with dask.config.set({"distributed.comm.compression": None}), \
+            distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                     dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
         yield client
 
 
