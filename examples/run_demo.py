@@ -60,6 +60,7 @@ EXAMPLES = [
     ("problem_file", "py", "problem_file.py"),
     ("explain_empty", "py", "explain_empty.py"),
     ("problem_refinement", "py", "problem_refinement.py"),
+    ("sweep_line_ranges", "py", "sweep_line_ranges.py"),
     ("temporal_slam_small", "py", "temporal_slam_small.py"),
     ("bathymetry_slam", "cpp", "example_bathymetry_slam"),
     ("bathymetry_slam", "py", "bathymetry_slam.py"),

@@ -9,6 +9,7 @@ PACKAGES=(
   libmpfr-dev libgmp-dev libmpfi-dev libboost-dev
   libtbb-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pytest
+  python3-distributed python3-dask
   python3-venv python3-pip python3-setuptools python3-wheel git
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev chromium chromium-driver
 )

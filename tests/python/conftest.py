@@ -18,3 +18,14 @@ def sigint_raises():
     old = signal.signal(signal.SIGINT, signal.default_int_handler)
     yield
     signal.signal(signal.SIGINT, old)
+
+
+@pytest.fixture(scope="session")
+def dask_client():
+    """A Client of a real local Dask cluster, 2 worker processes of one thread (tests of
+    sillage.distributed), started once for the session and shut down after it; skipped where
+    Dask distributed is not installed."""
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
+        yield client

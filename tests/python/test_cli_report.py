@@ -75,7 +75,7 @@ def test_exit_codes():
     missing = run("solve", "/no/such.toml")
     assert missing.returncode == 2 and missing.stderr == "sillage: /no/such.toml: found no such file, expected a problem file (TOML)\n"
     typo = run("slove", PROBLEMS / "causal_chain.toml")
-    assert typo.returncode == 2 and "found the command 'slove', expected solve, explain, check, show, plot, stream or replay" in typo.stderr
+    assert typo.returncode == 2 and "found the command 'slove', expected solve, explain, check, show, plot, stream, replay, batch or sweep" in typo.stderr
     assert run("solve", PROBLEMS / "causal_chain.toml", "--delta", "-1").returncode == 2
 
 

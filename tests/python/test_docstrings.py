@@ -2,7 +2,7 @@
 
 Walks the compiled module (classes, their constructors, methods, static
 methods, properties, module functions) and the pure-Python helpers
-(sillage.plot, sillage.plot_tube, sillage.plot_loops, sillage.testing). pybind11's generated
+(sillage.plot, sillage.plot_tube, sillage.plot_loops, sillage.testing, sillage.distributed*). pybind11's generated
 signature lines ("f(x: Interval) -> Interval", "Overloaded function.", the
 numbered overload headers) do not count: each overload needs its own text.
 An overload is named "f(Type1, Type2)" after its parameter types (self left out).
@@ -22,7 +22,9 @@ from sillage import _sillage
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 from gen_docstrings import split_top  # noqa: E402  (the C++ argument splitter, brackets balanced)
 
-PY_HELPERS = ["sillage.plot", "sillage.plot_tube", "sillage.plot_loops", "sillage.testing"]
+PY_HELPERS = ["sillage.plot", "sillage.plot_tube", "sillage.plot_loops", "sillage.testing", "sillage.distributed",
+              "sillage.distributed_tasks", "sillage.distributed_run", "sillage.distributed_grid",
+              "sillage.distributed_report", "sillage.distributed_paving"]
 
 OVERLOAD_HEAD = re.compile(r"^\d+\.\s+")
 PYBIND_GENERATED = {"name", "value"}  # enum members' properties

@@ -24,6 +24,7 @@
 
 #include "explain_command.h"
 #include "online_commands.h"
+#include "python_commands.h"
 
 #include "sillage/problem/check_summary.h"
 #include "sillage/problem/bound_audit.h"
@@ -286,11 +287,16 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   rp->add_flag("--no-batch", no_batch, "do not solve the file in batch for the comparison");
   rp->add_flag("--quiet", quiet, "no summary");
+  // Listed in --help; their arguments are Python's (sillage batch --help).
+  app.add_subcommand("batch", "solve many problem files as Dask tasks (docs/distributed.md)")->allow_extras();
+  app.add_subcommand("sweep", "solve a problem over a grid of values of its keys (--set KEY=V1,V2) as Dask tasks")
+      ->allow_extras();
+  if (argc > 1 && cli::is_python_command(argv[1])) return cli::run_python_command(argc, argv);
   // A mistyped command is named (CLI11 would only say that one is required).
   const std::string first = argc > 1 ? argv[1] : "";
   if (!first.empty() && first[0] != '-' && first != "solve" && first != "explain" && first != "check" && first != "show" && first != "plot" &&
       first != "stream" && first != "replay") {
-    std::fprintf(stderr, "sillage: found the command '%s', expected solve, explain, check, show, plot, stream or replay (sillage --help)\n",
+    std::fprintf(stderr, "sillage: found the command '%s', expected solve, explain, check, show, plot, stream, replay, batch or sweep (sillage --help)\n",
                  argv[1]);
     return kBadInput;
   }

@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "bindings.h"
 #include "docstrings.h"
 #include "interruptible.h"
+#include "sillage/paving/paving_join.h"
 #include "sillage/paving/sivia_function.h"
 
 namespace sillage::python {
@@ -63,6 +65,37 @@ void def_sivia(py::module_& m, const char* name, const char* run_name, SiviaResu
 SiviaOptions sequential(SiviaOptions o) {
   o.parallel = false;
   return o;
+}
+
+// A paving's pickled state: (dim, right offsets, kinds, bounds) as bytes, bit for bit.
+py::tuple paving_state(const Paving& p) {
+  const PavingArrays a = paving_arrays(p);
+  const auto bytes = [](const auto& v) {
+    return py::bytes(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
+  };
+  return py::make_tuple(a.dim, bytes(a.right), bytes(a.kind), bytes(a.bounds));
+}
+
+template <class T>
+std::vector<T> from_bytes(const py::bytes& b) {
+  char* data = nullptr;
+  Py_ssize_t size = 0;
+  if (PyBytes_AsStringAndSize(b.ptr(), &data, &size) != 0) throw py::error_already_set();
+  const auto n = static_cast<std::size_t>(size);
+  if (n % sizeof(T)) throw Error("Paving: a pickled state whose arrays are cut short");
+  std::vector<T> v(n / sizeof(T));
+  std::memcpy(v.data(), data, n);  // read in place: no copy of the bytes first
+  return v;
+}
+
+Paving paving_of_state(const py::tuple& t) {
+  if (t.size() != 4) throw Error("Paving: a pickled state of " + std::to_string(t.size()) + " items, expected 4");
+  PavingArrays a;
+  a.dim = t[0].cast<std::size_t>();
+  a.right = from_bytes<std::uint32_t>(t[1]);
+  a.kind = from_bytes<std::uint8_t>(t[2]);
+  a.bounds = from_bytes<double>(t[3]);
+  return paving_from_arrays(a);
 }
 
 // Leaves of a tag as a float array (k, dim, 2) of [lb, ub] rows: fast plotting.
@@ -143,9 +176,14 @@ SILLAGE_BINDING(paving, "budget", "ctc", "expr", "interval") {
       .SILLAGE_DEF(Paving, tag, py::arg("i"))
       .SILLAGE_DEF(Paving, leaf_indices, py::arg("tag"))
       .SILLAGE_DEF(Paving, leaves_intersecting, py::arg("box"))
+      .def(py::pickle(&paving_state, &paving_of_state))
       .def("__eq__", &Paving::operator==)
       .def("__ne__", &Paving::operator!=)
       .def("__repr__", &Paving::str);
+
+  m.SILLAGE_FN(leaf_paving, py::arg("box"), py::arg("tag"));
+  m.SILLAGE_FN(join_pavings, py::arg("box"), py::arg("left"), py::arg("right"));
+  m.SILLAGE_FN(graft_pavings, py::arg("top"), py::arg("leaves"), py::arg("pieces"), nogil);
 
   py::class_<SiviaOptions>(m, "SiviaOptions", DOC(SiviaOptions))
       .def(py::init([](bool parallel, const Budget* budget) {

@@ -5,6 +5,8 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include <map>
+
 #include "bindings.h"
 #include "docstrings.h"
 #include "interruptible.h"
@@ -15,6 +17,7 @@
 #include "sillage/problem/problem_warnings.h"
 #include "sillage/problem/python_constraint.h"
 #include "sillage/problem/report_html.h"
+#include "sillage/problem/set_problem_key.h"
 #include "sillage/problem/write_results.h"
 #include "sillage/problem/solve_problem.h"
 #include "sillage/problem/var_sizes.h"
@@ -144,6 +147,11 @@ SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
         for (const VarSpec& s : p.vars) v.push_back(s.name);
         return v;
       }, "The names of its variables.")
+      .def_property_readonly("data_files", [](const Problem& p) {
+        std::map<std::string, std::string> d;
+        for (const DataSpec& s : p.data) d[s.name] = s.path;
+        return d;
+      }, "{name: path} of its [data.NAME] tables, the paths as resolved (against the file's folder, ${VAR} expanded).")
       .def_property_readonly("nb_constraints", [](const Problem& p) { return p.constraints.size(); },
                              "The number of [[constraint]] tables.")
       .def("__repr__", [](const Problem& p) {
@@ -213,6 +221,8 @@ SILLAGE_BINDING(problem, "budget", "cn", "loops", "tube") {
 
   m.def("load_problem", &load_problem, py::arg("path"),
         "Reads and validates a problem file; sillage.ParseError 'file:line:column: found ..., expected ...' otherwise.");
+  m.def("parse_problem", &parse_problem, py::arg("text"), py::arg("path"), DOC(parse_problem));
+  m.SILLAGE_FN(set_problem_key, py::arg("text"), py::arg("file"), py::arg("key"), py::arg("value"));
   m.SILLAGE_FN(check_summary, py::arg("problem"));
   m.def("solve_problem", &solve_with, py::arg("problem"), py::arg("delta") = py::none(), py::arg("auto_delta") = false,
         py::arg("tolerance") = 0.01, py::arg("budget_seconds") = 60.0,
