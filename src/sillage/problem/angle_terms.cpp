@@ -118,12 +118,77 @@ AngleTerms angle_terms(const std::string& text, const std::set<std::string>& ang
   return out;
 }
 
+namespace {
+
+// The components of a tuple "(e1, e2, ...)" that is the whole text (commas
+// inside brackets or calls are not split); the text alone otherwise.
+std::vector<std::string> tuple_components(const std::string& text) {
+  const std::string t = trimmed(text);
+  if (t.size() < 2 || t.front() != '(' || t.back() != ')') return {text};
+  std::vector<std::string> out;
+  int depth = 0;
+  std::string cur;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const char c = t[i];
+    if (c == '(' || c == '[') ++depth;
+    if (c == ')' || c == ']') --depth;
+    if (depth == 0 && i + 1 < t.size()) return {text};  // "(a) + (b)": not one tuple
+    if (depth == 1 && c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else if (i > 0 && i + 1 < t.size()) {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out.size() > 1 ? out : std::vector<std::string>{text};
+}
+
+// Several equations over one box, each on its own components, to a fixed
+// point (a few passes): a tuple whose components hold angle terms.
+class CtcEquations : public Ctc {
+ public:
+  explicit CtcEquations(std::size_t n) : Ctc(n) {}
+  void add(std::shared_ptr<const Ctc> c, std::vector<std::size_t> at) { parts_.push_back({std::move(c), std::move(at)}); }
+  std::string name() const override { return "CtcEquations"; }
+  void contract(IntervalVector& x) const override {
+    check_dim(x);
+    for (int pass = 0; pass < 8; ++pass) {
+      const IntervalVector before = x;
+      for (const auto& [ctc, at] : parts_) {
+        IntervalVector sub(at.size());
+        for (std::size_t i = 0; i < at.size(); ++i) sub[i] = x[at[i]];
+        ctc->contract(sub);
+        if (sub.is_empty()) return x.set_empty();
+        for (std::size_t i = 0; i < at.size(); ++i) x[at[i]] = sub[i];
+      }
+      if (x == before) return;
+    }
+  }
+
+ private:
+  std::vector<std::pair<std::shared_ptr<const Ctc>, std::vector<std::size_t>>> parts_;
+};
+
+}  // namespace
+
 std::shared_ptr<const Ctc> equation_ctc(const RewrittenExpr& r, const std::set<std::string>& angles, const SourcePos& pos,
                                         const std::string& what, std::vector<std::size_t>& order) {
   order.clear();
   std::set<std::string> ids;
   for (const VarRef& ref : r.refs)
     if (angles.count(ref.var)) ids.insert(ref.id);
+  const std::vector<std::string> parts = tuple_components(r.text);
+  if (parts.size() > 1 && !ids.empty()) {  // each equation of the tuple on its own, modulo 2π where it has angle terms
+    auto all = std::make_shared<CtcEquations>(r.refs.size());
+    for (const std::string& part : parts) {
+      std::vector<std::size_t> at;
+      auto ctc = equation_ctc({part, r.refs}, angles, pos, what, at);
+      all->add(std::move(ctc), std::move(at));
+    }
+    for (std::size_t i = 0; i < r.refs.size(); ++i) order.push_back(i);
+    return all;
+  }
   const AngleTerms terms = angle_terms(r.text, ids, pos, what);
   if (terms.angles.empty()) {
     for (std::size_t i = 0; i < r.refs.size(); ++i) order.push_back(i);
@@ -142,6 +207,13 @@ std::shared_ptr<const Ctc> equation_ctc(const RewrittenExpr& r, const std::set<s
     rest_ids.push_back(r.refs[i].id);
   }
   return std::make_shared<CtcAngleEquation>(terms.signs, Function(rest_ids, terms.rest));
+}
+
+bool has_angle_terms(const std::string& text, const std::set<std::string>& angle_ids, const SourcePos& pos,
+                     const std::string& what) {
+  bool any = false;
+  for (const std::string& part : tuple_components(text)) any = !angle_terms(part, angle_ids, pos, what).angles.empty() || any;
+  return any;
 }
 
 std::set<std::string> angle_names(const Problem& p) {
@@ -163,13 +235,13 @@ void check_angle_uses(const Problem& p) {
     };
     switch (c.kind) {
       case ConstraintKind::Expr:
-        (void)angle_terms(c.expr, angles, c.expr_pos, c.label);
+        (void)has_angle_terms(c.expr, angles, c.expr_pos, c.label);
         break;
       case ConstraintKind::Deriv:
         refuse(c.v);
         break;
       case ConstraintKind::Eval:
-        (void)angle_terms(c.expr, angles, c.expr_pos, c.label);
+        (void)has_angle_terms(c.expr, angles, c.expr_pos, c.label);
         for (std::size_t j = 0; j < c.ys.size(); ++j) {
           if (!angles.count(c.ys[j])) continue;
           if (c.vs[j].empty())

@@ -33,8 +33,14 @@ struct AngleTerms {
 AngleTerms angle_terms(const std::string& text, const std::set<std::string>& angle_ids, const SourcePos& pos,
                        const std::string& what);
 
+// Whether some equation of `text` (a tuple "(e1, e2)": each component) has
+// angle terms; ProblemError as angle_terms for an angle read otherwise.
+bool has_angle_terms(const std::string& text, const std::set<std::string>& angle_ids, const SourcePos& pos,
+                     const std::string& what);
+
 // The contractor of the equation r = 0 (r rewritten by rewrite_refs): a
-// CtcFunction, or with angle terms a CtcAngleEquation; `order` receives the
+// CtcFunction, or with angle terms a CtcAngleEquation (a tuple with angles:
+// each component its own, to a fixed point over the box); `order` receives the
 // indices of r.refs in the order of its box (angle terms first).
 std::shared_ptr<const Ctc> equation_ctc(const RewrittenExpr& r, const std::set<std::string>& angles, const SourcePos& pos,
                                         const std::string& what, std::vector<std::size_t>& order);

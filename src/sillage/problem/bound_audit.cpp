@@ -128,7 +128,7 @@ void audit_eval(const Problem& p, const ConstraintSpec& c, const Truth& tr, std:
   std::set<std::string> angle_ids;  // an equation with angle terms holds modulo 2π
   for (const detail::VarRef& ref : r.refs)
     if (p.var(ref.var) && p.var(ref.var)->angle) angle_ids.insert(ref.id);
-  const bool modulo = !detail::angle_terms(r.text, angle_ids, c.expr_pos, c.label).angles.empty();
+  const bool modulo = detail::has_angle_terms(r.text, angle_ids, c.expr_pos, c.label);
   const CsvTable& table = p.table(c.data)->table;
   const CsvTable* joined = c.join_data.empty() ? nullptr : &p.table(c.join_data)->table;
   const auto column = [&](const std::string& n) { return table.has_column(n) || (joined && joined->has_column(n)); };

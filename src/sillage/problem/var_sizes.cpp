@@ -105,11 +105,17 @@ std::vector<VarSize> var_sizes(const Problem& p, const BuiltProblem& b) {
       continue;
     }
     const TubeVector& x = *v.tubes;
-    s.over_time = size_stats(thickness_values(x, ThicknessMeasure::MaxDiameter), durations);
+    // An angle's width is at most a turn (the whole circle), whatever its representative.
+    const auto turn = [&](std::vector<double> w) {
+      if (v.spec->angle)
+        for (double& x : w) x = std::min(x, 2 * M_PI);
+      return w;
+    };
+    s.over_time = size_stats(turn(thickness_values(x, ThicknessMeasure::MaxDiameter)), durations);
     if (p.output.truth) {
       std::vector<double> d;
       for (const double t : truth_times) d.push_back(diameter(x.size(), [&](std::size_t i) { return x[i](t); }));
-      s.at_truth = size_stats(d, std::vector<double>(d.size(), 1.0));
+      s.at_truth = size_stats(turn(d), std::vector<double>(d.size(), 1.0));
     }
     out.push_back(s);
   }

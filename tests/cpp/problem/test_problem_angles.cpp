@@ -84,6 +84,10 @@ TEST(ProblemAngles, UsesThatWouldReadAnAngleAsARealAreRefused) {
   expect_error(turning_robot("angle = \"yes\"\n"), "expected true (values known modulo 2 pi) or false");
   expect_error(turning_robot("angle = true\n[var.q]\nkind = \"tube_vector\"\ndim = 2\nangle = true\n"),
                "angle = true on a scalar tube");
+  // In a tuple, each equation on its own: an angle term in one, refused outside sin/cos in another.
+  const std::string eval = "[[constraint]]\nkind = \"eval\"\ndata = \"bearings\"\ny = \"psi\"\nv = \"omega\"\ntime = \"t\"\n";
+  EXPECT_EQ(problem_test::error_of(with(eval + "expr = \"(atan2(4, 3) - psi - b + [-0.1, 0.1], cos(psi) - cos(b) + [-2, 2])\"\n")), "");
+  expect_error(with(eval + "expr = \"(atan2(4, 3) - psi - b, 2*psi - b)\"\n"), "outside sin, cos, tan");
   // Under sin and cos, and as a term: accepted.
   EXPECT_EQ(problem_test::error_of(with("[[constraint]]\nkind = \"expr\"\nexpr = \"cos(psi + 0.1)*sin(psi) - omega + 0.5 + [-1, 1]\"\n")), "");
 }
