@@ -284,7 +284,10 @@ TruthCheck check_truth(const Problem& p, const BuiltProblem& b) {
         inside = false;  // an unbounded domain holds anything: it proves nothing, so it is no pass
         if (c.first_misses.size() < 10)
           c.first_misses.push_back(comp_name(v, i) + " = " + fmt(value) + " at t = " + fmt(time) +
-                                   (x.is_unbounded() ? " in the unbounded " : " outside ") + itv(x));
+                                   (x.is_unbounded()                              ? " in the unbounded "
+                                    : v.spec->angle && angle_is_circle(x) ? " in the whole circle "
+                                                                          : " outside ") +
+                                   itv(x));
       }
     }
     c.inside += inside;

@@ -112,4 +112,8 @@ TEST(ProblemAngles, MrclamRobot1KeepsTheTruthModuloTwoPi) {
     ASSERT_TRUE(angle_contains(psi(t), v[truth.column("heading_rad")])) << t << " " << psi(t);
   }
   EXPECT_GT(n, 8000u);
+  // A heading that is the whole circle proves nothing: a miss, said as such.
+  const TruthCheck c = check_truth(p, r.built);
+  ASSERT_FALSE(c.first_misses.empty());
+  EXPECT_NE(c.first_misses[0].find("psi = -2.1781 at t = 18.286 in the whole circle"), std::string::npos) << c.first_misses[0];
 }
