@@ -207,6 +207,7 @@ bool one_sweep(detail::DerivSweep kind, const Arrays& d, std::size_t first, std:
 
 // Contracts slices first..last (checked); sets x empty and returns false on emptiness.
 bool run(TimePropag p, Tube& x, const Tube& v, std::size_t first, std::size_t last) {
+  detail::check_real(x, "CtcDeriv::contract");
   // The rule reads v's slices only, but an empty gate of v leaves no
   // derivative at all: no x either (as a network with v as a domain finds).
   const auto vg = v.gates();
@@ -264,6 +265,11 @@ void detail::check_deriv_pair(const Tube& x, const Tube& v, const char* where) {
     throw DimensionError(std::string(where) + ": x and v are not on the same TDomain (" +
                          std::to_string(x.nb_slices()) + " and " + std::to_string(v.nb_slices()) + " slices)");
   }
+}
+
+void detail::check_real(const Tube& x, const char* where) {
+  // Its gates and slices may be written on different turns: real sweeps would lose the truth.
+  if (x.is_angle()) throw Error(std::string(where) + ": x is an angle tube (values modulo 2 pi): use CtcDerivAngle");
 }
 
 void detail::check_deriv_range(std::size_t n, std::size_t first, std::size_t last, const char* where) {

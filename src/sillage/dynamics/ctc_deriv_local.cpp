@@ -25,6 +25,7 @@ bool CtcDeriv::contract_local(Tube& x, const Tube& v, std::size_t first, std::si
                               const TubeChanges& changes) const {
   const char* where = "CtcDeriv::contract_local(x, v, first, last)";
   detail::check_deriv_pair(x, v, where);
+  detail::check_real(x, where);
   const std::size_t n = x.nb_slices();
   detail::check_deriv_range(n, first, last, where);
   if (propag_ != TimePropag::FWD_BWD) {  // one pass is no fixed point: the whole pass, as contract()

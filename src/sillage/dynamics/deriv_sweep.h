@@ -23,6 +23,8 @@ bool deriv_sweep(DerivSweep kind, const double* t, Interval* s, Interval* g, con
 
 // DimensionError (naming `where`) if x and v are not on the same TDomain.
 void check_deriv_pair(const Tube& x, const Tube& v, const char* where);
+// Error (naming `where`) if x is an angle tube (Tube::is_angle): CtcDerivAngle's.
+void check_real(const Tube& x, const char* where);
 // Error (naming `where`) unless first <= last < n.
 void check_deriv_range(std::size_t n, std::size_t first, std::size_t last, const char* where);
 

@@ -10,6 +10,7 @@
 
 #include "sillage/cn/contractor_network.h"
 #include "sillage/ctc/ctc_function.h"
+#include "sillage/dynamics/ctc_deriv.h"
 #include "sillage/dynamics/ctc_deriv_angle.h"
 #include "sillage/error.h"
 #include "sillage/interval/angle.h"
@@ -101,6 +102,11 @@ TEST(CtcDerivAngle, EmptinessAndErrors) {
   const auto other = TDomain::create(0, 2, 1);
   Tube y(td), w(other);
   EXPECT_THROW(CtcDerivAngle().contract(y, w), DimensionError);
+  // The real CtcDeriv refuses an angle tube (its sweeps would compare different turns).
+  Tube a(td), rate(td, Interval(1.0));
+  a.set_angle(true);
+  EXPECT_THROW(CtcDeriv().contract(a, rate), Error);
+  EXPECT_THROW(CtcDeriv().contract_local(a, rate, 0, 1, TubeChanges()), Error);
 }
 
 TEST(CtcDerivAngle, InANetwork) {
